@@ -1,0 +1,55 @@
+// contact-suite: a verification test suite for finite-element contact mechanics.
+// Dispatches the subcommands; every error from input becomes one line on stderr and exit 2.
+
+#include <cstdio>
+#include <exception>
+#include <string>
+
+#include <CLI/CLI.hpp>
+#include <fmt/core.h>
+
+#include "apps/oracle_command.hpp"
+#include "apps/usage_error.hpp"
+
+namespace {
+
+std::string one_line(std::string text) {
+  for (char& c : text) {
+    if (c == '\n' || c == '\r') c = ' ';
+  }
+  while (!text.empty() && text.back() == ' ') text.pop_back();
+  return text;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{
+      "contact-suite: frictionless contact problems with exact solutions, solved by finite "
+      "elements and graded against the exact answer"};
+  app.require_subcommand(1);
+  cs::apps::add_oracle_command(app);
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::Success& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    std::fprintf(stderr, "contact-suite: error: %s\n", one_line(e.what()).c_str());
+    return cs::apps::kBadInput;
+  } catch (const cs::apps::UsageError& e) {
+    std::fprintf(stderr, "contact-suite: error: %s\n", one_line(e.what()).c_str());
+    return cs::apps::kBadInput;
+  } catch (const std::invalid_argument& e) {
+    std::fprintf(stderr, "contact-suite: error: %s\n", one_line(e.what()).c_str());
+    return cs::apps::kBadInput;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "contact-suite: internal error: %s\n", one_line(e.what()).c_str());
+    return 3;
+  }
+  return cs::apps::kSuccess;
+}
