@@ -1,0 +1,71 @@
+#include "suites/grading.hpp"
+
+#include <cmath>
+#include <string>
+
+#include "suites/suite_error.hpp"
+
+namespace cs::suites {
+
+std::string_view to_string(Grade grade) {
+  switch (grade) {
+    case Grade::e:
+      return "e";
+    case Grade::g:
+      return "g";
+    case Grade::s:
+      return "s";
+    case Grade::u:
+      return "u";
+  }
+  return "?";
+}
+
+Grade parse_grade(std::string_view text) {
+  if (text == "e")
+    return Grade::e;
+  if (text == "g")
+    return Grade::g;
+  if (text == "s")
+    return Grade::s;
+  if (text == "u")
+    return Grade::u;
+  throw SuiteInputError("unknown grade '" + std::string(text) + "' (expected e, g, s or u)");
+}
+
+double error_percent(double value, double exact) {
+  return 100.0 * (value - exact) / std::abs(exact);
+}
+
+Grade grade_from_error(double error_percent) {
+  const double e = std::abs(error_percent);
+  if (!(e < 10.0))
+    return Grade::u;  // also catches NaN
+  if (e < 1.0)
+    return Grade::e;
+  if (e < 5.0)
+    return Grade::g;
+  return Grade::s;
+}
+
+bool is_worse(Grade grade, Grade reference) {
+  return static_cast<int>(grade) > static_cast<int>(reference);
+}
+
+bool is_converging(double error_c, double error_m, double error_f) {
+  const double c = std::abs(error_c);
+  const double m = std::abs(error_m);
+  const double f = std::abs(error_f);
+  if (!std::isfinite(c) || !std::isfinite(m) || !std::isfinite(f))
+    return false;
+  constexpr double tol = kErrorResolutionPercent;
+  const bool never_grows = m <= c + tol && f <= m + tol;
+  const bool improves_or_exact = f < c - tol || c <= tol;
+  return never_grows && improves_or_exact;
+}
+
+bool is_diverging(double value_c, double value_m, double value_f) {
+  return std::abs(value_c - value_m) < std::abs(value_m - value_f);
+}
+
+}  // namespace cs::suites
