@@ -1,0 +1,89 @@
+#include "suites/parameters.hpp"
+
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+#include <fmt/format.h>
+
+#include "suites/suite_error.hpp"
+
+namespace cs::suites {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+bool in_range(const ParameterSpec& s, double v) {
+  const bool above = s.min_inclusive ? v >= s.min : v > s.min;
+  const bool below = s.max_inclusive ? v <= s.max : v < s.max;
+  return std::isfinite(v) && above && below;
+}
+
+}  // namespace
+
+std::vector<ParameterSpec> common_parameters(double default_p_over_E) {
+  return {
+      {"nu", 0.25, 0.0, 0.5, true, false, "Poisson's ratio of the indented body"},
+      {"p_over_E", default_p_over_E, 0.0, 0.1, false, true,
+       "applied pressure p over Young's modulus E of the indented body"},
+      {"E_ratio", 1e6, 1.0, 1e12, true, true,
+       "Young's modulus of the meshed indenter over that of the indented body"},
+      {"fkn", 1.0, 0.0, kInf, false, false,
+       "normal penalty stiffness factor FKN (PM, AL): multiplies the element stiffness scale"},
+      {"ftoln", 0.1, 0.0, kInf, false, false,
+       "penetration tolerance FTOLN (AL), as a fraction of the underlying element depth"},
+      {"pinball", 1.0, 0.0, kInf, false, false,
+       "pinball radius (candidate search, MPC ties), as a multiple of the underlying element "
+       "depth"},
+  };
+}
+
+Parameters::Parameters(const std::vector<ParameterSpec>& specs,
+                       const std::map<std::string, double>& overrides,
+                       std::string_view problem_name) {
+  for (const auto& s : specs) {
+    values_[s.name] = s.default_value;
+    overridden_[s.name] = false;
+  }
+  for (const auto& [name, value] : overrides) {
+    const ParameterSpec* spec = nullptr;
+    for (const auto& s : specs) {
+      if (s.name == name)
+        spec = &s;
+    }
+    if (spec == nullptr) {
+      std::string known;
+      for (const auto& s : specs)
+        known += (known.empty() ? "" : ", ") + s.name;
+      throw SuiteInputError(
+          fmt::format("problem {} has no parameter '{}' (it has: {})", problem_name, name, known));
+    }
+    if (!in_range(*spec, value)) {
+      throw SuiteInputError(fmt::format("--set {}={}: out of range {} for problem {}", name, value,
+                                        range_text(*spec), problem_name));
+    }
+    values_[name] = value;
+    overridden_[name] = true;
+  }
+}
+
+double Parameters::get(std::string_view name) const {
+  const auto it = values_.find(name);
+  if (it == values_.end()) {
+    throw std::logic_error(fmt::format("parameter '{}' is not declared", name));
+  }
+  return it->second;
+}
+
+bool Parameters::overridden(std::string_view name) const {
+  const auto it = overridden_.find(name);
+  return it != overridden_.end() && it->second;
+}
+
+std::string range_text(const ParameterSpec& s) {
+  auto bound = [](double v) { return std::isinf(v) ? std::string("inf") : fmt::format("{}", v); };
+  return fmt::format("{}{}, {}{}", s.min_inclusive ? "[" : "(", bound(s.min), bound(s.max),
+                     s.max_inclusive ? "]" : ")");
+}
+
+}  // namespace cs::suites

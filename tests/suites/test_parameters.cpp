@@ -1,0 +1,62 @@
+// Parameters: defaults, overrides, unknown keys and out-of-range values.
+
+#include <gtest/gtest.h>
+
+#include "suites/parameters.hpp"
+#include "suites/problem_catalog.hpp"
+#include "suites/suite_error.hpp"
+
+namespace cs::suites {
+namespace {
+
+TEST(Parameters, DefaultsAreTheStudysValues) {
+  const auto& s13 = problem_info(ProblemId::S_1_3);
+  const Parameters p(s13.parameters, {}, "S_1_3");
+  EXPECT_EQ(p.get("nu"), 0.25);        // the study's nu = 1/4
+  EXPECT_EQ(p.get("p_over_E"), 1e-3);  // the study's p/E = 1/1000
+  EXPECT_EQ(p.get("E_ratio"), 1e6);    // the study's E_e/E_r = 1e-6
+  EXPECT_EQ(p.get("re_over_b"), 1.0 / 3.0);
+  EXPECT_FALSE(p.overridden("re_over_b"));
+}
+
+TEST(Parameters, OverridesReplaceDefaults) {
+  const Parameters p(problem_info(ProblemId::S_1_3).parameters, {{"re_over_b", 0.25}}, "S_1_3");
+  EXPECT_EQ(p.get("re_over_b"), 0.25);
+  EXPECT_TRUE(p.overridden("re_over_b"));
+}
+
+TEST(Parameters, UnknownKeyNamesTheProblemAndItsKeys) {
+  try {
+    Parameters(problem_info(ProblemId::H_p).parameters, {{"re_over_b", 0.25}}, "H_p");
+    FAIL() << "no exception";
+  } catch (const SuiteInputError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("H_p has no parameter 're_over_b'"), std::string::npos) << what;
+    EXPECT_NE(what.find("nu, p_over_E"), std::string::npos) << what;
+  }
+}
+
+TEST(Parameters, OutOfRangeValuesAreRejected) {
+  const auto& params = problem_info(ProblemId::H_p).parameters;
+  EXPECT_THROW(Parameters(params, {{"nu", 0.5}}, "H_p"), SuiteInputError);  // nu < 0.5
+  EXPECT_THROW(Parameters(params, {{"nu", -0.1}}, "H_p"), SuiteInputError);
+  EXPECT_THROW(Parameters(params, {{"fkn", 0.0}}, "H_p"), SuiteInputError);  // fkn > 0
+  EXPECT_THROW(Parameters(params, {{"p_over_E", 0.0}}, "H_p"), SuiteInputError);
+  EXPECT_NO_THROW(Parameters(params, {{"nu", 0.0}}, "H_p"));
+  EXPECT_THROW(Parameters(params, {}, "H_p").get("undeclared"), std::logic_error);
+}
+
+TEST(ProblemCatalog, EveryProblemHasAQuantityAndTheCommonParameters) {
+  for (auto id : all_problems()) {
+    const auto& info = problem_info(id);
+    EXPECT_EQ(info.id, id);
+    EXPECT_FALSE(info.quantities.empty());
+    EXPECT_EQ(info.axisymmetric, is_axisymmetric(id));
+    const Parameters p(info.parameters, {}, to_string(id));
+    EXPECT_EQ(p.get("fkn"), 1.0);
+    EXPECT_EQ(p.get("ftoln"), 0.1);
+  }
+}
+
+}  // namespace
+}  // namespace cs::suites
