@@ -5,9 +5,10 @@
 #include <exception>
 #include <string>
 
-#include <CLI/CLI.hpp>
 #include <fmt/core.h>
+#include <CLI/CLI.hpp>
 
+#include "apps/list_command.hpp"
 #include "apps/oracle_command.hpp"
 #include "apps/usage_error.hpp"
 
@@ -15,9 +16,11 @@ namespace {
 
 std::string one_line(std::string text) {
   for (char& c : text) {
-    if (c == '\n' || c == '\r') c = ' ';
+    if (c == '\n' || c == '\r')
+      c = ' ';
   }
-  while (!text.empty() && text.back() == ' ') text.pop_back();
+  while (!text.empty() && text.back() == ' ')
+    text.pop_back();
   return text;
 }
 
@@ -29,6 +32,7 @@ int main(int argc, char** argv) {
       "elements and graded against the exact answer"};
   app.require_subcommand(1);
   cs::apps::add_oracle_command(app);
+  cs::apps::add_list_command(app);
 
   try {
     app.parse(argc, argv);

@@ -81,7 +81,7 @@ bool Parameters::overridden(std::string_view name) const {
 }
 
 std::string range_text(const ParameterSpec& s) {
-  auto bound = [](double v) { return std::isinf(v) ? std::string("inf") : fmt::format("{}", v); };
+  auto bound = [](double v) { return std::isinf(v) ? std::string("inf") : fmt::format("{:g}", v); };
   return fmt::format("{}{}, {}{}", s.min_inclusive ? "[" : "(", bound(s.min), bound(s.max),
                      s.max_inclusive ? "]" : ")");
 }
