@@ -1,0 +1,28 @@
+#pragma once
+// The study's case matrix, or any subset of it: the product of the selected values of each
+// axis, in the study's order (problem, mesh, element, algorithm, contact).
+
+#include <map>
+#include <string>
+#include <vector>
+
+#include "suites/case_spec.hpp"
+
+namespace cs::suites {
+
+/// Which values of each axis to run. Empty lists mean "all the study's values" (for contacts:
+/// ss and ns; mortar only when asked for).
+struct CaseSelection {
+  std::vector<ProblemId> problems;
+  std::vector<MeshLevel> meshes;
+  std::vector<ElementType> elements;
+  std::vector<Algorithm> algorithms;
+  std::vector<ContactKind> contacts;
+  TargetKind target = TargetKind::Discretized;
+  std::map<std::string, double> overrides;  ///< applied to every case
+};
+
+/// Expands a selection into cases; duplicates in a list are ignored.
+std::vector<CaseSpec> make_case_matrix(const CaseSelection& selection);
+
+}  // namespace cs::suites

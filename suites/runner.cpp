@@ -1,0 +1,141 @@
+#include "suites/runner.hpp"
+
+#include <sys/resource.h>
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <exception>
+#include <map>
+#include <mutex>
+#include <thread>
+
+namespace cs::suites {
+namespace {
+
+/// The cases sharing one model, as indices into the run's case list.
+struct Group {
+  std::vector<std::size_t> members;
+  double cost = 1.0;
+};
+
+bool is_contact_only_parameter(const std::string& name) {
+  return name == "fkn" || name == "ftoln" || name == "pinball";
+}
+
+CaseResult failed_result(const CaseSpec& spec, const std::string& reason) {
+  CaseResult r;
+  r.spec = spec;
+  r.status = CaseStatus::failed;
+  r.reason = reason.empty() ? "unknown failure" : reason;
+  return r;
+}
+
+/// Runs one group: build its executor, run each member; every failure becomes a result.
+void run_group(const Group& group, const std::vector<CaseSpec>& cases,
+               const ExecutorFactory& make_executor, std::vector<CaseResult>& results,
+               const std::function<void(const CaseResult&)>& done) {
+  using Clock = std::chrono::steady_clock;
+  std::unique_ptr<GroupExecutor> executor;
+  std::string build_error;
+  const auto build_start = Clock::now();
+  try {
+    executor = make_executor(cases[group.members.front()]);
+  } catch (const std::exception& e) {
+    build_error = e.what();
+  } catch (...) {
+    build_error = "unknown exception while building the model";
+  }
+  // The model is built once for the group; its cost is charged to the first case.
+  double build_seconds = std::chrono::duration<double>(Clock::now() - build_start).count();
+  for (std::size_t index : group.members) {
+    const CaseSpec& spec = cases[index];
+    CaseResult result;
+    const auto start = Clock::now();
+    if (!executor) {
+      result = failed_result(spec, "model could not be built: " + build_error);
+    } else {
+      try {
+        result = executor->run(spec);
+        result.spec = spec;
+      } catch (const std::exception& e) {
+        result = failed_result(spec, e.what());
+      } catch (...) {
+        result = failed_result(spec, "unknown exception");
+      }
+    }
+    result.wall_seconds =
+        std::chrono::duration<double>(Clock::now() - start).count() + build_seconds;
+    build_seconds = 0.0;
+    result.peak_rss_mb = peak_rss_mb();
+    results[index] = std::move(result);
+    done(results[index]);
+  }
+}
+
+}  // namespace
+
+std::string model_key(const CaseSpec& spec) {
+  CaseSpec s = spec;
+  s.algorithm = Algorithm::AL;
+  s.contact = ContactKind::ss;
+  std::erase_if(s.overrides, [](const auto& kv) { return is_contact_only_parameter(kv.first); });
+  return case_id(s);
+}
+
+std::vector<CaseResult> run_cases(const std::vector<CaseSpec>& cases,
+                                  const ExecutorFactory& make_executor,
+                                  const RunnerOptions& options) {
+  std::map<std::string, Group> by_key;
+  std::vector<std::string> order;
+  for (std::size_t i = 0; i < cases.size(); ++i) {
+    const std::string key = model_key(cases[i]);
+    auto [it, inserted] = by_key.try_emplace(key);
+    if (inserted) {
+      order.push_back(key);
+      if (options.group_cost)
+        it->second.cost = options.group_cost(cases[i]);
+    }
+    it->second.members.push_back(i);
+  }
+  std::vector<const Group*> groups;
+  for (const auto& key : order)
+    groups.push_back(&by_key.at(key));
+  // Largest first (stable: equal costs keep the study's order), so no big group runs last.
+  std::stable_sort(groups.begin(), groups.end(),
+                   [](const Group* a, const Group* b) { return a->cost > b->cost; });
+
+  std::vector<CaseResult> results(cases.size());
+  std::mutex done_mutex;
+  auto done = [&](const CaseResult& r) {
+    if (!options.on_case_done)
+      return;
+    std::lock_guard lock(done_mutex);
+    options.on_case_done(r);
+  };
+  std::atomic<std::size_t> next{0};
+  auto worker = [&] {
+    for (std::size_t g = next++; g < groups.size(); g = next++) {
+      run_group(*groups[g], cases, make_executor, results, done);
+    }
+  };
+  int jobs =
+      options.jobs > 0 ? options.jobs : static_cast<int>(std::thread::hardware_concurrency());
+  jobs = std::clamp(jobs, 1, std::max<int>(1, static_cast<int>(groups.size())));
+  if (jobs == 1) {
+    worker();
+  } else {
+    std::vector<std::jthread> threads;
+    for (int j = 0; j < jobs; ++j)
+      threads.emplace_back(worker);
+  }
+  return results;
+}
+
+double peak_rss_mb() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return static_cast<double>(usage.ru_maxrss) / 1024.0;  // ru_maxrss is in KiB on Linux
+}
+
+}  // namespace cs::suites

@@ -1,0 +1,121 @@
+// The engine with a fake executor: order, sharing of a model within a group, failures kept
+// as results, the same results with one or two workers.
+
+#include <atomic>
+#include <stdexcept>
+
+#include <gtest/gtest.h>
+
+#include "suites/case_matrix.hpp"
+#include "suites/runner.hpp"
+
+namespace cs::suites {
+namespace {
+
+/// A model "built" once per group; each case's value is a deterministic function of its spec.
+class FakeExecutor : public GroupExecutor {
+ public:
+  explicit FakeExecutor(const CaseSpec& representative) : key_(model_key(representative)) {}
+  CaseResult run(const CaseSpec& spec) override {
+    if (spec.algorithm == Algorithm::MPC && spec.problem == ProblemId::H_p) {
+      throw std::runtime_error("forced failure");
+    }
+    EXPECT_EQ(model_key(spec), key_);  // only cases of this model come here
+    CaseResult r;
+    r.status = CaseStatus::converged;
+    QuantityResult q;
+    q.name = "sigma_c";
+    q.value = static_cast<double>(case_id(spec).size()) + static_cast<int>(spec.algorithm);
+    r.quantities.push_back(q);
+    return r;
+  }
+
+ private:
+  std::string key_;
+};
+
+std::vector<CaseSpec> small_matrix() {
+  CaseSelection sel;
+  sel.problems = {ProblemId::H_p, ProblemId::S_1};
+  sel.meshes = {MeshLevel::C, MeshLevel::M};
+  return make_case_matrix(sel);  // 2 x 2 x 2 elements x 5 algorithms x 2 contacts = 80
+}
+
+TEST(CaseMatrix, FullStudyMatrixHas660Cases) {
+  EXPECT_EQ(make_case_matrix({}).size(), 660u);
+  CaseSelection sel;
+  sel.contacts = {ContactKind::mortar, ContactKind::mortar};  // duplicates ignored
+  EXPECT_EQ(make_case_matrix(sel).size(), 330u);
+}
+
+TEST(Runner, SharesOneModelPerGroupAndKeepsOrder) {
+  const auto cases = small_matrix();
+  ASSERT_EQ(cases.size(), 80u);
+  std::atomic<int> builds{0};
+  auto factory = [&](const CaseSpec& s) {
+    ++builds;
+    return std::make_unique<FakeExecutor>(s);
+  };
+  int reported = 0;
+  RunnerOptions options;
+  options.jobs = 2;
+  options.on_case_done = [&](const CaseResult&) { ++reported; };
+  const auto results = run_cases(cases, factory, options);
+  EXPECT_EQ(builds.load(), 8);  // 2 problems x 2 meshes x 2 elements
+  EXPECT_EQ(reported, 80);
+  ASSERT_EQ(results.size(), cases.size());
+  for (std::size_t i = 0; i < cases.size(); ++i) {
+    EXPECT_EQ(case_id(results[i].spec), case_id(cases[i]));
+  }
+}
+
+TEST(Runner, FailuresBecomeResultsAndTheRunGoesOn) {
+  const auto cases = small_matrix();
+  auto factory = [](const CaseSpec& s) -> std::unique_ptr<GroupExecutor> {
+    if (s.problem == ProblemId::S_1 && s.mesh == MeshLevel::M && s.element == ElementType::Q8) {
+      throw std::invalid_argument("mesh too coarse for the contact width");
+    }
+    return std::make_unique<FakeExecutor>(s);
+  };
+  const auto results = run_cases(cases, factory, {});
+  int failed = 0, converged = 0;
+  for (const auto& r : results) {
+    if (r.status == CaseStatus::failed) {
+      ++failed;
+      EXPECT_FALSE(r.reason.empty());
+    } else {
+      ++converged;
+    }
+  }
+  EXPECT_EQ(failed, 10 + 8);  // one whole group (10) + H_p MPC (2 meshes x 2 elements x 2)
+  EXPECT_EQ(converged, 80 - failed);
+}
+
+TEST(Runner, OneAndTwoWorkersGiveTheSameResults) {
+  const auto cases = small_matrix();
+  auto factory = [](const CaseSpec& s) { return std::make_unique<FakeExecutor>(s); };
+  RunnerOptions one, two;
+  one.jobs = 1;
+  two.jobs = 2;
+  two.group_cost = [](const CaseSpec& s) { return s.mesh == MeshLevel::M ? 4.0 : 1.0; };
+  const auto a = run_cases(cases, factory, one);
+  const auto b = run_cases(cases, factory, two);
+  ASSERT_EQ(a.size(), b.size());
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    EXPECT_EQ(a[i].status, b[i].status);
+    if (!a[i].quantities.empty())
+      EXPECT_EQ(a[i].quantities[0].value, b[i].quantities[0].value);
+  }
+}
+
+TEST(Runner, ContactOnlyParametersShareTheModel) {
+  CaseSpec a, b;
+  b.overrides["fkn"] = 10;
+  b.algorithm = Algorithm::PM;
+  EXPECT_EQ(model_key(a), model_key(b));
+  b.overrides["nu"] = 0.3;
+  EXPECT_NE(model_key(a), model_key(b));
+}
+
+}  // namespace
+}  // namespace cs::suites
