@@ -8,8 +8,12 @@
 #include <fmt/core.h>
 #include <CLI/CLI.hpp>
 
+#include "apps/case_command.hpp"
+#include "apps/invocation.hpp"
 #include "apps/list_command.hpp"
 #include "apps/oracle_command.hpp"
+#include "apps/report_command.hpp"
+#include "apps/run_command.hpp"
 #include "apps/usage_error.hpp"
 
 namespace {
@@ -31,8 +35,15 @@ int main(int argc, char** argv) {
       "contact-suite: frictionless contact problems with exact solutions, solved by finite "
       "elements and graded against the exact answer"};
   app.require_subcommand(1);
+  int exit_code = cs::apps::kSuccess;
+  for (int i = 0; i < argc; ++i) {
+    cs::apps::invocation() += (i ? " " : "") + std::string(i ? argv[i] : "contact-suite");
+  }
   cs::apps::add_oracle_command(app);
   cs::apps::add_list_command(app);
+  cs::apps::add_case_command(app, exit_code);
+  cs::apps::add_run_command(app, exit_code);
+  cs::apps::add_report_command(app);
 
   try {
     app.parse(argc, argv);
@@ -55,5 +66,5 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "contact-suite: internal error: %s\n", one_line(e.what()).c_str());
     return 3;
   }
-  return cs::apps::kSuccess;
+  return exit_code;
 }

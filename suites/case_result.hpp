@@ -42,6 +42,12 @@ struct SurfaceProfile {
   std::vector<double> pressure_over_p;  ///< contact pressure / p from the contact solution
 };
 
+/// The exact -sigma_z/p on z = 0 on a fine grid of x / a (infinite values left out).
+struct ExactProfile {
+  std::vector<double> x_over_a;
+  std::vector<double> sigma_z_over_p;
+};
+
 /// Everything recorded about one analysis.
 struct CaseResult {
   CaseSpec spec;
@@ -55,6 +61,7 @@ struct CaseResult {
   double element_size_h = 0.0;  ///< characteristic element size at the contact, over a (or b)
   std::vector<QuantityResult> quantities;
   SurfaceProfile profile;
+  ExactProfile exact_profile;
 };
 
 }  // namespace cs::suites

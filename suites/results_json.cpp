@@ -55,8 +55,10 @@ std::string string_from(const json& j, const char* key, const std::string& where
 /// An array of numbers in which null stands for a value that was not finite.
 std::vector<double> numbers_from(const json& j, const char* key) {
   std::vector<double> out;
-  if (!j.contains(key) || !j.at(key).is_array()) return out;
-  for (const auto& v : j.at(key)) out.push_back(v.is_number() ? v.get<double>() : std::nan(""));
+  if (!j.contains(key) || !j.at(key).is_array())
+    return out;
+  for (const auto& v : j.at(key))
+    out.push_back(v.is_number() ? v.get<double>() : std::nan(""));
   return out;
 }
 
@@ -106,6 +108,10 @@ CaseResult case_from_json(const json& j, std::size_t index) {
     r.profile.x_over_a = numbers_from(p, "x_over_a");
     r.profile.sigma_z_over_p = numbers_from(p, "sigma_z_over_p");
     r.profile.pressure_over_p = numbers_from(p, "pressure_over_p");
+  }
+  if (j.contains("exact_profile") && j.at("exact_profile").is_object()) {
+    r.exact_profile.x_over_a = numbers_from(j.at("exact_profile"), "x_over_a");
+    r.exact_profile.sigma_z_over_p = numbers_from(j.at("exact_profile"), "sigma_z_over_p");
   }
   return r;
 }
@@ -164,6 +170,10 @@ json to_json(const CaseResult& r) {
   j["profile"] = {{"x_over_a", finite_or_null(r.profile.x_over_a)},
                   {"sigma_z_over_p", finite_or_null(r.profile.sigma_z_over_p)},
                   {"pressure_over_p", finite_or_null(r.profile.pressure_over_p)}};
+  if (!r.exact_profile.x_over_a.empty()) {
+    j["exact_profile"] = {{"x_over_a", finite_or_null(r.exact_profile.x_over_a)},
+                          {"sigma_z_over_p", finite_or_null(r.exact_profile.sigma_z_over_p)}};
+  }
   return j;
 }
 

@@ -119,3 +119,55 @@ TEST(Runner, ContactOnlyParametersShareTheModel) {
 
 }  // namespace
 }  // namespace cs::suites
+
+#include <cstdio>
+
+#include "suites/progress.hpp"
+
+namespace cs::suites {
+namespace {
+
+std::string report_of(bool interactive) {
+  std::FILE* f = std::tmpfile();
+  ProgressReporter p(2, f, interactive);
+  CaseResult ok;
+  ok.status = CaseStatus::converged;
+  CaseResult bad;
+  bad.status = CaseStatus::failed;
+  bad.reason = "singular system";
+  p.case_done(ok);
+  p.case_done(bad);
+  p.finish();
+  std::rewind(f);
+  std::string text;
+  for (int c; (c = std::fgetc(f)) != EOF;)
+    text += static_cast<char>(c);
+  std::fclose(f);
+  return text;
+}
+
+TEST(Progress, PlainLinesWhenNotATerminal) {
+  const std::string text = report_of(false);
+  EXPECT_EQ(text.find('\r'), std::string::npos);
+  EXPECT_NE(text.find("[1/2]"), std::string::npos);
+  EXPECT_NE(text.find("(singular system)"), std::string::npos);
+  EXPECT_NE(text.find("2 cases in"), std::string::npos);
+  EXPECT_NE(text.find("1 converged, 0 not converged, 1 failed"), std::string::npos);
+}
+
+TEST(Progress, BarWithCountsAndEtaOnATerminal) {
+  const std::string text = report_of(true);
+  EXPECT_NE(text.find('\r'), std::string::npos);
+  EXPECT_NE(text.find("[###############...............] 1/2"), std::string::npos) << text;
+  EXPECT_NE(text.find("ETA"), std::string::npos);
+}
+
+TEST(Progress, Durations) {
+  EXPECT_EQ(ProgressReporter::format_duration(5.2), "5 s");
+  EXPECT_EQ(ProgressReporter::format_duration(125), "2:05");
+  EXPECT_EQ(ProgressReporter::format_duration(3725), "1:02:05");
+  EXPECT_EQ(ProgressReporter::format_duration(NAN), "?");
+}
+
+}  // namespace
+}  // namespace cs::suites

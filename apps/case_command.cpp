@@ -1,0 +1,127 @@
+#include "apps/case_command.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <memory>
+
+#include <fmt/core.h>
+
+#include "apps/usage_error.hpp"
+#include "suites/problem_catalog.hpp"
+#include "suites/problem_executor.hpp"
+#include "suites/results_json.hpp"
+#include "suites/suite_error.hpp"
+
+namespace cs::apps {
+namespace {
+
+struct CaseArgs {
+  std::string problem;
+  std::string mesh = "C", element = "Q4", algorithm = "AL", contact = "ss";
+  std::string target = "discretized";
+  std::vector<std::string> sets;
+  bool json = false;
+  std::string vtu;
+};
+
+suites::CaseSpec make_spec(const CaseArgs& args) {
+  suites::CaseSpec spec;
+  spec.problem = suites::parse_problem(args.problem);
+  spec.mesh = suites::parse_mesh_level(args.mesh);
+  spec.element = suites::parse_element(args.element);
+  spec.algorithm = suites::parse_algorithm(args.algorithm);
+  spec.contact = suites::parse_contact(args.contact);
+  spec.target = suites::parse_target(args.target);
+  for (const auto& text : args.sets)
+    spec.overrides.insert(suites::parse_override(text));
+  // Validate the parameters now: a bad --set is bad input, not a failed case.
+  suites::Parameters(suites::problem_info(spec.problem).parameters, spec.overrides,
+                     suites::to_string(spec.problem));
+  return spec;
+}
+
+void check_writable_parent(const std::string& path) {
+  const auto parent = std::filesystem::absolute(path).parent_path();
+  if (!std::filesystem::is_directory(parent)) {
+    throw UsageError(fmt::format("--vtu {}: directory {} does not exist", path, parent.string()));
+  }
+}
+
+void print_text(const suites::CaseResult& r) {
+  fmt::print("{}  {}{}\n", suites::case_id(r.spec), suites::to_string(r.status),
+             r.reason.empty() ? "" : "  (" + r.reason + ")");
+  fmt::print("  {} elements, {} equations, {} iterations, {:.3f} s\n", r.n_elements, r.n_equations,
+             r.iterations, r.wall_seconds);
+  for (const auto& q : r.quantities) {
+    const std::string exact =
+        std::isfinite(q.exact) ? fmt::format("{:.4f}", q.exact) : std::string("inf");
+    std::string line =
+        fmt::format("  {:<13} {:>9}  exact {:>8}", q.name,
+                    std::isfinite(q.value) ? fmt::format("{:.4f}", q.value) : "-", exact);
+    if (std::isfinite(q.exact) && std::isfinite(q.value)) {
+      line +=
+          fmt::format("  error {:+.3f} %  grade {}", q.error_percent, suites::to_string(q.grade));
+    }
+    if (q.contact_pressure)
+      line += fmt::format("  contact pressure {:.4f}", *q.contact_pressure);
+    if (q.study_exact)
+      line += fmt::format("  (study's exact {:.4f})", *q.study_exact);
+    fmt::print("{}\n", line);
+  }
+}
+
+int run_case(const CaseArgs& args) {
+  const suites::CaseSpec spec = make_spec(args);
+  if (!args.vtu.empty())
+    check_writable_parent(args.vtu);
+  const auto start = std::chrono::steady_clock::now();
+  suites::CaseResult result;
+  std::unique_ptr<suites::ProblemExecutor> executor;
+  try {
+    executor = std::make_unique<suites::ProblemExecutor>(spec);
+    result = executor->run(spec);
+  } catch (const suites::SuiteInputError&) {
+    throw;  // bad input: exit 2
+  } catch (const std::exception& e) {
+    result.spec = spec;
+    result.status = suites::CaseStatus::failed;
+    result.reason = e.what();
+  }
+  result.wall_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  result.peak_rss_mb = suites::peak_rss_mb();
+  if (!args.vtu.empty() && executor && executor->last_displacement().size() > 0) {
+    executor->write_vtu(args.vtu);
+  }
+  if (args.json) {
+    fmt::print("{}\n", suites::to_json(result).dump(2));
+  } else {
+    print_text(result);
+  }
+  return result.status == suites::CaseStatus::converged ? kSuccess : kCasesFailed;
+}
+
+}  // namespace
+
+void add_case_command(CLI::App& app, int& exit_code) {
+  auto args = std::make_shared<CaseArgs>();
+  auto* cmd = app.add_subcommand("case", "Run one analysis of the battery and grade it");
+  cmd->add_option("problem", args->problem,
+                  "Problem: P_p P_a Pprime_p Pprime_a H_p H_a S_1 S_1_3 S_1_7 F_p F_a")
+      ->required();
+  cmd->add_option("--mesh", args->mesh, "Mesh level: C, M or F")->capture_default_str();
+  cmd->add_option("--element", args->element, "Element: Q4 or Q8")->capture_default_str();
+  cmd->add_option("--algorithm", args->algorithm, "Contact algorithm: AL PM LMP PLM MPC (IMC)")
+      ->capture_default_str();
+  cmd->add_option("--contact", args->contact, "Contact discretization: ns, ss or mortar")
+      ->capture_default_str();
+  cmd->add_option("--target", args->target, "Indenter: discretized (stiff mesh) or rigid")
+      ->capture_default_str();
+  cmd->add_option("--set", args->sets, "Override a parameter: name=value (see `list`)");
+  cmd->add_flag("--json", args->json, "Print one JSON object (the fields of results.json)");
+  cmd->add_option("--vtu", args->vtu, "Write the mesh, displacement and stresses to a .vtu file");
+  cmd->callback([args, &exit_code] { exit_code = run_case(*args); });
+}
+
+}  // namespace cs::apps

@@ -1,0 +1,65 @@
+#include "apps/report_command.hpp"
+
+#include <cstdio>
+#include <memory>
+#include <string>
+
+#include <fmt/core.h>
+
+#include "reports/report_writer.hpp"
+
+namespace cs::apps {
+namespace {
+
+struct ReportArgs {
+  std::string results;
+  std::string out_dir;
+  std::string baseline;
+  std::string study_data;
+  bool no_figures = false;
+};
+
+void run_report(const ReportArgs& args) {
+  reports::ReportOptions options;
+  options.results = args.results;
+  options.out_dir = args.out_dir;
+  if (!args.baseline.empty())
+    options.baseline = args.baseline;
+  if (!args.study_data.empty())
+    options.study_data = args.study_data;
+  options.figures = !args.no_figures;
+  const auto outcome = reports::write_report(options);
+  std::printf("%s\n", fmt::format("contact-suite report: {} cases -> {}/report.md ({} files, {} "
+                                  "figures{})",
+                                  outcome.n_cases, args.out_dir, outcome.files.size(),
+                                  outcome.figures_drawn,
+                                  outcome.figures_missing > 0
+                                      ? fmt::format(", {} not drawn", outcome.figures_missing)
+                                      : std::string())
+                          .c_str());
+  if (!outcome.figures_unavailable.empty()) {
+    std::fprintf(stderr, "contact-suite: warning: %s\n", outcome.figures_unavailable.c_str());
+  }
+}
+
+}  // namespace
+
+void add_report_command(CLI::App& app) {
+  auto args = std::make_shared<ReportArgs>();
+  CLI::App* cmd = app.add_subcommand(
+      "report",
+      "Write DIR/report.md (tables beside the study's, figures, findings), "
+      "DIR/results.csv and, with --baseline, DIR/regression.md from a results file");
+  cmd->add_option("--results", args->results, "results.json written by `contact-suite run`")
+      ->required();
+  cmd->add_option("--out", args->out_dir, "output directory (created if needed)")->required();
+  cmd->add_option("--baseline", args->baseline,
+                  "an older results.json: also write DIR/regression.md (grade changes, drift)");
+  cmd->add_option("--study-data", args->study_data,
+                  "directory with the study's ansys_results.csv and ansys_grades.csv (default: "
+                  "the source tree's data/study)");
+  cmd->add_flag("--no-figures", args->no_figures, "do not run gnuplot");
+  cmd->callback([args] { run_report(*args); });
+}
+
+}  // namespace cs::apps

@@ -1,0 +1,149 @@
+#include "apps/run_command.hpp"
+
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <thread>
+
+#include <fmt/core.h>
+
+#include "apps/invocation.hpp"
+#include "apps/usage_error.hpp"
+#include "reports/atomic_output.hpp"
+#include "reports/report_writer.hpp"
+#include "suites/case_matrix.hpp"
+#include "suites/problem_catalog.hpp"
+#include "suites/problem_executor.hpp"
+#include "suites/progress.hpp"
+#include "suites/results_json.hpp"
+#include "suites/run_environment.hpp"
+
+namespace cs::apps {
+namespace {
+
+struct RunArgs {
+  std::vector<std::string> problems, meshes, elements, algorithms, contacts, sets;
+  std::string target = "discretized";
+  int jobs = 0;
+  std::string out = "out";
+  bool no_report = false;
+  std::string command_line;
+};
+
+template <class E, class Parse>
+std::vector<E> parse_all(const std::vector<std::string>& names, Parse parse) {
+  std::vector<E> out;
+  for (const auto& n : names)
+    out.push_back(parse(n));
+  return out;
+}
+
+suites::CaseSelection make_selection(const RunArgs& args) {
+  suites::CaseSelection sel;
+  sel.problems = parse_all<suites::ProblemId>(args.problems, suites::parse_problem);
+  sel.meshes = parse_all<suites::MeshLevel>(args.meshes, suites::parse_mesh_level);
+  sel.elements = parse_all<suites::ElementType>(args.elements, suites::parse_element);
+  sel.algorithms = parse_all<suites::Algorithm>(args.algorithms, suites::parse_algorithm);
+  sel.contacts = parse_all<suites::ContactKind>(args.contacts, suites::parse_contact);
+  sel.target = suites::parse_target(args.target);
+  for (const auto& text : args.sets)
+    sel.overrides.insert(suites::parse_override(text));
+  return sel;
+}
+
+/// Every case's --set keys must exist for its problem: checked before anything runs.
+void validate_overrides(const std::vector<suites::CaseSpec>& cases) {
+  for (const auto& spec : cases) {
+    suites::Parameters(suites::problem_info(spec.problem).parameters, spec.overrides,
+                       suites::to_string(spec.problem));
+  }
+}
+
+/// A rough relative cost of a model, to start the largest first.
+double group_cost(const suites::CaseSpec& spec) {
+  const double per_level[] = {1.0, 4.0, 16.0};
+  double cost = per_level[static_cast<int>(spec.mesh)];
+  if (spec.problem == suites::ProblemId::S_1 || spec.problem == suites::ProblemId::S_1_3 ||
+      spec.problem == suites::ProblemId::S_1_7) {
+    cost *= 30.0;
+  }
+  return spec.element == suites::ElementType::Q8 ? 3.0 * cost : cost;
+}
+
+int run(const RunArgs& args) {
+  const auto cases = suites::make_case_matrix(make_selection(args));
+  validate_overrides(cases);
+  // Stage the output directory before running: an unwritable one fails now, not at the end.
+  reports::AtomicOutput output(args.out);
+
+  const int jobs =
+      args.jobs > 0 ? args.jobs : static_cast<int>(std::thread::hardware_concurrency());
+  if (jobs > 1)
+    suites::set_blas_threads(1);  // one BLAS thread per worker
+  const bool interactive = isatty(fileno(stderr)) != 0;
+  suites::ProgressReporter progress(cases.size(), stderr, interactive);
+  suites::RunnerOptions options;
+  options.jobs = jobs;
+  options.on_case_done = [&progress](const suites::CaseResult& r) { progress.case_done(r); };
+  options.group_cost = group_cost;
+
+  suites::RunInfo info;
+  info.started_utc = suites::utc_now_iso8601();
+  info.jobs = jobs;
+  info.command_line = args.command_line;
+  info.environment = suites::run_environment();
+  const auto start = std::chrono::steady_clock::now();
+  const auto results = suites::run_cases(cases, suites::make_problem_executor, options);
+  info.wall_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  info.peak_rss_mb = suites::peak_rss_mb();
+  progress.finish();
+
+  output.write_text("results.json", suites::make_results_document(info, results).dump(1) + "\n");
+  const auto written = output.commit();
+  const auto results_path = std::filesystem::path(args.out) / "results.json";
+  fmt::print("wrote {}\n", results_path.string());
+  if (!args.no_report) {
+    reports::ReportOptions report;
+    report.results = results_path;
+    report.out_dir = args.out;
+    const auto outcome = reports::write_report(report);
+    fmt::print("wrote {} report files in {} ({} figures)\n", outcome.files.size(), args.out,
+               outcome.figures_drawn);
+  }
+  for (const auto& r : results) {
+    if (r.status != suites::CaseStatus::converged)
+      return kCasesFailed;
+  }
+  return kSuccess;
+}
+
+}  // namespace
+
+void add_run_command(CLI::App& app, int& exit_code) {
+  auto args = std::make_shared<RunArgs>();
+  auto* cmd = app.add_subcommand("run", "Run the study's case matrix (or a subset) and report");
+  cmd->add_option("--problems", args->problems, "Problems (default: all 11)")->delimiter(',');
+  cmd->add_option("--meshes", args->meshes, "Mesh levels C M F (default: all)")->delimiter(',');
+  cmd->add_option("--elements", args->elements, "Elements Q4 Q8 (default: both)")->delimiter(',');
+  cmd->add_option("--algorithms", args->algorithms, "Algorithms AL PM LMP PLM MPC (default: all)")
+      ->delimiter(',');
+  cmd->add_option("--contacts", args->contacts, "Discretizations ss ns mortar (default: ss ns)")
+      ->delimiter(',');
+  cmd->add_option("--target", args->target, "Indenter: discretized or rigid")
+      ->capture_default_str();
+  cmd->add_option("--set", args->sets, "Override a parameter of every case: name=value");
+  cmd->add_option("--jobs", args->jobs, "Parallel workers (default: the number of cores)");
+  cmd->add_option("--out", args->out, "Output directory")->capture_default_str();
+  cmd->add_flag("--no-report", args->no_report, "Write results.json only");
+  cmd->callback([args, &exit_code, &app] {
+    args->command_line = "contact-suite run";
+    for (const auto& a : app.remaining())
+      args->command_line += " " + a;
+    exit_code = run(*args);
+  });
+}
+
+}  // namespace cs::apps

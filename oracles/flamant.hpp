@@ -1,0 +1,26 @@
+#pragma once
+// Flamant's solution for a concentrated normal line load on an elastic half-space, plane
+// strain: the purely radial stress field -(2P / pi) cos(theta) / r. Superposed over a surface
+// pressure it gives every plane-strain field of the study (McEwen, the strip load), which is
+// how the tests prove those.
+//
+// Reference: A. Flamant (1892), C. R. Acad. Sci. Paris 114, 1465-1468; K.L. Johnson, Contact
+// Mechanics (1985), Ch. 2 (concentrated normal force).
+
+#include "oracles/stress_state.hpp"
+
+namespace cs::oracles {
+
+/// A compressive line force P per unit length along the y axis, at x = 0 of the surface z = 0.
+struct FlamantLoad {
+  double P;  ///< normal force per unit length [force / length], > 0, pushing into the body
+};
+
+/// Flamant's field, with r^2 = x^2 + z^2:
+///   sigma_x = -(2P / pi) x^2 z / r^4,  sigma_z = -(2P / pi) z^3 / r^4,
+///   tau_xz  = -(2P / pi) x z^2 / r^4.
+/// The surface z = 0 is traction free away from the load.
+/// Throws InvalidInput for P not positive, z < 0, non-finite x, or the load point (0, 0).
+PlaneStress flamant_stress(const FlamantLoad& load, PlanePoint at);
+
+}  // namespace cs::oracles

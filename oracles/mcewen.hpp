@@ -1,0 +1,28 @@
+#pragma once
+// McEwen's closed-form interior stress field of plane-strain Hertz contact: the field under the
+// elliptical pressure (4p/pi) sqrt(1 - (x/a)^2) on |x| < a of the surface z = 0.
+//
+// Reference: E. McEwen (1949), Phil. Mag. 40, 454-459; K.L. Johnson, Contact Mechanics (1985),
+// pp. 102-104, as cited by the study.
+
+#include "oracles/stress_state.hpp"
+
+namespace cs::oracles {
+
+/// The Hertzian pressure of half-width a and mean pressure p = P / (2a) (peak 4p/pi).
+struct McEwenLoad {
+  double a;  ///< contact half-width [length], > 0
+  double p;  ///< mean contact pressure P / (2a) [stress], > 0 (the study's p)
+};
+
+/// Study Eqs. 11-12 (McEwen): with k = 4p / (pi a),
+///   sigma_z = -k m (1 - (z^2 + n^2) / (m^2 + n^2)),
+///   sigma_x = -k (m (1 + (z^2 + n^2) / (m^2 + n^2)) - 2z),
+///   tau_xz  = -k n (m^2 - z^2) / (m^2 + n^2),
+/// where m^2, n^2 = ((A^2 + 4 x^2 z^2)^(1/2) +- A) / 2, A = a^2 - x^2 + z^2, m >= 0 and n takes
+/// the sign of x. On z = 0 this reduces to Eq. 15 under the contact and to a traction-free
+/// surface outside; at the contact edges (x = +-a, z = 0) the stress is 0 (the continuous limit).
+/// Throws InvalidInput for a, p not positive, or a point with z < 0 or non-finite x.
+PlaneStress mcewen_stress(const McEwenLoad& load, PlanePoint at);
+
+}  // namespace cs::oracles

@@ -1,0 +1,106 @@
+#pragma once
+// Steuermann's solution for a rigid flat punch with rounded edges on an elastic half-space,
+// plane strain (the study's Problem S): the punch has a flat face of half-width b and edge
+// radii r_e; under a load P per unit length it touches the half-space over |x| < a, b < a.
+//
+// Reference: I.Y. Steuermann (1949), Contact problem of the theory of elasticity, Moscow-
+// Leningrad, as reported by M. Ciavarella, D.A. Hills and G. Monno (1998), Proc. IMechE 212C,
+// 319-327 (the study's Reference 7).
+//
+// What p is: the study does not say. Its printed exact values 9.9773 (r_e/b = 1) and 13.1753
+// (r_e/b = 1/7) follow from p = P / (2(b + r_e)), the pressure on the punch's top face, with
+// Eq. 32 evaluated WITHOUT the factor (1 - nu^2); with it (plane strain, physically consistent,
+// the default here) the peaks are 10.1956, 11.2424, 13.4622 at nu = 1/4, p/E = 1e-3. Both are
+// available through Eq32Factor; see ../shared/ARCHITECTURE.md.
+//
+// Numerics: phi0 solves Eq. 32 with GSL's Brent root finder, on u = pi/2 - phi0 so that light
+// loads keep their digits. The bracket of Eq. 31 is O(u^3) while its terms are O(u): the
+// pressure carries a relative rounding error of about 1e-16 / u^3 (1e-12 for the study's cases,
+// u ~ 0.1-0.3; 1e-7 at u = 1e-3, i.e. r_e/b ~ 1e-7 at the study's load).
+
+#include <string_view>
+
+namespace cs::oracles {
+
+/// Whether Eq. 32 carries the plane-strain factor (1 - nu^2).
+enum class Eq32Factor {
+  kWithOneMinusNu2,     ///< plane strain, physically consistent (the default)
+  kWithoutOneMinusNu2,  ///< as the study evaluated it: reproduces its printed 9.9773, 13.1753
+};
+
+/// "with (1 - nu^2)" or "without (1 - nu^2)".
+std::string_view to_string(Eq32Factor factor);
+
+/// A rounded flat punch pressed into an elastic half-space by a load P per unit length.
+struct SteuermannPunch {
+  double b;    ///< half-width of the flat face [length], > 0
+  double r_e;  ///< edge radius [length], > 0
+  double P;    ///< load per unit length [force / length], > 0
+  double E;    ///< Young's modulus of the half-space [stress], > 0
+  double nu;   ///< Poisson's ratio of the half-space, in [0, 0.5)
+  Eq32Factor eq32_factor = Eq32Factor::kWithOneMinusNu2;
+};
+
+/// The solved contact: phi0 and the half-width a = b / sin(phi0).
+struct SteuermannContact {
+  double b;                     ///< half-width of the flat face [length]
+  double P;                     ///< load per unit length [force / length]
+  double phi0;                  ///< the root of Eq. 32, in (0, pi/2)
+  double half_pi_minus_phi0;    ///< u = pi/2 - phi0, to full relative precision
+  double contact_half_width_a;  ///< a = b / sin(phi0) [length], b < a <= b + r_e
+};
+
+/// The peak of the contact pressure, which lies on the rounded part b < x_peak < a.
+struct SteuermannPeak {
+  double peak_pressure;  ///< max of -sigma_z(x, 0) [stress], > 0
+  double x_peak;         ///< where it is reached (and at -x_peak) [length]
+  double phi_peak;       ///< the angle phi of Eq. 31 there: sin(phi) = x_peak / a
+};
+
+/// The left-hand side of Eq. 32, lambda = 2 r_e (1 - nu^2) P / (b^2 E) (or without the factor).
+/// Throws InvalidInput for non-positive lengths, load, modulus, or nu outside [0, 0.5).
+double steuermann_load_parameter(const SteuermannPunch& punch);
+
+/// The largest load for which contact stays on the rounded edges, a = b + r_e (the punch's
+/// own P is not used). Throws InvalidInput for non-positive b, r_e, E or nu outside [0, 0.5).
+double steuermann_max_load(const SteuermannPunch& punch);
+
+/// Study Eq. 32: phi0 from lambda = (pi - 2 phi0) / (2 sin^2 phi0) - cot(phi0), solved with
+/// gsl_root_fsolver_brent; then a = b / sin(phi0). Throws InvalidInput for bad parameters and
+/// for a load that would spread contact past the rounded edges (a > b + r_e, i.e.
+/// P > steuermann_max_load).
+SteuermannContact steuermann_contact(const SteuermannPunch& punch);
+
+/// Study Eq. 31: the contact pressure -sigma_z(x, 0) for |x| <= a, with sin(phi) = x sin(phi0)/b:
+///   (a/P) p = (2/pi) / (pi - 2 phi0 - sin 2phi0) ((pi - 2 phi0) cos(phi)
+///             + ln(|sin(phi + phi0) / sin(phi - phi0)|^sin(phi)
+///                  |tan((phi + phi0)/2) tan((phi - phi0)/2)|^sin(phi0))),
+/// and 0 for |x| > a. The logarithms are regrouped so that the singular factors cancel
+/// analytically: at x = +-b (phi = phi0) the pressure is finite, the bracket's log term being
+/// 2 sin(phi0) ln(sin(phi0)). Throws InvalidInput for a non-finite x or an inconsistent contact.
+double steuermann_pressure(const SteuermannContact& contact, double x);
+
+/// The peak of Eq. 31 and its location: the root in (phi0, pi/2) of the analytic derivative
+/// dp/dphi ~ cos(phi) ln(sin(phi + phi0) / sin(phi - phi0)) - (pi - 2 phi0) sin(phi), found with
+/// gsl_root_fsolver_brent to full precision (the pressure is increasing with an infinite slope
+/// through x = b and vanishes at x = a).
+SteuermannPeak steuermann_peak(const SteuermannContact& contact);
+
+/// The study's loading: the pressure p on the punch's top face (width 2(b + r_e)) given as p/E.
+struct SteuermannStudyCase {
+  double b;         ///< half-width of the flat face [length], > 0
+  double r_e;       ///< edge radius [length], > 0
+  double E;         ///< Young's modulus [stress], > 0
+  double nu;        ///< Poisson's ratio, in [0, 0.5); the study takes 1/4
+  double p_over_E;  ///< p / E, > 0; the study takes 1/1000
+  Eq32Factor eq32_factor = Eq32Factor::kWithOneMinusNu2;
+};
+
+/// The punch of a study case: P = 2 (b + r_e) p, p = (p/E) E.
+SteuermannPunch steuermann_study_punch(const SteuermannStudyCase& study_case);
+
+/// The study's normalizing pressure p = P / (2 (b + r_e)) of a punch (the study reports
+/// -sigma_z max / p).
+double steuermann_study_pressure(const SteuermannPunch& punch);
+
+}  // namespace cs::oracles

@@ -1,0 +1,41 @@
+#pragma once
+// The study's appendix Tables 3-14, side by side with ours: for each problem, quantity,
+// element and contact type, the C, M and F rows; per algorithm our value and error beside the
+// study's ANSYS value (its CSV keys: algorithm AL_PM, LMP_PLM, IMC; contact ss, ns, either;
+// the mapping is in study_reference.hpp); the exact value (ours, and the study's printed one)
+// above each group of tables, as the study prints it.
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "reports/results_index.hpp"
+#include "reports/study_reference.hpp"
+
+namespace cs::reports {
+
+/// One table: one problem, quantity, element and contact type; rows C, M, F.
+struct AppendixTable {
+  std::string problem, quantity, element, contact;
+  std::string title;                 ///< Markdown
+  std::vector<std::string> columns;  ///< "Mesh", "h", our algorithm classes, "ANSYS ..." columns
+  std::vector<std::vector<std::string>> rows;  ///< rows[i][0] is the mesh: C, M, F
+  std::vector<std::string> notes;
+
+  /// The cell of `mesh` under `column`, or nullopt.
+  std::optional<std::string> cell(const std::string& mesh, const std::string& column) const;
+  std::string markdown() const;
+};
+
+/// One table per (problem, quantity, element, contact) present, in the study's order.
+std::vector<AppendixTable> build_appendix_tables(const ResultsIndex& index,
+                                                 const StudyReference& study);
+
+/// The line above a problem's tables: the quantity, our exact value and the study's.
+std::string exact_value_line(const ResultsIndex& index, const StudyReference& study,
+                             const std::string& problem, const std::string& quantity);
+
+/// The report section "Appendix tables" (empty when no baseline row is present).
+std::string appendix_section(const ResultsIndex& index, const StudyReference& study);
+
+}  // namespace cs::reports

@@ -1,0 +1,101 @@
+#include "reports/divergence_table.hpp"
+
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "reports/markdown_table.hpp"
+#include "reports/problem_catalog.hpp"
+
+namespace cs::reports {
+namespace {
+
+std::string verdict(const std::optional<bool>& diverging) {
+  if (!diverging)
+    return kMissing;
+  return *diverging ? "diverges" : "**does not diverge**";
+}
+
+std::string difference(const std::optional<double>& a, const std::optional<double>& b) {
+  return a && b ? format_value(std::abs(*a - *b)) : std::string(kMissing);
+}
+
+}  // namespace
+
+bool satisfies_eq47(double c, double m, double f) {
+  return std::abs(c - m) < std::abs(m - f);
+}
+
+std::vector<DivergenceRow> build_divergence_rows(const ResultsIndex& index,
+                                                 const StudyReference& study) {
+  std::vector<DivergenceRow> out;
+  for (const auto& p : all_problem_infos()) {
+    if (!p.singular)
+      continue;
+    for (const auto& q : p.quantities) {
+      for (const char* element : {"Q4", "Q8"}) {
+        for (const auto& option : index.options_present(p.id, q.name, element)) {
+          const RowRecord* row = index.row(p.id, q.name, element, option);
+          DivergenceRow d{p.id, element, option, row->values, row->diverging, {}, {}};
+          for (std::size_t m = 0; m < kMeshLevels.size(); ++m) {
+            const auto match = study.find_value(p.id, q.name, element, option.algorithm,
+                                                option.contact, kMeshLevels[m]);
+            if (match.value != nullptr)
+              d.study_values[m] = match.value->value;
+          }
+          if (d.study_values[0] && d.study_values[1] && d.study_values[2]) {
+            d.study_diverging =
+                satisfies_eq47(*d.study_values[0], *d.study_values[1], *d.study_values[2]);
+          }
+          out.push_back(d);
+        }
+      }
+    }
+  }
+  return out;
+}
+
+std::string divergence_section(const ResultsIndex& index, const StudyReference& study) {
+  const auto rows = build_divergence_rows(index, study);
+  if (rows.empty())
+    return {};
+  MarkdownTable table({"Problem", "Element", "Option", "C", "M", "F", "|C − M|", "|M − F|",
+                       "Eq. 47 (ours)", "ANSYS C / M / F", "Eq. 47 (ANSYS)"});
+  int ours_fail = 0, ours_pass = 0, undecided = 0;
+  for (const auto& r : rows) {
+    const ProblemInfo* p = find_problem_info(r.problem);
+    std::string study_cells = kMissing;
+    if (r.study_values[0] || r.study_values[1] || r.study_values[2]) {
+      study_cells = fmt::format("{} / {} / {}", format_value(r.study_values[0]),
+                                format_value(r.study_values[1]), format_value(r.study_values[2]));
+    }
+    table.add_row({p != nullptr ? p->name_md : r.problem, r.element, r.option.label(),
+                   format_value(r.values[0]), format_value(r.values[1]), format_value(r.values[2]),
+                   difference(r.values[0], r.values[1]), difference(r.values[1], r.values[2]),
+                   verdict(r.diverging), study_cells, verdict(r.study_diverging)});
+    if (!r.diverging) {
+      ++undecided;
+    } else if (*r.diverging) {
+      ++ours_pass;
+    } else {
+      ++ours_fail;
+    }
+  }
+  std::string out =
+      "## 5. Flat punch: divergence (Eq. 47)\n\n"
+      "At the punch edge the exact stress is singular, so a trustworthy element should "
+      "*diverge*: Eq. 47 asks |σ̄<sub>C</sub> − σ̄<sub>M</sub>| < |σ̄<sub>M</sub> − "
+      "σ̄<sub>F</sub>|. The study found Eq. 47 \"complied with for all contact elements and "
+      "options\"; its column here applies the same test to its printed values.\n\n";
+  out += table.render() + "\n";
+  out += fmt::format(
+      "- Ours: {} option set(s) diverge, {} do not, {} without a verdict (— : not "
+      "all of C, M, F available).\n",
+      ours_pass, ours_fail, undecided);
+  out +=
+      "- Option: our algorithm and contact type; the ANSYS column is the study's value for the "
+      "mapped option (AL, PM; LMP, PLM; IMC), — where the study printed none (e.g. mortar).\n\n";
+  return out;
+}
+
+}  // namespace cs::reports

@@ -1,0 +1,35 @@
+#pragma once
+// A GitHub-flavoured Markdown table, and the number formats every section of the report uses
+// (values to the study's 4 decimals, signed percentages).
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace cs::reports {
+
+/// A pipe table: a header row, then body rows of the same width (shorter rows are padded).
+class MarkdownTable {
+ public:
+  explicit MarkdownTable(std::vector<std::string> header) : header_(std::move(header)) {}
+  void add_row(std::vector<std::string> cells) { rows_.push_back(std::move(cells)); }
+  std::size_t n_rows() const { return rows_.size(); }
+  /// The table as Markdown, ending with a newline; '|' inside cells is escaped.
+  std::string render() const;
+
+ private:
+  std::vector<std::string> header_;
+  std::vector<std::vector<std::string>> rows_;
+};
+
+/// A normalized stress as the study prints it: 4 decimals ("1.2732").
+std::string format_value(double v);
+/// A signed percentage: "+0.07 %", "−12.3 %" (2 significant decimals below 10 %, 1 above).
+std::string format_percent(double percent);
+/// format_value, or the em dash for nullopt.
+std::string format_value(const std::optional<double>& v);
+
+/// The em dash the report uses for "not in this results file".
+inline constexpr const char* kMissing = "—";
+
+}  // namespace cs::reports

@@ -1,0 +1,123 @@
+#include "reports/report_writer.hpp"
+
+#include <fmt/format.h>
+
+#include "reports/appendix_tables.hpp"
+#include "reports/atomic_output.hpp"
+#include "reports/divergence_table.hpp"
+#include "reports/findings.hpp"
+#include "reports/grade_tables.hpp"
+#include "reports/markdown_table.hpp"
+#include "reports/problem_catalog.hpp"
+#include "reports/regression_report.hpp"
+#include "reports/results_csv.hpp"
+#include "reports/summary_section.hpp"
+
+namespace cs::reports {
+namespace {
+
+std::string contents(const std::vector<std::pair<std::string, std::string>>& sections) {
+  std::string out = "**Contents:**";
+  bool first = true;
+  for (const auto& [title, anchor] : sections) {
+    out += fmt::format("{} [{}](#{})", first ? "" : " ·", title, anchor);
+    first = false;
+  }
+  return out + "\n\n";
+}
+
+}  // namespace
+
+std::string variants_section(const ResultsIndex& index) {
+  const auto& rows = index.variant_rows();
+  if (rows.empty())
+    return {};
+  MarkdownTable table({"Row", "Variant", "C", "M", "F", "Grade"});
+  for (const RowRecord* r : rows) {
+    std::array<std::string, 3> cells;
+    for (std::size_t m = 0; m < kMeshLevels.size(); ++m) {
+      cells[m] = format_value(r->values[m]);
+      if (r->errors[m])
+        cells[m] += fmt::format(" ({})", format_percent(*r->errors[m]));
+    }
+    std::string grade = format_grade_cell(index, r);
+    if (r->diverging)
+      grade = *r->diverging ? "diverges" : "does not diverge";
+    table.add_row({fmt::format("{} {} {} {} {}", r->problem, r->quantity, r->element, r->algorithm,
+                               r->contact),
+                   r->variant(), cells[0], cells[1], cells[2], grade});
+  }
+  return "## 6. Other option sets (rigid target, parameter overrides)\n\n"
+         "Not in the study, so not in Tables 2 or the appendix tables: our value (our % error) "
+         "per mesh and the grade of the finest mesh.\n\n" +
+         table.render() + "\n";
+}
+
+std::string report_markdown(const ResultsIndex& index, const StudyReference& study,
+                            const FigureSet& figures, bool has_regression) {
+  const auto findings = generate_findings(index, study);
+  const std::string grades = grade_tables_section(index, study);
+  const std::string appendix = appendix_section(index, study);
+  const std::string figs = figures_section(figures);
+  const std::string divergence = divergence_section(index, study);
+  const std::string variants = variants_section(index);
+
+  std::vector<std::pair<std::string, std::string>> toc{{"Summary", "1-summary"}};
+  if (!grades.empty())
+    toc.emplace_back("Tables 2a, 2b", "2-accuracy-and-convergence-tables-2a-and-2b");
+  if (!appendix.empty())
+    toc.emplace_back("Appendix tables",
+                     "3-appendix-tables-our-values-beside-the-studys-ansys-values");
+  if (!figs.empty())
+    toc.emplace_back("Figures", "4-figures");
+  if (!divergence.empty())
+    toc.emplace_back("Flat-punch divergence", "5-flat-punch-divergence-eq-47");
+  if (!variants.empty())
+    toc.emplace_back("Other option sets", "6-other-option-sets-rigid-target-parameter-overrides");
+
+  std::string out =
+      "# contact-suite report: our contact elements beside the study's ANSYS results\n\n"
+      "The battery of Sezer & Sinclair, \"An Assessment of ANSYS Contact Elements\": "
+      "frictionless indentation problems with exact solutions, each on three meshes (C, M = "
+      "h/2, F = h/4), graded by the study's Eq. 46 (e < 1 % ≤ g < 5 % ≤ s < 10 % ≤ u) on the "
+      "fine mesh, with its convergence flag c and, for the singular flat punch, its divergence "
+      "test Eq. 47. Every table is built from the results file; the study's values come from "
+      "data/study (transcribed from its appendix and Table 2).\n\n";
+  out += contents(toc);
+  if (has_regression)
+    out += "A regression report against the baseline is in [regression.md](regression.md).\n\n";
+  out += "Per-case data for spreadsheets: [results.csv](results.csv).\n\n";
+  out += summary_section(index, findings);
+  out += grades + appendix + figs + divergence + variants;
+  return out;
+}
+
+ReportOutcome write_report(const ReportOptions& options) {
+  // Read and check every input before touching the output directory.
+  const ResultsFile results = load_results_file(options.results);
+  std::optional<ResultsFile> baseline;
+  if (options.baseline)
+    baseline = load_results_file(*options.baseline);
+  const StudyReference study =
+      load_study_reference(options.study_data ? *options.study_data : default_study_data_dir());
+  const ResultsIndex index(results);
+
+  AtomicOutput output(options.out_dir);
+  FigureSet figures;
+  if (options.figures)
+    figures = render_figures(index, output.staging_dir(), options.figure_options);
+  output.write_text("report.md", report_markdown(index, study, figures, baseline.has_value()));
+  output.write_text("results.csv", results_csv(index, study));
+  if (baseline)
+    output.write_text("regression.md", regression_markdown(compare_results(*baseline, results)));
+
+  ReportOutcome outcome;
+  outcome.n_cases = static_cast<int>(results.cases.size());
+  for (const auto& f : figures.figures)
+    (f.produced ? outcome.figures_drawn : outcome.figures_missing)++;
+  outcome.figures_unavailable = figures.unavailable;
+  outcome.files = output.commit();
+  return outcome;
+}
+
+}  // namespace cs::reports

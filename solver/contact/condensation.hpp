@@ -1,0 +1,140 @@
+#pragma once
+// Static condensation of the elastic system onto the contact DOFs, then onto the contact
+// constraints: every contact algorithm works on a small dense problem, and one sparse
+// factorization serves every discretization and algorithm of a model.
+//
+// Stage 1, DofCondensation (one per model and contact DOF set c): the reduced elastic system
+// K u = f (free DOFs) is split into the contact DOFs c (every DOF a candidate constraint may
+// touch) and the rest i. Fixing c clamps every body, so K_ii is positive definite even when
+// K is singular (the study's blocks are held vertically by the indenter alone). With a
+// diagonal D on c (D = diag K_cc, which makes A0 = K + D positive definite and changes only the
+// c-c block),
+//   S = K_cc - K_ci K_ii^{-1} K_ic   (Schur complement, |c| x |c|, dense, positive semidefinite)
+//   f_c = f_c - K_ci K_ii^{-1} f_i   (condensed load)
+// and for any u_c the interior u_i = K_ii^{-1} (f_i - K_ic u_c) is one solve with A0.
+//   - TrailingFactorBlock: order c last (METIS nested dissection on the node graph of the
+//     other DOFs, then c), factor A0 once with CHOLMOD (supernodal LL'); the trailing block of
+//     the factor gives S + D = L_cc L_cc^T and f_c = L_cc y_c with y = L^{-1} P f. One
+//     factorization, one forward solve, dense BLAS-3 on the c block.
+//   - MultipleRightHandSides: factor A0 in the solver's own ordering and solve for the |c| unit
+//     columns: S + D = ((A0^{-1})_cc)^{-1}. The simple reference (memory n x |c|).
+//
+// Stage 2, ConstraintCondensation (one per constraint row set): the m rows g = g0 + B u, forces
+// lambda (S u_c = f_c + B^T lambda). With R = diag(rho) > 0 (rho = the rows' stiffness scale),
+// M = S + B^T R B is positive definite when the candidate rows hold every body the prescribed
+// DOFs leave free, and M u_c = f_c + B^T (lambda + R B u_c) gives, with mu = lambda + R(g - g0):
+//   u_c = M^{-1} (f_c + B^T mu),   g - g0 = d + W mu,   W = B M^{-1} B^T,   d = B M^{-1} f_c:
+// an exact rewriting (R changes nothing in the answer) on which the active-set loop runs
+// (solver/contact/active_set_solver.hpp).
+
+#include <memory>
+#include <vector>
+
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
+
+#include "solver/contact/contact_options.hpp"
+#include "solver/solve_status.hpp"
+
+namespace cs::solver {
+
+/// Wall-clock seconds of the condensation's phases.
+struct CondensationTimings {
+  double assemble_s = 0.0;   ///< A0 = K + D, the node graph
+  double analyze_s = 0.0;    ///< fill-reducing ordering and symbolic factorization
+  double factorize_s = 0.0;  ///< numeric factorization of A0
+  double condense_s = 0.0;   ///< S and f_c from the factor (dense BLAS-3)
+  double total() const { return assemble_s + analyze_s + factorize_s + condense_s; }
+};
+
+/// What stage 1 reads. The references must outlive DofCondensation::compute.
+struct DofCondensationInput {
+  const Eigen::SparseMatrix<double>& K_lower;  ///< K (n x n), lower triangle, CSC, sorted rows
+  const Eigen::VectorXd& f;                    ///< load (n)
+  const std::vector<int>& contact_dofs;        ///< c: equation indices, increasing, unique
+  /// Optional: the node of every equation (size n), so that the ordering runs on the node
+  /// graph (half the vertices, a quarter of the edges); empty: the DOF graph.
+  const std::vector<int>& node_of_equation;
+};
+
+/// Stage 1: the elastic system condensed onto the contact DOFs.
+class DofCondensation {
+ public:
+  explicit DofCondensation(CondensationMethod method = CondensationMethod::TrailingFactorBlock);
+  ~DofCondensation();
+  DofCondensation(DofCondensation&&) noexcept;
+  DofCondensation& operator=(DofCondensation&&) noexcept;
+  DofCondensation(const DofCondensation&) = delete;
+  DofCondensation& operator=(const DofCondensation&) = delete;
+
+  /// Factorizes A0 and computes S and f_c. Returns Ok, or NotPositiveDefinite / Singular (K_ii
+  /// is not positive definite: a body is held neither by prescribed DOFs nor by the contact
+  /// DOFs) or SolverFailure, with a reason.
+  SolveOutcome compute(const DofCondensationInput& input);
+
+  /// Replaces the load f (same matrix): recomputes f_c with one forward solve. For a changed
+  /// load case or changed prescribed displacements (f = f_f - K_fc u_c).
+  void update_load(const Eigen::VectorXd& f);
+
+  /// The contact DOFs (equation indices), in the order of S's rows.
+  const std::vector<int>& contact_dofs() const { return contact_dofs_; }
+  /// Position of equation `eq` among the contact DOFs, or -1.
+  int position(int eq) const { return position_[eq]; }
+  /// S (|c| x |c|).
+  const Eigen::MatrixXd& schur() const { return S_; }
+  /// f_c (|c|).
+  const Eigen::VectorXd& condensed_load() const { return f_c_; }
+  /// The free displacement with contact part u_c and the interior in equilibrium.
+  Eigen::VectorXd recover(const Eigen::VectorXd& u_c) const;
+
+  int n_contact_dofs() const { return static_cast<int>(contact_dofs_.size()); }
+  double factor_nonzeros() const { return factor_nnz_; }
+  /// Flop count of the numeric factorization (CHOLMOD's estimate).
+  double factor_flops() const { return factor_flops_; }
+  const CondensationTimings& timings() const { return timings_; }
+  CondensationMethod method() const { return method_; }
+
+ private:
+  struct Impl;
+  CondensationMethod method_;
+  std::unique_ptr<Impl> impl_;
+  std::vector<int> contact_dofs_;
+  std::vector<int> position_;
+  Eigen::MatrixXd S_;
+  Eigen::VectorXd f_c_;
+  Eigen::VectorXd D_;               ///< the diagonal added on c
+  Eigen::MatrixXd L_tail_;          ///< trailing factor block, in the factor's tail order
+  std::vector<int> tail_position_;  ///< tail order -> index in contact_dofs_
+  double factor_nnz_ = 0.0;
+  double factor_flops_ = 0.0;
+  CondensationTimings timings_;
+};
+
+/// Stage 2: the condensed problem on the constraint rows.
+class ConstraintCondensation {
+ public:
+  /// B: m x n_free (columns among dofs.contact_dofs()), rho: m, > 0. Returns Ok, or
+  /// NotPositiveDefinite with a reason (the rows do not hold a body K leaves free).
+  SolveOutcome compute(const DofCondensation& dofs,
+                       const Eigen::SparseMatrix<double, Eigen::RowMajor>& B,
+                       const Eigen::VectorXd& rho);
+
+  /// W = B M^{-1} B^T (m x m, symmetric positive semidefinite).
+  const Eigen::MatrixXd& W() const { return W_; }
+  /// d = B M^{-1} f_c (m).
+  const Eigen::VectorXd& d() const { return d_; }
+  /// Recomputes d after DofCondensation::update_load.
+  void update_load(const DofCondensation& dofs);
+  /// The free displacement for the condensed unknowns mu (via stage 1's recovery).
+  Eigen::VectorXd recover(const DofCondensation& dofs, const Eigen::VectorXd& mu) const;
+  double condense_seconds() const { return seconds_; }
+
+ private:
+  Eigen::MatrixXd L_;   ///< Cholesky factor of M (lower)
+  Eigen::MatrixXd Bt_;  ///< B^T on the contact DOFs (|c| x m), dense
+  Eigen::MatrixXd W_;
+  Eigen::VectorXd d_;
+  double seconds_ = 0.0;
+};
+
+}  // namespace cs::solver

@@ -1,0 +1,105 @@
+#pragma once
+// The linearized contact constraints of one contact pair, as every discretization produces them
+// and every algorithm consumes them:
+//
+//   g = g0 + B u   (one row per constraint; u the global displacement vector, DOF 2 n + c),
+//
+// with g >= 0 open, lambda >= 0 the compressive contact force of a row (force per unit thickness
+// in plane strain, per radian in axisymmetry), work lambda . g, and the force on the DOFs B^T
+// lambda. Each row carries a tributary weight w > 0 (length, or r-weighted length per radian):
+//   - the contact pressure of a row is lambda / w;
+//   - its penalty stiffness scale is (E / h) w, E the host element's Young's modulus and h the
+//     underlying element depth (see solver/contact/contact_surface.hpp), so that a penalty
+//     FKN (E / h) w turns a penetration d into the pressure FKN E d / h;
+//   - its underlying element depth h scales the pinball and the AL tolerance FTOLN.
+//
+// Nodal rows (node-to-surface, mortar, and surface-to-surface with Lagrange multipliers or MPC)
+// have one row per contact node; Gauss-point rows (surface-to-surface with penalty or augmented
+// Lagrangian) one row per Gauss point of each contact segment.
+
+#include <array>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
+
+#include "solver/contact/contact_surface.hpp"
+#include "solver/contact/target.hpp"
+
+namespace cs::solver {
+
+/// A node of the contact surface and its tributary measures.
+struct ContactNode {
+  int node = -1;                    ///< mesh node index
+  Eigen::Vector2d position;         ///< reference position
+  double weight_w = 0.0;            ///< consistent tributary measure: int N_a (r) ds
+  double weight_abs = 0.0;          ///< int |N_a| (r) ds > 0 (differs from w at Q8 corners)
+  double depth_h = 0.0;             ///< underlying element depth, averaged with |N_a| (r) ds
+  double stiffness_per_area = 0.0;  ///< E / h, averaged with |N_a| (r) ds
+  /// A node whose consistent weight vanishes (the corner node on the axis of an axisymmetric Q8
+  /// surface: int N_a r ds = 0) carries no consistent force, so lambda / w says nothing about
+  /// its pressure; results then report the pressure of this neighbour (the adjacent mid-side
+  /// node), else -1.
+  int pressure_neighbour = -1;
+  /// True if weight_w is too small (< 1/4 of weight_abs) to convert a force into a pressure.
+  bool degenerate() const { return !(weight_w > 0.25 * weight_abs); }
+};
+
+/// What one constraint row stands for.
+struct ContactConstraint {
+  Eigen::Vector2d position;  ///< contact point (node or Gauss point), reference position
+  int node = -1;             ///< index into ConstraintSet::nodes of a nodal row, -1 otherwise
+  /// The contact nodes a row's force goes to and their shares (N_a at a Gauss point; a nodal
+  /// row gives its whole force to its node): nodal force F_a = sum over rows of share x lambda.
+  int n_shares = 0;
+  std::array<int, 3> share_nodes{-1, -1, -1};  ///< indices into ConstraintSet::nodes
+  std::array<double, 3> shares{};
+  double weight_w = 0.0;             ///< tributary weight > 0: pressure = lambda / w
+  double stiffness_per_area = 0.0;   ///< E / h of the host element(s)
+  double depth_h = 0.0;              ///< underlying element depth
+  Eigen::Vector2d normal{0.0, 1.0};  ///< target normal (averaged over a weighted row)
+  /// The penalty stiffness scale (E / h) w (force / length): FKN times it is the penalty.
+  double stiffness_scale() const { return stiffness_per_area * weight_w; }
+};
+
+/// The linearized constraints g = g0 + B u of a contact pair.
+struct ConstraintSet {
+  std::vector<ContactNode> nodes;       ///< the contact surface's nodes, by mesh node index
+  std::vector<ContactConstraint> rows;  ///< one per constraint
+  Eigen::SparseMatrix<double, Eigen::RowMajor> B;  ///< rows x global DOFs (2 n_nodes)
+  Eigen::VectorXd g0;                              ///< reference-configuration gaps
+  bool nodal = true;  ///< one row per contact node (else one per Gauss point)
+  /// True when a row's pressure is its multiplier coefficient lambda / w (weighted rows), false
+  /// when it is a nodal force over the node's tributary weight (collocated or Gauss rows).
+  bool weighted = false;
+  int n_rows() const { return static_cast<int>(rows.size()); }
+};
+
+/// The nodes of `surface` with their tributary measures (Gauss quadrature of each segment).
+std::vector<ContactNode> contact_nodes(const ContactSurface& surface);
+
+/// The index of mesh node `node` in `nodes` (sorted by node), or -1.
+int find_contact_node(const std::vector<ContactNode>& nodes, int node);
+
+/// Accumulates the triplets of `scale` x the linearized gap of a contact point: +scale n N_b on
+/// the contact-side nodes `slave_nodes` (shape values `slave_N`), -scale n N_i on the target's
+/// nodes of `tp`. `row` is the row index.
+void add_gap_triplets(int row, double scale, const TargetPoint& tp, int n_slave,
+                      const std::array<int, 3>& slave_nodes, const std::array<double, 3>& slave_N,
+                      std::vector<Eigen::Triplet<double>>& triplets);
+
+/// Builds B (rows x n_dofs) from triplets, summing duplicates.
+Eigen::SparseMatrix<double, Eigen::RowMajor> assemble_rows(
+    int n_rows, int n_dofs, const std::vector<Eigen::Triplet<double>>& triplets);
+
+/// Weighted-gap rows: for every contact node a, g_a = (int N_a g (r) ds) / w_a, integrated over
+/// each segment cut at the parameters `cuts(k)` (sorted, inside (-1, 1)) with `points` Gauss
+/// points per piece. Mortar cuts at the target's nodes and kinks; surface-to-surface does not
+/// cut. The row's weight w_a is the node's consistent weight (its |N_a| weight if degenerate).
+ConstraintSet weighted_gap_constraints(const ContactSurface& surface, const ContactTarget& target,
+                                       int n_dofs, int points,
+                                       const std::function<std::vector<double>(int)>& cuts);
+
+}  // namespace cs::solver

@@ -1,0 +1,110 @@
+#pragma once
+// A frictionless contact analysis: one model, one contact pair, any number of settings.
+//
+// Usage (a suite problem):
+//   Model model = ...;                          // mesh with edge sets, materials, BCs, loads
+//   LinearStaticAnalysis elastic(model);        // the FE core: DOF map, assembly
+//   ContactAnalysis contact(elastic, {"block.top", TargetSurface{"indenter.bottom"}});
+//   //   or a rigid target: {"block.top", RigidCircle{{0.0, -R}, R}}
+//   ContactSettings s;                          // discretization, algorithm, FKN, FTOLN, pinball
+//   s.discretization = ContactDiscretization::SurfaceToSurface;
+//   s.algorithm = ContactAlgorithm::LagrangeMultiplier;
+//   ContactResult r = contact.solve(s);         // status, per-node pressure, displacement
+//   if (r.converged()) stresses = recover_stresses(model, r.displacement);
+//
+// What is shared between solves of one ContactAnalysis: the assembled stiffness and load (the
+// FE core's); the constraint rows of each row kind (ns; ss Gauss points for PM/AL; ss nodal
+// weighted gaps for LM/MPC; mortar); per pinball, ONE sparse factorization: the condensation
+// onto the contact DOFs that any row kind's candidates touch; per row kind and pinball, the
+// small dense condensation onto its rows. Changing the discretization, the algorithm, FKN,
+// FTOLN or the iteration caps reuses the factorization.
+//
+// Data flow of solve(): rows g = g0 + B u (discretization) -> candidates (|g0| <= pinball h)
+// -> condensation onto the contact DOFs, then onto the candidate rows (condensation.hpp) ->
+// algorithm (one switch) -> displacement recovery -> per-node results. Rows outside the pinball
+// never act; if one of them ends up penetrating, the result is NotConverged (ContactBeyondPinball)
+// rather than silently wrong (except for MPC, which by definition ignores them).
+
+#include <map>
+#include <memory>
+#include <string>
+#include <tuple>
+#include <utility>
+#include <vector>
+
+#include "solver/contact/condensation.hpp"
+#include "solver/contact/constraint_set.hpp"
+#include "solver/contact/contact_options.hpp"
+#include "solver/contact/contact_result.hpp"
+#include "solver/contact/contact_surface.hpp"
+#include "solver/contact/target.hpp"
+#include "solver/linear_static.hpp"
+
+namespace cs::solver {
+
+/// The contact pair of a model: the contact surface of a deformable body (the study's contact
+/// elements' side, e.g. the indented block's top edge set) and its target.
+struct ContactPair {
+  std::string contact_surface;  ///< edge set name, e.g. "block.top"
+  TargetSpec target;            ///< TargetSurface{"indenter.bottom"} or a RigidProfile
+};
+
+/// The constraint rows a discretization and algorithm use (what the condensation depends on).
+enum class ConstraintRows {
+  NodeToSurface,      ///< ns, every algorithm
+  GaussPoints,        ///< ss with PM / AL
+  NodalWeightedGaps,  ///< ss with LM / MPC
+  Mortar,             ///< mortar, every algorithm
+};
+
+/// The rows `settings` select.
+ConstraintRows constraint_rows(const ContactSettings& settings);
+
+class ContactAnalysis {
+ public:
+  /// Builds the contact surface and the target on `elastic.model()`. Throws ContactError for an
+  /// unknown or empty contact surface or target edge set, or an invalid rigid profile.
+  /// `elastic` must outlive this object; it is assembled on the first solve if it is not yet.
+  ContactAnalysis(LinearStaticAnalysis& elastic, ContactPair pair);
+  ~ContactAnalysis();
+
+  /// Runs one contact analysis. Throws ContactError for invalid settings or a target that no
+  /// contact point comes within the pinball of; a failure to converge is a status.
+  /// Changed loads or prescribed displacement values of the model (elastic.update_prescribed_
+  /// values()) are picked up at the cost of one forward solve; a changed stiffness (materials,
+  /// coordinates) needs a new ContactAnalysis.
+  ContactResult solve(const ContactSettings& settings);
+
+  const ContactSurface& surface() const { return surface_; }
+  const ContactTarget& target() const { return target_; }
+  /// The constraint rows of a kind (built on first use).
+  const ConstraintSet& constraints(ConstraintRows rows);
+
+ private:
+  struct DofStage;
+  struct RowStage;
+  DofStage& dof_stage(double pinball, CondensationMethod method, ContactResult& result);
+  RowStage& row_stage(ConstraintRows rows, double pinball, CondensationMethod method,
+                      ContactResult& result);
+  /// Picks up changed loads and prescribed values (see solve()).
+  void refresh_loads();
+  /// Rows of `set` within the pinball (|g0 + B u_prescribed| <= pinball h).
+  std::vector<int> candidates(const ConstraintSet& set, double pinball) const;
+
+  LinearStaticAnalysis& elastic_;
+  ContactPair pair_;
+  ContactSurface surface_;
+  ContactTarget target_;
+  std::map<ConstraintRows, ConstraintSet> constraints_;
+  std::map<std::pair<double, CondensationMethod>, std::unique_ptr<DofStage>> dof_stages_;
+  std::map<std::tuple<ConstraintRows, double, CondensationMethod>, std::unique_ptr<RowStage>>
+      row_stages_;
+  Eigen::VectorXd load_f_;      ///< the reduced load f_f the stages were computed for
+  Eigen::VectorXd prescribed_;  ///< the prescribed values the stages were computed for
+};
+
+/// One-shot convenience: builds the FE core's analysis and a ContactAnalysis and solves once.
+ContactResult solve_contact(const Model& model, const ContactPair& pair,
+                            const ContactSettings& settings);
+
+}  // namespace cs::solver

@@ -1,0 +1,115 @@
+#pragma once
+// The result of a contact analysis: status, per-node contact quantities, iteration counts,
+// timings and the full displacement vector (for the FE core's stress recovery).
+//
+// Units: positions and gaps in length; pressures in force / area (positive in compression);
+// in axisymmetry forces are per radian but pressures are true pressures.
+
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "solver/contact/contact_options.hpp"
+
+namespace cs::solver {
+
+/// Whether the contact solution is the solution of the discrete contact problem.
+enum class ContactStatus {
+  Converged,     ///< the algorithm's conditions hold to the tolerance
+  NotConverged,  ///< see ContactFailure and the reason; values are the last iterate (if any)
+};
+
+/// Why a contact analysis did not converge.
+enum class ContactFailure {
+  None,                  ///< converged
+  IterationLimit,        ///< the active-set iteration cap was reached
+  Cycling,               ///< an active set repeated an earlier one
+  AugmentationLimit,     ///< AL: the augmentation cap was reached with penetration > FTOLN h
+  SingularSystem,        ///< a linear system was singular (a body held by nothing)
+  NonFinite,             ///< a NaN or infinity appeared
+  ContactBeyondPinball,  ///< a point outside the pinball penetrates the target
+};
+
+/// "converged" or "not converged".
+constexpr const char* to_string(ContactStatus s) {
+  return s == ContactStatus::Converged ? "converged" : "not converged";
+}
+
+/// "none", "iteration limit", "cycling", ...
+constexpr const char* to_string(ContactFailure f) {
+  switch (f) {
+    case ContactFailure::None:
+      return "none";
+    case ContactFailure::IterationLimit:
+      return "iteration limit";
+    case ContactFailure::Cycling:
+      return "cycling";
+    case ContactFailure::AugmentationLimit:
+      return "augmentation limit";
+    case ContactFailure::SingularSystem:
+      return "singular system";
+    case ContactFailure::NonFinite:
+      return "non-finite values";
+    case ContactFailure::ContactBeyondPinball:
+      return "contact beyond the pinball";
+  }
+  return "unknown";
+}
+
+/// The contact state of one node of the contact surface.
+struct ContactNodeResult {
+  int node = -1;             ///< mesh node index
+  Eigen::Vector2d position;  ///< reference position (x|r, z)
+  double gap = 0.0;          ///< normal gap, > 0 open, < 0 penetrating (mortar: weighted)
+  double penetration = 0.0;  ///< max(0, -gap)
+  double pressure = 0.0;     ///< contact pressure, > 0 compressive
+  bool closed = false;       ///< in contact (its constraint active / tied)
+  bool candidate = false;    ///< within the pinball at the start
+};
+
+/// Wall-clock seconds of a contact analysis' phases.
+struct ContactTimings {
+  double constraints_s = 0.0;   ///< projections, constraint rows (shared between settings)
+  double condensation_s = 0.0;  ///< regularized matrix, ordering, factorization, W and d
+  double analyze_s = 0.0;       ///<   of which: fill-reducing ordering, symbolic analysis
+  double factorize_s = 0.0;     ///<   of which: numeric factorization
+  double condense_s = 0.0;      ///<   of which: W and d from the factor (dense BLAS-3)
+  double iterations_s = 0.0;    ///< active-set iterations and augmentations
+  double recovery_s = 0.0;      ///< displacement recovery and results
+  double total_s = 0.0;         ///< everything this solve did (shared phases counted once)
+  /// The sparse factorization (the condensation onto the contact DOFs) came from an earlier
+  /// solve of the same ContactAnalysis (any discretization or algorithm, same pinball).
+  bool condensation_reused = false;
+};
+
+/// The result of one contact analysis.
+struct ContactResult {
+  ContactStatus status = ContactStatus::NotConverged;
+  ContactFailure failure = ContactFailure::None;
+  std::string reason;     ///< one line, empty when converged
+  double residual = 0.0;  ///< last relative complementarity residual
+
+  ContactSettings settings;       ///< what was run
+  int active_set_iterations = 0;  ///< linear solves of the condensed problem
+  int augmentations = 0;          ///< AL multiplier updates
+  int n_constraints = 0;          ///< constraint rows (nodes or Gauss points)
+  int n_candidates = 0;           ///< rows within the pinball
+  int n_contact_dofs = 0;         ///< DOFs touched by the candidate rows (condensed block)
+
+  /// Per contact-surface node, sorted by position (x|r, then z).
+  std::vector<ContactNodeResult> nodes;
+  /// The largest x|r coordinate of a closed node (0 if none is closed).
+  double contact_extent = 0.0;
+  /// The largest contact pressure over the nodes (0 if none).
+  double peak_pressure = 0.0;
+
+  ContactTimings timings;
+  /// Global displacement (2 n_nodes, DOF 2 n + c), prescribed values included. Empty when no
+  /// finite solution was obtained.
+  Eigen::VectorXd displacement;
+
+  bool converged() const { return status == ContactStatus::Converged; }
+};
+
+}  // namespace cs::solver

@@ -1,0 +1,113 @@
+#include "solver/contact/target.hpp"
+
+#include <cmath>
+#include <limits>
+
+#include <fmt/format.h>
+
+#include "solver/contact/contact_error.hpp"
+
+namespace cs::solver {
+
+namespace {
+
+template <class... Ts>
+struct Overloaded : Ts... {
+  using Ts::operator()...;
+};
+template <class... Ts>
+Overloaded(Ts...) -> Overloaded<Ts...>;
+
+TargetPoint project_on_surface(const ContactSurface& surface, const Eigen::Vector2d& x) {
+  int best = -1;
+  double best_t = 0.0;
+  double best_distance = std::numeric_limits<double>::infinity();
+  for (int k = 0; k < surface.n_segments(); ++k) {
+    // The node box bounds a straight segment; a curved Q8 side bulges by a fraction of its
+    // depth at most, so a generous margin keeps the pruning safe.
+    if (surface.box_distance(k, x) > best_distance + 0.5 * surface.segment(k).depth_h)
+      continue;
+    const double t = surface.closest_parameter(k, x);
+    const double distance = (x - surface.point(k, t)).norm();
+    // Prefer an interior projection to an equally distant segment end (shared corner).
+    const bool interior = std::abs(t) < 1.0;
+    if (distance < best_distance ||
+        (distance == best_distance && interior && std::abs(best_t) >= 1.0)) {
+      best = k;
+      best_t = t;
+      best_distance = distance;
+    }
+  }
+  TargetPoint out;
+  const Eigen::Vector2d xm = surface.point(best, best_t);
+  const Eigen::Vector2d n_segment = surface.normal(best, best_t);
+  const Eigen::Vector2d diff = x - xm;
+  const double scale = surface.segment(best).depth_h;
+  if (std::abs(best_t) < 1.0 || diff.norm() <= 1e-12 * scale) {
+    out.gap = diff.dot(n_segment);
+    out.normal = n_segment;
+  } else {  // closest to a segment end: the normal is the direction from that node
+    const double sign = diff.dot(n_segment) < 0.0 ? -1.0 : 1.0;
+    out.gap = sign * diff.norm();
+    out.normal = sign * diff.normalized();
+  }
+  out.closest = xm;
+  const ContactSegment& seg = surface.segment(best);
+  const SideShapeValues sv = surface.shape(best, best_t);
+  out.n_master = seg.n_nodes;
+  for (int a = 0; a < seg.n_nodes; ++a) {
+    out.master_nodes[a] = seg.nodes[a];
+    out.master_weights[a] = sv.N[a];
+  }
+  return out;
+}
+
+}  // namespace
+
+ContactTarget make_target(const Model& model, const TargetSpec& spec) {
+  return std::visit(Overloaded{
+                        [&](const TargetSurface& s) -> ContactTarget {
+                          return MeshedTarget{ContactSurface(model, s.edge_set, "target surface")};
+                        },
+                        [&](const RigidProfile& p) -> ContactTarget {
+                          validate(p);
+                          return p;
+                        },
+                    },
+                    spec);
+}
+
+TargetPoint project(const ContactTarget& target, const Eigen::Vector2d& x) {
+  return std::visit(Overloaded{
+                        [&](const MeshedTarget& m) { return project_on_surface(m.surface, x); },
+                        [&](const RigidProfile& p) {
+                          const ProfilePoint pp = closest_point(p, x);
+                          TargetPoint out;
+                          out.gap = pp.gap;
+                          out.normal = pp.normal;
+                          out.closest = pp.closest;
+                          return out;
+                        },
+                    },
+                    target);
+}
+
+std::vector<Eigen::Vector2d> target_breakpoints(const ContactTarget& target) {
+  return std::visit(Overloaded{
+                        [](const MeshedTarget& m) { return m.surface.node_positions(); },
+                        [](const RigidProfile& p) { return profile_kinks(p); },
+                    },
+                    target);
+}
+
+std::string describe(const ContactTarget& target) {
+  return std::visit(Overloaded{
+                        [](const MeshedTarget& m) {
+                          return fmt::format("target surface '{}'", m.surface.name());
+                        },
+                        [](const RigidProfile& p) { return describe(p); },
+                    },
+                    target);
+}
+
+}  // namespace cs::solver

@@ -1,0 +1,255 @@
+#include "solver/stress_recovery.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <unordered_map>
+
+#include <fmt/format.h>
+#include <Eigen/LU>
+
+#include "solver/elements/element_stiffness.hpp"
+#include "solver/elements/gauss_rule.hpp"
+#include "solver/surface_path.hpp"
+
+namespace cs::solver {
+namespace {
+
+/// Monomials of the exact fit through an n x n Gauss grid: n = 2 bilinear, n = 3 biquadratic.
+Eigen::VectorXd fit_basis(int n, const Eigen::Vector2d& p) {
+  Eigen::VectorXd b(n * n);
+  int k = 0;
+  for (int j = 0; j < n; ++j) {
+    for (int i = 0; i < n; ++i)
+      b[k++] = std::pow(p.x(), i) * std::pow(p.y(), j);
+  }
+  return b;
+}
+
+/// Extrapolation matrix E (n_nodes x n_points): nodal = E * (values at the n x n Gauss points).
+Eigen::MatrixXd extrapolation_matrix(ElementType type, int n) {
+  const GaussRule2D& rule = gauss_rule_2d(n);
+  const int m = rule.size();
+  Eigen::MatrixXd A(m, m);  // A(q, k) = basis_k(point q)
+  for (int q = 0; q < m; ++q)
+    A.row(q) = fit_basis(n, rule.points[q]).transpose();
+  const int nen = nodes_per_element(type);
+  Eigen::MatrixXd P(nen, m);  // P(a, k) = basis_k(node a)
+  for (int a = 0; a < nen; ++a) {
+    P.row(a) = fit_basis(n, node_natural_coordinates(type, a)).transpose();
+  }
+  return P * A.inverse();
+}
+
+int sampling_points(ElementType type, Q8Extrapolation rule) {
+  if (type == ElementType::Q4)
+    return 2;
+  return rule == Q8Extrapolation::Full3x3 ? 3 : 2;
+}
+
+ElementVector element_displacements(const Mesh& mesh, int e, const Eigen::VectorXd& u) {
+  const int nen = mesh.n_element_nodes();
+  ElementVector u_e(2 * nen);
+  for (int a = 0; a < nen; ++a) {
+    u_e(2 * a) = u[2 * mesh.elements[e][a]];
+    u_e(2 * a + 1) = u[2 * mesh.elements[e][a] + 1];
+  }
+  return u_e;
+}
+
+}  // namespace
+
+const char* to_string(StressRecoveryMethod method) {
+  return method == StressRecoveryMethod::GaussPoint ? "Gauss point" : "extrapolated, averaged";
+}
+
+const char* to_string(Q8Extrapolation rule) {
+  return rule == Q8Extrapolation::Full3x3 ? "3x3" : "2x2";
+}
+
+bool StressField::has_node(int node, int body) const {
+  return body >= 0 && body < static_cast<int>(nodal_count.size()) && node >= 0 &&
+         node < static_cast<int>(nodal_count[body].size()) && nodal_count[body][node] > 0;
+}
+
+const Stress& StressField::at_node(int node, int body) const {
+  if (!has_node(node, body)) {
+    throw std::out_of_range(fmt::format("no nodal stress of node {} in body {} (method: {})", node,
+                                        body, to_string(method)));
+  }
+  return nodal[body][node];
+}
+
+const Stress& StressField::at_node(int node) const {
+  int found = -1;
+  for (int b = 0; b < static_cast<int>(nodal_count.size()); ++b) {
+    if (!has_node(node, b))
+      continue;
+    if (found >= 0) {
+      throw std::out_of_range(fmt::format(
+          "node {} belongs to bodies {} and {}: ask for the stress of one body", node, found, b));
+    }
+    found = b;
+  }
+  return at_node(node, found);
+}
+
+StressField recover_stresses(const Model& model, const Eigen::VectorXd& u,
+                             const StressRecoveryOptions& options) {
+  const Mesh& mesh = model.mesh;
+  if (u.size() != 2 * mesh.n_nodes()) {
+    throw std::invalid_argument(
+        fmt::format("recover_stresses: displacement has {} entries for "
+                    "{} nodes",
+                    u.size(), mesh.n_nodes()));
+  }
+  StressField field;
+  field.method = options.method;
+  field.q8_extrapolation = options.q8_extrapolation;
+
+  std::vector<Eigen::Matrix4d> D(model.materials.size());
+  for (std::size_t b = 0; b < D.size(); ++b)
+    D[b] = elasticity_matrix(model.materials[b]);
+
+  const bool gauss = options.method == StressRecoveryMethod::GaussPoint;
+  const int n =
+      gauss ? model.element_points() : sampling_points(mesh.type, options.q8_extrapolation);
+  const GaussRule2D& rule = gauss_rule_2d(n);
+  const int nen = mesh.n_element_nodes();
+  Eigen::MatrixXd E;
+  if (!gauss) {
+    E = extrapolation_matrix(mesh.type, n);
+    field.nodal.assign(model.n_bodies(), std::vector<Stress>(mesh.n_nodes()));
+    field.nodal_count.assign(model.n_bodies(), std::vector<int>(mesh.n_nodes(), 0));
+  } else {
+    field.gauss_points.reserve(static_cast<std::size_t>(mesh.n_elements()) * rule.size());
+  }
+
+  Eigen::MatrixXd sampled(rule.size(), 4);
+  for (int e = 0; e < mesh.n_elements(); ++e) {
+    const int body = mesh.element_body[e];
+    const ElementGeometry g = element_geometry(mesh, model.analysis, e);
+    const ElementVector u_e = element_displacements(mesh, e, u);
+    for (int q = 0; q < rule.size(); ++q) {
+      const PointKinematics k = point_kinematics(g, rule.points[q]);
+      const Eigen::Vector4d sigma = D[body] * (k.B * u_e);
+      if (gauss) {
+        field.gauss_points.push_back({e, body, rule.points[q], k.position, Stress::from(sigma)});
+      } else {
+        sampled.row(q) = sigma.transpose();
+      }
+    }
+    if (gauss)
+      continue;
+    const Eigen::MatrixXd at_nodes = E * sampled;  // nen x 4
+    for (int a = 0; a < nen; ++a) {
+      const int node = mesh.elements[e][a];
+      Stress& s = field.nodal[body][node];
+      s = Stress::from(s.vector() + at_nodes.row(a).transpose());
+      ++field.nodal_count[body][node];
+    }
+  }
+  if (!gauss) {
+    for (int b = 0; b < model.n_bodies(); ++b) {
+      for (int node = 0; node < mesh.n_nodes(); ++node) {
+        const int count = field.nodal_count[b][node];
+        if (count > 1)
+          field.nodal[b][node] = Stress::from(field.nodal[b][node].vector() / count);
+      }
+    }
+  }
+  return field;
+}
+
+namespace {
+
+/// Side coordinate t in [-1, 1] of the natural point p on side s's coordinate line.
+double side_coordinate(int side, const Eigen::Vector2d& p) {
+  switch (side) {
+    case 0:
+      return p.x();
+    case 1:
+      return p.y();
+    case 2:
+      return -p.x();
+    default:
+      return -p.y();
+  }
+}
+
+/// Distance in natural coordinates of p from side s (0 on the side).
+double distance_from_side(int side, const Eigen::Vector2d& p) {
+  switch (side) {
+    case 0:
+      return p.y() + 1.0;
+    case 1:
+      return 1.0 - p.x();
+    case 2:
+      return 1.0 - p.y();
+    default:
+      return p.x() + 1.0;
+  }
+}
+
+}  // namespace
+
+std::vector<SurfaceStressSample> surface_stresses(const Model& model, const StressField& field,
+                                                  const std::string& edge_set) {
+  const Mesh& mesh = model.mesh;
+  const SurfacePath path = surface_path(mesh, edge_set);
+  std::vector<SurfaceStressSample> samples;
+
+  if (field.method == StressRecoveryMethod::ExtrapolatedAveraged) {
+    // The body of each node: that of the first side (in path order) containing it.
+    std::unordered_map<int, std::pair<int, int>> owner;  // node -> (element, body)
+    for (const ElementSide& s : path.sides) {
+      for (int n : mesh.side_nodes(s)) {
+        if (n >= 0)
+          owner.try_emplace(n, s.element, mesh.element_body[s.element]);
+      }
+    }
+    for (std::size_t i = 0; i < path.nodes.size(); ++i) {
+      const int node = path.nodes[i];
+      const auto [element, body] = owner.at(node);
+      samples.push_back(
+          {node, element, body, path.positions[i], path.arc_length[i], field.at_node(node, body)});
+    }
+    return samples;
+  }
+
+  // GaussPoint: the row of Gauss points nearest each side.
+  std::vector<int> first(mesh.n_elements() + 1, -1);
+  for (int i = static_cast<int>(field.gauss_points.size()) - 1; i >= 0; --i) {
+    first[field.gauss_points[i].element] = i;
+  }
+  for (std::size_t k = 0; k < path.sides.size(); ++k) {
+    const ElementSide& s = path.sides[k];
+    const int begin = first[s.element];
+    if (begin < 0)
+      continue;
+    int end = begin;
+    while (end < static_cast<int>(field.gauss_points.size()) &&
+           field.gauss_points[end].element == s.element) {
+      ++end;
+    }
+    double nearest = 1e300;
+    for (int i = begin; i < end; ++i) {
+      nearest = std::min(nearest, distance_from_side(s.side, field.gauss_points[i].natural));
+    }
+    for (int i = begin; i < end; ++i) {
+      const GaussPointStress& gp = field.gauss_points[i];
+      if (distance_from_side(s.side, gp.natural) > nearest + 1e-12)
+        continue;
+      double t = side_coordinate(s.side, gp.natural);
+      if (path.reversed[k])
+        t = -t;
+      const double arc = path.side_start[k] + 0.5 * (t + 1.0) * path.side_length[k];
+      samples.push_back({-1, gp.element, gp.body, gp.position, arc, gp.stress});
+    }
+  }
+  std::stable_sort(samples.begin(), samples.end(),
+                   [](const auto& a, const auto& b) { return a.arc_length < b.arc_length; });
+  return samples;
+}
+
+}  // namespace cs::solver

@@ -1,0 +1,57 @@
+#pragma once
+// Runs the cases of one group on one built model: the problem is built and assembled once,
+// and each case (algorithm, contact discretization, contact settings) is a contact solve on
+// the shared ContactAnalysis, which in turn shares constraint rows and condensations.
+
+#include <memory>
+#include <optional>
+#include <string>
+
+#include <Eigen/Core>
+
+#include "solver/contact/contact_analysis.hpp"
+#include "solver/linear_static.hpp"
+#include "solver/stress_recovery.hpp"
+#include "suites/problem_setup.hpp"
+#include "suites/runner.hpp"
+
+namespace cs::suites {
+
+/// The solver settings a case selects: the study's algorithm and discretization names mapped
+/// to the solver's (LMP and PLM both to the Lagrange multiplier method), with FKN, FTOLN and
+/// the pinball from the case's parameters.
+solver::ContactSettings contact_settings(const CaseSpec& spec);
+
+class ProblemExecutor final : public GroupExecutor {
+ public:
+  /// Builds the problem of `representative` and its elastic analysis (not yet assembled).
+  explicit ProblemExecutor(const CaseSpec& representative);
+  ~ProblemExecutor() override;
+
+  CaseResult run(const CaseSpec& spec) override;
+
+  /// The setup the cases run on.
+  const ProblemSetup& setup() const { return *setup_; }
+  /// The displacement of the last case run (empty if it produced none).
+  const Eigen::VectorXd& last_displacement() const { return last_u_; }
+  /// The nodal stresses of the last case run, if any.
+  const std::optional<solver::StressField>& last_stresses() const { return last_stresses_; }
+  /// Writes the model with the displacement and nodal stresses of the last case run as a
+  /// .vtu file (atomically). Throws std::runtime_error if the last case produced no values.
+  void write_vtu(const std::string& path) const;
+
+ private:
+  solver::ContactResult solve_with_load_control(const solver::ContactSettings& settings);
+  double support_reaction(const Eigen::VectorXd& u) const;
+
+  std::unique_ptr<ProblemSetup> setup_;  // stable address: the analyses keep references to it
+  std::unique_ptr<solver::LinearStaticAnalysis> elastic_;
+  std::unique_ptr<solver::ContactAnalysis> contact_;
+  Eigen::VectorXd last_u_;
+  std::optional<solver::StressField> last_stresses_;
+};
+
+/// The factory the runner uses.
+std::unique_ptr<GroupExecutor> make_problem_executor(const CaseSpec& representative);
+
+}  // namespace cs::suites

@@ -1,0 +1,21 @@
+#pragma once
+// The builders of the study's problems, one file per family (patch test, Hertz, Steuermann,
+// flat punch), and the pieces they share.
+
+#include "suites/problem_setup.hpp"
+
+namespace cs::suites::problems {
+
+ProblemSetup build_patch_test(const CaseSpec& spec, const Parameters& params);
+ProblemSetup build_hertz(const CaseSpec& spec, const Parameters& params);
+ProblemSetup build_steuermann(const CaseSpec& spec, const Parameters& params);
+ProblemSetup build_flat_punch(const CaseSpec& spec, const Parameters& params);
+
+/// The common start of every problem: the study mesh, the analysis type, the two materials
+/// (block E = 1 / (p/E), indenter E_ratio times stiffer, both with nu), symmetry (u_x = 0) on
+/// both bodies' x = 0 edges. With a rigid target the indenter's nodes are all fixed (it takes
+/// no part) and the pair's target is `rigid`; otherwise the target is the indenter's surface.
+ProblemSetup start_setup(const CaseSpec& spec, const Parameters& params,
+                         const StudyMeshSpec& mesh_spec, const solver::RigidProfile& rigid);
+
+}  // namespace cs::suites::problems

@@ -1,0 +1,114 @@
+#pragma once
+// Shared helpers of the reports tests: the hand-made results file (data/small_results.json,
+// written by data/make_small_results.py), the study data of the source tree, a temporary
+// directory, and an edit of one value that keeps the case record and its row consistent.
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "reports/results_file.hpp"
+#include "reports/results_index.hpp"
+#include "reports/study_reference.hpp"
+
+namespace cs::reports::testing {
+
+inline std::filesystem::path source_dir() {
+  return CONTACT_SUITE_SOURCE_DIR;
+}
+inline std::filesystem::path sample_path() {
+  return source_dir() / "tests" / "reports" / "data" / "small_results.json";
+}
+inline std::filesystem::path study_dir() {
+  return source_dir() / "data" / "study";
+}
+
+inline nlohmann::json sample_json() {
+  std::ifstream in(sample_path());
+  return nlohmann::json::parse(in);
+}
+
+inline const StudyReference& study() {
+  static const StudyReference s = load_study_reference(study_dir());
+  return s;
+}
+
+/// A loaded results file and its index, kept together (the index references the file).
+struct Loaded {
+  explicit Loaded(const nlohmann::json& doc)
+      : file(parse_results_document(doc, "test")), index(file) {}
+  ResultsFile file;
+  ResultsIndex index;
+};
+
+/// A fresh temporary directory, removed at the end of the test.
+class TempDir {
+ public:
+  TempDir() {
+    std::string pattern =
+        (std::filesystem::temp_directory_path() / "cs-reports-test-XXXXXX").string();
+    if (mkdtemp(pattern.data()) == nullptr)
+      throw std::runtime_error("mkdtemp failed");
+    path_ = pattern;
+  }
+  ~TempDir() {
+    std::error_code ec;
+    std::filesystem::remove_all(path_, ec);
+  }
+  const std::filesystem::path& path() const { return path_; }
+
+ private:
+  std::filesystem::path path_;
+};
+
+inline std::string read_text(const std::filesystem::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+inline void write_text(const std::filesystem::path& p, const std::string& text) {
+  std::ofstream(p, std::ios::binary) << text;
+}
+
+inline std::string eq46(double error_percent) {
+  const double e = std::abs(error_percent);
+  return e < 1 ? "e" : e < 5 ? "g" : e < 10 ? "s" : "u";
+}
+
+/// Sets the value of `quantity` in case `case_id` (nonsingular) and updates the error and
+/// grade of the case and the values, errors and (fine-mesh) grade of its row. The row's
+/// converging flag is left as it is: tests that depend on it set it themselves.
+inline void set_value(nlohmann::json& doc, const std::string& case_id, const std::string& quantity,
+                      double value) {
+  for (auto& c : doc["cases"]) {
+    if (c["id"] != case_id)
+      continue;
+    auto& q = c["quantities"][quantity];
+    const double exact = q["exact"].get<double>();
+    const double err = 100 * (value - exact) / std::abs(exact);
+    q["value"] = value;
+    q["error_percent"] = err;
+    q["grade"] = eq46(err);
+    const std::string mesh = c["mesh"];
+    const std::string row_id = case_key_of(case_id) + "/" + quantity;
+    for (auto& r : doc["rows"]) {
+      if (r["id"] != row_id)
+        continue;
+      r["values"][mesh] = value;
+      r["error_percent"][mesh] = err;
+      if (r["graded_mesh"] == mesh)
+        r["grade"] = eq46(err);
+    }
+    return;
+  }
+  ADD_FAILURE() << "no case " << case_id;
+}
+
+}  // namespace cs::reports::testing

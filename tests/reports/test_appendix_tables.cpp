@@ -1,0 +1,122 @@
+// Appendix tables (the study's Tables 3-14 layout): our value and error beside the study's
+// printed ANSYS value, exact values above each group, missing and failed cases marked.
+
+#include <algorithm>
+
+#include <gtest/gtest.h>
+
+#include "report_test_support.hpp"
+#include "reports/appendix_tables.hpp"
+
+namespace cs::reports {
+namespace {
+
+using testing::Loaded;
+using testing::sample_json;
+using testing::study;
+
+const AppendixTable* find_table(const std::vector<AppendixTable>& tables,
+                                const std::string& problem, const std::string& quantity,
+                                const std::string& element, const std::string& contact) {
+  for (const auto& t : tables) {
+    if (t.problem == problem && t.quantity == quantity && t.element == element &&
+        t.contact == contact)
+      return &t;
+  }
+  return nullptr;
+}
+
+TEST(AppendixTables, OurValueBesideTheStudysValue) {
+  const Loaded data(sample_json());
+  const auto tables = build_appendix_tables(data.index, study());
+  const AppendixTable* t = find_table(tables, "H_p", "sigma_c", "Q4", "ss");
+  ASSERT_NE(t, nullptr);
+  // Ours 1.2730 against 4/pi = 1.27324: -0.02 %; the study's Table 7a F row: 1.2737.
+  EXPECT_EQ(t->cell("F", "AL = PM"), "1.2730 (−0.02 %)");
+  EXPECT_EQ(t->cell("F", "ANSYS AL, PM"), "1.2737");
+  EXPECT_EQ(t->cell("C", "ANSYS LMP, PLM"), "1.3124");
+  // MPC is the study's IMC; its fine case did not converge ("!").
+  EXPECT_EQ(t->cell("F", "MPC"), "1.5200 (+19.4 %)!");
+  EXPECT_EQ(t->cell("F", "ANSYS IMC"), "1.7387");
+  EXPECT_EQ(t->cell("M", "h"), "0.0625");
+  EXPECT_NE(t->title.find("the study's Table 7a"), std::string::npos);
+}
+
+TEST(AppendixTables, TheStudysEitherColumnsAndTheSurfaceToSurfaceTable) {
+  const Loaded data(sample_json());
+  const auto tables = build_appendix_tables(data.index, study());
+  // P_p ss: the study's AL, PM ss values are in the sentence above Table 3a (1.0000), its
+  // LMP, PLM column is "either node-to-surface or surface-to-surface" (Table 3a).
+  const AppendixTable* t = find_table(tables, "P_p", "sigma_z_max", "Q4", "ss");
+  ASSERT_NE(t, nullptr);
+  EXPECT_EQ(t->cell("F", "ANSYS AL, PM"), "1.0000");
+  EXPECT_EQ(t->cell("F", "LMP"), "1.0019 (+0.19 %)");
+  EXPECT_EQ(t->cell("F", "ANSYS LMP, PLM"), "1.0019");
+  EXPECT_EQ(t->cell("F", "ANSYS IMC"), "2.7767");
+  EXPECT_NE(t->title.find("3a"), std::string::npos);
+  EXPECT_NE(t->title.find("3text"), std::string::npos);
+}
+
+TEST(AppendixTables, MissingAndFailedCasesAreMarkedNotDropped) {
+  const Loaded data(sample_json());
+  const auto tables = build_appendix_tables(data.index, study());
+  const AppendixTable* t = find_table(tables, "H_p", "sigma_c", "Q8", "ss");
+  ASSERT_NE(t, nullptr);
+  ASSERT_EQ(t->rows.size(), 3u);  // C, M and F all shown
+  EXPECT_EQ(t->cell("F", "AL"), "—");
+  EXPECT_EQ(t->cell("F", "PM"), "failed");
+  EXPECT_EQ(t->cell("M", "AL"), "1.2810 (+0.61 %)");
+  EXPECT_EQ(t->cell("F", "ANSYS AL, PM"), "1.2761");
+  const bool noted = std::any_of(t->notes.begin(), t->notes.end(), [](const std::string& n) {
+    return n.find("not in this results file") != std::string::npos;
+  });
+  EXPECT_TRUE(noted);
+  // Problems not run have no table at all.
+  EXPECT_EQ(find_table(tables, "H_a", "sigma_c", "Q4", "ss"), nullptr);
+  // Mortar: ours only.
+  const AppendixTable* m = find_table(tables, "H_p", "sigma_c", "Q4", "mortar");
+  ASSERT_NE(m, nullptr);
+  EXPECT_EQ(std::count_if(m->columns.begin(), m->columns.end(),
+                          [](const std::string& c) { return c.rfind("ANSYS", 0) == 0; }),
+            0);
+  EXPECT_NE(m->title.find("not in the study"), std::string::npos);
+}
+
+TEST(AppendixTables, ExactValueLineShowsOursAndTheStudysPrintedValue) {
+  const Loaded data(sample_json());
+  const std::string s = exact_value_line(data.index, study(), "S_1_3", "sigma_c");
+  EXPECT_NE(s.find("11.2424"), std::string::npos) << s;
+  EXPECT_NE(s.find("the study printed 10.9571"), std::string::npos) << s;
+  const std::string h = exact_value_line(data.index, study(), "H_p", "sigma_c");
+  EXPECT_NE(h.find("1.2732"), std::string::npos) << h;
+  const std::string f = exact_value_line(data.index, study(), "F_p", "sigma_c_star");
+  EXPECT_NE(f.find("→ ∞"), std::string::npos) << f;
+}
+
+TEST(StudyReference, MapsOurOptionsOntoTheStudysKeys) {
+  const auto& s = study();
+  EXPECT_EQ(s.values().size(), 354u);
+  EXPECT_EQ(s.grades().size(), 80u);
+  // PM maps to AL_PM; ns AL, PM in Table 7b.
+  auto m = s.find_value("H_p", "sigma_c", "Q4", "PM", "ns", "F");
+  ASSERT_NE(m.value, nullptr);
+  EXPECT_EQ(m.value->printed, "1.4104");
+  EXPECT_EQ(m.value->table, "7b");
+  // Table 7d prints no LMP, PLM column ("same results as surface-to-surface"): Table 7c's.
+  m = s.find_value("H_p", "sigma_c", "Q8", "PLM", "ns", "F");
+  ASSERT_NE(m.value, nullptr);
+  EXPECT_TRUE(m.via_ss_note);
+  EXPECT_EQ(m.value->printed, "1.3121");
+  // MPC is the study's IMC.
+  m = s.find_value("F_a", "sigma_c_star", "Q8", "MPC", "ns", "F");
+  ASSERT_NE(m.value, nullptr);
+  EXPECT_EQ(m.value->printed, "2.7352");
+  EXPECT_EQ(s.find_value("H_p", "sigma_c", "Q4", "LMP", "mortar", "F").value, nullptr);
+  const StudyGrade* g = s.find_grade("H_a", "main", "Q8", "MPC", "ns");
+  ASSERT_NE(g, nullptr);
+  EXPECT_EQ(g->cell(), "u, c");
+  EXPECT_EQ(s.find_grade("H_a", "main", "Q8", "AL", "mortar"), nullptr);
+}
+
+}  // namespace
+}  // namespace cs::reports

@@ -1,0 +1,111 @@
+// Findings are generated from the data: each sentence names what the data says, and changes
+// when the data changes.
+
+#include <gtest/gtest.h>
+
+#include "report_test_support.hpp"
+#include "reports/findings.hpp"
+
+namespace cs::reports {
+namespace {
+
+using testing::Loaded;
+using testing::sample_json;
+using testing::study;
+
+std::string finding(const nlohmann::json& doc, FindingTopic topic,
+                    const std::string& starts_with = "") {
+  const Loaded data(doc);
+  for (const auto& f : generate_findings(data.index, study())) {
+    if (f.topic == topic && f.sentence.rfind(starts_with, 0) == 0)
+      return f.sentence;
+  }
+  return {};
+}
+
+TEST(Findings, BestOptionPerProblemFollowsTheFineMeshError) {
+  auto doc = sample_json();
+  std::string s = finding(doc, FindingTopic::best_option, "H<sub>p</sub> (contact)");
+  EXPECT_NE(s.find("best LMP mortar on Q4 — −0.01 % on F (e, c)"), std::string::npos) << s;
+  EXPECT_NE(s.find("worst MPC ss on Q4 (+19.4 %)"), std::string::npos) << s;
+  EXPECT_NE(s.find("The study's best ANSYS grade: e, c (AL, PM ss 4Q and AL, PM ss 8Q)"),
+            std::string::npos)
+      << s;
+  // Worsen mortar's fine value: AL and PM (coincident) become the best, named together.
+  testing::set_value(doc, "H_p/F/Q4/LMP/mortar", "sigma_c", 1.2790);
+  s = finding(doc, FindingTopic::best_option, "H<sub>p</sub> (contact)");
+  EXPECT_NE(s.find("best AL ss on Q4 and PM ss on Q4 — −0.02 % on F"), std::string::npos) << s;
+}
+
+TEST(Findings, LargestDifferenceFromTheStudy) {
+  auto doc = sample_json();
+  std::string s = finding(doc, FindingTopic::largest_difference);
+  // F_p MPC ss: ours 2.8000 against the study's Table 13a IMC 3.6348: -23 %.
+  EXPECT_NE(s.find("differ most on F<sub>p</sub> sigma_c_star Q4 MPC ss (F: ours 2.8000 vs ANSYS "
+                   "3.6348, −23.0 %)"),
+            std::string::npos)
+      << s;
+  testing::set_value(doc, "S_1_3/F/Q4/AL/ss", "sigma_c", 4.766);  // half the study's 9.5320
+  s = finding(doc, FindingTopic::largest_difference);
+  EXPECT_NE(s.find("differ most on S(1/3) sigma_c Q4 AL ss (F: ours 4.7660 vs ANSYS 9.5320, "
+                   "−50.0 %)"),
+            std::string::npos)
+      << s;
+}
+
+TEST(Findings, FlatPunchOptionsThatFailToDiverge) {
+  auto doc = sample_json();
+  std::string s = finding(doc, FindingTopic::divergence);
+  EXPECT_NE(s.find("1 of 2 option set(s) fail to diverge (Eq. 47): F<sub>p</sub> Q4 MPC ss"),
+            std::string::npos)
+      << s;
+  EXPECT_NE(s.find("the study found every ANSYS option diverges"), std::string::npos) << s;
+  for (auto& r : doc["rows"]) {
+    if (r["id"] == "F_p/Q4/MPC/ss/sigma_c_star") {
+      r["values"]["F"] = 3.2;
+      r["diverging"] = true;
+    }
+  }
+  s = finding(doc, FindingTopic::divergence);
+  EXPECT_NE(s.find("all 2 option set(s) with C, M and F diverge"), std::string::npos) << s;
+}
+
+TEST(Findings, MortarOnTheMismatchedNodePatchTest) {
+  auto doc = sample_json();
+  std::string s = finding(doc, FindingTopic::mortar_mismatched);
+  EXPECT_NE(s.find("P′<sub>p</sub> Q4 LMP mortar: e, c, +0.02 % on F (ANSYS: AL, PM ss g, LMP, "
+                   "PLM u)"),
+            std::string::npos)
+      << s;
+  testing::set_value(doc, "Pprime_p/F/Q4/LMP/mortar", "sigma_z_max", 1.03);
+  s = finding(doc, FindingTopic::mortar_mismatched);
+  EXPECT_NE(s.find("LMP mortar: g, c, +3.00 % on F"), std::string::npos) << s;
+}
+
+TEST(Findings, AgreementWithTheStudysGrades) {
+  const std::string s = finding(sample_json(), FindingTopic::study_agreement);
+  EXPECT_EQ(s,
+            "Against the study's Table 2: of 17 cells graded by both, our grade is the same in "
+            "12, better in 5 and worse in 0.");
+}
+
+TEST(Findings, AbsentProblemsAreSaidSo) {
+  auto doc = sample_json();
+  nlohmann::json kept_cases = nlohmann::json::array(), kept_rows = nlohmann::json::array();
+  for (const auto& c : doc["cases"]) {
+    if (c["problem"] == "H_p")
+      kept_cases.push_back(c);
+  }
+  for (const auto& r : doc["rows"]) {
+    if (r["problem"] == "H_p")
+      kept_rows.push_back(r);
+  }
+  doc["cases"] = kept_cases;
+  doc["rows"] = kept_rows;
+  EXPECT_NE(finding(doc, FindingTopic::divergence).find("No flat-punch case"), std::string::npos);
+  EXPECT_NE(finding(doc, FindingTopic::mortar_mismatched).find("No mismatched-node patch test"),
+            std::string::npos);
+}
+
+}  // namespace
+}  // namespace cs::reports

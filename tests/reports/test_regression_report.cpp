@@ -1,0 +1,105 @@
+// The regression report: a drifted value, a worsened grade, lost verdicts, and the cases
+// only in one of the two files are all listed.
+
+#include <gtest/gtest.h>
+
+#include "report_test_support.hpp"
+#include "reports/regression_report.hpp"
+#include "support/tolerance.hpp"
+
+namespace cs::reports {
+namespace {
+
+using testing::sample_json;
+
+struct Pair {
+  ResultsFile old_file, new_file;
+};
+
+Pair drifted_pair() {
+  auto old_doc = sample_json();
+  auto new_doc = old_doc;
+  // A drift that keeps the grade (e): +0.5 %.
+  testing::set_value(new_doc, "H_p/F/Q4/AL/ss", "sigma_c", 1.2730 * 1.005);
+  // A drift that worsens the grade e -> s and loses the converging flag of the row.
+  testing::set_value(new_doc, "H_p/F/Q4/LMP/ss", "sigma_c", 1.35);
+  for (auto& r : new_doc["rows"]) {
+    if (r["id"] == "H_p/Q4/LMP/ss/sigma_c")
+      r["converging"] = false;
+  }
+  // One case gone, one case new.
+  auto& cases = new_doc["cases"];
+  for (std::size_t i = 0; i < cases.size(); ++i) {
+    if (cases[i]["id"] == "P_p/C/Q4/LMP/ss") {
+      cases.erase(i);
+      break;
+    }
+  }
+  auto extra = cases[0];
+  extra["id"] = "P_p/C/Q4/PLM/ss";
+  extra["algorithm"] = "PLM";
+  cases.push_back(extra);
+  return {parse_results_document(old_doc, "old.json"), parse_results_document(new_doc, "new.json")};
+}
+
+TEST(RegressionReport, DetectsDriftAndWorseGrades) {
+  const Pair p = drifted_pair();
+  const Regression r = compare_results(p.old_file, p.new_file);
+  const QuantityDrift* al = nullptr;
+  const QuantityDrift* lmp = nullptr;
+  int drifted = 0;
+  for (const auto& q : r.quantities) {
+    if (q.case_id == "H_p/F/Q4/AL/ss" && q.quantity == "sigma_c")
+      al = &q;
+    if (q.case_id == "H_p/F/Q4/LMP/ss" && q.quantity == "sigma_c")
+      lmp = &q;
+    if (q.relative && *q.relative != 0.0)
+      ++drifted;
+  }
+  EXPECT_EQ(drifted, 2);
+  ASSERT_NE(al, nullptr);
+  ASSERT_TRUE(al->relative.has_value());
+  EXPECT_TRUE(
+      cs::testing::Near(*al->relative, 0.005, {1e-12, 0}));  // relative drift, exact arithmetic
+  EXPECT_FALSE(al->grade_worse());
+  ASSERT_NE(lmp, nullptr);
+  EXPECT_EQ(lmp->old_grade, "e");
+  EXPECT_EQ(lmp->new_grade, "s");
+  EXPECT_TRUE(lmp->grade_worse());
+  EXPECT_EQ(r.grades_worse, 1);
+  EXPECT_EQ(r.grades_better, 0);
+  ASSERT_EQ(r.row_changes.size(), 1u);
+  EXPECT_EQ(r.row_changes[0].row_id, "H_p/Q4/LMP/ss/sigma_c");
+  EXPECT_TRUE(r.row_changes[0].worse());
+  EXPECT_EQ(r.only_in_old, std::vector<std::string>{"P_p/C/Q4/LMP/ss"});
+  EXPECT_EQ(r.only_in_new, std::vector<std::string>{"P_p/C/Q4/PLM/ss"});
+}
+
+TEST(RegressionReport, MarkdownListsTheChanges) {
+  const Pair p = drifted_pair();
+  const std::string md = regression_markdown(compare_results(p.old_file, p.new_file));
+  EXPECT_NE(md.find("| `H_p/F/Q4/LMP/ss` | sigma_c | **worse** e → s | 1.2790 | 1.3500 |"),
+            std::string::npos)
+      << md;
+  EXPECT_NE(md.find("| `H_p/F/Q4/AL/ss` | sigma_c | 1.2730 | 1.2794 | +0.5 % | e |"),
+            std::string::npos)
+      << md;
+  EXPECT_NE(md.find("**worse** `H_p/Q4/LMP/ss/sigma_c` | e → s | c → no"), std::string::npos) << md;
+  EXPECT_NE(md.find("## Cases only in the baseline\n\n- `P_p/C/Q4/LMP/ss`"), std::string::npos);
+  EXPECT_NE(md.find("## Cases only in the current file\n\n- `P_p/C/Q4/PLM/ss`"), std::string::npos);
+  EXPECT_NE(md.find("Case grades: 1 worse, 0 better"), std::string::npos);
+}
+
+TEST(RegressionReport, IdenticalFilesHaveNoChanges) {
+  const auto doc = sample_json();
+  const Regression r =
+      compare_results(parse_results_document(doc, "a"), parse_results_document(doc, "b"));
+  EXPECT_EQ(r.grades_worse + r.grades_better + r.status_changes, 0);
+  EXPECT_TRUE(r.row_changes.empty());
+  EXPECT_TRUE(r.only_in_new.empty() && r.only_in_old.empty());
+  EXPECT_NE(regression_markdown(r).find("None: every common value is identical."),
+            std::string::npos);
+}
+
+}  // namespace
+}  // namespace cs::reports

@@ -1,0 +1,229 @@
+// The whole report: files written, bad input rejected with one line, and the output directory
+// untouched on failure (nothing half-written, nothing the user had lost).
+
+#include <sys/wait.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cstdlib>
+
+#include <gtest/gtest.h>
+#include <CLI/CLI.hpp>
+
+#include "apps/report_command.hpp"
+#include "report_test_support.hpp"
+#include "reports/report_error.hpp"
+#include "reports/report_writer.hpp"
+
+namespace cs::reports {
+namespace {
+
+namespace fs = std::filesystem;
+using testing::read_text;
+using testing::sample_path;
+using testing::TempDir;
+using testing::write_text;
+
+ReportOptions options_for(const fs::path& results, const fs::path& out) {
+  ReportOptions o;
+  o.results = results;
+  o.out_dir = out;
+  o.study_data = testing::study_dir();
+  o.figures = false;  // figures have their own test
+  return o;
+}
+
+/// A directory with the user's files in it, to check that a failed report leaves it alone.
+struct UserDir {
+  explicit UserDir(const fs::path& root) : path(root / "out") {
+    fs::create_directories(path / "figures");
+    write_text(path / "report.md", "the user's previous report\n");
+    write_text(path / "notes.txt", "the user's own notes\n");
+    write_text(path / "figures" / "mine.png", "not really a png");
+  }
+  void expect_untouched() const {
+    EXPECT_EQ(read_text(path / "report.md"), "the user's previous report\n");
+    EXPECT_EQ(read_text(path / "notes.txt"), "the user's own notes\n");
+    EXPECT_EQ(read_text(path / "figures" / "mine.png"), "not really a png");
+    int entries = 0;
+    for (const auto& e : fs::directory_iterator(path)) {
+      ++entries;
+      EXPECT_EQ(e.path().filename().string().rfind(".tmp-", 0), std::string::npos) << e.path();
+    }
+    EXPECT_EQ(entries, 3);  // report.md, notes.txt, figures/: nothing added
+    EXPECT_FALSE(fs::exists(path / "results.csv"));
+  }
+  fs::path path;
+};
+
+TEST(ReportWriter, WritesReportCsvAndRegression) {
+  TempDir tmp;
+  auto o = options_for(sample_path(), tmp.path() / "new" / "dir");
+  o.baseline = sample_path();
+  const auto outcome = write_report(o);
+  EXPECT_EQ(outcome.n_cases, 56);
+  EXPECT_EQ(outcome.files, (std::vector<std::string>{"regression.md", "report.md", "results.csv"}));
+  const std::string md = read_text(o.out_dir / "report.md");
+  for (const char* section : {"## 1. Summary", "## 2. Accuracy and convergence", "## 3. Appendix",
+                              "## 5. Flat punch: divergence", "## 6. Other option sets"}) {
+    EXPECT_NE(md.find(section), std::string::npos) << section;
+  }
+  EXPECT_NE(md.find("54 converged, 1 did not converge, 1 failed"), std::string::npos);
+  EXPECT_NE(md.find("| solver.factorization | CHOLMOD supernodal |"), std::string::npos);
+  EXPECT_NE(md.find("[regression.md](regression.md)"), std::string::npos);
+  for (const auto& e : fs::directory_iterator(o.out_dir))
+    EXPECT_EQ(e.path().filename().string().rfind(".tmp-", 0), std::string::npos);
+}
+
+TEST(ReportWriter, ReplacesItsOwnFilesAndKeepsTheUsers) {
+  TempDir tmp;
+  UserDir user(tmp.path());
+  write_report(options_for(sample_path(), user.path));
+  EXPECT_NE(read_text(user.path / "report.md").find("## 1. Summary"), std::string::npos);
+  EXPECT_EQ(read_text(user.path / "notes.txt"), "the user's own notes\n");
+  EXPECT_TRUE(fs::exists(user.path / "results.csv"));
+}
+
+struct BadInput {
+  const char* name;
+  std::string content;  ///< the results file's text; "<none>": no file
+  const char* message;  ///< expected in the error
+};
+
+class ReportWriterBadInput : public ::testing::TestWithParam<BadInput> {};
+
+TEST_P(ReportWriterBadInput, OneLineErrorAndTheDirectoryUntouched) {
+  const BadInput& bad = GetParam();
+  TempDir tmp;
+  UserDir user(tmp.path());
+  const fs::path results = tmp.path() / "results.json";
+  if (bad.content != "<none>")
+    write_text(results, bad.content);
+  try {
+    write_report(options_for(results, user.path));
+    FAIL() << "no error for " << bad.name;
+  } catch (const std::invalid_argument& e) {  // ReportError: exit code 2 in main()
+    const std::string what = e.what();
+    EXPECT_NE(what.find(bad.message), std::string::npos) << what;
+    EXPECT_EQ(what.find('\n'), std::string::npos) << what;
+  }
+  user.expect_untouched();
+  // A directory that did not exist is not created either.
+  EXPECT_THROW(write_report(options_for(results, tmp.path() / "fresh")), ReportError);
+  EXPECT_FALSE(fs::exists(tmp.path() / "fresh"));
+}
+
+std::string truncated_sample() {
+  const std::string text = read_text(sample_path());
+  return text.substr(0, text.size() / 2);
+}
+
+std::string sample_with(const char* key, const nlohmann::json& value) {
+  auto doc = testing::sample_json();
+  doc[key] = value;
+  return doc.dump();
+}
+
+std::string sample_with_bad_case() {
+  auto doc = testing::sample_json();
+  doc["cases"][3]["mesh"] = "X";
+  return doc.dump();
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Inputs, ReportWriterBadInput,
+    ::testing::Values(BadInput{"missing", "<none>", "does not exist"},
+                      BadInput{"empty", "", "is empty"},
+                      BadInput{"not JSON", "results, but in prose", "is not valid JSON"},
+                      BadInput{"truncated", truncated_sample(), "is not valid JSON (truncated?)"},
+                      BadInput{"other schema", sample_with("schema", "someone/else"),
+                               "not a contact-suite results file"},
+                      BadInput{"newer version", sample_with("schema_version", 2),
+                               "schema version 2 is not supported"},
+                      BadInput{"no cases", sample_with("cases", 7), "'cases'"},
+                      BadInput{"bad case", sample_with_bad_case(),
+                               "case #3 (P_p/C/Q4/LMP/ss): 'mesh' is \"X\""}),
+    [](const auto& info) {
+      std::string name = info.param.name;
+      for (char& c : name)
+        c = std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
+      return name;
+    });
+
+TEST(ReportWriter, BadBaselineOrStudyDataLeavesTheDirectoryUntouched) {
+  TempDir tmp;
+  UserDir user(tmp.path());
+  auto o = options_for(sample_path(), user.path);
+  o.baseline = tmp.path() / "no-such-baseline.json";
+  EXPECT_THROW(write_report(o), ReportError);
+  user.expect_untouched();
+  o = options_for(sample_path(), user.path);
+  o.study_data = tmp.path();
+  EXPECT_THROW(write_report(o), ReportError);
+  user.expect_untouched();
+}
+
+TEST(ReportWriter, OutputThatIsAFileIsAnError) {
+  TempDir tmp;
+  write_text(tmp.path() / "file", "x");
+  EXPECT_THROW(write_report(options_for(sample_path(), tmp.path() / "file")), ReportError);
+  EXPECT_EQ(read_text(tmp.path() / "file"), "x");
+}
+
+/// Runs `report ARGS` through the subcommand as main() would; returns what it threw.
+std::string run_command(std::vector<std::string> args) {
+  CLI::App app;
+  apps::add_report_command(app);
+  args.insert(args.begin(), "report");
+  args.insert(args.begin(), "contact-suite");
+  std::vector<char*> argv;
+  for (auto& a : args)
+    argv.push_back(a.data());
+  try {
+    app.parse(static_cast<int>(argv.size()), argv.data());
+  } catch (const std::invalid_argument& e) {
+    return std::string("invalid_argument: ") + e.what();
+  } catch (const CLI::ParseError& e) {
+    return std::string("parse error: ") + e.what();
+  }
+  return "ok";
+}
+
+TEST(ReportCommand, ParsesOptionsAndReportsBadInputAsInvalidArgument) {
+  TempDir tmp;
+  const std::string study = testing::study_dir().string();
+  const std::string out = (tmp.path() / "out").string();
+  EXPECT_EQ(run_command({"--results", sample_path().string(), "--out", out, "--study-data", study,
+                         "--no-figures", "--baseline", sample_path().string()}),
+            "ok");
+  EXPECT_TRUE(fs::exists(tmp.path() / "out" / "regression.md"));
+  const std::string bad = run_command(
+      {"--results", (tmp.path() / "nope.json").string(), "--out", out, "--study-data", study});
+  EXPECT_EQ(bad.rfind("invalid_argument: results file", 0), 0u) << bad;
+  EXPECT_EQ(run_command({"--out", out}).rfind("parse error", 0), 0u);
+}
+
+TEST(ReportCommand, ExecutableExitsWith2OnBadInput) {
+  const std::string exe = CONTACT_SUITE_EXE;
+  TempDir tmp;
+  // Registered when `contact-suite --help` lists it (apps/main.cpp calls add_report_command).
+  const int help =
+      std::system((exe + " --help >" + (tmp.path() / "help.txt").string() + " 2>&1").c_str());
+  if (help != 0 || read_text(tmp.path() / "help.txt").find("\n  report ") == std::string::npos)
+    GTEST_SKIP() << "the report subcommand is not registered in apps/main.cpp yet";
+  UserDir user(tmp.path());
+  write_text(tmp.path() / "bad.json", truncated_sample());
+  const std::string command = exe + " report --results " + (tmp.path() / "bad.json").string() +
+                              " --out " + user.path.string() + " 2>" +
+                              (tmp.path() / "stderr.txt").string();
+  const int status = std::system(command.c_str());
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 2);
+  const std::string err = read_text(tmp.path() / "stderr.txt");
+  EXPECT_EQ(std::count(err.begin(), err.end(), '\n'), 1) << err;
+  EXPECT_NE(err.find("is not valid JSON"), std::string::npos) << err;
+  user.expect_untouched();
+}
+
+}  // namespace
+}  // namespace cs::reports

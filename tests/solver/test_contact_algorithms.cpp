@@ -1,0 +1,310 @@
+// The solution loop and the condensation: termination paths, bad input, and agreement of the
+// condensed solve with a direct solve of the same active-set system.
+//
+// Requirement: the active-set loop always ends with an explicit status (iteration cap, cycling,
+// singular system) and never returns a non-finite number; bad input raises ContactError with a
+// message naming the cause; the condensed solution equals a direct sparse solve of the final
+// active-set system (to 1e-10), and both condensation methods agree.
+
+#include <cmath>
+#include <string>
+
+#include <gtest/gtest.h>
+#include <Eigen/SparseLU>
+
+#include "solver/contact/contact_error.hpp"
+#include "solver/contact/lagrange_multiplier.hpp"
+#include "support/tolerance.hpp"
+#include "test_contact_support.hpp"
+
+namespace cs::solver {
+namespace {
+
+using contact_test::HertzSpec;
+using contact_test::PatchSpec;
+using cs::testing::Near;
+
+// ---- termination ------------------------------------------------------------------------------
+
+TEST(ContactLoop, IterationCapOfOneStopsWithStatus) {
+  HertzSpec spec;
+  spec.n = 16;
+  const Model model = contact_test::hertz_model(spec);
+  ContactSettings s = contact_test::settings(ContactDiscretization::NodeToSurface,
+                                             ContactAlgorithm::LagrangeMultiplier);
+  s.max_iterations = 1;  // all candidates start active: Hertz needs more than one solve
+  const ContactResult r = solve_contact(model, contact_test::hertz_pair(spec), s);
+  EXPECT_EQ(r.status, ContactStatus::NotConverged);
+  EXPECT_EQ(r.failure, ContactFailure::IterationLimit);
+  EXPECT_NE(r.reason.find("iteration cap of 1"), std::string::npos) << r.reason;
+  EXPECT_EQ(r.active_set_iterations, 1);
+  EXPECT_GT(r.residual, kActiveSetTolerance);
+  // The last iterate is returned, finite, and labelled as not converged.
+  ASSERT_GT(r.displacement.size(), 0);
+  EXPECT_TRUE(r.displacement.allFinite());
+}
+
+TEST(ContactLoop, CyclingActiveSetIsDetected) {
+  // A 3-row condensed problem (rho = 1, W scaled below the identity as every condensation is)
+  // on which the primal-dual active set method cycles with period 3 from the empty set (found by
+  // a random search; W is not an M-matrix).
+  Eigen::MatrixXd W(3, 3);
+  W << 0.39817232324052376, 0.27141843557126283, -0.33990139496955835,  //
+      0.27141843557126283, 0.60541064681182533, -0.047956217926974666,  //
+      -0.33990139496955835, -0.047956217926974666, 0.63529388830484623;
+  Eigen::VectorXd d(3);
+  d << -0.34289435042213545, 0.96082366724178958, 0.5431947584045147;
+  const Eigen::VectorXd g0 = Eigen::VectorXd::Zero(3);
+  const Eigen::VectorXd rho = Eigen::VectorXd::Ones(3);
+  const CondensedProblem problem{W, d, rho, g0, 1e-12};
+  const LagrangeMultiplierRules rules(rho);
+  const AlgorithmOutcome out = run_active_set(problem, rules, {0, 0, 0}, 50);
+  EXPECT_EQ(out.status, ContactStatus::NotConverged);
+  EXPECT_EQ(out.failure, ContactFailure::Cycling);
+  EXPECT_NE(out.reason.find("cycling"), std::string::npos) << out.reason;
+  EXPECT_LT(out.iterations, 50);  // stopped at the first repetition, not at the cap
+  EXPECT_TRUE(out.step.lambda.allFinite());
+}
+
+TEST(ContactLoop, BodyPulledOffTheTargetIsASingularStatus) {
+  PatchSpec spec;
+  spec.p = -1.0;  // a tension pulls the floating block away: nothing holds it
+  const Model model = contact_test::patch_model(spec);
+  const ContactResult r =
+      solve_contact(model, contact_test::patch_pair(spec),
+                    contact_test::settings(ContactDiscretization::NodeToSurface,
+                                           ContactAlgorithm::LagrangeMultiplier));
+  EXPECT_EQ(r.status, ContactStatus::NotConverged);
+  EXPECT_EQ(r.failure, ContactFailure::SingularSystem);
+  EXPECT_NE(r.reason.find("singular"), std::string::npos) << r.reason;
+  if (r.displacement.size() > 0) {
+    EXPECT_TRUE(r.displacement.allFinite());
+  }
+}
+
+TEST(ContactLoop, AugmentationCapStopsWithStatus) {
+  HertzSpec spec;
+  spec.n = 16;
+  const Model model = contact_test::hertz_model(spec);
+  ContactSettings s = contact_test::settings(ContactDiscretization::NodeToSurface,
+                                             ContactAlgorithm::AugmentedLagrangian);
+  s.fkn = 1e-4;
+  s.ftoln = 1e-3;
+  s.pinball = 10.0;
+  s.max_augmentations = 2;
+  const ContactResult r = solve_contact(model, contact_test::hertz_pair(spec), s);
+  EXPECT_EQ(r.status, ContactStatus::NotConverged);
+  EXPECT_EQ(r.failure, ContactFailure::AugmentationLimit);
+  EXPECT_NE(r.reason.find("FTOLN"), std::string::npos) << r.reason;
+  EXPECT_TRUE(r.displacement.allFinite());
+}
+
+TEST(ContactLoop, ContactBeyondThePinballIsNotSilent) {
+  HertzSpec spec;
+  spec.n = 16;
+  const Model model = contact_test::hertz_model(spec);
+  ContactSettings s = contact_test::settings(ContactDiscretization::NodeToSurface,
+                                             ContactAlgorithm::LagrangeMultiplier);
+  // Initial gaps grow as x^2 / 2R; a pinball of 1e-4 h keeps only the nodes near x = 0 as
+  // candidates, while the contact reaches x = a.
+  s.pinball = 1e-4;
+  const ContactResult r = solve_contact(model, contact_test::hertz_pair(spec), s);
+  EXPECT_EQ(r.status, ContactStatus::NotConverged);
+  EXPECT_EQ(r.failure, ContactFailure::ContactBeyondPinball);
+  EXPECT_NE(r.reason.find("pinball"), std::string::npos) << r.reason;
+}
+
+// ---- bad input -----------------------------------------------------------------------------
+
+void expect_contact_error(const std::function<void()>& f, const std::string& cause) {
+  try {
+    f();
+    ADD_FAILURE() << "no ContactError (expected one naming '" << cause << "')";
+  } catch (const ContactError& e) {
+    EXPECT_NE(std::string(e.what()).find(cause), std::string::npos) << e.what();
+    EXPECT_EQ(std::string(e.what()).find('\n'), std::string::npos) << "one line";
+  }
+}
+
+TEST(ContactInput, BadInputRaisesContactErrorNamingTheCause) {
+  PatchSpec spec;
+  spec.indenter_nx = 4;
+  const Model model = contact_test::patch_model(spec);
+  const ContactSettings ok;
+  expect_contact_error(
+      [&] {
+        solve_contact(model, {"block.btm", TargetSurface{"indenter.top"}}, ok);
+      },
+      "unknown contact surface 'block.btm'");
+  expect_contact_error(
+      [&] {
+        solve_contact(model, {"block.bottom", TargetSurface{"punch"}}, ok);
+      },
+      "unknown target surface 'punch'");
+  expect_contact_error(
+      [&] {
+        solve_contact(model, {"block.bottom", RigidCircle{{0.0, -1.0}, -1.0}}, ok);
+      },
+      "radius R = -1");
+  for (double bad : {0.0, -1.0, std::nan("")}) {
+    ContactSettings s;
+    s.fkn = bad;
+    expect_contact_error([&] { validate(s); }, "FKN");
+    s = ContactSettings{};
+    s.ftoln = bad;
+    expect_contact_error([&] { validate(s); }, "FTOLN");
+    s = ContactSettings{};
+    s.pinball = bad;
+    expect_contact_error([&] { validate(s); }, "pinball");
+  }
+  ContactSettings s;
+  s.max_iterations = 0;
+  expect_contact_error([&] { validate(s); }, "max_iterations");
+  // A rigid plane 10 below the surface, with the default pinball of one element depth.
+  expect_contact_error(
+      [&] {
+        solve_contact(model, {"block.bottom", RigidPlane{{0.0, -10.0}, {0.0, 1.0}}}, ok);
+      },
+      "never comes within the pinball");
+}
+
+// ---- condensed solve vs direct solve ---------------------------------------------------------
+
+/// Solves the final active-set system of `r` directly (no condensation) and returns the global
+/// displacement: K u = f + B_A^T lambda with B_A u = -g0_A (LM), or K u = f - B_A^T k (g0_A +
+/// B_A u) (PM).
+Eigen::VectorXd direct_solve(LinearStaticAnalysis& elastic, ContactAnalysis& contact,
+                             const ContactResult& r) {
+  const ConstraintSet& set = contact.constraints(constraint_rows(r.settings));
+  const DofMap& dofs = elastic.dof_map();
+  const Eigen::SparseMatrix<double> K_lower = elastic.stiffness().K_ff;
+  const Eigen::SparseMatrix<double> K =
+      Eigen::SparseMatrix<double>(K_lower.selfadjointView<Eigen::Lower>());
+  const Eigen::VectorXd f = elastic.reduced_load(elastic.model().loads);
+  // The active rows: those of closed nodes (nodal rows).
+  std::vector<int> active_rows;
+  for (int j = 0; j < set.n_rows(); ++j) {
+    for (const ContactNodeResult& n : r.nodes) {
+      if (n.node == set.nodes[j].node && n.closed)
+        active_rows.push_back(j);
+    }
+  }
+  const int n = dofs.n_free();
+  const int a = static_cast<int>(active_rows.size());
+  std::vector<Eigen::Triplet<double>> t;
+  for (int k = 0; k < K.outerSize(); ++k) {
+    for (Eigen::SparseMatrix<double>::InnerIterator it(K, k); it; ++it) {
+      t.emplace_back(it.row(), it.col(), it.value());
+    }
+  }
+  Eigen::VectorXd rhs = Eigen::VectorXd::Zero(n + a);
+  rhs.head(n) = f;
+  const bool lagrange = r.settings.algorithm == ContactAlgorithm::LagrangeMultiplier;
+  for (int q = 0; q < a; ++q) {
+    const int j = active_rows[q];
+    const double k = r.settings.fkn * set.rows[j].stiffness_scale();
+    std::vector<std::pair<int, double>> row;
+    for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator e(set.B, j); e; ++e) {
+      const int eq = dofs.equation(static_cast<int>(e.col()));
+      if (eq >= 0)
+        row.emplace_back(eq, e.value());
+    }
+    if (lagrange) {  // [K -B^T; B 0] [u; lambda] = [f; -g0]
+      for (auto [eq, v] : row) {
+        t.emplace_back(eq, n + q, -v);
+        t.emplace_back(n + q, eq, v);
+      }
+      rhs[n + q] = -set.g0[j];
+    } else {  // (K + k B^T B) u = f - k B^T g0
+      for (auto [i1, v1] : row) {
+        for (auto [i2, v2] : row)
+          t.emplace_back(i1, i2, k * v1 * v2);
+        rhs[i1] -= k * v1 * set.g0[j];
+      }
+      t.emplace_back(n + q, n + q, 1.0);
+    }
+  }
+  Eigen::SparseMatrix<double> A(n + a, n + a);
+  A.setFromTriplets(t.begin(), t.end());
+  Eigen::SparseLU<Eigen::SparseMatrix<double>> lu(A);
+  const Eigen::VectorXd x = lu.solve(rhs);
+  return elastic.expand(x.head(n));
+}
+
+class ContactCondensedVsDirect
+    : public ::testing::TestWithParam<std::tuple<ContactDiscretization, ContactAlgorithm>> {};
+
+TEST_P(ContactCondensedVsDirect, SameDisplacement) {
+  HertzSpec spec;
+  spec.n = 16;
+  const Model model = contact_test::hertz_model(spec);  // the block floats: K is singular
+  LinearStaticAnalysis elastic(model);
+  ContactAnalysis contact(elastic, contact_test::hertz_pair(spec));
+  const auto [d, a] = GetParam();
+  const ContactResult r = contact.solve(contact_test::settings(d, a));
+  ASSERT_TRUE(r.converged()) << r.reason;
+  const Eigen::VectorXd u_direct = direct_solve(elastic, contact, r);
+  const double error = (r.displacement - u_direct).norm() / u_direct.norm();
+  std::printf("[ info     ] H_p %s %s: |u_condensed - u_direct| / |u| = %.2e\n", to_string(d),
+              to_string(a), error);
+  EXPECT_LE(error, 1e-10);  // round-off of two different factorizations
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    NodalRows, ContactCondensedVsDirect,
+    ::testing::Values(
+        std::make_tuple(ContactDiscretization::NodeToSurface, ContactAlgorithm::LagrangeMultiplier),
+        std::make_tuple(ContactDiscretization::NodeToSurface, ContactAlgorithm::Penalty),
+        std::make_tuple(ContactDiscretization::Mortar, ContactAlgorithm::LagrangeMultiplier),
+        std::make_tuple(ContactDiscretization::Mortar, ContactAlgorithm::Penalty)),
+    [](const auto& info) {
+      return std::string(to_string(std::get<0>(info.param))) + "_" +
+             to_string(std::get<1>(info.param));
+    });
+
+TEST(ContactCondensation, OneFactorizationServesEveryDiscretizationAndAlgorithm) {
+  HertzSpec spec;
+  spec.n = 16;
+  const Model model = contact_test::hertz_model(spec);
+  LinearStaticAnalysis elastic(model);
+  ContactAnalysis contact(elastic, contact_test::hertz_pair(spec));
+  int factorizations = 0;
+  for (ContactDiscretization d :
+       {ContactDiscretization::NodeToSurface, ContactDiscretization::SurfaceToSurface,
+        ContactDiscretization::Mortar}) {
+    for (ContactAlgorithm a :
+         {ContactAlgorithm::Penalty, ContactAlgorithm::AugmentedLagrangian,
+          ContactAlgorithm::LagrangeMultiplier, ContactAlgorithm::MultipointConstraint}) {
+      const ContactResult r = contact.solve(contact_test::settings(d, a));
+      EXPECT_TRUE(r.converged()) << to_string(d) << " " << to_string(a) << ": " << r.reason;
+      if (!r.timings.condensation_reused)
+        ++factorizations;
+    }
+  }
+  EXPECT_EQ(factorizations, 1);
+}
+
+TEST(ContactCondensation, BothMethodsAgree) {
+  for (bool meshed : {false, true}) {
+    HertzSpec spec;
+    spec.n = 16;
+    spec.type = ElementType::Q8;
+    spec.meshed_indenter = meshed;
+    const Model model = contact_test::hertz_model(spec);
+    ContactSettings s = contact_test::settings(ContactDiscretization::SurfaceToSurface,
+                                               ContactAlgorithm::LagrangeMultiplier);
+    const ContactResult fast = solve_contact(model, contact_test::hertz_pair(spec), s);
+    s.condensation = CondensationMethod::MultipleRightHandSides;
+    const ContactResult reference = solve_contact(model, contact_test::hertz_pair(spec), s);
+    ASSERT_TRUE(fast.converged() && reference.converged());
+    const double error =
+        (fast.displacement - reference.displacement).norm() / reference.displacement.norm();
+    std::printf("[ info     ] H_p Q8 ss LM %s target: trailing block vs multiple RHS %.2e\n",
+                meshed ? "meshed" : "rigid", error);
+    EXPECT_LE(error, 1e-10);  // round-off (E ratio 1e6 included)
+    EXPECT_EQ(fast.active_set_iterations, reference.active_set_iterations);
+  }
+}
+
+}  // namespace
+}  // namespace cs::solver
