@@ -9,6 +9,7 @@
 #include <CLI/CLI.hpp>
 
 #include "apps/case_command.hpp"
+#include "apps/gate_command.hpp"
 #include "apps/invocation.hpp"
 #include "apps/list_command.hpp"
 #include "apps/oracle_command.hpp"
@@ -44,6 +45,7 @@ int main(int argc, char** argv) {
   cs::apps::add_case_command(app, exit_code);
   cs::apps::add_run_command(app, exit_code);
   cs::apps::add_report_command(app);
+  cs::apps::add_gate_command(app, exit_code);
 
   try {
     app.parse(argc, argv);

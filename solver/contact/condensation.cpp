@@ -1,6 +1,7 @@
 #include "solver/contact/condensation.hpp"
 
 #include <algorithm>
+#include <cstdio>
 #include <chrono>
 #include <optional>
 #include <vector>

@@ -1,0 +1,133 @@
+// The CI gate fails on a drifted value, a worsened grade, a case that stopped converging and a
+// row that stopped converging; passes on identical results; refuses files of different cases.
+
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "suites/gate.hpp"
+#include "suites/suite_error.hpp"
+
+namespace cs::suites {
+namespace {
+
+CaseResult hertz_case(MeshLevel mesh, double value) {
+  CaseResult r;
+  r.spec.problem = ProblemId::H_p;
+  r.spec.mesh = mesh;
+  r.spec.algorithm = Algorithm::AL;
+  r.status = CaseStatus::converged;
+  QuantityResult q;
+  q.name = "sigma_c";
+  q.exact = 4.0 / M_PI;
+  q.value = value;
+  q.error_percent = error_percent(value, q.exact);
+  q.grade = grade_from_error(q.error_percent);
+  r.quantities.push_back(q);
+  return r;
+}
+
+/// C, M, F converging towards 4/pi: row graded e, converging.
+std::vector<CaseResult> good_results() {
+  return {hertz_case(MeshLevel::C, 1.2628), hertz_case(MeshLevel::M, 1.2704),
+          hertz_case(MeshLevel::F, 1.2737)};
+}
+
+Baseline good_baseline() {
+  // Round trip through JSON, as the gate reads the committed file.
+  return baseline_from_json(to_json(make_baseline(good_results(), kDefaultGateTolerance, {})));
+}
+
+bool has_failure(const GateReport& r, const std::string& id, const std::string& check) {
+  for (const auto& f : r.failures) {
+    if (f.id == id && f.check == check)
+      return true;
+  }
+  return false;
+}
+
+TEST(Gate, IdenticalResultsPass) {
+  const auto report = run_gate(good_baseline(), good_results());
+  EXPECT_TRUE(report.passed()) << format_gate_failures(report);
+  EXPECT_EQ(report.cases_checked, 3);
+  EXPECT_EQ(report.rows_checked, 1);
+}
+
+TEST(Gate, DriftBeyondToleranceFailsWithinPasses) {
+  auto results = good_results();
+  results[1].quantities[0].value *= 1.0 + 5e-7;  // within 1e-6
+  EXPECT_TRUE(run_gate(good_baseline(), results).passed());
+  results[1].quantities[0].value *= 1.0 + 5e-6;  // beyond
+  const auto report = run_gate(good_baseline(), results);
+  EXPECT_TRUE(has_failure(report, "H_p/M/Q4/AL/ss sigma_c", "value drift"));
+  EXPECT_EQ(report.failures.size(), 1u);
+}
+
+TEST(Gate, PerQuantityToleranceFromTheBaselineIsUsed) {
+  Baseline loose = good_baseline();
+  loose.tolerances["sigma_c"] = 1e-2;
+  auto results = good_results();
+  results[1].quantities[0].value *= 1.001;
+  EXPECT_TRUE(run_gate(loose, results).passed());
+}
+
+TEST(Gate, WorsenedGradeAndLostConvergenceFail) {
+  Baseline loose = good_baseline();
+  loose.tolerances["sigma_c"] = 1.0;  // isolate the analytic-reference checks
+  auto results = good_results();
+  const double exact = 4.0 / M_PI;
+  results[2] = hertz_case(MeshLevel::F, exact * 1.07);  // 7 %: grade s, and not converging
+  const auto report = run_gate(loose, results);
+  EXPECT_TRUE(has_failure(report, "H_p/Q4/AL/ss/sigma_c", "grade")) << format_gate_failures(report);
+  EXPECT_TRUE(has_failure(report, "H_p/Q4/AL/ss/sigma_c", "converging"));
+}
+
+TEST(Gate, CaseThatStoppedConvergingFails) {
+  auto results = good_results();
+  results[0].status = CaseStatus::not_converged;
+  results[0].reason = "iteration limit";
+  const auto report = run_gate(good_baseline(), results);
+  EXPECT_TRUE(has_failure(report, "H_p/C/Q4/AL/ss", "status"));
+}
+
+TEST(Gate, LostDivergenceFails) {
+  auto punch = [](MeshLevel m, double v) {
+    CaseResult r = hertz_case(m, v);
+    r.spec.problem = ProblemId::F_p;
+    r.quantities[0].name = "sigma_c_star";
+    r.quantities[0].exact = INFINITY;
+    r.quantities[0].error_percent = 0.0;
+    return r;
+  };
+  const std::vector<CaseResult> diverging{punch(MeshLevel::C, 2.0), punch(MeshLevel::M, 2.4),
+                                          punch(MeshLevel::F, 3.0)};
+  Baseline b = make_baseline(diverging, kDefaultGateTolerance, {{"sigma_c_star", 1.0}});
+  auto now = diverging;
+  now[2].quantities[0].value = 2.5;  // increments shrink: no longer diverging
+  EXPECT_TRUE(has_failure(run_gate(b, now), "F_p/Q4/AL/ss/sigma_c_star", "diverging"));
+}
+
+TEST(Gate, DifferentCasesAreBadInputListingThem) {
+  auto results = good_results();
+  results.pop_back();
+  try {
+    run_gate(good_baseline(), results);
+    FAIL() << "no exception";
+  } catch (const SuiteInputError& e) {
+    EXPECT_NE(std::string(e.what()).find("only in the baseline: H_p/F/Q4/AL/ss"), std::string::npos)
+        << e.what();
+  }
+}
+
+TEST(Gate, BaselineSchemaIsChecked) {
+  auto doc = to_json(make_baseline(good_results(), kDefaultGateTolerance, {}));
+  doc["schema_version"] = 99;
+  EXPECT_THROW(baseline_from_json(doc), SuiteInputError);
+  EXPECT_THROW(baseline_from_json(nlohmann::json::parse(R"({"schema":"x"})")), SuiteInputError);
+  doc = to_json(make_baseline(good_results(), kDefaultGateTolerance, {}));
+  doc.erase("rows");
+  EXPECT_THROW(baseline_from_json(doc), SuiteInputError);
+}
+
+}  // namespace
+}  // namespace cs::suites
