@@ -1,0 +1,34 @@
+#!/usr/bin/env bash
+# The accuracy gate of CI: runs the C and M meshes of every problem and option (and the F mesh
+# of every problem but the Steuermann ones, whose fine meshes take minutes), then checks the
+# results against the committed baseline ci/baseline.json.
+#
+#   bash ci/accuracy-gate.sh [build-dir]            # check
+#   bash ci/accuracy-gate.sh [build-dir] --update   # rewrite the baseline deliberately
+set -euo pipefail
+cd "$(dirname "$0")/.."
+build_dir=${1:-build}
+exe="$build_dir/contact-suite"
+out="$build_dir/ci-accuracy"
+rm -rf "$out"
+mkdir -p "$out"
+
+"$exe" run --meshes C,M --problems S_1,S_1_3,S_1_7 --contacts ss,ns,mortar \
+  --out "$out/steuermann" --no-report
+"$exe" run --meshes C,M,F --problems P_p,P_a,Pprime_p,Pprime_a,H_p,H_a,F_p,F_a \
+  --contacts ss,ns,mortar --out "$out/others" --no-report
+python3 - "$out" <<'PY'
+import json, sys
+out = sys.argv[1]
+a = json.load(open(f"{out}/steuermann/results.json"))
+b = json.load(open(f"{out}/others/results.json"))
+a["cases"] += b["cases"]
+a["rows"] += b["rows"]
+a["run"]["wall_seconds"] += b["run"]["wall_seconds"]
+json.dump(a, open(f"{out}/results.json", "w"))
+PY
+if [ "${2:-}" = "--update" ]; then
+  "$exe" gate --baseline ci/baseline.json --results "$out/results.json" --update
+else
+  "$exe" gate --baseline ci/baseline.json --results "$out/results.json"
+fi
