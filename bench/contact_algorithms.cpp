@@ -8,6 +8,9 @@
 //            (one assembly + factorization + solve of the same model), the latter measured in
 //            the same run (the physical floor of the ratio is 1; see reference_seconds).
 //
+// ContactAllOptions: the 12 discretization x algorithm cases of one model on one
+// ContactAnalysis (one shared factorization), with ratio_per_case = time / 12 / reference.
+//
 // Args: problem (0 H_p, 1 S_1_7, 2 P'_p), mesh (0 C, 1 M, 2 F), element (0 Q4, 1 Q8),
 //       discretization (0 ns, 1 ss, 2 mortar), algorithm (0 PM, 1 AL, 2 LM, 3 MPC).
 // Run:  build-*/bench/bench_contact_algorithms --benchmark_filter='Contact/0/1/'  (H_p, M)
@@ -123,6 +126,36 @@ void BM_Contact(benchmark::State& state) {
   state.counters["candidates"] = r.n_candidates;
 }
 
+/// Every discretization x algorithm (12 cases) on ONE ContactAnalysis, as the suite engine runs
+/// a model's cases: the sparse factorization is shared. Args: problem, mesh, element.
+void BM_ContactAllOptions(benchmark::State& state) {
+  const suites::CaseSpec spec = case_spec(state);
+  const suites::ProblemSetup setup = suites::build_problem(spec);
+  const double reference = reference_seconds(spec, setup.model, setup.pair);
+  int converged = 0;
+  double seconds = 0.0;
+  for (auto _ : state) {
+    const auto start = Clock::now();
+    solver::LinearStaticAnalysis elastic(setup.model);
+    solver::ContactAnalysis contact(elastic, setup.pair);
+    converged = 0;
+    for (int d = 0; d < 3; ++d) {
+      for (int a = 0; a < 4; ++a) {
+        solver::ContactSettings settings;
+        settings.discretization = static_cast<solver::ContactDiscretization>(d);
+        settings.algorithm = static_cast<solver::ContactAlgorithm>(a);
+        converged += contact.solve(settings).converged() ? 1 : 0;
+      }
+    }
+    seconds = seconds_since(start);
+    state.SetIterationTime(seconds);
+  }
+  state.counters["cases"] = 12;
+  state.counters["converged"] = converged;
+  state.counters["ratio_per_case"] = seconds / 12.0 / reference;
+  state.counters["reference_s"] = reference;
+}
+
 void contact_arguments(benchmark::internal::Benchmark* b) {
   for (int problem = 0; problem < 3; ++problem) {
     for (int mesh = 0; mesh < 3; ++mesh) {
@@ -143,6 +176,14 @@ BENCHMARK(BM_Contact)
     ->Name("Contact")
     ->Apply(contact_arguments)
     ->ArgNames({"problem", "mesh", "element", "contact", "algorithm"})
+    ->UseManualTime()
+    ->Iterations(1)
+    ->Unit(benchmark::kMillisecond);
+
+BENCHMARK(BM_ContactAllOptions)
+    ->Name("ContactAllOptions")
+    ->ArgsProduct({{0, 1, 2}, {0, 1, 2}, {0, 1}})
+    ->ArgNames({"problem", "mesh", "element"})
     ->UseManualTime()
     ->Iterations(1)
     ->Unit(benchmark::kMillisecond);

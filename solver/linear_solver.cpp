@@ -113,6 +113,45 @@ void configure(cholmod_common& c, FillReducingOrdering ordering) {
   c.postorder = 1;
 }
 
+/// CHOLMOD's symbolic analysis of A with the requested ordering. With supervariables, METIS
+/// runs on their graph and its permutation is given to CHOLMOD; Automatic then follows
+/// CHOLMOD's own strategy (AMD; METIS too when AMD's fill is high; the fewer flops win).
+/// Returns whether the node-graph METIS permutation is the one analyzed.
+bool cholmod_analysis(SupernodalLLT& llt, const SparseMatrix& A, FillReducingOrdering ordering,
+                      const std::vector<int>& supervariables) {
+  cholmod_common& c = llt.cholmod();
+  const bool groups = static_cast<long>(supervariables.size()) == A.rows();
+  auto analyze_metis_quotient = [&] {
+    std::vector<int> perm = metis_quotient_ordering(A, supervariables);
+    c.nmethods = 1;
+    c.method[0].ordering = CHOLMOD_GIVEN;
+    llt.analyze_given(A, perm);
+  };
+  if (groups && ordering == FillReducingOrdering::Metis) {
+    analyze_metis_quotient();
+    return true;
+  }
+  if (!groups || ordering != FillReducingOrdering::Automatic) {
+    configure(c, ordering);
+    llt.analyzePattern(A);
+    return false;
+  }
+  configure(c, FillReducingOrdering::Amd);
+  llt.analyzePattern(A);
+  const double amd_flops = c.fl;
+  const double amd_lnz = c.lnz;
+  const bool amd_ok = llt.factor() != nullptr && c.status >= CHOLMOD_OK;
+  if (!amd_ok || amd_flops / amd_lnz < 500.0 || amd_lnz / static_cast<double>(A.nonZeros()) < 5.0) {
+    return false;  // AMD's fill is fine (CHOLMOD's test)
+  }
+  analyze_metis_quotient();
+  if (llt.factor() != nullptr && c.status >= CHOLMOD_OK && c.fl <= amd_flops)
+    return true;
+  configure(c, FillReducingOrdering::Amd);
+  llt.analyzePattern(A);
+  return false;
+}
+
 }  // namespace
 
 const char* to_string(LinearSolverKind kind) {
@@ -183,37 +222,12 @@ SolveOutcome LinearSolver::analyze(const SparseMatrix& A) {
   if (impl_->cholmod) {
     SupernodalLLT& llt = *impl_->cholmod;
     cholmod_common& c = llt.cholmod();
-    const bool groups = static_cast<long>(impl_->supervariables.size()) == A.rows();
     bool quotient = false;
-    if (groups && options_.ordering == FillReducingOrdering::Automatic) {
-      // CHOLMOD's default strategy, with our METIS: AMD first ...
-      configure(c, FillReducingOrdering::Amd);
-      llt.analyzePattern(A);
-      const double amd_flops = c.fl;
-      const double amd_lnz = c.lnz;
-      if (llt.factor() != nullptr && c.status >= CHOLMOD_OK && amd_flops / amd_lnz >= 500.0 &&
-          amd_lnz / static_cast<double>(A.nonZeros()) >= 5.0) {
-        // ... then METIS on the node graph, kept if it needs fewer flops.
-        std::vector<int> perm = metis_quotient_ordering(A, impl_->supervariables);
-        c.nmethods = 1;
-        c.method[0].ordering = CHOLMOD_GIVEN;
-        llt.analyze_given(A, perm);
-        quotient = true;
-        if (llt.factor() != nullptr && c.status >= CHOLMOD_OK && c.fl > amd_flops) {
-          configure(c, FillReducingOrdering::Amd);
-          llt.analyzePattern(A);
-          quotient = false;
-        }
-      }
-    } else if (groups && options_.ordering == FillReducingOrdering::Metis) {
-      std::vector<int> perm = metis_quotient_ordering(A, impl_->supervariables);
-      c.nmethods = 1;
-      c.method[0].ordering = CHOLMOD_GIVEN;
-      llt.analyze_given(A, perm);
-      quotient = true;
-    } else {
-      configure(c, options_.ordering);
-      llt.analyzePattern(A);
+    try {
+      quotient = cholmod_analysis(llt, A, options_.ordering, impl_->supervariables);
+    } catch (const std::exception& e) {
+      return {SolveStatus::SolverFailure,
+              fmt::format("fill-reducing ordering failed: {}", e.what())};
     }
     if (llt.factor() == nullptr || c.status < CHOLMOD_OK) {
       return {SolveStatus::SolverFailure,

@@ -1,8 +1,9 @@
 #include "solver/contact/condensation.hpp"
 
 #include <algorithm>
-#include <cstdio>
 #include <chrono>
+#include <cstdio>
+#include <map>
 #include <optional>
 #include <vector>
 
@@ -11,6 +12,7 @@
 #include <Eigen/Cholesky>
 
 #include "solver/contact/dense_kernels.hpp"
+#include "solver/fill_reducing_ordering.hpp"
 #include "solver/linear_solver.hpp"
 
 namespace cs::solver {
@@ -55,54 +57,120 @@ cholmod_dense view_vector(const Eigen::VectorXd& v) {
   return d;
 }
 
-/// A0 = K + D on the contact DOFs (a copy of K with its diagonal raised there).
+/// The symmetric matrix Delta added to K on the contact DOFs: diagonal d_k = K_kk and a chain
+/// e_k = K-scale / 4 between consecutive contact DOFs (diagonally dominant, so positive
+/// definite). The chain connects the contact DOFs of every body (an indenter's and a block's are
+/// not coupled in K), which keeps them last through CHOLMOD's postorder.
+struct ContactDiagonal {
+  Eigen::VectorXd d;  ///< Delta_kk
+  Eigen::VectorXd e;  ///< Delta_{k,k+1} = Delta_{k+1,k}
+};
+
+/// A0 = K + Delta (Delta on the contact DOFs).
 Eigen::SparseMatrix<double> raised_matrix(const Eigen::SparseMatrix<double>& K,
                                           const std::vector<int>& contact_dofs,
-                                          Eigen::VectorXd& D) {
-  Eigen::SparseMatrix<double> A0 = K;
-  D.resize(static_cast<Eigen::Index>(contact_dofs.size()));
-  for (std::size_t k = 0; k < contact_dofs.size(); ++k) {
-    const int j = contact_dofs[k];
-    double& diag = A0.coeffRef(j, j);  // the first entry of a sorted lower column
-    D[static_cast<Eigen::Index>(k)] = diag > 0.0 ? diag : 1.0;
-    diag += D[static_cast<Eigen::Index>(k)];
+                                          ContactDiagonal& delta) {
+  const int nc = static_cast<int>(contact_dofs.size());
+  delta.d.resize(nc);
+  delta.e = Eigen::VectorXd::Zero(std::max(0, nc - 1));
+  for (int k = 0; k < nc; ++k) {
+    const double kk = K.coeff(contact_dofs[k], contact_dofs[k]);
+    delta.d[k] = kk > 0.0 ? kk : 1.0;
   }
+  std::vector<Eigen::Triplet<double>> t;
+  t.reserve(2 * nc);
+  for (int k = 0; k < nc; ++k) {
+    t.emplace_back(contact_dofs[k], contact_dofs[k], delta.d[k]);
+    if (k + 1 < nc) {
+      delta.e[k] = 0.25 * std::min(delta.d[k], delta.d[k + 1]);
+      t.emplace_back(contact_dofs[k + 1], contact_dofs[k], delta.e[k]);  // lower: row > col
+    }
+  }
+  Eigen::SparseMatrix<double> D(K.rows(), K.cols());
+  D.setFromTriplets(t.begin(), t.end());
+  Eigen::SparseMatrix<double> A0 = K + D;
   A0.makeCompressed();
   return A0;
 }
 
-/// The lower-triangular pattern of the graph whose vertices are the nodes with interior DOFs
-/// (or the interior DOFs themselves), from the lower pattern of A. vertex_of[eq] is the vertex
-/// of an interior equation, -1 for a contact equation.
-Eigen::SparseMatrix<double> interior_graph(const Eigen::SparseMatrix<double>& A,
-                                           const std::vector<int>& vertex_of, int n_vertices) {
-  std::vector<std::vector<int>> dofs_of(n_vertices);
-  for (int eq = 0; eq < static_cast<int>(vertex_of.size()); ++eq) {
-    if (vertex_of[eq] >= 0)
-      dofs_of[vertex_of[eq]].push_back(eq);
-  }
-  std::vector<int> outer(n_vertices + 1, 0), inner, mark(n_vertices, -1);
-  inner.reserve(static_cast<size_t>(A.nonZeros() / 3));
-  for (int v = 0; v < n_vertices; ++v) {
-    mark[v] = v;
-    inner.push_back(v);  // the diagonal
-    for (int eq : dofs_of[v]) {
-      for (Eigen::SparseMatrix<double>::InnerIterator it(A, eq); it; ++it) {
-        const int w = vertex_of[it.row()];
-        if (w > v && mark[w] != v) {
-          mark[w] = v;
-          inner.push_back(w);
-        }
-      }
+/// The lower pattern of the principal submatrix of A (lower CSC) on the equations with
+/// new_index >= 0, renumbered by new_index (increasing, so lower stays lower). Values are 1.
+Eigen::SparseMatrix<double> principal_pattern(const Eigen::SparseMatrix<double>& A,
+                                              const std::vector<int>& new_index, int n_keep) {
+  std::vector<int> outer(n_keep + 1, 0), inner;
+  inner.reserve(static_cast<size_t>(A.nonZeros()));
+  for (int j = 0; j < A.outerSize(); ++j) {
+    const int nj = new_index[j];
+    if (nj < 0)
+      continue;
+    for (Eigen::SparseMatrix<double>::InnerIterator it(A, j); it; ++it) {
+      const int ni = new_index[it.row()];
+      if (ni >= 0)
+        inner.push_back(ni);
     }
-    std::sort(inner.begin() + outer[v], inner.end());
-    outer[v + 1] = static_cast<int>(inner.size());
+    outer[nj + 1] = static_cast<int>(inner.size());
   }
-  std::vector<double> values(inner.size(), 1.0);
-  return Eigen::Map<Eigen::SparseMatrix<double>>(n_vertices, n_vertices,
-                                                 static_cast<Eigen::Index>(inner.size()),
-                                                 outer.data(), inner.data(), values.data());
+  const std::vector<double> values(inner.size(), 1.0);
+  return Eigen::Map<const Eigen::SparseMatrix<double>>(n_keep, n_keep,
+                                                       static_cast<Eigen::Index>(inner.size()),
+                                                       outer.data(), inner.data(), values.data());
 }
+
+/// A failed or numerically singular factorization as a status naming the likely cause.
+SolveOutcome check_factor(const cholmod_factor& L, const cholmod_common& c) {
+  if (c.status < CHOLMOD_OK && c.status != CHOLMOD_NOT_POSDEF) {
+    return {SolveStatus::SolverFailure,
+            fmt::format("CHOLMOD factorization failed (status {})", c.status)};
+  }
+  const int* P = static_cast<const int*>(L.Perm);
+  if (L.minor < L.n) {
+    SolveOutcome out{SolveStatus::NotPositiveDefinite,
+                     fmt::format("the elastic stiffness with the contact DOFs held is not positive "
+                                 "definite (pivot at equation {}): a body is held neither by "
+                                 "prescribed displacements nor by its contact surface",
+                                 P[L.minor])};
+    out.failed_equation = P[L.minor];
+    return out;
+  }
+  const double rcond =
+      cholmod_rcond(const_cast<cholmod_factor*>(&L), const_cast<cholmod_common*>(&c));
+  if (!(rcond > 1e-15)) {
+    return {SolveStatus::Singular,
+            fmt::format("the elastic stiffness with the contact DOFs held is numerically singular "
+                        "(pivot ratio {:.3g}): a body is held neither by prescribed displacements "
+                        "nor by its contact surface",
+                        rcond)};
+  }
+  return {SolveStatus::Ok, ""};
+}
+
+/// The trailing nc x nc block of a supernodal LL' factor (lower triangular, dense), read from the
+/// supernodes' column-major blocks (rows of a supernode are sorted, its diagonal block first).
+Eigen::MatrixXd trailing_block(const cholmod_factor& L, int nc) {
+  const int first = static_cast<int>(L.n) - nc;
+  Eigen::MatrixXd block = Eigen::MatrixXd::Zero(nc, nc);
+  const int* super = static_cast<const int*>(L.super);
+  const int* pi = static_cast<const int*>(L.pi);
+  const int* px = static_cast<const int*>(L.px);
+  const int* rows = static_cast<const int*>(L.s);
+  const double* x = static_cast<const double*>(L.x);
+  for (size_t s = 0; s < L.nsuper; ++s) {
+    const int k1 = super[s];
+    const int k2 = super[s + 1];
+    if (k2 <= first)
+      continue;
+    const int nsrow = pi[s + 1] - pi[s];
+    for (int j = std::max(k1, first); j < k2; ++j) {
+      const double* col = x + px[s] + static_cast<size_t>(j - k1) * nsrow;
+      for (int r = j - k1; r < nsrow; ++r)
+        block(rows[pi[s] + r] - first, j - first) = col[r];
+    }
+  }
+  return block;
+}
+
+/// From this many equations on, the trailing-block path orders by METIS directly.
+constexpr Eigen::Index kMetisFrom = 200000;
 
 }  // namespace
 
@@ -141,78 +209,197 @@ struct DofCondensation::Impl {
     return out;
   }
 
-  /// Orders the interior by METIS on its (node) graph, then the contact DOFs.
-  SolveOutcome order(const Eigen::SparseMatrix<double>& A0, const DofCondensationInput& in,
-                     const std::vector<char>& is_contact, std::vector<int>& perm) {
+  /// The interior of A0 (the equations not in c) as a graph: its lower pattern and the group
+  /// (node) of each equation, for the quotient orderings.
+  struct InteriorGraph {
+    std::vector<int> equations;           ///< interior index -> equation
+    std::vector<int> group;               ///< interior index -> node (or itself)
+    Eigen::SparseMatrix<double> pattern;  ///< lower pattern, interior numbering
+  };
+
+  static InteriorGraph interior_graph(const Eigen::SparseMatrix<double>& A0,
+                                      const DofCondensationInput& in,
+                                      const std::vector<char>& is_contact) {
     const int n = static_cast<int>(A0.rows());
     const bool by_node = static_cast<int>(in.node_of_equation.size()) == n;
-    std::vector<int> vertex_of(n, -1), first_dof_of_vertex;
-    std::vector<int> vertex_of_node;
-    int n_vertices = 0;
+    InteriorGraph g;
+    std::vector<int> index(n, -1);
     for (int eq = 0; eq < n; ++eq) {
       if (is_contact[eq])
         continue;
-      if (by_node) {
-        const int node = in.node_of_equation[eq];
-        if (node >= static_cast<int>(vertex_of_node.size()))
-          vertex_of_node.resize(node + 1, -1);
-        if (vertex_of_node[node] < 0)
-          vertex_of_node[node] = n_vertices++;
-        vertex_of[eq] = vertex_of_node[node];
-      } else {
-        vertex_of[eq] = n_vertices++;
+      index[eq] = static_cast<int>(g.equations.size());
+      g.equations.push_back(eq);
+      g.group.push_back(by_node ? in.node_of_equation[eq] : eq);
+    }
+    g.pattern = principal_pattern(A0, index, static_cast<int>(g.equations.size()));
+    return g;
+  }
+
+  /// Constrained AMD (CAMD) on the node (quotient) graph of the whole matrix, the contact DOFs
+  /// constrained last: AMD's ordering of the interior then accounts for the fill the contact
+  /// DOFs bring (ordering them last without telling AMD would fill every surface column).
+  bool order_camd(const Eigen::SparseMatrix<double>& A0, const DofCondensationInput& in,
+                  const std::vector<char>& is_contact, std::vector<int>& perm) {
+    const int n = static_cast<int>(A0.rows());
+    const bool by_node = static_cast<int>(in.node_of_equation.size()) == n;
+    // Vertices: (node, interior|contact) pairs, numbered by first appearance.
+    std::vector<int> vertex(n);
+    std::map<std::pair<int, int>, int> vertex_of;
+    std::vector<int> member_set;
+    for (int eq = 0; eq < n; ++eq) {
+      const std::pair<int, int> key{by_node ? in.node_of_equation[eq] : eq, is_contact[eq]};
+      const auto [it, fresh] = vertex_of.emplace(key, static_cast<int>(member_set.size()));
+      if (fresh)
+        member_set.push_back(is_contact[eq]);
+      vertex[eq] = it->second;
+    }
+    const int nv = static_cast<int>(member_set.size());
+    std::vector<std::vector<int>> members(nv), upper(nv);
+    for (int eq = 0; eq < n; ++eq) {
+      members[vertex[eq]].push_back(eq);
+      for (Eigen::SparseMatrix<double>::InnerIterator it(A0, eq); it; ++it) {
+        const int a = vertex[eq], b = vertex[it.row()];
+        if (a != b)
+          upper[std::min(a, b)].push_back(std::max(a, b));
       }
+    }
+    std::vector<int> outer(nv + 1, 0), inner;
+    for (int v = 0; v < nv; ++v) {
+      std::vector<int>& adj = upper[v];
+      std::sort(adj.begin(), adj.end());
+      adj.erase(std::unique(adj.begin(), adj.end()), adj.end());
+      inner.push_back(v);  // the diagonal, then the neighbours w > v
+      inner.insert(inner.end(), adj.begin(), adj.end());
+      outer[v + 1] = static_cast<int>(inner.size());
+      std::vector<int>().swap(adj);
+    }
+    std::vector<double> ones(inner.size(), 1.0);
+    cholmod_sparse Q{};
+    Q.nrow = Q.ncol = static_cast<size_t>(nv);
+    Q.nzmax = inner.size();
+    Q.p = outer.data();
+    Q.i = inner.data();
+    Q.x = ones.data();
+    Q.stype = -1;
+    Q.itype = CHOLMOD_INT;
+    Q.xtype = CHOLMOD_REAL;
+    Q.dtype = CHOLMOD_DOUBLE;
+    Q.sorted = 1;
+    Q.packed = 1;
+    std::vector<int> vperm(nv);
+    if (nv > 0 && !cholmod_camd(&Q, nullptr, 0, member_set.data(), vperm.data(), &common)) {
+      return false;
     }
     perm.clear();
     perm.reserve(n);
-    if (n_vertices > 0) {
-      const Eigen::SparseMatrix<double> G = interior_graph(A0, vertex_of, n_vertices);
-      cholmod_sparse Gv = view_lower(G);
-      std::vector<int> vperm(n_vertices);
-      if (!cholmod_metis(&Gv, nullptr, 0, 0, vperm.data(), &common)) {
-        return {SolveStatus::SolverFailure,
-                fmt::format("METIS ordering failed (CHOLMOD status {})", common.status)};
-      }
-      std::vector<std::vector<int>> dofs_of(n_vertices);
-      for (int eq = 0; eq < n; ++eq) {
-        if (vertex_of[eq] >= 0)
-          dofs_of[vertex_of[eq]].push_back(eq);
-      }
-      for (int k = 0; k < n_vertices; ++k) {
-        for (int eq : dofs_of[vperm[k]])
-          perm.push_back(eq);
-      }
+    for (int v : vperm) {
+      for (int eq : members[v])
+        perm.push_back(eq);
     }
-    for (int eq : in.contact_dofs)
-      perm.push_back(eq);
-    return {SolveStatus::Ok, ""};
+    return true;
   }
 
-  /// Symbolic analysis with the given order; CHOLMOD's postorder is kept if it leaves the contact
-  /// DOFs last (it does when their Schur complement is connected), else dropped.
-  bool analyze(cholmod_sparse* A, std::vector<int>& perm, int nc) {
-    for (int postorder : {1, 0}) {
-      if (L != nullptr)
-        cholmod_free_factor(&L, &common);
-      common.nmethods = 1;
-      common.method[0].ordering = CHOLMOD_GIVEN;
-      common.postorder = postorder;
-      common.supernodal = CHOLMOD_SUPERNODAL;
-      L = cholmod_analyze_p(A, perm.data(), nullptr, 0, &common);
-      if (L == nullptr)
+  /// METIS nested dissection on the node graph of the interior (the FE core's quotient
+  /// ordering), then c.
+  bool order_metis(const InteriorGraph& g, const std::vector<int>& contact_dofs,
+                   std::vector<int>& perm) {
+    perm.clear();
+    if (!g.equations.empty()) {
+      try {
+        for (int k : metis_quotient_ordering(g.pattern, g.group))
+          perm.push_back(g.equations[k]);
+      } catch (const std::exception&) {
         return false;
-      const int n = static_cast<int>(L->n);
-      const int* P = static_cast<const int*>(L->Perm);
-      std::vector<char> tail(n, 0);
-      for (int k = n - nc; k < n; ++k)
-        tail[perm[k]] = 1;
-      bool last = true;
-      for (int k = n - nc; k < n && last; ++k)
-        last = tail[P[k]] != 0;
-      if (last)
-        return true;
+      }
     }
-    return false;
+    for (int eq : contact_dofs)
+      perm.push_back(eq);
+    return true;
+  }
+
+  /// Symbolic analysis of A in the order `perm` (c last), with CHOLMOD's postorder of the
+  /// elimination tree where it keeps c last; where it does not (an interior subtree hangs below
+  /// a contact DOF of another body), the postordered order with c moved back to the end, which
+  /// is still a postorder. Returns the symbolic factor or nullptr.
+  cholmod_factor* analyze(cholmod_sparse* A, const std::vector<int>& perm,
+                          const std::vector<char>& is_contact) {
+    common.nmethods = 1;
+    common.method[0].ordering = CHOLMOD_GIVEN;
+    common.supernodal = CHOLMOD_SUPERNODAL;
+    common.postorder = 1;
+    cholmod_factor* F = cholmod_analyze_p(A, const_cast<int*>(perm.data()), nullptr, 0, &common);
+    if (F == nullptr)
+      return nullptr;
+    const int n = static_cast<int>(F->n);
+    const int* P = static_cast<const int*>(F->Perm);
+    int nc = 0;
+    for (int k = 0; k < n; ++k)
+      nc += is_contact[k];
+    bool last = true;
+    for (int k = n - nc; k < n && last; ++k)
+      last = is_contact[P[k]] != 0;
+    if (last)
+      return F;
+    std::vector<int> moved;
+    moved.reserve(n);
+    for (int k = 0; k < n; ++k) {
+      if (!is_contact[P[k]])
+        moved.push_back(P[k]);
+    }
+    for (int k = 0; k < n; ++k) {
+      if (is_contact[P[k]])
+        moved.push_back(P[k]);
+    }
+    cholmod_free_factor(&F, &common);
+    common.postorder = 0;
+    return cholmod_analyze_p(A, moved.data(), nullptr, 0, &common);
+  }
+
+  /// The ordering policy. Small systems: CAMD on the node graph, then (as CHOLMOD's default
+  /// strategy does) METIS where CAMD's fill is high (flops / nnz(L) >= 500 and nnz(L) / nnz(A)
+  /// >= 5), keeping the cheaper. Large systems (>= kMetisFrom equations): METIS alone, since
+  /// there CAMD with c last needs 2-3x METIS's flops (measured: S_1_7 fine Q4, 5.4e5 equations:
+  /// CAMD 0.9 s analysis + 7.4e10 flops, METIS 3.2 s analysis + 2.3e10 flops).
+  SolveOutcome order_and_analyze(const Eigen::SparseMatrix<double>& A0,
+                                 const DofCondensationInput& in,
+                                 const std::vector<char>& is_contact) {
+    if (L != nullptr)
+      cholmod_free_factor(&L, &common);
+    cholmod_sparse A = view_lower(A0);
+    std::vector<int> perm;
+    const auto failed = [this] {
+      return SolveOutcome{
+          SolveStatus::SolverFailure,
+          fmt::format("CHOLMOD symbolic analysis failed (status {})", common.status)};
+    };
+    const bool metis_only = in.ordering == FillReducingOrdering::Metis ||
+                            (in.ordering != FillReducingOrdering::Amd && A0.rows() >= kMetisFrom);
+    if (metis_only) {
+      if (!order_metis(interior_graph(A0, in, is_contact), in.contact_dofs, perm) ||
+          (L = analyze(&A, perm, is_contact)) == nullptr) {
+        return failed();
+      }
+      return {SolveStatus::Ok, ""};
+    }
+    if (!order_camd(A0, in, is_contact, perm) || (L = analyze(&A, perm, is_contact)) == nullptr) {
+      return failed();
+    }
+    const double camd_flops = common.fl;
+    const double camd_lnz = common.lnz;
+    if (in.ordering != FillReducingOrdering::Amd && camd_flops / camd_lnz >= 500.0 &&
+        camd_lnz / static_cast<double>(A0.nonZeros()) >= 5.0 &&
+        order_metis(interior_graph(A0, in, is_contact), in.contact_dofs, perm)) {
+      cholmod_factor* F = analyze(&A, perm, is_contact);
+      if (F != nullptr && common.fl < camd_flops) {
+        cholmod_free_factor(&L, &common);
+        L = F;
+      } else if (F != nullptr) {
+        cholmod_free_factor(&F, &common);
+        common.fl = camd_flops;
+        common.lnz = camd_lnz;
+      }
+    }
+    return {SolveStatus::Ok, ""};
   }
 };
 
@@ -233,126 +420,112 @@ SolveOutcome DofCondensation::compute(const DofCondensationInput& in) {
     position_[contact_dofs_[k]] = k;
     is_contact[contact_dofs_[k]] = 1;
   }
-  Impl& im = *impl_;
-  im.f = in.f;
-  auto start = Clock::now();
-  const Eigen::SparseMatrix<double> A0 = raised_matrix(in.K_lower, contact_dofs_, D_);
+  impl_->f = in.f;
+  const auto start = Clock::now();
+  ContactDiagonal delta;
+  const Eigen::SparseMatrix<double> A0 = raised_matrix(in.K_lower, contact_dofs_, delta);
+  delta_d_ = std::move(delta.d);
+  delta_e_ = std::move(delta.e);
   timings_.assemble_s = seconds_since(start);
+  return method_ == CondensationMethod::MultipleRightHandSides
+             ? compute_reference(A0)
+             : compute_trailing(A0, in, is_contact);
+}
 
-  if (method_ == CondensationMethod::MultipleRightHandSides) {
-    im.solver.emplace();
-    start = Clock::now();
-    SolveOutcome out = im.solver->analyze(A0);
-    timings_.analyze_s = seconds_since(start);
-    if (!out.ok())
-      return out;
-    start = Clock::now();
-    out = im.solver->factorize(A0);
-    timings_.factorize_s = seconds_since(start);
-    if (!out.ok()) {
-      out.reason = "the elastic stiffness with the contact DOFs held: " + out.reason;
-      return out;
-    }
-    factor_nnz_ = im.solver->info().nnz_factor;
-    factor_flops_ = im.solver->info().flops;
-    start = Clock::now();
-    Eigen::MatrixXd E = Eigen::MatrixXd::Zero(n, nc);
-    for (int k = 0; k < nc; ++k)
-      E(contact_dofs_[k], k) = 1.0;
-    const Eigen::MatrixXd X = im.solver->solve(E);  // A0^{-1} E_c
-    Eigen::MatrixXd Xcc(nc, nc);
-    for (int k = 0; k < nc; ++k)
-      Xcc.row(k) = X.row(contact_dofs_[k]);
-    Xcc = 0.5 * (Xcc + Xcc.transpose()).eval();
-    const Eigen::MatrixXd SD = Xcc.llt().solve(Eigen::MatrixXd::Identity(nc, nc));  // S + D
-    S_ = SD;
-    S_.diagonal() -= D_;
-    update_load(in.f);
-    timings_.condense_s = seconds_since(start);
-    return {SolveStatus::Ok, ""};
+SolveOutcome DofCondensation::compute_reference(const Eigen::SparseMatrix<double>& A0) {
+  Impl& im = *impl_;
+  const int n = static_cast<int>(A0.rows());
+  const int nc = n_contact_dofs();
+  im.solver.emplace();
+  auto start = Clock::now();
+  SolveOutcome out = im.solver->analyze(A0);
+  timings_.analyze_s = seconds_since(start);
+  if (!out.ok())
+    return out;
+  start = Clock::now();
+  out = im.solver->factorize(A0);
+  timings_.factorize_s = seconds_since(start);
+  if (!out.ok()) {
+    out.reason = "the elastic stiffness with the contact DOFs held: " + out.reason;
+    return out;
   }
+  factor_nnz_ = im.solver->info().nnz_factor;
+  factor_flops_ = im.solver->info().flops;
+  start = Clock::now();
+  Eigen::MatrixXd E = Eigen::MatrixXd::Zero(n, nc);
+  for (int k = 0; k < nc; ++k)
+    E(contact_dofs_[k], k) = 1.0;
+  const Eigen::MatrixXd X = im.solver->solve(E);  // A0^{-1} E_c
+  Eigen::MatrixXd Xcc(nc, nc);
+  for (int k = 0; k < nc; ++k)
+    Xcc.row(k) = X.row(contact_dofs_[k]);
+  Xcc = 0.5 * (Xcc + Xcc.transpose()).eval();
+  S_ = Xcc.llt().solve(Eigen::MatrixXd::Identity(nc, nc));  // S + Delta
+  subtract_delta();
+  update_load(im.f);
+  timings_.condense_s = seconds_since(start);
+  return {SolveStatus::Ok, ""};
+}
 
-  // Trailing-block path.
+SolveOutcome DofCondensation::compute_trailing(const Eigen::SparseMatrix<double>& A0,
+                                               const DofCondensationInput& in,
+                                               const std::vector<char>& is_contact) {
+  Impl& im = *impl_;
   im.start();
   cholmod_common& c = im.common;
-  start = Clock::now();
-  std::vector<int> perm;
-  SolveOutcome ordered = im.order(A0, in, is_contact, perm);
-  if (!ordered.ok())
-    return ordered;
-  cholmod_sparse A0_view = view_lower(A0);
-  const bool analyzed = im.analyze(&A0_view, perm, nc);
+  const int n = static_cast<int>(A0.rows());
+  const int nc = n_contact_dofs();
+  auto start = Clock::now();
+  const SolveOutcome analyzed = im.order_and_analyze(A0, in, is_contact);
   timings_.analyze_s = seconds_since(start);
-  if (!analyzed || c.status < CHOLMOD_OK) {
-    return {SolveStatus::SolverFailure,
-            fmt::format("CHOLMOD symbolic analysis failed (status {})", c.status)};
-  }
+  if (!analyzed.ok())
+    return analyzed;
+  cholmod_sparse A0_view = view_lower(A0);
   start = Clock::now();
   cholmod_factorize(&A0_view, im.L, &c);
   timings_.factorize_s = seconds_since(start);
   factor_nnz_ = c.lnz;
   factor_flops_ = c.fl;
-  if (c.status < CHOLMOD_OK && c.status != CHOLMOD_NOT_POSDEF) {
-    return {SolveStatus::SolverFailure,
-            fmt::format("CHOLMOD factorization failed (status {})", c.status)};
-  }
-  const int* P = static_cast<const int*>(im.L->Perm);
-  if (im.L->minor < im.L->n) {
-    SolveOutcome out{SolveStatus::NotPositiveDefinite,
-                     fmt::format("the elastic stiffness with the contact DOFs held is not positive "
-                                 "definite (pivot at equation {}): a body is held neither by "
-                                 "prescribed displacements nor by its contact surface",
-                                 P[im.L->minor])};
-    out.failed_equation = P[im.L->minor];
-    return out;
-  }
-  const double rcond = cholmod_rcond(im.L, &c);
-  if (!(rcond > 1e-15)) {
-    return {SolveStatus::Singular,
-            fmt::format("the elastic stiffness with the contact DOFs held is numerically singular "
-                        "(pivot ratio {:.3g}): a body is held neither by prescribed displacements "
-                        "nor by its contact surface",
-                        rcond)};
-  }
+  SolveOutcome checked = check_factor(*im.L, c);
+  if (!checked.ok())
+    return checked;
 
   start = Clock::now();
-  // The trailing block of the factor, in the order of P's tail; then back to contact_dofs_.
-  const int first = n - nc;
-  std::vector<int> tail_position(nc);  // position in P's tail -> index in contact_dofs_
+  // The trailing block of the factor (in the factor's tail order): S + Delta = L_cc L_cc^T,
+  // permuted back to contact_dofs_ order.
+  const int* P = static_cast<const int*>(im.L->Perm);
+  tail_position_.resize(nc);  // position in the factor's tail -> index in contact_dofs_
   for (int k = 0; k < nc; ++k)
-    tail_position[k] = position_[P[first + k]];
-  Eigen::MatrixXd Lt = Eigen::MatrixXd::Zero(nc, nc);
-  const int* super = static_cast<const int*>(im.L->super);
-  const int* pi = static_cast<const int*>(im.L->pi);
-  const int* px = static_cast<const int*>(im.L->px);
-  const int* rows = static_cast<const int*>(im.L->s);
-  const double* x = static_cast<const double*>(im.L->x);
-  for (size_t s = 0; s < im.L->nsuper; ++s) {
-    const int k1 = super[s];
-    const int k2 = super[s + 1];
-    if (k2 <= first)
-      continue;
-    const int nsrow = pi[s + 1] - pi[s];
-    for (int j = std::max(k1, first); j < k2; ++j) {
-      const double* col = x + px[s] + static_cast<size_t>(j - k1) * nsrow;
-      for (int r = j - k1; r < nsrow; ++r)
-        Lt(rows[pi[s] + r] - first, j - first) = col[r];
-    }
-  }
-  // S + D = L_cc L_cc^T, permuted from the factor's tail order to contact_dofs_ order.
+    tail_position_[k] = position_[P[n - nc + k]];
+  L_tail_ = trailing_block(*im.L, nc);
   Eigen::MatrixXd SDt;
-  dense::lower_outer_product(Lt, SDt);
+  dense::lower_outer_product(L_tail_, SDt);
   S_.resize(nc, nc);
   for (int a = 0; a < nc; ++a) {
     for (int b = 0; b < nc; ++b)
-      S_(tail_position[a], tail_position[b]) = SDt(a, b);
+      S_(tail_position_[a], tail_position_[b]) = SDt(a, b);
   }
-  L_tail_ = std::move(Lt);
-  tail_position_ = std::move(tail_position);
+  subtract_delta();
   update_load(in.f);
-  S_.diagonal() -= D_;
   timings_.condense_s = seconds_since(start);
   return {SolveStatus::Ok, ""};
+}
+
+Eigen::VectorXd DofCondensation::delta_times(const Eigen::VectorXd& u_c) const {
+  Eigen::VectorXd out = delta_d_.cwiseProduct(u_c);
+  for (Eigen::Index k = 0; k < delta_e_.size(); ++k) {
+    out[k] += delta_e_[k] * u_c[k + 1];
+    out[k + 1] += delta_e_[k] * u_c[k];
+  }
+  return out;
+}
+
+void DofCondensation::subtract_delta() {
+  S_.diagonal() -= delta_d_;
+  for (Eigen::Index k = 0; k < delta_e_.size(); ++k) {
+    S_(k, k + 1) -= delta_e_[k];
+    S_(k + 1, k) -= delta_e_[k];
+  }
 }
 
 void DofCondensation::update_load(const Eigen::VectorXd& f) {
@@ -360,12 +533,12 @@ void DofCondensation::update_load(const Eigen::VectorXd& f) {
   im.f = f;
   const int nc = n_contact_dofs();
   f_c_.resize(nc);
-  if (im.solver) {  // f_c = (S + D) (A0^{-1} f)_c
+  if (im.solver) {  // f_c = (S + Delta) (A0^{-1} f)_c
     const Eigen::VectorXd x = im.solver->solve(f);
     Eigen::VectorXd x_c(nc);
     for (int k = 0; k < nc; ++k)
       x_c[k] = x[contact_dofs_[k]];
-    f_c_ = S_ * x_c + D_.cwiseProduct(x_c);
+    f_c_ = S_ * x_c + delta_times(x_c);
     return;
   }
   // y = L^{-1} P f; f_c = L_cc y_c.
@@ -383,10 +556,10 @@ void DofCondensation::update_load(const Eigen::VectorXd& f) {
 }
 
 Eigen::VectorXd DofCondensation::recover(const Eigen::VectorXd& u_c) const {
-  // x = A0^{-1} [f_i; f_c(original) - f_c(condensed) + (S + D) u_c] has x_c = u_c and the
+  // x = A0^{-1} [f_i; f_c(original) - f_c(condensed) + (S + Delta) u_c] has x_c = u_c and the
   // interior in equilibrium with it.
   Eigen::VectorXd rhs = impl_->f;
-  const Eigen::VectorXd SDu = S_ * u_c + D_.cwiseProduct(u_c);
+  const Eigen::VectorXd SDu = S_ * u_c + delta_times(u_c);
   for (int k = 0; k < n_contact_dofs(); ++k) {
     rhs[contact_dofs_[k]] += SDu[k] - f_c_[k];
   }

@@ -196,10 +196,19 @@ const ConstraintSet& ContactAnalysis::constraints(ConstraintRows rows) {
 }
 
 std::vector<int> ContactAnalysis::candidates(const ConstraintSet& set, double pinball) const {
-  const Eigen::VectorXd g_start = set.g0 + set.B * elastic_.dof_map().prescribed_values();
+  const DofMap& dofs = elastic_.dof_map();
+  const Eigen::VectorXd g_start = set.g0 + set.B * dofs.prescribed_values();
   std::vector<int> rows;
   for (int j = 0; j < set.n_rows(); ++j) {
-    if (std::abs(g_start[j]) <= pinball * set.rows[j].depth_h)
+    if (!(std::abs(g_start[j]) <= pinball * set.rows[j].depth_h))
+      continue;
+    // A row whose every DOF is prescribed cannot move: it is no contact candidate.
+    bool movable = false;
+    for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator e(set.B, j); e && !movable;
+         ++e) {
+      movable = dofs.equation(static_cast<int>(e.col())) >= 0;
+    }
+    if (movable)
       rows.push_back(j);
   }
   return rows;

@@ -4,8 +4,8 @@
 // Usage (a suite problem):
 //   Model model = ...;                          // mesh with edge sets, materials, BCs, loads
 //   LinearStaticAnalysis elastic(model);        // the FE core: DOF map, assembly
-//   ContactAnalysis contact(elastic, {"block.top", TargetSurface{"indenter.bottom"}});
-//   //   or a rigid target: {"block.top", RigidCircle{{0.0, -R}, R}}
+//   ContactAnalysis contact(elastic, {"block.contact", TargetSurface{"indenter.contact"}});
+//   //   or a rigid target: {"block.contact", RigidCircle{{0.0, -R}, R}}
 //   ContactSettings s;                          // discretization, algorithm, FKN, FTOLN, pinball
 //   s.discretization = ContactDiscretization::SurfaceToSurface;
 //   s.algorithm = ContactAlgorithm::LagrangeMultiplier;
@@ -24,6 +24,11 @@
 // algorithm (one switch) -> displacement recovery -> per-node results. Rows outside the pinball
 // never act; if one of them ends up penetrating, the result is NotConverged (ContactBeyondPinball)
 // rather than silently wrong (except for MPC, which by definition ignores them).
+//
+// Changed loads and prescribed values are picked up by the next solve (one forward solve);
+// e.g. a load-controlled rigid punch (secant iterations on a support displacement) should keep
+// one ContactAnalysis across its iterations instead of refactoring for each. A ContactAnalysis
+// is not thread-safe (it caches); give each worker its own.
 
 #include <map>
 #include <memory>

@@ -44,14 +44,15 @@ enum class ContactAlgorithm {
   MultipointConstraint,
 };
 
-/// How the elastic system is condensed onto the contact constraints (both give the same
-/// numbers to round-off; see solver/contact/condensation.hpp).
+/// How the elastic system is condensed onto the contact DOFs (both give the same numbers to
+/// round-off; see solver/contact/condensation.hpp).
 enum class CondensationMethod {
-  /// One sparse factorization with the contact DOFs ordered last; the condensed operator is
-  /// read from the trailing block of the factor. The fast path.
+  /// One sparse factorization with the contact DOFs ordered last (constrained AMD, or METIS
+  /// where AMD's fill is high); the Schur complement is read from the trailing block of the
+  /// factor. The fast path.
   TrailingFactorBlock,
-  /// One sparse factorization in CHOLMOD's own ordering and one solve per constraint. The
-  /// simple reference path, for tests and small models.
+  /// One sparse factorization in the FE core's own ordering and one solve per contact DOF.
+  /// The simple reference path, for tests and small models (memory n x |c|).
   MultipleRightHandSides,
 };
 

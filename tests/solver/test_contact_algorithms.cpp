@@ -6,12 +6,14 @@
 // message naming the cause; the condensed solution equals a direct sparse solve of the final
 // active-set system (to 1e-10), and both condensation methods agree.
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
 #include <gtest/gtest.h>
 #include <Eigen/SparseLU>
 
+#include "solver/contact/condensation.hpp"
 #include "solver/contact/contact_error.hpp"
 #include "solver/contact/lagrange_multiplier.hpp"
 #include "support/tolerance.hpp"
@@ -282,6 +284,51 @@ TEST(ContactCondensation, OneFactorizationServesEveryDiscretizationAndAlgorithm)
     }
   }
   EXPECT_EQ(factorizations, 1);
+}
+
+TEST(ContactCondensation, SchurComplementIsTheSameForEveryOrderingAndMethod) {
+  // The Schur complement onto the block's contact-surface DOFs (the block floats: K is
+  // singular, K_ii is not) from the reference (multiple right-hand sides) and from the trailing
+  // factor block with CAMD and with METIS orderings.
+  HertzSpec spec;
+  spec.n = 16;
+  spec.type = ElementType::Q8;
+  spec.meshed_indenter = true;
+  const Model model = contact_test::hertz_model(spec);
+  LinearStaticAnalysis elastic(model);
+  elastic.assemble();
+  const DofMap& dofs = elastic.dof_map();
+  std::vector<int> c, node_of(dofs.n_free());
+  for (const char* set : {"block.bottom", "indenter.contact"}) {
+    for (int node : model.mesh.node_sets.at(set)) {
+      for (int k = 0; k < 2; ++k) {
+        if (dofs.equation(2 * node + k) >= 0)
+          c.push_back(dofs.equation(2 * node + k));
+      }
+    }
+  }
+  std::sort(c.begin(), c.end());
+  for (int eq = 0; eq < dofs.n_free(); ++eq)
+    node_of[eq] = dofs.free_dofs()[eq] / 2;
+  const Eigen::VectorXd f = elastic.reduced_load(model.loads);
+  const Eigen::VectorXd u_c =
+      Eigen::VectorXd::LinSpaced(static_cast<Eigen::Index>(c.size()), -1e-3, 2e-3);
+  DofCondensation reference(CondensationMethod::MultipleRightHandSides);
+  ASSERT_TRUE(reference.compute({elastic.stiffness().K_ff, f, c, node_of}).ok());
+  const Eigen::VectorXd u_ref = reference.recover(u_c);
+  for (FillReducingOrdering ordering : {FillReducingOrdering::Amd, FillReducingOrdering::Metis,
+                                        FillReducingOrdering::CholmodDefault}) {
+    DofCondensation fast(CondensationMethod::TrailingFactorBlock);
+    DofCondensationInput in{elastic.stiffness().K_ff, f, c, node_of};
+    in.ordering = ordering;
+    ASSERT_TRUE(fast.compute(in).ok());
+    // Round-off, amplified by the E ratio 1e6 between the two bodies' stiffness blocks.
+    const double scale = reference.schur().cwiseAbs().maxCoeff();
+    EXPECT_LE((fast.schur() - reference.schur()).cwiseAbs().maxCoeff(), 1e-10 * scale);
+    EXPECT_LE((fast.condensed_load() - reference.condensed_load()).norm(),
+              1e-10 * reference.condensed_load().norm() + 1e-12 * f.norm());
+    EXPECT_LE((fast.recover(u_c) - u_ref).norm(), 1e-10 * u_ref.norm());
+  }
 }
 
 TEST(ContactCondensation, BothMethodsAgree) {

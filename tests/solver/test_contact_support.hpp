@@ -49,6 +49,9 @@ struct PatchSpec {
   double nu = 0.3;
   double p = 1.0;
   double E_ratio = 1e6;
+  /// The study's own set-up instead: the block on rollers at z = h, the meshed indenter loaded
+  /// by p on its back face and held only by the contact.
+  bool loaded_indenter = false;
 };
 
 inline Model patch_model(const PatchSpec& s) {
@@ -62,11 +65,19 @@ inline Model patch_model(const PatchSpec& s) {
   model.analysis = s.analysis;
   model.materials.push_back({s.E, s.nu});
   model.fix(NodeSelection::node_set("block.left"), Component::X);
-  model.loads.add_pressure("block.top", s.p);
+  if (s.loaded_indenter) {
+    model.fix(NodeSelection::node_set("block.top"), Component::Z);
+  } else {
+    model.loads.add_pressure("block.top", s.p);
+  }
   if (s.indenter_nx > 0) {
     model.materials.push_back({s.E * s.E_ratio, s.nu});
     model.fix(NodeSelection::node_set("indenter.left"), Component::X);
-    model.fix(NodeSelection::node_set("indenter.bottom"), Component::Z);
+    if (s.loaded_indenter) {
+      model.loads.add_pressure("indenter.bottom", s.p);
+    } else {
+      model.fix(NodeSelection::node_set("indenter.bottom"), Component::Z);
+    }
   }
   return model;
 }
