@@ -11,7 +11,7 @@
 // (r_e/b = 1/7) follow from p = P / (2(b + r_e)), the pressure on the punch's top face, with
 // Eq. 32 evaluated WITHOUT the factor (1 - nu^2); with it (plane strain, physically consistent,
 // the default here) the peaks are 10.1956, 11.2424, 13.4622 at nu = 1/4, p/E = 1e-3. Both are
-// available through Eq32Factor; see ../shared/ARCHITECTURE.md.
+// available through Eq32Factor; see docs/conventions.md.
 //
 // Numerics: phi0 solves Eq. 32 with GSL's Brent root finder, on u = pi/2 - phi0 so that light
 // loads keep their digits. The bracket of Eq. 31 is O(u^3) while its terms are O(u): the

@@ -48,7 +48,7 @@ TEST(Steuermann, ReproducesTheStudysPrintedValuesWithoutTheFactor) {
 }
 
 TEST(Steuermann, PlaneStrainValuesWithTheFactor) {
-  // ../shared/ARCHITECTURE.md: with (1 - nu^2) the peaks are 10.1956, 11.2424, 13.4622.
+  // docs/conventions.md: with (1 - nu^2) the peaks are 10.1956, 11.2424, 13.4622.
   EXPECT_NEAR(normalized_peak(study_punch(1.0, Eq32Factor::kWithOneMinusNu2)), 10.1956, 0.5e-4);
   EXPECT_NEAR(normalized_peak(study_punch(1.0 / 3.0, Eq32Factor::kWithOneMinusNu2)), 11.2424,
               0.5e-4);
