@@ -1,0 +1,57 @@
+// The engine on real problems: one and two workers give bit-identical graded values, and the
+// patch tests are exact with mortar (the study's P and P' rows on the coarse mesh).
+
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "suites/case_matrix.hpp"
+#include "suites/problem_executor.hpp"
+#include "support/tolerance.hpp"
+
+namespace cs::suites {
+namespace {
+
+TEST(EngineDeterminism, OneAndTwoWorkersGiveIdenticalValuesOnRealProblems) {
+  CaseSelection sel;
+  sel.problems = {ProblemId::P_p, ProblemId::Pprime_a, ProblemId::H_p, ProblemId::F_a};
+  sel.meshes = {MeshLevel::C};
+  sel.algorithms = {Algorithm::AL, Algorithm::LMP, Algorithm::MPC};
+  sel.contacts = {ContactKind::ss, ContactKind::ns, ContactKind::mortar};
+  const auto cases = make_case_matrix(sel);
+  RunnerOptions one, two;
+  one.jobs = 1;
+  two.jobs = 2;
+  const auto a = run_cases(cases, make_problem_executor, one);
+  const auto b = run_cases(cases, make_problem_executor, two);
+  ASSERT_EQ(a.size(), b.size());
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    ASSERT_EQ(a[i].status, CaseStatus::converged) << case_id(a[i].spec) << ": " << a[i].reason;
+    EXPECT_EQ(a[i].status, b[i].status);
+    ASSERT_EQ(a[i].quantities.size(), b[i].quantities.size());
+    for (std::size_t q = 0; q < a[i].quantities.size(); ++q) {
+      // Bit-identical: the same arithmetic in the same order, whatever the worker count.
+      EXPECT_EQ(a[i].quantities[q].value, b[i].quantities[q].value) << case_id(a[i].spec);
+    }
+  }
+}
+
+TEST(EngineDeterminism, MortarPatchTestsAreExact) {
+  for (ProblemId p : {ProblemId::P_p, ProblemId::Pprime_p, ProblemId::P_a, ProblemId::Pprime_a}) {
+    for (ElementType e : {ElementType::Q4, ElementType::Q8}) {
+      CaseSpec spec{p, MeshLevel::C, e, Algorithm::LMP, ContactKind::mortar};
+      ProblemExecutor executor(spec);
+      const CaseResult r = executor.run(spec);
+      ASSERT_EQ(r.status, CaseStatus::converged) << case_id(spec) << ": " << r.reason;
+      // Uniform sigma_z = -p is in the discrete space: exact up to round-off amplified by the
+      // 1e6 stiffness ratio of the meshed indenter.
+      EXPECT_TRUE(cs::testing::Near(r.quantities[0].value, 1.0, {1e-8, 0.0})) << case_id(spec);
+      ASSERT_TRUE(r.quantities[0].contact_pressure.has_value());
+      EXPECT_TRUE(cs::testing::Near(*r.quantities[0].contact_pressure, 1.0, {1e-8, 0.0}))
+          << case_id(spec);
+    }
+  }
+}
+
+}  // namespace
+}  // namespace cs::suites
