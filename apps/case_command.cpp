@@ -20,6 +20,7 @@ struct CaseArgs {
   std::string problem;
   std::string mesh = "C", element = "Q4", algorithm = "AL", contact = "ss";
   std::string target = "discretized";
+  std::string recovery = "spr";
   std::vector<std::string> sets;
   bool json = false;
   std::string vtu;
@@ -33,6 +34,7 @@ suites::CaseSpec make_spec(const CaseArgs& args) {
   spec.algorithm = suites::parse_algorithm(args.algorithm);
   spec.contact = suites::parse_contact(args.contact);
   spec.target = suites::parse_target(args.target);
+  spec.recovery = suites::parse_recovery(args.recovery);
   for (const auto& text : args.sets)
     spec.overrides.insert(suites::parse_override(text));
   // Validate the parameters now: a bad --set is bad input, not a failed case.
@@ -117,6 +119,9 @@ void add_case_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--contact", args->contact, "Contact discretization: ns, ss or mortar")
       ->capture_default_str();
   cmd->add_option("--target", args->target, "Indenter: discretized (stiff mesh) or rigid")
+      ->capture_default_str();
+  cmd->add_option("--recovery", args->recovery,
+                  "Nodal stresses: spr (patch recovery) or extrapolated (as commercial codes)")
       ->capture_default_str();
   cmd->add_option("--set", args->sets, "Override a parameter: name=value (see `list`)");
   cmd->add_flag("--json", args->json, "Print one JSON object (the fields of results.json)");

@@ -1,6 +1,7 @@
 #include "apps/gate_command.hpp"
 
 #include <filesystem>
+#include <tuple>
 
 #include <fmt/core.h>
 
@@ -21,9 +22,8 @@ int update_baseline(const GateArgs& args, const std::vector<suites::CaseResult>&
   double default_tolerance = suites::kDefaultGateTolerance;
   std::map<std::string, double> tolerances;
   if (std::filesystem::exists(args.baseline)) {  // keep the tolerances a team has set
-    const auto old = suites::baseline_from_json(read_json_file(args.baseline, "baseline"));
-    default_tolerance = old.default_tolerance;
-    tolerances = old.tolerances;
+    std::tie(default_tolerance, tolerances) =
+        suites::baseline_tolerances_from_json(read_json_file(args.baseline, "baseline"));
   }
   const auto baseline = suites::make_baseline(results, default_tolerance, tolerances);
   write_json_file_atomically(args.baseline, suites::to_json(baseline));

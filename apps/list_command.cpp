@@ -64,6 +64,10 @@ void print_text() {
   fmt::print(
       "  --target     discretized rigid   (stiff meshed indenter, E ratio 1e6; or a rigid "
       "analytic profile)\n");
+  fmt::print(
+      "  --recovery   {}   (nodal stresses: superconvergent patch recovery; or "
+      "extrapolated and averaged, as commercial codes print)\n",
+      joined(all_recoveries()));
 }
 
 void print_json() {
@@ -94,7 +98,8 @@ void print_json() {
                            {"elements", names(all_elements())},
                            {"algorithms", names(all_algorithms())},
                            {"contacts", names(all_contacts())},
-                           {"targets", {"discretized", "rigid"}}};
+                           {"targets", {"discretized", "rigid"}},
+                           {"recoveries", names(all_recoveries())}};
   fmt::print("{}\n", out.dump(2));
 }
 

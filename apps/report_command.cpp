@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include <fmt/core.h>
 
@@ -16,6 +17,7 @@ struct ReportArgs {
   std::string out_dir;
   std::string baseline;
   std::string study_data;
+  std::vector<std::string> bench;
   bool no_figures = false;
 };
 
@@ -27,6 +29,7 @@ void run_report(const ReportArgs& args) {
     options.baseline = args.baseline;
   if (!args.study_data.empty())
     options.study_data = args.study_data;
+  options.bench.assign(args.bench.begin(), args.bench.end());
   options.figures = !args.no_figures;
   const auto outcome = reports::write_report(options);
   std::printf("%s\n", fmt::format("contact-suite report: {} cases -> {}/report.md ({} files, {} "
@@ -49,7 +52,8 @@ void add_report_command(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "report",
       "Write DIR/report.md (tables beside the study's, figures, findings), "
-      "DIR/results.csv and, with --baseline, DIR/regression.md from a results file");
+      "DIR/results.csv and, with --baseline, DIR/regression.md from a results file; with "
+      "--bench, a benchmark section from bench_contact_algorithms' JSON");
   cmd->add_option("--results", args->results, "results.json written by `contact-suite run`")
       ->required();
   cmd->add_option("--out", args->out_dir, "output directory (created if needed)")->required();
@@ -58,6 +62,10 @@ void add_report_command(CLI::App& app) {
   cmd->add_option("--study-data", args->study_data,
                   "directory with the study's ansys_results.csv and ansys_grades.csv (default: "
                   "the source tree's data/study)");
+  cmd->add_option("--bench", args->bench,
+                  "Google Benchmark JSON written by bench_contact_algorithms "
+                  "(--benchmark_out=FILE --benchmark_out_format=json): add section 7, "
+                  "\"Benchmarks\" (repeatable; a case in several files is shown from the last)");
   cmd->add_flag("--no-figures", args->no_figures, "do not run gnuplot");
   cmd->callback([args] { run_report(*args); });
 }

@@ -26,6 +26,7 @@ namespace {
 struct RunArgs {
   std::vector<std::string> problems, meshes, elements, algorithms, contacts, sets;
   std::string target = "discretized";
+  std::string recovery = "spr";
   int jobs = 0;
   std::string out = "out";
   bool no_report = false;
@@ -48,6 +49,7 @@ suites::CaseSelection make_selection(const RunArgs& args) {
   sel.algorithms = parse_all<suites::Algorithm>(args.algorithms, suites::parse_algorithm);
   sel.contacts = parse_all<suites::ContactKind>(args.contacts, suites::parse_contact);
   sel.target = suites::parse_target(args.target);
+  sel.recovery = suites::parse_recovery(args.recovery);
   for (const auto& text : args.sets)
     sel.overrides.insert(suites::parse_override(text));
   return sel;
@@ -133,6 +135,9 @@ void add_run_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--contacts", args->contacts, "Discretizations ss ns mortar (default: ss ns)")
       ->delimiter(',');
   cmd->add_option("--target", args->target, "Indenter: discretized or rigid")
+      ->capture_default_str();
+  cmd->add_option("--recovery", args->recovery,
+                  "Nodal stresses: spr (patch recovery) or extrapolated (as commercial codes)")
       ->capture_default_str();
   cmd->add_option("--set", args->sets, "Override a parameter of every case: name=value");
   cmd->add_option("--jobs", args->jobs, "Parallel workers (default: the number of cores)");

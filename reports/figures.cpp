@@ -25,27 +25,6 @@ const std::vector<std::string>& profile_problems() {
   return ids;
 }
 
-/// A temporary directory for data and scripts, removed when it goes out of scope.
-class WorkDir {
- public:
-  WorkDir() {
-    std::string pattern = (fs::temp_directory_path() / "cs-report-XXXXXX").string();
-    if (mkdtemp(pattern.data()) == nullptr)
-      throw std::runtime_error("cannot create a temporary directory");
-    path_ = pattern;
-  }
-  ~WorkDir() {
-    std::error_code ec;
-    fs::remove_all(path_, ec);
-  }
-  WorkDir(const WorkDir&) = delete;
-  WorkDir& operator=(const WorkDir&) = delete;
-  const fs::path& path() const { return path_; }
-
- private:
-  fs::path path_;
-};
-
 struct Series {
   std::string title;
   std::string color;  ///< "#rrggbb"
@@ -472,7 +451,7 @@ FigureSet render_figures(const ResultsIndex& index, const fs::path& out_root,
     set.unavailable = fmt::format("`{}` with a PNG terminal was not found, so no figure was drawn",
                                   options.gnuplot_program);
   }
-  std::optional<WorkDir> work;
+  std::optional<ScratchDir> work;
   if (gnuplot)
     work.emplace();
   const fs::path work_path = work ? work->path() : fs::path();

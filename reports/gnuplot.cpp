@@ -2,6 +2,8 @@
 
 #include <cstdlib>
 #include <fstream>
+#include <stdexcept>
+#include <system_error>
 
 #include <fmt/format.h>
 #include <sys/wait.h>
@@ -50,6 +52,18 @@ std::string run_gnuplot(const Gnuplot& gnuplot, const std::filesystem::path& scr
   }
   return fmt::format("gnuplot exited with status {}{}", status,
                      first_error.empty() ? "" : ": " + first_error);
+}
+
+ScratchDir::ScratchDir() {
+  std::string pattern = (std::filesystem::temp_directory_path() / "cs-report-XXXXXX").string();
+  if (mkdtemp(pattern.data()) == nullptr)
+    throw std::runtime_error("cannot create a temporary directory");
+  path_ = pattern;
+}
+
+ScratchDir::~ScratchDir() {
+  std::error_code ec;
+  std::filesystem::remove_all(path_, ec);
 }
 
 std::string gnuplot_quote(const std::string& text) {

@@ -50,6 +50,16 @@ std::string format_value(double v) {
   return fmt::format("{:.4f}", v);
 }
 
+std::string format_milliseconds(double ms) {
+  if (ms >= 100)
+    return fmt::format("{:.0f}", ms);
+  if (ms >= 10)
+    return fmt::format("{:.1f}", ms);
+  if (ms >= 1)
+    return fmt::format("{:.2f}", ms);
+  return fmt::format("{:.3f}", ms);
+}
+
 std::string format_value(const std::optional<double>& v) {
   return v ? format_value(*v) : std::string(kMissing);
 }

@@ -26,6 +26,9 @@ class MarkdownTable {
 std::string format_value(double v);
 /// A signed percentage: "+0.07 %", "−12.3 %" (2 significant decimals below 10 %, 1 above).
 std::string format_percent(double percent);
+/// A time in milliseconds to about three significant digits, without exponent: "1234", "56.7",
+/// "8.90", "0.123".
+std::string format_milliseconds(double ms);
 /// format_value, or the em dash for nullopt.
 std::string format_value(const std::optional<double>& v);
 

@@ -4,6 +4,9 @@
 
 #include "reports/appendix_tables.hpp"
 #include "reports/atomic_output.hpp"
+#include "reports/bench_figure.hpp"
+#include "reports/bench_results.hpp"
+#include "reports/bench_section.hpp"
 #include "reports/divergence_table.hpp"
 #include "reports/findings.hpp"
 #include "reports/grade_tables.hpp"
@@ -54,7 +57,8 @@ std::string variants_section(const ResultsIndex& index) {
 }
 
 std::string report_markdown(const ResultsIndex& index, const StudyReference& study,
-                            const FigureSet& figures, bool has_regression) {
+                            const FigureSet& figures, bool has_regression,
+                            const std::string& bench_md) {
   const auto findings = generate_findings(index, study);
   const std::string grades = grade_tables_section(index, study);
   const std::string appendix = appendix_section(index, study);
@@ -74,6 +78,8 @@ std::string report_markdown(const ResultsIndex& index, const StudyReference& stu
     toc.emplace_back("Flat-punch divergence", "5-flat-punch-divergence-eq-47");
   if (!variants.empty())
     toc.emplace_back("Other option sets", "6-other-option-sets-rigid-target-parameter-overrides");
+  if (!bench_md.empty())
+    toc.emplace_back("Benchmarks", "7-benchmarks");
 
   std::string out =
       "# contact-suite report: our contact elements beside the study's ANSYS results\n\n"
@@ -88,7 +94,7 @@ std::string report_markdown(const ResultsIndex& index, const StudyReference& stu
     out += "A regression report against the baseline is in [regression.md](regression.md).\n\n";
   out += "Per-case data for spreadsheets: [results.csv](results.csv).\n\n";
   out += summary_section(index, findings);
-  out += grades + appendix + figs + divergence + variants;
+  out += grades + appendix + figs + divergence + variants + bench_md;
   return out;
 }
 
@@ -100,22 +106,32 @@ ReportOutcome write_report(const ReportOptions& options) {
     baseline = load_results_file(*options.baseline);
   const StudyReference study =
       load_study_reference(options.study_data ? *options.study_data : default_study_data_dir());
+  std::optional<BenchResults> bench;
+  if (!options.bench.empty())
+    bench = load_bench_files(options.bench);
   const ResultsIndex index(results);
 
   AtomicOutput output(options.out_dir);
-  FigureSet figures;
+  FigureSet figures, bench_figures;
   if (options.figures)
     figures = render_figures(index, output.staging_dir(), options.figure_options);
-  output.write_text("report.md", report_markdown(index, study, figures, baseline.has_value()));
+  if (options.figures && bench)
+    bench_figures = render_bench_figures(*bench, output.staging_dir(), {}, options.figure_options);
+  const std::string bench_md = bench ? bench_section(*bench, bench_figures) : std::string();
+  output.write_text("report.md",
+                    report_markdown(index, study, figures, baseline.has_value(), bench_md));
   output.write_text("results.csv", results_csv(index, study));
   if (baseline)
     output.write_text("regression.md", regression_markdown(compare_results(*baseline, results)));
 
   ReportOutcome outcome;
   outcome.n_cases = static_cast<int>(results.cases.size());
-  for (const auto& f : figures.figures)
-    (f.produced ? outcome.figures_drawn : outcome.figures_missing)++;
-  outcome.figures_unavailable = figures.unavailable;
+  for (const FigureSet* set : {&figures, &bench_figures}) {
+    for (const auto& f : set->figures)
+      (f.produced ? outcome.figures_drawn : outcome.figures_missing)++;
+  }
+  outcome.figures_unavailable =
+      figures.unavailable.empty() ? bench_figures.unavailable : figures.unavailable;
   outcome.files = output.commit();
   return outcome;
 }

@@ -33,11 +33,11 @@ std::string overrides_text(const CaseRecord& c) {
 
 const std::vector<std::string>& results_csv_columns() {
   static const std::vector<std::string> columns{
-      "case_id",          "problem",      "mesh",        "element",       "algorithm",
-      "contact",          "target",       "overrides",   "status",        "reason",
-      "iterations",       "wall_seconds", "n_elements",  "n_equations",   "element_size_h",
-      "quantity",         "value",        "exact",       "error_percent", "grade",
-      "contact_pressure", "study_exact",  "ansys_value", "ansys_table"};
+      "case_id",        "problem",          "mesh",         "element",     "algorithm",
+      "contact",        "target",           "recovery",     "overrides",   "status",
+      "reason",         "iterations",       "wall_seconds", "n_elements",  "n_equations",
+      "element_size_h", "quantity",         "value",        "exact",       "error_percent",
+      "grade",          "contact_pressure", "study_exact",  "ansys_value", "ansys_table"};
   return columns;
 }
 
@@ -54,6 +54,7 @@ std::string results_csv(const ResultsIndex& index, const StudyReference& study) 
                                         c.algorithm,
                                         c.contact,
                                         c.target,
+                                        c.recovery,
                                         overrides_text(c),
                                         c.status,
                                         c.reason,

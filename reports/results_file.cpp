@@ -23,6 +23,7 @@ const std::initializer_list<const char*> kElements{"Q4", "Q8"};
 const std::initializer_list<const char*> kAlgorithms{"AL", "PM", "LMP", "PLM", "MPC"};
 const std::initializer_list<const char*> kContacts{"ns", "ss", "mortar"};
 const std::initializer_list<const char*> kTargets{"discretized", "rigid"};
+const std::initializer_list<const char*> kRecoveries{"spr", "extrapolated"};
 const std::initializer_list<const char*> kStatuses{"converged", "not_converged", "failed"};
 const std::initializer_list<const char*> kGrades{"e", "g", "s", "u"};
 
@@ -173,6 +174,7 @@ CaseRecord read_case(const json& j, std::size_t index, const std::string& source
   c.algorithm = r.name("algorithm", kAlgorithms);
   c.contact = r.name("contact", kContacts);
   c.target = r.name("target", kTargets);
+  c.recovery = r.name("recovery", kRecoveries);
   if (r.has("overrides") && !r.at("overrides").is_null()) {
     if (!r.at("overrides").is_object())
       r.fail("'overrides' is not an object");
@@ -211,6 +213,7 @@ RowRecord read_row(const json& j, std::size_t index, const std::string& source) 
   row.algorithm = r.name("algorithm", kAlgorithms);
   row.contact = r.name("contact", kContacts);
   row.target = r.name("target", kTargets);
+  row.recovery = r.name("recovery", kRecoveries);
   row.quantity = r.string("quantity");
   for (const char* key : {"values", "error_percent"}) {
     if (!r.has(key) || !r.at(key).is_object())

@@ -19,7 +19,7 @@
 namespace cs::reports {
 
 inline constexpr const char* kResultsSchemaName = "contact-suite/results";
-inline constexpr int kResultsSchemaVersion = 1;
+inline constexpr int kResultsSchemaVersion = 2;
 
 /// Mesh levels in file order: coarse, medium (h/2), fine (h/4).
 inline constexpr std::array<const char*, 3> kMeshLevels{"C", "M", "F"};
@@ -46,13 +46,14 @@ struct ProfileCurve {
 
 /// One case record (one analysis).
 struct CaseRecord {
-  std::string id;         ///< "H_p/F/Q4/LMP/ss" (+ "/rigid", "/k=v")
+  std::string id;         ///< "H_p/F/Q4/LMP/ss" (+ "/rigid", "/extrapolated", "/k=v")
   std::string problem;    ///< P_p P_a Pprime_p Pprime_a H_p H_a S_1 S_1_3 S_1_7 F_p F_a
   std::string mesh;       ///< C M F
   std::string element;    ///< Q4 Q8
   std::string algorithm;  ///< AL PM LMP PLM MPC
   std::string contact;    ///< ns ss mortar
   std::string target;     ///< discretized rigid
+  std::string recovery;   ///< spr extrapolated (nodal stresses)
   std::map<std::string, double> overrides;
   std::string status;  ///< converged | not_converged | failed
   std::string reason;
@@ -69,14 +70,18 @@ struct CaseRecord {
 
   /// The quantity of that name, or nullptr.
   const QuantityRecord* quantity(const std::string& name) const;
-  /// True for the study's option sets: a discretized target and no parameter overrides.
-  bool is_baseline() const { return target == "discretized" && overrides.empty(); }
+  /// True for the study's option sets: a discretized target, the default (spr) nodal stresses
+  /// and no parameter overrides.
+  bool is_baseline() const {
+    return target == "discretized" && recovery == "spr" && overrides.empty();
+  }
 };
 
 /// One row verdict: a case less its mesh, for one quantity (the study's unit of assessment).
 struct RowRecord {
-  std::string id;  ///< "H_p/Q4/LMP/ss/sigma_c" (+ "/rigid", "/k=v" before the quantity)
-  std::string problem, element, algorithm, contact, target, quantity;
+  /// "H_p/Q4/LMP/ss/sigma_c" (+ "/rigid", "/extrapolated", "/k=v" before the quantity)
+  std::string id;
+  std::string problem, element, algorithm, contact, target, recovery, quantity;
   std::array<std::optional<double>, 3> values;  ///< C, M, F; nullopt: missing or failed
   std::array<std::optional<double>, 3> errors;  ///< percent; nullopt for singular rows
   std::optional<std::string> grade;             ///< of the finest mesh present
@@ -84,7 +89,8 @@ struct RowRecord {
   std::optional<bool> converging;               ///< nonsingular rows with all three meshes
   std::optional<bool> diverging;                ///< singular rows with all three meshes (Eq. 47)
 
-  /// The option variant of the row: "" for the study's options, else e.g. "rigid/fkn=10".
+  /// The option variant of the row: "" for the study's options, else e.g. "rigid/fkn=10" or
+  /// "extrapolated".
   std::string variant() const;
   /// The row's key without the quantity (the case id less the mesh).
   std::string case_key() const;

@@ -93,7 +93,7 @@ std::string cases_paragraph(const ResultsFile& r) {
   auto self = [](const std::string&) { return 0; };
   std::string out = fmt::format(
       "**What was run.** {} case(s): problems {}; meshes {}; elements {}; algorithms {}; contact "
-      "{}; target {}",
+      "{}; target {}; nodal stresses {}",
       cs.size(), problem_names(cs),
       distinct(
           cs, [](const CaseRecord& c) { return c.mesh; }, mesh_order),
@@ -104,7 +104,9 @@ std::string cases_paragraph(const ResultsFile& r) {
       distinct(
           cs, [](const CaseRecord& c) { return c.contact; }, contact_order),
       distinct(
-          cs, [](const CaseRecord& c) { return c.target; }, self));
+          cs, [](const CaseRecord& c) { return c.target; }, self),
+      distinct(
+          cs, [](const CaseRecord& c) { return c.recovery; }, self));
   std::map<std::string, int> overrides;
   for (const auto& c : cs) {
     for (const auto& [k, v] : c.overrides)

@@ -10,6 +10,7 @@
 
 #include "solver/elements/element_stiffness.hpp"
 #include "solver/elements/gauss_rule.hpp"
+#include "solver/patch_recovery.hpp"
 #include "solver/surface_path.hpp"
 
 namespace cs::solver {
@@ -57,10 +58,53 @@ ElementVector element_displacements(const Mesh& mesh, int e, const Eigen::Vector
   return u_e;
 }
 
+/// The stresses at the patch sampling points of every element (patch_recovery.hpp).
+ElementSamples patch_samples(const Model& model, const Eigen::VectorXd& u,
+                             const std::vector<Eigen::Matrix4d>& D) {
+  const Mesh& mesh = model.mesh;
+  const auto& points = patch_sampling_points(mesh.type);
+  ElementSamples samples(mesh.n_elements());
+  for (int e = 0; e < mesh.n_elements(); ++e) {
+    const ElementGeometry g = element_geometry(mesh, model.analysis, e);
+    const ElementVector u_e = element_displacements(mesh, e, u);
+    samples[e].reserve(points.size());
+    for (const Eigen::Vector2d& xi : points) {
+      const PointKinematics k = point_kinematics(g, xi);
+      samples[e].push_back({k.position, D[mesh.element_body[e]] * (k.B * u_e)});
+    }
+  }
+  return samples;
+}
+
+/// Replaces the extrapolated, averaged values of `field` by patch-recovered ones wherever a
+/// patch reaches.
+void apply_patch_recovery(const Model& model, const Eigen::VectorXd& u,
+                          const std::vector<Eigen::Matrix4d>& D, StressField& field) {
+  std::vector<std::vector<Eigen::Vector4d>> nodal(field.nodal.size());
+  for (std::size_t b = 0; b < nodal.size(); ++b) {
+    nodal[b].reserve(field.nodal[b].size());
+    for (const Stress& s : field.nodal[b])
+      nodal[b].push_back(s.vector());
+  }
+  recover_by_patches(model.mesh, patch_samples(model, u, D), nodal, field.nodal_count);
+  for (std::size_t b = 0; b < nodal.size(); ++b) {
+    for (std::size_t n = 0; n < nodal[b].size(); ++n)
+      field.nodal[b][n] = Stress::from(nodal[b][n]);
+  }
+}
+
 }  // namespace
 
 const char* to_string(StressRecoveryMethod method) {
-  return method == StressRecoveryMethod::GaussPoint ? "Gauss point" : "extrapolated, averaged";
+  switch (method) {
+    case StressRecoveryMethod::GaussPoint:
+      return "Gauss point";
+    case StressRecoveryMethod::ExtrapolatedAveraged:
+      return "extrapolated, averaged";
+    case StressRecoveryMethod::PatchRecovered:
+      return "superconvergent patch recovery";
+  }
+  return "?";
 }
 
 const char* to_string(Q8Extrapolation rule) {
@@ -158,6 +202,8 @@ StressField recover_stresses(const Model& model, const Eigen::VectorXd& u,
       }
     }
   }
+  if (options.method == StressRecoveryMethod::PatchRecovered)
+    apply_patch_recovery(model, u, D, field);
   return field;
 }
 
@@ -199,7 +245,7 @@ std::vector<SurfaceStressSample> surface_stresses(const Model& model, const Stre
   const SurfacePath path = surface_path(mesh, edge_set);
   std::vector<SurfaceStressSample> samples;
 
-  if (field.method == StressRecoveryMethod::ExtrapolatedAveraged) {
+  if (is_nodal(field.method)) {
     // The body of each node: that of the first side (in path order) containing it.
     std::unordered_map<int, std::pair<int, int>> owner;  // node -> (element, body)
     for (const ElementSide& s : path.sides) {

@@ -1,7 +1,8 @@
 #pragma once
 // Stresses from a displacement solution: at Gauss points, at nodes (extrapolated from the Gauss
 // points of each element and averaged over the elements of the same body sharing the node, the
-// nodal stresses commercial codes print), and along a named surface.
+// nodal stresses commercial codes print; or by superconvergent patch recovery, see
+// solver/patch_recovery.hpp), and along a named surface.
 //
 // Extrapolation: the stresses at the element's sampling points are fitted exactly by a
 // polynomial in (xi, eta) which is evaluated at the element's nodes:
@@ -29,7 +30,14 @@ namespace cs::solver {
 enum class StressRecoveryMethod {
   GaussPoint,            ///< at the Gauss points of every element, unsmoothed
   ExtrapolatedAveraged,  ///< extrapolated to nodes, averaged per body over sharing elements
+  PatchRecovered,        ///< superconvergent patch recovery per body (patch_recovery.hpp);
+                         ///< nodes no patch reaches keep the extrapolated, averaged value
 };
+
+/// True for the methods with one value per node and body (all but GaussPoint).
+constexpr bool is_nodal(StressRecoveryMethod method) {
+  return method != StressRecoveryMethod::GaussPoint;
+}
 
 /// Which sampling points Q8 elements extrapolate from (Q4 always uses 2x2).
 enum class Q8Extrapolation {
@@ -72,9 +80,9 @@ struct StressField {
   /// GaussPoint: every sampling point of every element, element by element (empty otherwise).
   /// Q4 and Q8 use their stiffness rule (2x2, 3x3).
   std::vector<GaussPointStress> gauss_points;
-  /// ExtrapolatedAveraged: nodal[body][node] (zero where the node is not in the body).
+  /// Nodal methods: nodal[body][node] (zero where the node is not in the body).
   std::vector<std::vector<Stress>> nodal;
-  /// ExtrapolatedAveraged: elements averaged into nodal[body][node] (0: node not in body).
+  /// Nodal methods: elements (or patches) averaged into nodal[body][node] (0: node not in body).
   std::vector<std::vector<int>> nodal_count;
 
   /// Whether the field has a nodal value of `node` in `body`.
@@ -92,7 +100,7 @@ StressField recover_stresses(const Model& model, const Eigen::VectorXd& u,
 
 /// A stress sample along a surface.
 struct SurfaceStressSample {
-  int node = -1;     ///< node (ExtrapolatedAveraged) or -1 (GaussPoint)
+  int node = -1;     ///< node (nodal methods) or -1 (GaussPoint)
   int element = -1;  ///< element of the Gauss point (GaussPoint) or of the side (nodal)
   int body = -1;     ///< body whose value is reported
   Eigen::Vector2d position;
@@ -101,7 +109,7 @@ struct SurfaceStressSample {
 };
 
 /// The stresses along edge set `edge_set`, ordered along its surface path:
-///   ExtrapolatedAveraged: the nodal values of the set's nodes (in the body of the sides);
+///   nodal methods: the nodal values of the set's nodes (in the body of the sides);
 ///   GaussPoint: the row of Gauss points of each side's element nearest that side.
 /// Throws ModelError if the set is unknown or empty.
 std::vector<SurfaceStressSample> surface_stresses(const Model& model, const StressField& field,

@@ -19,6 +19,7 @@ struct CaseSelection {
   std::vector<Algorithm> algorithms;
   std::vector<ContactKind> contacts;
   TargetKind target = TargetKind::Discretized;
+  Recovery recovery = Recovery::spr;
   std::map<std::string, double> overrides;  ///< applied to every case
 };
 

@@ -50,6 +50,8 @@ constexpr std::array<NameRow<ContactKind>, 3> kContacts{{{ContactKind::ns, "ns",
                                                          {ContactKind::mortar, "mortar", ""}}};
 constexpr std::array<NameRow<TargetKind>, 2> kTargets{
     {{TargetKind::Discretized, "discretized", ""}, {TargetKind::Rigid, "rigid", ""}}};
+constexpr std::array<NameRow<Recovery>, 2> kRecoveries{
+    {{Recovery::spr, "spr", ""}, {Recovery::extrapolated, "extrapolated", ""}}};
 
 template <class E, std::size_t N>
 std::string_view name_of(const std::array<NameRow<E>, N>& table, E value) {
@@ -110,6 +112,9 @@ std::string_view to_string(ContactKind v) {
 std::string_view to_string(TargetKind v) {
   return name_of(kTargets, v);
 }
+std::string_view to_string(Recovery v) {
+  return name_of(kRecoveries, v);
+}
 
 ProblemId parse_problem(std::string_view s) {
   return parse_name(kProblems, s, "problem");
@@ -128,6 +133,9 @@ ContactKind parse_contact(std::string_view s) {
 }
 TargetKind parse_target(std::string_view s) {
   return parse_name(kTargets, s, "target");
+}
+Recovery parse_recovery(std::string_view s) {
+  return parse_name(kRecoveries, s, "stress recovery");
 }
 
 const std::vector<ProblemId>& all_problems() {
@@ -150,6 +158,10 @@ const std::vector<ContactKind>& study_contacts() {
   static const std::vector<ContactKind> v{ContactKind::ss, ContactKind::ns};
   return v;
 }
+const std::vector<Recovery>& all_recoveries() {
+  static const auto v = values_of(kRecoveries);
+  return v;
+}
 const std::vector<ContactKind>& all_contacts() {
   static const std::vector<ContactKind> v{ContactKind::ss, ContactKind::ns, ContactKind::mortar};
   return v;
@@ -170,6 +182,8 @@ std::string case_id(const CaseSpec& spec) {
                   to_string(spec.element), to_string(spec.algorithm), to_string(spec.contact));
   if (spec.target == TargetKind::Rigid)
     id += "/rigid";
+  if (spec.recovery != Recovery::spr)
+    id += fmt::format("/{}", to_string(spec.recovery));
   for (const auto& [name, value] : spec.overrides)
     id += fmt::format("/{}={}", name, value);
   return id;

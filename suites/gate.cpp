@@ -131,11 +131,31 @@ json to_json(const Baseline& b) {
   return doc;
 }
 
-Baseline baseline_from_json(const json& doc) {
+namespace {
+
+void check_baseline_schema(const json& doc) {
   if (!doc.is_object() || doc.value("schema", "") != kBaselineSchemaName) {
     throw SuiteInputError(
         fmt::format("not a contact-suite baseline (no \"schema\": \"{}\")", kBaselineSchemaName));
   }
+}
+
+}  // namespace
+
+std::pair<double, std::map<std::string, double>> baseline_tolerances_from_json(const json& doc) {
+  check_baseline_schema(doc);
+  try {
+    std::map<std::string, double> tolerances;
+    if (doc.contains("tolerances"))
+      tolerances = doc.at("tolerances").get<std::map<std::string, double>>();
+    return {doc.value("default_tolerance", kDefaultGateTolerance), tolerances};
+  } catch (const json::exception& e) {
+    throw SuiteInputError(fmt::format("malformed baseline tolerances: {}", e.what()));
+  }
+}
+
+Baseline baseline_from_json(const json& doc) {
+  check_baseline_schema(doc);
   if (doc.value("schema_version", -1) != kBaselineSchemaVersion) {
     throw SuiteInputError(fmt::format("baseline schema version {} is not supported (expected {})",
                                       doc.value("schema_version", -1), kBaselineSchemaVersion));

@@ -7,8 +7,9 @@
 //      converged in the baseline still converges;
 //   2. analytic reference: every row's grade (Eq. 46) is no worse than the baseline's, and a
 //      row that was converging (or, for the singular problems, diverging, Eq. 47) still is.
-// The baseline file (schema `contact-suite/baseline`, version 1) is written by --update from a
-// results file; it keeps the tolerances it had.
+// The baseline file (schema `contact-suite/baseline`, version 2: its case records carry the
+// nodal stress recovery) is written by --update from a results file; it keeps the tolerances
+// it had, also from a baseline of an older version.
 
 #include <map>
 #include <string>
@@ -22,7 +23,7 @@
 namespace cs::suites {
 
 inline constexpr const char* kBaselineSchemaName = "contact-suite/baseline";
-inline constexpr int kBaselineSchemaVersion = 1;
+inline constexpr int kBaselineSchemaVersion = 2;
 /// Survives compiler and BLAS differences; far below any change that matters to a grade.
 inline constexpr double kDefaultGateTolerance = 1e-6;
 
@@ -54,6 +55,10 @@ struct GateReport {
 /// Reads a baseline document; throws SuiteInputError naming the problem (schema, version,
 /// malformed record).
 Baseline baseline_from_json(const nlohmann::json& doc);
+/// The tolerances of a baseline of any version of the schema: {default, per quantity}. What
+/// --update keeps when it rewrites an older baseline. Throws SuiteInputError as above.
+std::pair<double, std::map<std::string, double>> baseline_tolerances_from_json(
+    const nlohmann::json& doc);
 /// A baseline from results, keeping `tolerances` (and the default) from an old one.
 Baseline make_baseline(const std::vector<CaseResult>& cases, double default_tolerance,
                        const std::map<std::string, double>& tolerances);

@@ -172,6 +172,14 @@ solver::ContactSettings contact_settings(const CaseSpec& spec) {
   return s;
 }
 
+solver::StressRecoveryOptions recovery_options(const CaseSpec& spec) {
+  solver::StressRecoveryOptions options;
+  options.method = spec.recovery == Recovery::spr
+                       ? solver::StressRecoveryMethod::PatchRecovered
+                       : solver::StressRecoveryMethod::ExtrapolatedAveraged;
+  return options;
+}
+
 ProblemExecutor::ProblemExecutor(const CaseSpec& representative)
     : setup_(std::make_unique<ProblemSetup>(build_problem(representative))),
       elastic_(std::make_unique<solver::LinearStaticAnalysis>(setup_->model)) {}
@@ -262,7 +270,7 @@ CaseResult ProblemExecutor::run(const CaseSpec& spec) {
   result.status = contact.status == solver::ContactStatus::Converged ? CaseStatus::converged
                                                                      : CaseStatus::not_converged;
   last_u_ = contact.displacement;
-  last_stresses_ = solver::recover_stresses(setup_->model, last_u_);
+  last_stresses_ = solver::recover_stresses(setup_->model, last_u_, recovery_options(spec));
   const auto surface = solver::surface_stresses(setup_->model, *last_stresses_, kSampledSurface);
   grade_case(*setup_, surface, contact, result);
   result.exact_profile = exact_profile(*setup_);

@@ -22,6 +22,9 @@ namespace cs::suites {
 /// the pinball from the case's parameters.
 solver::ContactSettings contact_settings(const CaseSpec& spec);
 
+/// The nodal stress recovery a case selects (the Q8 extrapolation rule keeps its default).
+solver::StressRecoveryOptions recovery_options(const CaseSpec& spec);
+
 class ProblemExecutor final : public GroupExecutor {
  public:
   /// Builds the problem of `representative` and its elastic analysis (not yet assembled).

@@ -73,6 +73,7 @@ CaseResult case_from_json(const json& j, std::size_t index) {
   r.spec.algorithm = parse_algorithm(string_from(j, "algorithm", where));
   r.spec.contact = parse_contact(string_from(j, "contact", where));
   r.spec.target = parse_target(string_from(j, "target", where));
+  r.spec.recovery = parse_recovery(string_from(j, "recovery", where));
   if (j.contains("overrides") && j.at("overrides").is_object()) {
     for (const auto& [k, v] : j.at("overrides").items())
       r.spec.overrides[k] = v.get<double>();
@@ -148,6 +149,7 @@ json to_json(const CaseResult& r) {
          {"algorithm", std::string(to_string(r.spec.algorithm))},
          {"contact", std::string(to_string(r.spec.contact))},
          {"target", std::string(to_string(r.spec.target))},
+         {"recovery", std::string(to_string(r.spec.recovery))},
          {"overrides", json(r.spec.overrides)},
          {"status", std::string(to_string(r.status))},
          {"reason", r.reason},
@@ -184,6 +186,7 @@ json to_json(const RowVerdict& row) {
          {"algorithm", std::string(to_string(row.algorithm))},
          {"contact", std::string(to_string(row.contact))},
          {"target", std::string(to_string(row.target))},
+         {"recovery", std::string(to_string(row.recovery))},
          {"quantity", row.quantity}};
   json values = json::object(), errors = json::object();
   for (MeshLevel level : all_mesh_levels()) {

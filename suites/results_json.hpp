@@ -14,7 +14,7 @@
 namespace cs::suites {
 
 inline constexpr const char* kResultsSchemaName = "contact-suite/results";
-inline constexpr int kResultsSchemaVersion = 1;
+inline constexpr int kResultsSchemaVersion = 2;
 
 /// What is known about the run as a whole (machine, versions, settings, timing).
 struct RunInfo {

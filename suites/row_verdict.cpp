@@ -56,6 +56,7 @@ std::vector<RowVerdict> make_row_verdicts(const std::vector<CaseResult>& cases) 
         row.algorithm = c.spec.algorithm;
         row.contact = c.spec.contact;
         row.target = c.spec.target;
+        row.recovery = c.spec.recovery;
         row.quantity = q.name;
       }
       if (c.status == CaseStatus::failed || !std::isfinite(q.value))

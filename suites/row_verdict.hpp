@@ -12,7 +12,8 @@
 
 namespace cs::suites {
 
-/// One row: a (problem, element, algorithm, contact, target, overrides, quantity) over meshes.
+/// One row: a (problem, element, algorithm, contact, target, recovery, overrides, quantity) over
+/// meshes.
 struct RowVerdict {
   std::string id;  ///< "H_p/Q4/LMP/ss/sigma_c" (+ "/rigid", overrides): the case id less the mesh
   ProblemId problem = ProblemId::P_p;
@@ -20,6 +21,7 @@ struct RowVerdict {
   Algorithm algorithm = Algorithm::LMP;
   ContactKind contact = ContactKind::ss;
   TargetKind target = TargetKind::Discretized;
+  Recovery recovery = Recovery::spr;
   std::string quantity;
   std::array<std::optional<double>, 3> values;  ///< C, M, F (empty: case missing or failed)
   std::array<std::optional<double>, 3> errors;  ///< percent, C, M, F

@@ -79,6 +79,7 @@ std::string model_key(const CaseSpec& spec) {
   CaseSpec s = spec;
   s.algorithm = Algorithm::AL;
   s.contact = ContactKind::ss;
+  s.recovery = Recovery::spr;  // post-processing: the model and its solve are shared
   std::erase_if(s.overrides, [](const auto& kv) { return is_contact_only_parameter(kv.first); });
   return case_id(s);
 }

@@ -27,7 +27,8 @@ ProblemSetup build_flat_punch(const CaseSpec& spec, const Parameters& params) {
   using Eigen::Vector2d;
   const double a = 1.0;
   const bool axi = spec.problem == ProblemId::F_a;
-  StudyMeshSpec mesh{spec.problem, spec.mesh, spec.element, a};
+  StudyMeshSpec mesh{
+      .problem = spec.problem, .level = spec.mesh, .element = spec.element, .a = a, .options = {}};
   const solver::RigidProfile rigid = solver::SharpFlatPunch{{0.0, 0.0}, {0.0, 1.0}, a};
   ProblemSetup setup = start_setup(spec, params, mesh, rigid);
   setup.length_unit = setup.contact_half_width_a = a;

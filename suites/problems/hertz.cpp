@@ -40,7 +40,12 @@ ProblemSetup build_hertz_plane(const CaseSpec& spec, const Parameters& params) {
   const double R = M_PI * E * a / (8.0 * (1.0 - nu * nu) * p);  // Eq. 16 solved for R
   const auto contact = oracles::hertz_plane_contact({R, E, nu, 2.0 * a * p});
 
-  StudyMeshSpec mesh{spec.problem, spec.mesh, spec.element, contact.contact_half_width_a, R};
+  StudyMeshSpec mesh{.problem = spec.problem,
+                     .level = spec.mesh,
+                     .element = spec.element,
+                     .a = contact.contact_half_width_a,
+                     .R = R,
+                     .options = {}};
   const solver::RigidProfile rigid = solver::RigidCircle{{0.0, -R}, R};
   ProblemSetup setup = start_setup(spec, params, mesh, rigid);
   setup.p = contact.p_mean;
@@ -75,7 +80,12 @@ ProblemSetup build_hertz_axi(const CaseSpec& spec, const Parameters& params) {
   const double R = 4.0 * E * a / (3.0 * M_PI * (1.0 - nu * nu) * p);  // Eq. 23 solved for R
   const auto contact = oracles::hertz_axi_contact({R, E, nu, M_PI * a * a * p});
 
-  StudyMeshSpec mesh{spec.problem, spec.mesh, spec.element, contact.contact_radius_a, R};
+  StudyMeshSpec mesh{.problem = spec.problem,
+                     .level = spec.mesh,
+                     .element = spec.element,
+                     .a = contact.contact_radius_a,
+                     .R = R,
+                     .options = {}};
   const solver::RigidProfile rigid = solver::RigidCircle{{0.0, -R}, R};
   ProblemSetup setup = start_setup(spec, params, mesh, rigid);
   setup.p = contact.p_mean;

@@ -53,7 +53,13 @@ ProblemSetup build_steuermann(const CaseSpec& spec, const Parameters& params) {
   const auto study = steuermann_exact(b, r_e, E, params, oracles::Eq32Factor::kWithoutOneMinusNu2);
   const double a = exact.contact.contact_half_width_a;
 
-  StudyMeshSpec mesh{spec.problem, spec.mesh, spec.element, a, 0.0, b, r_e};
+  StudyMeshSpec mesh{.problem = spec.problem,
+                     .level = spec.mesh,
+                     .element = spec.element,
+                     .a = a,
+                     .b = b,
+                     .r_e = r_e,
+                     .options = {}};
   const solver::RoundedFlatPunch punch{{0.0, 0.0}, {0.0, 1.0}, b, r_e};
   ProblemSetup setup = start_setup(spec, params, mesh, punch);
   setup.p = exact.p;

@@ -61,14 +61,14 @@ TEST(ReportWriter, WritesReportCsvAndRegression) {
   auto o = options_for(sample_path(), tmp.path() / "new" / "dir");
   o.baseline = sample_path();
   const auto outcome = write_report(o);
-  EXPECT_EQ(outcome.n_cases, 56);
+  EXPECT_EQ(outcome.n_cases, 59);
   EXPECT_EQ(outcome.files, (std::vector<std::string>{"regression.md", "report.md", "results.csv"}));
   const std::string md = read_text(o.out_dir / "report.md");
   for (const char* section : {"## 1. Summary", "## 2. Accuracy and convergence", "## 3. Appendix",
                               "## 5. Flat punch: divergence", "## 6. Other option sets"}) {
     EXPECT_NE(md.find(section), std::string::npos) << section;
   }
-  EXPECT_NE(md.find("54 converged, 1 did not converge, 1 failed"), std::string::npos);
+  EXPECT_NE(md.find("57 converged, 1 did not converge, 1 failed"), std::string::npos);
   EXPECT_NE(md.find("| solver.factorization | CHOLMOD supernodal |"), std::string::npos);
   EXPECT_NE(md.find("[regression.md](regression.md)"), std::string::npos);
   for (const auto& e : fs::directory_iterator(o.out_dir))
@@ -138,8 +138,8 @@ INSTANTIATE_TEST_SUITE_P(
                       BadInput{"truncated", truncated_sample(), "is not valid JSON (truncated?)"},
                       BadInput{"other schema", sample_with("schema", "someone/else"),
                                "not a contact-suite results file"},
-                      BadInput{"newer version", sample_with("schema_version", 2),
-                               "schema version 2 is not supported"},
+                      BadInput{"newer version", sample_with("schema_version", 3),
+                               "schema version 3 is not supported"},
                       BadInput{"no cases", sample_with("cases", 7), "'cases'"},
                       BadInput{"bad case", sample_with_bad_case(),
                                "case #3 (P_p/C/Q4/LMP/ss): 'mesh' is \"X\""}),

@@ -15,8 +15,8 @@ namespace {
 
 TEST(ResultsFile, LoadsTheHandMadeSample) {
   const ResultsFile r = load_results_file(testing::sample_path());
-  ASSERT_EQ(r.cases.size(), 56u);
-  ASSERT_EQ(r.rows.size(), 30u);
+  ASSERT_EQ(r.cases.size(), 59u);
+  ASSERT_EQ(r.rows.size(), 32u);
   EXPECT_EQ(r.run.jobs, 2);
   EXPECT_EQ(r.run.environment["solver"]["factorization"], "CHOLMOD supernodal");
   const CaseRecord* punch = nullptr;
@@ -29,8 +29,11 @@ TEST(ResultsFile, LoadsTheHandMadeSample) {
   ASSERT_NE(q, nullptr);
   EXPECT_TRUE(q->singular);
   EXPECT_FALSE(q->exact.has_value());
-  EXPECT_EQ(r.rows.back().variant(), "fkn=10");
-  EXPECT_EQ(r.rows.back().case_key(), "H_p/Q4/PM/ss/fkn=10");
+  EXPECT_EQ(r.rows.back().variant(), "extrapolated");
+  EXPECT_EQ(r.rows.back().recovery, "extrapolated");
+  EXPECT_EQ(r.rows.back().case_key(), "H_p/Q4/LMP/ss/extrapolated");
+  EXPECT_EQ(r.rows[r.rows.size() - 3].variant(), "fkn=10");
+  EXPECT_EQ(r.rows[0].recovery, "spr");
   EXPECT_EQ(r.rows[0].variant(), "");
   EXPECT_EQ(case_key_of("H_p/F/Q4/AL/ss/rigid"), "H_p/Q4/AL/ss/rigid");
 }

@@ -63,6 +63,15 @@ TEST(CaseSpec, CaseIdNamesEveryAxis) {
   spec.target = TargetKind::Rigid;
   spec.overrides["fkn"] = 10;
   EXPECT_EQ(case_id(spec), "H_p/F/Q4/AL/ns/rigid/fkn=10");
+  spec.recovery = Recovery::extrapolated;
+  EXPECT_EQ(case_id(spec), "H_p/F/Q4/AL/ns/rigid/extrapolated/fkn=10");
+}
+
+TEST(CaseSpec, RecoveryNamesRoundTripAndBadOnesAreRejected) {
+  for (Recovery r : all_recoveries())
+    EXPECT_EQ(parse_recovery(to_string(r)), r);
+  EXPECT_EQ(CaseSpec{}.recovery, Recovery::spr);
+  EXPECT_THROW(parse_recovery("smoothed"), SuiteInputError);
 }
 
 }  // namespace

@@ -39,7 +39,12 @@ TEST(EngineDeterminism, OneAndTwoWorkersGiveIdenticalValuesOnRealProblems) {
 TEST(EngineDeterminism, MortarPatchTestsAreExact) {
   for (ProblemId p : {ProblemId::P_p, ProblemId::Pprime_p, ProblemId::P_a, ProblemId::Pprime_a}) {
     for (ElementType e : {ElementType::Q4, ElementType::Q8}) {
-      CaseSpec spec{p, MeshLevel::C, e, Algorithm::LMP, ContactKind::mortar};
+      CaseSpec spec{.problem = p,
+                    .mesh = MeshLevel::C,
+                    .element = e,
+                    .algorithm = Algorithm::LMP,
+                    .contact = ContactKind::mortar,
+                    .overrides = {}};
       ProblemExecutor executor(spec);
       const CaseResult r = executor.run(spec);
       ASSERT_EQ(r.status, CaseStatus::converged) << case_id(spec) << ": " << r.reason;

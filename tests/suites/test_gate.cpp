@@ -129,5 +129,20 @@ TEST(Gate, BaselineSchemaIsChecked) {
   EXPECT_THROW(baseline_from_json(doc), SuiteInputError);
 }
 
+// Requirement: --update keeps the tolerances of a baseline of an older schema version (whose
+// case records it can no longer read), and still refuses a file that is not a baseline.
+TEST(Gate, TolerancesAreReadFromAnOlderBaseline) {
+  auto doc = to_json(make_baseline(good_results(), 1e-5, {{"sigma_c", 1e-3}}));
+  doc["schema_version"] = 1;
+  for (auto& c : doc["cases"])
+    c.erase("recovery");  // a version-1 case record
+  EXPECT_THROW(baseline_from_json(doc), SuiteInputError);
+  const auto [default_tolerance, tolerances] = baseline_tolerances_from_json(doc);
+  EXPECT_EQ(default_tolerance, 1e-5);
+  EXPECT_EQ(tolerances.at("sigma_c"), 1e-3);
+  EXPECT_THROW(baseline_tolerances_from_json(nlohmann::json::parse(R"({"schema":"x"})")),
+               SuiteInputError);
+}
+
 }  // namespace
 }  // namespace cs::suites

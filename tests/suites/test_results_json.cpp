@@ -36,6 +36,7 @@ TEST(ResultsJson, CasesRoundTripThroughTheDocument) {
                                 make_case(ProblemId::F_p, MeshLevel::C, 2.0, INFINITY)};
   cases[1].status = CaseStatus::not_converged;
   cases[1].reason = "iteration cap (1) reached";
+  cases[1].spec.recovery = Recovery::extrapolated;
   const auto doc = make_results_document(RunInfo{}, cases);
   // JSON text has no NaN/inf: the non-finite profile value is null, the singular exact "inf".
   const std::string text = doc.dump();
@@ -44,6 +45,8 @@ TEST(ResultsJson, CasesRoundTripThroughTheDocument) {
   const auto back = cases_from_results_document(nlohmann::json::parse(text));
   ASSERT_EQ(back.size(), 2u);
   EXPECT_EQ(case_id(back[0].spec), case_id(cases[0].spec));
+  EXPECT_EQ(back[0].spec.recovery, Recovery::spr);
+  EXPECT_EQ(back[1].spec.recovery, Recovery::extrapolated);
   EXPECT_EQ(back[0].quantities[0].value, 1.30);
   EXPECT_EQ(*back[0].quantities[0].contact_pressure, 1.30 * 0.99);
   EXPECT_TRUE(std::isinf(back[1].quantities[0].exact));

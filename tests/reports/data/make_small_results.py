@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Writes small_results.json: a hand-made results file (schema contact-suite/results v1,
+"""Writes small_results.json: a hand-made results file (schema contact-suite/results v2,
 docs/results-schema.md) for the tests of reports/. The values are invented near the study's
 (they exercise the tables; they are not solver output). Rows follow the schema's rules:
 grade of the finest mesh present, converging as in suites/grading.hpp, Eq. 47 for F_p/F_a.
@@ -73,12 +73,13 @@ cases, rows = [], []
 
 
 def add(problem, element, algorithm, contact, quantities, statuses=None, target="discretized",
-        overrides=None, missing=()):
+        overrides=None, missing=(), recovery="spr"):
     """quantities: name -> (exact or 'inf', [C, M, F] values, study_exact or None)."""
     statuses = statuses or ["converged"] * 3
     overrides = overrides or {}
     family = problem[0] if problem[0] != "P" else "P"
-    suffix = ("/rigid" if target == "rigid" else "") + "".join(
+    suffix = ("/rigid" if target == "rigid" else "") + (
+        "/extrapolated" if recovery == "extrapolated" else "") + "".join(
         f"/{k}={v:g}" for k, v in sorted(overrides.items()))
     per_row = {name: {"values": {}, "errors": {}} for name in quantities}
     for mi, mesh in enumerate(MESHES):
@@ -105,7 +106,8 @@ def add(problem, element, algorithm, contact, quantities, statuses=None, target=
         case = {
             "id": f"{problem}/{mesh}/{element}/{algorithm}/{contact}{suffix}",
             "problem": problem, "mesh": mesh, "element": element, "algorithm": algorithm,
-            "contact": contact, "target": target, "overrides": overrides, "status": status,
+            "contact": contact, "target": target, "recovery": recovery, "overrides": overrides,
+            "status": status,
             "reason": {"converged": "", "not_converged": "active set cycling after 40 iterations",
                        "failed": "singular stiffness matrix (rigid body mode)"}[status],
             "iterations": 0 if status == "failed" else 3 + mi,
@@ -129,7 +131,7 @@ def add(problem, element, algorithm, contact, quantities, statuses=None, target=
         row = {
             "id": f"{problem}/{element}/{algorithm}/{contact}{suffix}/{name}",
             "problem": problem, "element": element, "algorithm": algorithm, "contact": contact,
-            "target": target, "quantity": name, "values": vals, "error_percent": errs,
+            "target": target, "recovery": recovery, "quantity": name, "values": vals, "error_percent": errs,
             "grade": None if singular or finest is None else grade(errs[finest]),
             "graded_mesh": None if singular or finest is None else finest,
             "converging": None if singular or not complete else converging([errs[m] for m in MESHES]),
@@ -169,10 +171,12 @@ add("F_p", "Q4", "MPC", "ss", {"sigma_c_star": ("inf", [2.0000, 2.5000, 2.8000],
 add("H_p", "Q4", "AL", "ss", hp([1.2660, 1.2715, 1.2731], [1.2160, 1.2235, 1.2262]), target="rigid")
 add("H_p", "Q4", "PM", "ss", hp([1.2500, 1.2600, 1.2650], [1.2000, 1.2100, 1.2150]),
     overrides={"fkn": 10.0})
+add("H_p", "Q4", "LMP", "ss", hp([1.3311, 1.3012, 1.2892], [1.2066, 1.2573, 1.2668]),
+    recovery="extrapolated")
 
 doc = {
     "schema": "contact-suite/results",
-    "schema_version": 1,
+    "schema_version": 2,
     "run": {
         "started_utc": "2026-11-22T10:00:00Z", "wall_seconds": 12.5, "jobs": 2,
         "peak_rss_mb": 310.5, "command_line": "contact-suite run --out out --problems H_p,P_p",

@@ -1,0 +1,51 @@
+#pragma once
+// Section 7 of the report, "Benchmarks", from the Google Benchmark JSON of
+// bench/bench_contact_algorithms (see reports/bench_results.hpp): the machine each file was
+// measured on (from its `context`), the check of issue #7's target (ratio <= 1.5 for PM, AL and
+// LM on every listed model at mesh F: which cases meet it, which miss it and by how much, which
+// models were not measured there), the ContactAllOptions ratio per case, and per model (problem,
+// mesh, element) a table of time, ratio and iterations per algorithm and contact
+// discretization, with every case that did not converge or stopped with an error named.
+//
+// ratio = time of the contact analysis / time of one assembly + factorization + solve of the
+// same model measured in the same run: the physical floor is 1.
+
+#include <string>
+#include <vector>
+
+#include "reports/bench_results.hpp"
+#include "reports/figures.hpp"
+
+namespace cs::reports {
+
+/// The performance target of issue #7: the contact analysis of PM, AL and LM costs at most
+/// 1.5 x one assembly + factorization + solve, on H_p, S_1_7 and P'_p at mesh F.
+struct BenchTarget {
+  double max_ratio = 1.5;
+  std::string mesh = "F";
+  std::vector<std::string> algorithms{"PM", "AL", "LM"};
+  std::vector<std::string> problems{"H_p", "S_1_7", "Pprime_p"};
+};
+
+/// The cases the target applies to, split by outcome. A case misses the target when its ratio
+/// exceeds the limit, when it did not converge, or when it has no ratio (an error).
+struct TargetCheck {
+  std::vector<const ContactBenchmark*> met;
+  std::vector<const ContactBenchmark*> missed;
+  /// "S_1_7 Q8": listed problems x elements with no case at the target mesh.
+  std::vector<std::string> not_measured;
+  int n_cases() const { return static_cast<int>(met.size() + missed.size()); }
+};
+
+/// Checks every Contact benchmark of `bench` against `target`; the vectors point into `bench`.
+TargetCheck check_target(const BenchResults& bench, const BenchTarget& target = {});
+
+/// The machine line of one file: host, CPUs and clock, load, library build type, date.
+std::string machine_line(const BenchSource& source);
+
+/// The whole section, starting "## 7. Benchmarks"; `figures` holds the bench chart (empty when
+/// figures are off).
+std::string bench_section(const BenchResults& bench, const FigureSet& figures,
+                          const BenchTarget& target = {});
+
+}  // namespace cs::reports

@@ -1,0 +1,243 @@
+// Section 7 of the report, "Benchmarks": the target of issue #7 judged case by case (a ratio
+// of 1.6 at mesh F misses it, 1.4 meets it, a case that did not converge misses it, MPC and the
+// coarser meshes are not judged), the machine line computed from the file's context, the tables
+// per model, and the section in report.md only when a bench file is given; a bad bench file
+// leaves the output directory untouched.
+//
+// Data: data/small_bench.json (see test_bench_results.cpp for what it holds).
+
+#include <algorithm>
+
+#include <gtest/gtest.h>
+
+#include "report_test_support.hpp"
+#include "reports/bench_figure.hpp"
+#include "reports/bench_results.hpp"
+#include "reports/bench_section.hpp"
+#include "reports/gnuplot.hpp"
+#include "reports/report_error.hpp"
+#include "reports/report_writer.hpp"
+
+namespace cs::reports {
+namespace {
+
+namespace fs = std::filesystem;
+using testing::read_text;
+using testing::TempDir;
+using testing::write_text;
+
+fs::path bench_path() {
+  return testing::source_dir() / "tests" / "reports" / "data" / "small_bench.json";
+}
+
+const BenchResults& sample() {
+  static const BenchResults r = load_bench_file(bench_path());
+  return r;
+}
+
+/// "H_p/F/Q4/ss/AL" of each case, in order.
+std::vector<std::string> names(const std::vector<const ContactBenchmark*>& cases) {
+  std::vector<std::string> out;
+  for (const auto* b : cases) {
+    out.push_back(b->model.problem + "/" + b->model.mesh + "/" + b->model.element + "/" +
+                  b->contact + "/" + b->algorithm);
+  }
+  return out;
+}
+
+/// The text of `md` from the line starting with `from` up to the next line starting with `to`.
+std::string between(const std::string& md, const std::string& from, const std::string& to) {
+  const auto start = md.find(from);
+  if (start == std::string::npos)
+    return {};
+  const auto end = md.find("\n" + to, start);
+  return md.substr(start, end == std::string::npos ? std::string::npos : end - start);
+}
+
+TEST(BenchTarget, JudgesTheTimedAlgorithmsAtMeshFOnly) {
+  const TargetCheck check = check_target(sample());
+  // Met: converged with ratio <= 1.5. Missed, worst first: AL 1.6, LM 1.2 but not converged,
+  // ns PM without a ratio (an error). MPC (3.0) and the C mesh (AL 1.9) are not judged.
+  EXPECT_EQ(names(check.met),
+            (std::vector<std::string>{"Pprime_p/F/Q8/mortar/LM", "H_p/F/Q4/ss/PM"}));
+  EXPECT_EQ(names(check.missed),
+            (std::vector<std::string>{"H_p/F/Q4/ss/AL", "H_p/F/Q4/ss/LM", "H_p/F/Q4/ns/PM"}));
+  EXPECT_EQ(check.n_cases(), 5);
+  EXPECT_EQ(check.not_measured, (std::vector<std::string>{"H<sub>p</sub> Q8", "S(1/7) Q4",
+                                                          "S(1/7) Q8", "P′<sub>p</sub> Q4"}));
+}
+
+TEST(BenchTarget, FollowsTheTargetItIsGiven) {
+  BenchTarget strict;
+  strict.max_ratio = 1.3;
+  EXPECT_EQ(names(check_target(sample(), strict).met),
+            (std::vector<std::string>{"Pprime_p/F/Q8/mortar/LM"}));
+  BenchTarget coarse;
+  coarse.mesh = "C";
+  EXPECT_EQ(names(check_target(sample(), coarse).missed),
+            (std::vector<std::string>{"H_p/C/Q4/ss/AL"}));
+}
+
+TEST(BenchSection, ListsTheMissesWithTheirRatioAndNotTheCasesThatMeetTheTarget) {
+  const std::string md = bench_section(sample(), {});
+  EXPECT_EQ(md.rfind("## 7. Benchmarks\n", 0), 0u);
+  EXPECT_NE(md.find("### Target: ratio ≤ 1.5 for PM, AL and LM at mesh F"), std::string::npos);
+  EXPECT_NE(md.find("**2 of 5 cases meet it; 3 miss it:**"), std::string::npos) << md;
+  const std::string misses = between(md, "**2 of 5", "Meet it");
+  EXPECT_NE(misses.find("| H<sub>p</sub>, mesh F, Q4 | ss | AL | 1.60 | 16.0 |"), std::string::npos)
+      << misses;
+  EXPECT_NE(misses.find("| ss | LM | 1.20 | 12.0 | not converged: active set cycles"),
+            std::string::npos)
+      << misses;
+  EXPECT_NE(misses.find("| ns | PM | — | — | error: reference factorization failed |"),
+            std::string::npos)
+      << misses;
+  EXPECT_EQ(misses.find("1.40"), std::string::npos) << misses;  // ss PM meets it
+  EXPECT_EQ(misses.find("MPC"), std::string::npos) << misses;   // not a target algorithm
+  EXPECT_EQ(misses.find("1.90"), std::string::npos) << misses;  // mesh C: not judged
+  const std::string met = between(md, "Meet it", "Not measured");
+  EXPECT_NE(met.find("- H<sub>p</sub>, mesh F, Q4: ss PM 1.40"), std::string::npos) << met;
+  EXPECT_NE(met.find("- P′<sub>p</sub>, mesh F, Q8: mortar LM 1.10"), std::string::npos) << met;
+  EXPECT_NE(md.find("Not measured at mesh F (not judged): H<sub>p</sub> Q8, S(1/7) Q4, "
+                    "S(1/7) Q8 and P′<sub>p</sub> Q4."),
+            std::string::npos);
+}
+
+TEST(BenchSection, MachineLineComesFromTheContext) {
+  const std::string line = machine_line(sample().sources[0]);
+  EXPECT_EQ(line,
+            "**Machine** (`" + bench_path().string() +
+                "`): host `bench-host`, 2 CPUs at 2800 MHz, load average 0.50 / 0.25 / 0.12 "
+                "when the run began, Google Benchmark library built as release (the library's "
+                "own build, not the timed code's), program "
+                "`build/bench/bench_contact_algorithms`, run 2024-05-01T10:00:00+00:00. 1 "
+                "benchmarks of other families left out.");
+  BenchSource bare{"x.json", {}, 0};
+  EXPECT_EQ(machine_line(bare), "**Machine** (`x.json`): the file does not say (no `context`).");
+  bare.context.cpu_scaling_enabled = true;
+  EXPECT_NE(machine_line(bare).find("CPU frequency scaling was on"), std::string::npos);
+}
+
+TEST(BenchSection, OneTablePerModelWithEveryCaseAndWhyItFailed) {
+  const std::string md = bench_section(sample(), {});
+  const std::string f = between(md, "#### H<sub>p</sub>, mesh F, Q4", "####");
+  EXPECT_NE(f.find("(reference 10.0 ms)"), std::string::npos) << f;
+  EXPECT_NE(f.find("| Algorithm | ns | ss |"), std::string::npos) << f;
+  EXPECT_NE(f.find("| AL | — | 16.0 ms · 1.60× · 5 it. + 3 aug. |"), std::string::npos) << f;
+  EXPECT_NE(f.find("| LM | — | 12.0 ms · 1.20× · 50 it. ✗ |"), std::string::npos) << f;
+  EXPECT_NE(f.find("| PM | error ✗ | 14.0 ms · 1.40× · 2 it. |"), std::string::npos) << f;
+  EXPECT_NE(f.find("✗ ss LM: not converged: active set cycles between two states"),
+            std::string::npos);
+  EXPECT_NE(f.find("✗ ns PM: error: reference factorization failed"), std::string::npos);
+  // Models in the study's order: P'_p before H_p; C before F.
+  const auto pprime = md.find("#### P′<sub>p</sub>, mesh F, Q8");
+  const auto hc = md.find("#### H<sub>p</sub>, mesh C, Q4");
+  const auto hf = md.find("#### H<sub>p</sub>, mesh F, Q4");
+  EXPECT_LT(pprime, hc);
+  EXPECT_LT(hc, hf);
+  EXPECT_NE(md.find("| H<sub>p</sub>, mesh F, Q4 | 108 | 12 | 11 | 0.90 | 10.0 |"),
+            std::string::npos);
+}
+
+TEST(BenchSection, WithoutMeshFTheTargetIsNotJudged) {
+  BenchResults coarse = sample();
+  coarse.contact.erase(std::remove_if(coarse.contact.begin(), coarse.contact.end(),
+                                      [](const auto& b) { return b.model.mesh == "F"; }),
+                       coarse.contact.end());
+  const std::string md = bench_section(coarse, {});
+  EXPECT_NE(md.find("**Not judged:** no PM, AL or LM case at mesh F in the bench file (meshes "
+                    "measured: C). For orientation, at mesh C, the finest measured, 0 of 1 such "
+                    "cases have a ratio ≤ 1.5."),
+            std::string::npos)
+      << md;
+}
+
+TEST(BenchSection, RatiosBelowThePhysicalFloorAreFlagged) {
+  EXPECT_EQ(bench_section(sample(), {}).find("below 1"), std::string::npos);
+  BenchResults low = sample();
+  for (auto& b : low.contact) {
+    if (b.model.mesh == "C")
+      b.ratio = 0.8;
+  }
+  EXPECT_NE(bench_section(low, {}).find("**1 of 6 cases have a ratio below 1** (the lowest, "
+                                        "0.80: H<sub>p</sub>, mesh C, Q4 ss AL)"),
+            std::string::npos);
+}
+
+ReportOptions options_with_bench(const fs::path& out, std::vector<fs::path> bench) {
+  ReportOptions o;
+  o.results = testing::sample_path();
+  o.out_dir = out;
+  o.study_data = testing::study_dir();
+  o.figures = false;
+  o.bench = std::move(bench);
+  return o;
+}
+
+TEST(BenchSection, InTheReportOnlyWithABenchFile) {
+  TempDir tmp;
+  write_report(options_with_bench(tmp.path() / "plain", {}));
+  const std::string plain = read_text(tmp.path() / "plain" / "report.md");
+  EXPECT_EQ(plain.find("Benchmarks"), std::string::npos);
+  write_report(options_with_bench(tmp.path() / "bench", {bench_path()}));
+  const std::string md = read_text(tmp.path() / "bench" / "report.md");
+  EXPECT_NE(md.find("[Benchmarks](#7-benchmarks)"), std::string::npos);
+  EXPECT_NE(md.find("\n## 7. Benchmarks\n"), std::string::npos);
+  EXPECT_NE(md.find("**2 of 5 cases meet it"), std::string::npos);
+}
+
+TEST(BenchSection, ABadBenchFileLeavesTheOutputDirectoryUntouched) {
+  TempDir tmp;
+  const fs::path out = tmp.path() / "out";
+  fs::create_directories(out);
+  write_text(out / "report.md", "the user's previous report\n");
+  write_text(tmp.path() / "bad.json", R"({"benchmarks": [)");
+  EXPECT_THROW(write_report(options_with_bench(out, {bench_path(), tmp.path() / "bad.json"})),
+               ReportError);
+  EXPECT_EQ(read_text(out / "report.md"), "the user's previous report\n");
+  EXPECT_EQ(std::distance(fs::directory_iterator(out), fs::directory_iterator()), 1);
+  // A directory that did not exist is not created.
+  EXPECT_THROW(write_report(options_with_bench(tmp.path() / "new", {tmp.path() / "nope.json"})),
+               ReportError);
+  EXPECT_FALSE(fs::exists(tmp.path() / "new"));
+}
+
+bool is_png(const fs::path& p) {
+  const std::string bytes = read_text(p);
+  return bytes.size() > 1000 && bytes.compare(0, 8, "\x89PNG\r\n\x1a\n") == 0;
+}
+
+TEST(BenchFigure, DrawsOnePngOfTheFinestMeshes) {
+  if (!find_gnuplot())
+    GTEST_SKIP() << "gnuplot with a PNG terminal is not installed";
+  TempDir tmp;
+  const FigureSet set = render_bench_figures(sample(), tmp.path());
+  EXPECT_TRUE(set.unavailable.empty());
+  ASSERT_EQ(set.figures.size(), 1u);
+  const Figure& f = set.figures[0];
+  EXPECT_TRUE(f.produced) << f.error;
+  EXPECT_TRUE(is_png(tmp.path() / f.file));
+  // H_p Q4 at F (its finest), P'_p Q8 at F; the C mesh of H_p Q4 is not drawn.
+  EXPECT_NE(f.caption_md.find("P′<sub>p</sub>, mesh F, Q8; H<sub>p</sub>, mesh F, Q4"),
+            std::string::npos)
+      << f.caption_md;
+  EXPECT_NE(f.caption_md.find("marked * is of a case that did not converge"), std::string::npos);
+  const std::string md = bench_section(sample(), set);
+  EXPECT_NE(md.find("![benchmark times](figures/bench_time.png)"), std::string::npos);
+}
+
+TEST(BenchFigure, WithoutGnuplotTheSectionSaysSo) {
+  TempDir tmp;
+  FigureOptions options;
+  options.gnuplot_program = "/nonexistent/gnuplot";
+  const FigureSet set = render_bench_figures(sample(), tmp.path(), {}, options);
+  EXPECT_FALSE(set.unavailable.empty());
+  EXPECT_FALSE(fs::exists(tmp.path() / "figures"));
+  const std::string md = bench_section(sample(), set);
+  EXPECT_NE(md.find("**No figure:** `/nonexistent/gnuplot` with a PNG terminal was not found"),
+            std::string::npos)
+      << md;
+}
+
+}  // namespace
+}  // namespace cs::reports

@@ -1,0 +1,79 @@
+// The graded nodal stress near a loaded contact surface: the study's plane-strain Hertz problem
+// with bilinear elements and Lagrange multipliers (H_p, Q4, LMP, ss) on its three meshes.
+// Patch-recovered nodal stresses converge at second order to within 1 % on the fine mesh;
+// extrapolated, averaged ones (the study's) carry the O(h) surface bias of Q4
+// (docs/conventions.md, "Sampling and grading").
+
+#include <cmath>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "suites/problem_executor.hpp"
+
+namespace cs::suites {
+namespace {
+
+/// Signed % errors of sigma_c (nodal) on C, M, F, and of the contact pressure on F.
+struct HertzErrors {
+  std::vector<double> sigma_c;
+  double pressure_f = 0.0;
+};
+
+HertzErrors hertz_errors(Recovery recovery) {
+  HertzErrors out;
+  for (MeshLevel mesh : all_mesh_levels()) {
+    const CaseSpec spec{.problem = ProblemId::H_p,
+                        .mesh = mesh,
+                        .element = ElementType::Q4,
+                        .algorithm = Algorithm::LMP,
+                        .contact = ContactKind::ss,
+                        .recovery = recovery,
+                        .overrides = {}};
+    ProblemExecutor executor(spec);
+    const CaseResult r = executor.run(spec);
+    EXPECT_EQ(r.status, CaseStatus::converged) << case_id(spec) << ": " << r.reason;
+    const QuantityResult& q = r.quantities.at(0);
+    EXPECT_EQ(q.name, "sigma_c");
+    out.sigma_c.push_back(q.error_percent);
+    if (mesh == MeshLevel::F && q.contact_pressure)
+      out.pressure_f = 100.0 * (*q.contact_pressure - q.exact) / q.exact;
+  }
+  return out;
+}
+
+/// Observed order from the errors of meshes h and h/4.
+double observed_order(const std::vector<double>& e) {
+  return std::log(std::abs(e[0] / e[2])) / std::log(4.0);
+}
+
+// Requirement (the battery's acceptance): H_p fine-mesh LM/ss Q4 sigma_c within 1 % of 4/pi,
+// converging at about second order (observed errors 4.6, 1.05, 0.23 %: order 2.2); the contact
+// pressure at the axis is within 0.1 %.
+TEST(NodalStressAccuracy, HertzFineMeshLagrangeQ4WithinOnePercent) {
+  const HertzErrors spr = hertz_errors(Recovery::spr);
+  EXPECT_LT(std::abs(spr.sigma_c[2]), 1.0);
+  EXPECT_LT(std::abs(spr.sigma_c[1]), std::abs(spr.sigma_c[0]));
+  EXPECT_LT(std::abs(spr.sigma_c[2]), std::abs(spr.sigma_c[1]));
+  EXPECT_GT(observed_order(spr.sigma_c), 1.7);
+  EXPECT_LT(std::abs(spr.pressure_f), 0.1);
+}
+
+// Requirement: the extrapolated, averaged nodal stress (what the study graded) is biased high
+// at first order (observed 6.6, 3.9, 2.1 %: order 0.8) while the contact pressure is right:
+// the bias is the recovery's, and patch recovery removes most of it.
+TEST(NodalStressAccuracy, ExtrapolatedQ4StressesCarryAFirstOrderBias) {
+  const HertzErrors ext = hertz_errors(Recovery::extrapolated);
+  const HertzErrors spr = hertz_errors(Recovery::spr);
+  for (double e : ext.sigma_c)
+    EXPECT_GT(e, 1.0);  // high on every mesh
+  const double order = observed_order(ext.sigma_c);
+  EXPECT_GT(order, 0.6);
+  EXPECT_LT(order, 1.3);
+  EXPECT_LT(std::abs(ext.pressure_f), 0.1);
+  EXPECT_DOUBLE_EQ(ext.pressure_f, spr.pressure_f);  // same contact solution
+  EXPECT_LT(std::abs(spr.sigma_c[2]), 0.25 * std::abs(ext.sigma_c[2]));
+}
+
+}  // namespace
+}  // namespace cs::suites
