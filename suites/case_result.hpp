@@ -38,7 +38,7 @@ struct QuantityResult {
 /// The contact surface of the indented body, sorted by x: for the figures of the report.
 struct SurfaceProfile {
   std::vector<double> x_over_a;         ///< position / contact half-width (b for S)
-  std::vector<double> sigma_z_over_p;   ///< -sigma_z/p, nodal (extrapolated, averaged)
+  std::vector<double> sigma_z_over_p;   ///< -sigma_z/p, nodal (the case's recovery)
   std::vector<double> pressure_over_p;  ///< contact pressure / p from the contact solution
 };
 

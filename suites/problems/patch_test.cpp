@@ -7,7 +7,7 @@
 // on z = 0 (Eq. 5); the indenter's back face held in z (u_z = 0), its x = 0 edge symmetric.
 // Oracle: the uniform stress sigma_z = -p, sigma_x = tau_xz = 0 (Eq. 6, 8).
 // Sampled: sigma_z_max, the largest -sigma_z/p over the slab's contact-surface nodes
-// (nodal, extrapolated and averaged), exact 1 (the study's Tables 3-6).
+// (nodal stresses as the case recovers them, --recovery), exact 1 (the study's Tables 3-6).
 // Run: contact-suite case Pprime_p --mesh C --element Q4 --algorithm LMP --contact mortar
 
 #include "oracles/patch_test.hpp"
