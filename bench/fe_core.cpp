@@ -7,6 +7,9 @@
 //                 time is the FACTORIZATION; every phase, the unknowns, nnz(L), flops and the
 //                 process's peak RSS are counters. CHOLMOD supernodal at every size, Eigen
 //                 SimplicialLDLT up to moderate sizes (it is 7-15x slower).
+//   BM_StressRecovery   nodal stresses of a smooth displacement field: extrapolated and
+//                 averaged (arg 0) or superconvergent patch recovery (arg 1), whose cost is
+//                 reported beside the extrapolation it starts from in the same run.
 // The model: the unit block, roller supports on the bottom (u_z = 0) and left (u_x = 0),
 // uniform pressure on the top, plane strain.
 //
@@ -17,6 +20,7 @@
 #include <sys/resource.h>
 
 #include <chrono>
+#include <cmath>
 #include <memory>
 #include <vector>
 
@@ -26,6 +30,7 @@
 #include "solver/linear_static.hpp"
 #include "solver/load_vector.hpp"
 #include "solver/mesh/structured_block.hpp"
+#include "solver/stress_recovery.hpp"
 
 namespace {
 
@@ -229,5 +234,29 @@ void phase_cases(benchmark::internal::Benchmark* b) {
 BENCHMARK(BM_Phases)->Apply(phase_cases)->UseManualTime()->Iterations(1)->Unit(benchmark::kSecond);
 
 }  // namespace
+
+/// Args: method (0 extrapolated and averaged, 1 patch recovery), element (0 Q4, 1 Q8), n.
+void BM_StressRecovery(benchmark::State& state) {
+  const auto model = block_model(element_type(state.range(1)), static_cast<int>(state.range(2)));
+  Eigen::VectorXd u(2 * model->mesh.n_nodes());
+  for (int n = 0; n < model->mesh.n_nodes(); ++n) {
+    const Eigen::Vector2d x = model->mesh.nodes[n];
+    u.segment<2>(2 * n) = 1e-3 * Eigen::Vector2d(std::sin(x.x() + 2 * x.y()), x.x() * x.y());
+  }
+  StressRecoveryOptions options;
+  options.method = state.range(0) == 0 ? StressRecoveryMethod::ExtrapolatedAveraged
+                                       : StressRecoveryMethod::PatchRecovered;
+  for (auto _ : state) {
+    const StressField field = recover_stresses(*model, u, options);
+    benchmark::DoNotOptimize(field.nodal.data());
+  }
+  state.counters["nodes"] = model->mesh.n_nodes();
+}
+
+BENCHMARK(BM_StressRecovery)
+    ->Name("StressRecovery")
+    ->ArgsProduct({{0, 1}, {0, 1}, {256}})
+    ->ArgNames({"method", "element", "n"})
+    ->Unit(benchmark::kMillisecond);
 
 BENCHMARK_MAIN();

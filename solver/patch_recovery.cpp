@@ -2,7 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
-#include <map>
+#include <span>
 #include <utility>
 
 #include <Eigen/QR>
@@ -10,12 +10,22 @@
 namespace cs::solver {
 namespace {
 
+/// Up to 6 monomials, on the stack (evaluated for every node of every patch).
+using Monomials = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 6, 1>;
+using Coefficients = Eigen::Matrix<double, Eigen::Dynamic, 4, 0, 6, 4>;
+using NormalMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 6, 6>;
+
 /// The monomials of a complete polynomial of degree 1 or 2 at the scaled point p.
-Eigen::VectorXd monomials(int degree, const Eigen::Vector2d& p) {
-  if (degree == 1)
-    return Eigen::Vector3d(1.0, p.x(), p.y());
-  Eigen::VectorXd m(6);
-  m << 1.0, p.x(), p.y(), p.x() * p.x(), p.x() * p.y(), p.y() * p.y();
+Monomials monomials(int degree, const Eigen::Vector2d& p) {
+  Monomials m(degree == 1 ? 3 : 6);
+  m[0] = 1.0;
+  m[1] = p.x();
+  m[2] = p.y();
+  if (degree == 2) {
+    m[3] = p.x() * p.x();
+    m[4] = p.x() * p.y();
+    m[5] = p.y() * p.y();
+  }
   return m;
 }
 
@@ -23,33 +33,57 @@ int n_monomials(int degree) {
   return (degree + 1) * (degree + 2) / 2;
 }
 
-/// The elements of each body around each node: around[body][node].
-std::vector<std::vector<std::vector<int>>> elements_around(const Mesh& mesh, int n_bodies) {
-  std::vector<std::vector<std::vector<int>>> around(n_bodies,
-                                                    std::vector<std::vector<int>>(mesh.n_nodes()));
+/// The elements of one body around each node, in compressed rows: the elements around node n
+/// are elements[offsets[n] .. offsets[n + 1]).
+struct NodeElements {
+  std::vector<int> offsets;
+  std::vector<int> elements;
+  std::span<const int> of(int node) const {
+    return {elements.data() + offsets[node], elements.data() + offsets[node + 1]};
+  }
+};
+
+NodeElements elements_around(const Mesh& mesh, int body) {
+  NodeElements around;
+  around.offsets.assign(mesh.n_nodes() + 1, 0);
   for (int e = 0; e < mesh.n_elements(); ++e) {
+    if (mesh.element_body[e] != body)
+      continue;
     for (int a = 0; a < 4; ++a)
-      around[mesh.element_body[e]][mesh.elements[e][a]].push_back(e);
+      ++around.offsets[mesh.elements[e][a] + 1];
+  }
+  for (int n = 0; n < mesh.n_nodes(); ++n)
+    around.offsets[n + 1] += around.offsets[n];
+  around.elements.resize(around.offsets.back());
+  std::vector<int> next(around.offsets.begin(), around.offsets.end() - 1);
+  for (int e = 0; e < mesh.n_elements(); ++e) {
+    if (mesh.element_body[e] != body)
+      continue;
+    for (int a = 0; a < 4; ++a)
+      around.elements[next[mesh.elements[e][a]]++] = e;
   }
   return around;
 }
 
-/// Whether each corner node lies on the boundary of each body: on a corner-to-corner edge that
-/// only one element of the body has. boundary[body][node].
-std::vector<std::vector<char>> boundary_vertices(const Mesh& mesh, int n_bodies) {
-  std::vector<std::map<std::pair<int, int>, int>> edge_count(n_bodies);
+/// Whether each corner node lies on the boundary of one body: on a corner-to-corner edge that
+/// only one element of the body has.
+std::vector<char> boundary_vertices(const Mesh& mesh, int body) {
+  std::vector<std::pair<int, int>> edges;
   for (int e = 0; e < mesh.n_elements(); ++e) {
-    for (int s = 0; s < 4; ++s) {
-      const int a = mesh.elements[e][s], b = mesh.elements[e][(s + 1) % 4];
-      ++edge_count[mesh.element_body[e]][std::minmax(a, b)];
-    }
+    if (mesh.element_body[e] != body)
+      continue;
+    for (int s = 0; s < 4; ++s)
+      edges.push_back(std::minmax(mesh.elements[e][s], mesh.elements[e][(s + 1) % 4]));
   }
-  std::vector<std::vector<char>> boundary(n_bodies, std::vector<char>(mesh.n_nodes(), 0));
-  for (int body = 0; body < n_bodies; ++body) {
-    for (const auto& [edge, count] : edge_count[body]) {
-      if (count == 1)
-        boundary[body][edge.first] = boundary[body][edge.second] = 1;
-    }
+  std::sort(edges.begin(), edges.end());
+  std::vector<char> boundary(mesh.n_nodes(), 0);
+  for (std::size_t i = 0; i < edges.size();) {
+    std::size_t j = i + 1;
+    while (j < edges.size() && edges[j] == edges[i])
+      ++j;
+    if (j - i == 1)
+      boundary[edges[i].first] = boundary[edges[i].second] = 1;
+    i = j;
   }
   return boundary;
 }
@@ -59,7 +93,7 @@ struct PatchFit {
   int degree = 1;
   Eigen::Vector2d centre;
   double scale = 1.0;
-  Eigen::Matrix<double, Eigen::Dynamic, 4> coefficients;
+  Coefficients coefficients;
 
   Eigen::Vector4d at(const Eigen::Vector2d& x) const {
     return coefficients.transpose() * monomials(degree, (x - centre) / scale);
@@ -68,7 +102,7 @@ struct PatchFit {
 
 /// Least-squares fit over the sampling points of `patch`; false if the points do not determine
 /// the polynomial (too few, or on a line/conic).
-bool fit_patch(const Mesh& mesh, const ElementSamples& samples, const std::vector<int>& patch,
+bool fit_patch(const Mesh& mesh, const ElementSamples& samples, std::span<const int> patch,
                int node, int degree, PatchFit& fit) {
   fit.degree = degree;
   fit.centre = mesh.nodes[node];
@@ -83,21 +117,21 @@ bool fit_patch(const Mesh& mesh, const ElementSamples& samples, const std::vecto
   const int k = n_monomials(degree);
   if (m < k || fit.scale <= 0.0)
     return false;
-  Eigen::MatrixXd A(m, k);
-  Eigen::Matrix<double, Eigen::Dynamic, 4> b(m, 4);
-  int row = 0;
+  // Normal equations on points scaled into the unit disc: well conditioned, no heap.
+  NormalMatrix AtA = NormalMatrix::Zero(k, k);
+  Coefficients Atb = Coefficients::Zero(k, 4);
   for (int e : patch) {
     for (const StressSample& s : samples[e]) {
-      A.row(row) = monomials(degree, (s.position - fit.centre) / fit.scale).transpose();
-      b.row(row) = s.stress.transpose();
-      ++row;
+      const Monomials a = monomials(degree, (s.position - fit.centre) / fit.scale);
+      AtA.noalias() += a * a.transpose();
+      Atb.noalias() += a * s.stress.transpose();
     }
   }
-  Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(A);
-  qr.setThreshold(1e-8);
+  Eigen::ColPivHouseholderQR<NormalMatrix> qr(AtA);
+  qr.setThreshold(1e-10);
   if (qr.rank() < k)
     return false;
-  fit.coefficients = qr.solve(b);
+  fit.coefficients = qr.solve(Atb);
   return true;
 }
 
@@ -122,19 +156,18 @@ void recover_by_patches(const Mesh& mesh, const ElementSamples& samples,
   const int n_bodies = static_cast<int>(nodal.size());
   const int degree = patch_polynomial_degree(mesh.type);
   const int nen = mesh.n_element_nodes();
-  const auto around = elements_around(mesh, n_bodies);
-  const auto boundary = boundary_vertices(mesh, n_bodies);
 
   for (int body = 0; body < n_bodies; ++body) {
+    const NodeElements around = elements_around(mesh, body);
+    const std::vector<char> boundary = boundary_vertices(mesh, body);
     // Interior vertices: their own patch. Others: sum of the patches reaching them.
     std::vector<char> own(mesh.n_nodes(), 0);
     std::vector<Eigen::Vector4d> sum(mesh.n_nodes(), Eigen::Vector4d::Zero());
     std::vector<int> reached(mesh.n_nodes(), 0);
     PatchFit fit;
     for (int node = 0; node < mesh.n_nodes(); ++node) {
-      const std::vector<int>& patch = around[body][node];
-      if (patch.empty() || boundary[body][node] ||
-          !fit_patch(mesh, samples, patch, node, degree, fit)) {
+      const std::span<const int> patch = around.of(node);
+      if (patch.empty() || boundary[node] || !fit_patch(mesh, samples, patch, node, degree, fit)) {
         continue;
       }
       nodal[body][node] = fit.at(mesh.nodes[node]);
@@ -143,7 +176,7 @@ void recover_by_patches(const Mesh& mesh, const ElementSamples& samples,
       for (int e : patch) {
         for (int a = 0; a < nen; ++a) {
           const int other = mesh.elements[e][a];
-          const bool interior_vertex = a < 4 && !boundary[body][other];
+          const bool interior_vertex = a < 4 && !boundary[other];
           if (other == node || interior_vertex)
             continue;
           sum[other] += fit.at(mesh.nodes[other]);
