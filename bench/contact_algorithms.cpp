@@ -29,7 +29,7 @@
 //       --benchmark_filter='^Contact/Pprime_p/(C|M)/Q4/'     --benchmark_list_tests lists names
 //       --benchmark_out=bench.json --benchmark_out_format=json   JSON for `contact-suite report
 //       --bench bench.json` (see ci/bench.sh and docs/benchmarks.md). The F meshes of S_1_7
-//       take minutes per case.
+//       take about 7 s (Q4) and 30 s (Q8) per case on 2 cores.
 
 #include <chrono>
 #include <cmath>

@@ -14,9 +14,10 @@
 # Environment:
 #   BENCH_FILTER  the --benchmark_filter regex. Default '^Contact': every Contact and
 #                 ContactAllOptions benchmark of H_p, S_1_7 and P'_p on the C, M and F meshes.
-#                 The F meshes of S_1_7 take minutes per case (26 benchmarks), so the default
-#                 runs for a long time. Names are Contact/<problem>/<mesh>/<element>/<contact>/
-#                 <algorithm> and ContactAllOptions/<problem>/<mesh>/<element>, e.g.
+#                 The F meshes of S_1_7 take about 7 s (Q4) and 30 s (Q8) per case on 2 cores,
+#                 so the default runs for about 12 minutes. Names are
+#                 Contact/<problem>/<mesh>/<element>/<contact>/<algorithm> and
+#                 ContactAllOptions/<problem>/<mesh>/<element>, e.g.
 #                   BENCH_FILTER='^Contact(AllOptions)?/[^/]+/(C|M)/'   C and M meshes only
 #                   BENCH_FILTER='^Contact/H_p/F/'                      H_p at mesh F
 #   BENCH_ARGS    further arguments of the benchmark program, e.g. --benchmark_repetitions=3
