@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The accuracy gate of CI: runs the C and M meshes of every problem and option (and the F mesh
-# of every problem but the Steuermann ones, whose fine meshes take most of the full matrix's time), then checks the
-# results against the committed baseline ci/baseline.json.
+# of every problem but the Steuermann ones, whose fine meshes take most of the full matrix's
+# time), then checks the results against the committed baseline ci/baseline.json.
 #
 #   bash ci/accuracy-gate.sh [build-dir]            # check
 #   bash ci/accuracy-gate.sh [build-dir] --update   # rewrite the baseline deliberately
