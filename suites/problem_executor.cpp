@@ -202,11 +202,14 @@ solver::ContactResult ProblemExecutor::solve_with_load_control(
   constexpr int kMaxSteps = 30;
   constexpr double kLoadTolerance = 1e-10;  // relative; the answer is linear in delta per set
   int iterations = 0;
+  // One ContactAnalysis for every step (and every case of the group): a changed advance is a
+  // changed prescribed value, which it picks up with one forward solve, not a new condensation.
+  if (!contact_)
+    contact_ = std::make_unique<solver::ContactAnalysis>(*elastic_, setup_->pair);
   auto attempt = [&](double delta, double& load) {
     *control.delta = delta;
     elastic_->update_prescribed_values();
-    solver::ContactAnalysis analysis(*elastic_, setup_->pair);
-    solver::ContactResult r = analysis.solve(settings);
+    solver::ContactResult r = contact_->solve(settings);
     iterations += r.active_set_iterations;
     load = r.displacement.size() > 0 ? support_reaction(r.displacement) : std::nan("");
     return r;
