@@ -64,7 +64,7 @@ void add_report_command(CLI::App& app) {
                   "the source tree's data/study)");
   cmd->add_option("--bench", args->bench,
                   "Google Benchmark JSON written by bench_contact_algorithms "
-                  "(--benchmark_out=FILE --benchmark_out_format=json): add section 7, "
+                  "(--benchmark_out=FILE --benchmark_out_format=json): add section 8, "
                   "\"Benchmarks\" (repeatable; a case in several files is shown from the last)");
   cmd->add_flag("--no-figures", args->no_figures, "do not run gnuplot");
   cmd->callback([args] { run_report(*args); });

@@ -3,7 +3,7 @@
 //                       [--bench BENCH.json ...] [--no-figures]`:
 // turns a results.json into DIR/report.md (with figures/), DIR/results.csv and, with a
 // baseline, DIR/regression.md; with Google Benchmark JSON of bench_contact_algorithms, report.md
-// gains section 7, "Benchmarks". Reads results and benchmark files only; never runs the solver.
+// gains section 8, "Benchmarks". Reads results and benchmark files only; never runs the solver.
 
 #include <CLI/CLI.hpp>
 

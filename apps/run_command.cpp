@@ -26,7 +26,7 @@ namespace {
 struct RunArgs {
   std::vector<std::string> problems, meshes, elements, algorithms, contacts, sets;
   std::string target = "discretized";
-  std::string recovery = "spr";
+  std::vector<std::string> recoveries;
   int jobs = 0;
   std::string out = "out";
   bool no_report = false;
@@ -49,7 +49,7 @@ suites::CaseSelection make_selection(const RunArgs& args) {
   sel.algorithms = parse_all<suites::Algorithm>(args.algorithms, suites::parse_algorithm);
   sel.contacts = parse_all<suites::ContactKind>(args.contacts, suites::parse_contact);
   sel.target = suites::parse_target(args.target);
-  sel.recovery = suites::parse_recovery(args.recovery);
+  sel.recoveries = parse_all<suites::Recovery>(args.recoveries, suites::parse_recovery);
   for (const auto& text : args.sets)
     sel.overrides.insert(suites::parse_override(text));
   return sel;
@@ -136,9 +136,10 @@ void add_run_command(CLI::App& app, int& exit_code) {
       ->delimiter(',');
   cmd->add_option("--target", args->target, "Indenter: discretized or rigid")
       ->capture_default_str();
-  cmd->add_option("--recovery", args->recovery,
-                  "Nodal stresses: spr (patch recovery) or extrapolated (as commercial codes)")
-      ->capture_default_str();
+  cmd->add_option("--recovery", args->recoveries,
+                  "Nodal stresses: spr (patch recovery; the default) and/or extrapolated (as "
+                  "commercial codes print)")
+      ->delimiter(',');
   cmd->add_option("--set", args->sets, "Override a parameter of every case: name=value");
   cmd->add_option("--jobs", args->jobs, "Parallel workers (default: the number of cores)");
   cmd->add_option("--out", args->out, "Output directory")->capture_default_str();

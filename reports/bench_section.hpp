@@ -1,5 +1,5 @@
 #pragma once
-// Section 7 of the report, "Benchmarks", from the Google Benchmark JSON of
+// Section 8 of the report, "Benchmarks", from the Google Benchmark JSON of
 // bench/bench_contact_algorithms (see reports/bench_results.hpp): the machine each file was
 // measured on (from its `context`), the check of issue #7's target (ratio <= 1.5 for PM, AL and
 // LM on every listed model at mesh F: which cases meet it, which miss it and by how much, which
@@ -43,7 +43,7 @@ TargetCheck check_target(const BenchResults& bench, const BenchTarget& target = 
 /// The machine line of one file: host, CPUs and clock, load, library build type, date.
 std::string machine_line(const BenchSource& source);
 
-/// The whole section, starting "## 7. Benchmarks"; `figures` holds the bench chart (empty when
+/// The whole section, starting "## 8. Benchmarks"; `figures` holds the bench chart (empty when
 /// figures are off).
 std::string bench_section(const BenchResults& bench, const FigureSet& figures,
                           const BenchTarget& target = {});

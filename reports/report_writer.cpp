@@ -12,6 +12,7 @@
 #include "reports/grade_tables.hpp"
 #include "reports/markdown_table.hpp"
 #include "reports/problem_catalog.hpp"
+#include "reports/recovery_section.hpp"
 #include "reports/regression_report.hpp"
 #include "reports/results_csv.hpp"
 #include "reports/summary_section.hpp"
@@ -65,6 +66,7 @@ std::string report_markdown(const ResultsIndex& index, const StudyReference& stu
   const std::string figs = figures_section(figures);
   const std::string divergence = divergence_section(index, study);
   const std::string variants = variants_section(index);
+  const std::string recovery = recovery_section(index);
 
   std::vector<std::pair<std::string, std::string>> toc{{"Summary", "1-summary"}};
   if (!grades.empty())
@@ -78,8 +80,11 @@ std::string report_markdown(const ResultsIndex& index, const StudyReference& stu
     toc.emplace_back("Flat-punch divergence", "5-flat-punch-divergence-eq-47");
   if (!variants.empty())
     toc.emplace_back("Other option sets", "6-other-option-sets-rigid-target-parameter-overrides");
+  if (!recovery.empty())
+    toc.emplace_back("Nodal stress recovery",
+                     "7-nodal-stress-recovery-patch-recovery-beside-extrapolation");
   if (!bench_md.empty())
-    toc.emplace_back("Benchmarks", "7-benchmarks");
+    toc.emplace_back("Benchmarks", "8-benchmarks");
 
   std::string out =
       "# contact-suite report: our contact elements beside the study's ANSYS results\n\n"
@@ -94,7 +99,7 @@ std::string report_markdown(const ResultsIndex& index, const StudyReference& stu
     out += "A regression report against the baseline is in [regression.md](regression.md).\n\n";
   out += "Per-case data for spreadsheets: [results.csv](results.csv).\n\n";
   out += summary_section(index, findings);
-  out += grades + appendix + figs + divergence + variants + bench_md;
+  out += grades + appendix + figs + divergence + variants + recovery + bench_md;
   return out;
 }
 

@@ -25,7 +25,7 @@ struct ReportOptions {
   std::optional<std::filesystem::path> baseline;  ///< older results.json for regression.md
   /// data/study with the study's CSVs; default: default_study_data_dir().
   std::optional<std::filesystem::path> study_data;
-  /// Google Benchmark JSON files of bench_contact_algorithms: section 7, "Benchmarks" (none:
+  /// Google Benchmark JSON files of bench_contact_algorithms: section 8, "Benchmarks" (none:
   /// no such section). A case measured in several files is shown from the last.
   std::vector<std::filesystem::path> bench;
   bool figures = true;  ///< draw figures with gnuplot
@@ -43,7 +43,7 @@ struct ReportOutcome {
 /// Writes the report; throws ReportError for bad input or an unwritable directory.
 ReportOutcome write_report(const ReportOptions& options);
 
-/// The whole report.md text from its parts (no I/O); `bench_md` is section 7 (empty: none).
+/// The whole report.md text from its parts (no I/O); `bench_md` is section 8 (empty: none).
 std::string report_markdown(const ResultsIndex& index, const StudyReference& study,
                             const FigureSet& figures, bool has_regression,
                             const std::string& bench_md = {});

@@ -46,14 +46,31 @@ ResultsIndex::ResultsIndex(const ResultsFile& results) : results_(results) {
     case_by_id_key_.emplace(case_key_of(c.id) + "#" + c.mesh, &c);
   }
   for (const auto& r : results_.rows) {
+    const RowKey key{r.problem, r.quantity, r.element, r.algorithm, r.contact};
     if (r.target == "discretized" && r.variant().empty()) {
       baseline_.push_back(&r);
-      baseline_by_key_.emplace(RowKey{r.problem, r.quantity, r.element, r.algorithm, r.contact},
-                               &r);
+      baseline_by_key_.emplace(key, &r);
+    } else if (r.target == "discretized" && r.variant() == "extrapolated") {
+      extrapolated_by_key_.emplace(key, &r);
     } else {
       variants_.push_back(&r);
     }
   }
+  // An extrapolated row without its baseline (a run of extrapolated stresses only) is a variant.
+  for (auto it = extrapolated_by_key_.begin(); it != extrapolated_by_key_.end();) {
+    if (baseline_by_key_.count(it->first) == 0) {
+      variants_.push_back(it->second);
+      it = extrapolated_by_key_.erase(it);
+    } else {
+      ++it;
+    }
+  }
+}
+
+const RowRecord* ResultsIndex::extrapolated_twin(const RowRecord& b) const {
+  const auto it =
+      extrapolated_by_key_.find(RowKey{b.problem, b.quantity, b.element, b.algorithm, b.contact});
+  return it == extrapolated_by_key_.end() ? nullptr : it->second;
 }
 
 const RowRecord* ResultsIndex::row(const std::string& problem, const std::string& quantity,

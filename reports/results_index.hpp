@@ -1,8 +1,9 @@
 #pragma once
 // Lookups over a loaded results file: the row of an option set, the case behind a row's mesh,
 // the status of each mesh. The "baseline" rows are the study's option sets (a discretized
-// target, no parameter overrides); rows with a rigid target or overrides are "variants",
-// reported in their own section.
+// target, patch-recovered nodal stresses, no parameter overrides); the same option sets with
+// extrapolated nodal stresses are "recovery twins" of the baseline rows (compared in their own
+// section); rows with a rigid target or overrides are "variants", reported in their own section.
 
 #include <map>
 #include <string>
@@ -56,6 +57,10 @@ class ResultsIndex {
   const std::vector<const RowRecord*>& baseline_rows() const { return baseline_; }
   /// The variant rows (rigid target or overrides) in file order.
   const std::vector<const RowRecord*>& variant_rows() const { return variants_; }
+  /// The baseline row's twin with extrapolated nodal stresses, or nullptr.
+  const RowRecord* extrapolated_twin(const RowRecord& baseline) const;
+  /// True when any baseline row has an extrapolated twin.
+  bool has_extrapolated_twins() const { return !extrapolated_by_key_.empty(); }
 
   /// Baseline option sets present for (problem, quantity, element), in all_options() order.
   std::vector<Option> options_present(const std::string& problem, const std::string& quantity,
@@ -73,6 +78,7 @@ class ResultsIndex {
   using RowKey = std::tuple<std::string, std::string, std::string, std::string, std::string>;
   const ResultsFile& results_;
   std::map<RowKey, const RowRecord*> baseline_by_key_;
+  std::map<RowKey, const RowRecord*> extrapolated_by_key_;
   std::map<std::string, const CaseRecord*> case_by_id_key_;  ///< case key + "#" + mesh
   std::vector<const RowRecord*> baseline_;
   std::vector<const RowRecord*> variants_;

@@ -26,7 +26,8 @@ std::vector<CaseSpec> make_case_matrix(const CaseSelection& sel) {
       for (ElementType e : or_all(sel.elements, all_elements())) {
         for (Algorithm a : or_all(sel.algorithms, all_algorithms())) {
           for (ContactKind c : or_all(sel.contacts, study_contacts())) {
-            cases.push_back(CaseSpec{p, m, e, a, c, sel.target, sel.recovery, sel.overrides});
+            for (Recovery r : or_all(sel.recoveries, {Recovery::spr}))
+              cases.push_back(CaseSpec{p, m, e, a, c, sel.target, r, sel.overrides});
           }
         }
       }

@@ -1,6 +1,6 @@
 #pragma once
 // The study's case matrix, or any subset of it: the product of the selected values of each
-// axis, in the study's order (problem, mesh, element, algorithm, contact).
+// axis, in the study's order (problem, mesh, element, algorithm, contact, then recovery).
 
 #include <map>
 #include <string>
@@ -19,7 +19,9 @@ struct CaseSelection {
   std::vector<Algorithm> algorithms;
   std::vector<ContactKind> contacts;
   TargetKind target = TargetKind::Discretized;
-  Recovery recovery = Recovery::spr;
+  /// Nodal stress recoveries: each case once per recovery (empty: spr only). They share the
+  /// model and its factorization.
+  std::vector<Recovery> recoveries;
   std::map<std::string, double> overrides;  ///< applied to every case
 };
 

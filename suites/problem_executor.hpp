@@ -6,6 +6,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 
 #include <Eigen/Core>
 
@@ -44,6 +45,9 @@ class ProblemExecutor final : public GroupExecutor {
   void write_vtu(const std::string& path) const;
 
  private:
+  /// The contact solution of `spec`: solved, or the last one when only the recovery differs
+  /// (the matrix puts a case's recoveries next to each other).
+  const solver::ContactResult& contact_solution(const CaseSpec& spec);
   solver::ContactResult solve_with_load_control(const solver::ContactSettings& settings);
   double support_reaction(const Eigen::VectorXd& u) const;
 
@@ -52,6 +56,7 @@ class ProblemExecutor final : public GroupExecutor {
   std::unique_ptr<solver::ContactAnalysis> contact_;
   Eigen::VectorXd last_u_;
   std::optional<solver::StressField> last_stresses_;
+  std::optional<std::pair<std::string, solver::ContactResult>> last_contact_;
 };
 
 /// The factory the runner uses.

@@ -48,6 +48,19 @@ TEST(CaseMatrix, FullStudyMatrixHas660Cases) {
   EXPECT_EQ(make_case_matrix(sel).size(), 330u);
 }
 
+TEST(CaseMatrix, RecoveriesAreTheInnermostAxis) {
+  CaseSelection sel;
+  EXPECT_EQ(make_case_matrix(sel).front().recovery, Recovery::spr);
+  sel.recoveries = {Recovery::spr, Recovery::extrapolated};
+  const auto cases = make_case_matrix(sel);
+  ASSERT_EQ(cases.size(), 1320u);
+  EXPECT_EQ(cases[0].recovery, Recovery::spr);
+  EXPECT_EQ(cases[1].recovery, Recovery::extrapolated);
+  CaseSpec first = cases[1];
+  first.recovery = Recovery::spr;
+  EXPECT_EQ(case_id(first), case_id(cases[0]));  // the same analysis, recovered two ways
+}
+
 TEST(Runner, SharesOneModelPerGroupAndKeepsOrder) {
   const auto cases = small_matrix();
   ASSERT_EQ(cases.size(), 80u);

@@ -1,0 +1,74 @@
+// Section 7: patch-recovered beside extrapolated nodal stresses, for runs that asked for both.
+// The sample (tests/reports/data/make_small_results.py) has H_p Q4 LMP ss both ways: on the
+// fine mesh sigma_c is +0.45 % (e) patch-recovered and +1.25 % (g) extrapolated; sigma_h is
+// +2.10 % (g) and -0.51 % (e).
+
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "report_test_support.hpp"
+#include "reports/recovery_section.hpp"
+#include "reports/report_writer.hpp"
+
+namespace cs::reports {
+namespace {
+
+using testing::Loaded;
+using testing::sample_json;
+
+// Requirement: an extrapolated row is the twin of its baseline row, not a variant.
+TEST(RecoverySection, ExtrapolatedRowsAreTwinsNotVariants) {
+  const Loaded data(sample_json());
+  EXPECT_TRUE(data.index.has_extrapolated_twins());
+  const RowRecord* base = data.index.row("H_p", "sigma_c", "Q4", {"LMP", "ss"});
+  ASSERT_NE(base, nullptr);
+  const RowRecord* twin = data.index.extrapolated_twin(*base);
+  ASSERT_NE(twin, nullptr);
+  EXPECT_EQ(twin->recovery, "extrapolated");
+  EXPECT_EQ(data.index.extrapolated_twin(*data.index.row("H_p", "sigma_c", "Q4", {"AL", "ss"})),
+            nullptr);
+  for (const RowRecord* v : data.index.variant_rows())
+    EXPECT_NE(v->recovery, "extrapolated") << v->id;
+  EXPECT_EQ(variants_section(data.index).find("extrapolated"), std::string::npos);
+}
+
+// Requirement: the section counts the option sets graded both ways, and lists those whose grade
+// differs with both errors, their grades and the contact pressure's error.
+TEST(RecoverySection, ListsTheOptionSetsWhoseGradeDiffers) {
+  const Loaded data(sample_json());
+  const std::string md = recovery_section(data.index);
+  EXPECT_EQ(md.rfind("## 7. Nodal stress recovery", 0), 0u) << md;
+  EXPECT_NE(md.find("- Q4: 2 option set(s) graded both ways"), std::string::npos) << md;
+  EXPECT_NE(md.find("better with patch recovery in 1, worse in 1, the same in 0"),
+            std::string::npos)
+      << md;
+  EXPECT_NE(md.find("The 2 option set(s) whose grade differs"), std::string::npos) << md;
+  EXPECT_NE(md.find("| +0.45 % (e) | +1.25 % (g) |"), std::string::npos) << md;
+  EXPECT_NE(md.find("| +2.10 % (g) | −0.51 % (e) |"), std::string::npos) << md;
+  EXPECT_EQ(md.find("Q8:"), std::string::npos);  // no Q8 twins in the sample
+}
+
+// Requirement: without extrapolated rows there is no section, and report.md has no entry.
+TEST(RecoverySection, AbsentWithoutExtrapolatedRows) {
+  auto doc = sample_json();
+  for (const char* key : {"cases", "rows"}) {
+    auto& list = doc[key];
+    for (auto it = list.begin(); it != list.end();) {
+      it = (*it)["recovery"] == "extrapolated" ? list.erase(it) : it + 1;
+    }
+  }
+  const Loaded data(doc);
+  EXPECT_FALSE(data.index.has_extrapolated_twins());
+  EXPECT_EQ(recovery_section(data.index), "");
+  const std::string md = report_markdown(data.index, testing::study(), {}, false, "");
+  EXPECT_EQ(md.find("Nodal stress recovery"), std::string::npos);
+  const Loaded with(sample_json());
+  EXPECT_NE(report_markdown(with.index, testing::study(), {}, false, "")
+                .find("[Nodal stress recovery](#7-nodal-stress-recovery-patch-recovery-beside-"
+                      "extrapolation)"),
+            std::string::npos);
+}
+
+}  // namespace
+}  // namespace cs::reports
