@@ -106,7 +106,8 @@ std::string cases_paragraph(const ResultsFile& r) {
       distinct(
           cs, [](const CaseRecord& c) { return c.target; }, self),
       distinct(
-          cs, [](const CaseRecord& c) { return c.recovery; }, self));
+          cs, [](const CaseRecord& c) { return c.recovery; },
+          [](const std::string& r) { return r == "spr" ? 0 : 1; }));
   std::map<std::string, int> overrides;
   for (const auto& c : cs) {
     for (const auto& [k, v] : c.overrides)
