@@ -144,10 +144,8 @@ void add_run_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--jobs", args->jobs, "Parallel workers (default: the number of cores)");
   cmd->add_option("--out", args->out, "Output directory")->capture_default_str();
   cmd->add_flag("--no-report", args->no_report, "Write results.json only");
-  cmd->callback([args, &exit_code, &app] {
-    args->command_line = "contact-suite run";
-    for (const auto& a : app.remaining())
-      args->command_line += " " + a;
+  cmd->callback([args, &exit_code] {
+    args->command_line = invocation().empty() ? "contact-suite run" : invocation();
     exit_code = run(*args);
   });
 }

@@ -22,6 +22,8 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "cli_support.hpp"
+
 #include "oracles/boussinesq.hpp"
 #include "oracles/flat_punch.hpp"
 #include "oracles/hertz_axi.hpp"
@@ -36,38 +38,10 @@ namespace {
 using nlohmann::json;
 namespace o = cs::oracles;
 
-struct CliRun {
-  int exit_code = -1;
-  std::string out;
-  std::string err;
-};
+using testing::CliRun;
 
-/// Runs contact-suite with `args` (each passed as one shell word), stderr to a temporary file.
 CliRun run(const std::vector<std::string>& args) {
-  char err_path[] = "/tmp/contact-suite-cli-test-XXXXXX";
-  const int fd = mkstemp(err_path);
-  if (fd < 0)
-    throw std::runtime_error("mkstemp failed");
-  close(fd);
-  std::string command = std::string("'") + CONTACT_SUITE_EXE + "'";
-  for (const std::string& arg : args)
-    command += " '" + arg + "'";
-  command += std::string(" 2>'") + err_path + "'";
-
-  CliRun result;
-  FILE* pipe = popen(command.c_str(), "r");
-  if (pipe == nullptr)
-    throw std::runtime_error("popen failed");
-  std::array<char, 4096> buffer{};
-  std::size_t n = 0;
-  while ((n = std::fread(buffer.data(), 1, buffer.size(), pipe)) > 0)
-    result.out.append(buffer.data(), n);
-  const int status = pclose(pipe);
-  result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  std::ifstream err_file(err_path);
-  result.err.assign(std::istreambuf_iterator<char>(err_file), std::istreambuf_iterator<char>());
-  std::filesystem::remove(err_path);
-  return result;
+  return testing::run_cli(args);
 }
 
 std::string describe(const std::vector<std::string>& args, const CliRun& r) {

@@ -1,4 +1,4 @@
-// `contact-suite report ... --bench FILE` end to end: the executable writes section 7,
+// `contact-suite report ... --bench FILE` end to end: the executable writes section 8,
 // "Benchmarks", into report.md from Google Benchmark JSON (the hand-written fixture
 // tests/reports/data/small_bench.json), and a bench file it cannot use is bad input: exit code
 // 2, one line on stderr naming the file, and the output directory left as it was.
@@ -17,6 +17,8 @@
 
 #include <gtest/gtest.h>
 
+#include "cli_support.hpp"
+
 namespace cs::apps {
 namespace {
 
@@ -26,29 +28,8 @@ fs::path data_dir() {
   return fs::path(CONTACT_SUITE_SOURCE_DIR) / "tests" / "reports" / "data";
 }
 
-std::string read_text(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
-/// A fresh temporary directory, removed at the end of the test.
-class TempDir {
- public:
-  TempDir() {
-    std::string pattern = (fs::temp_directory_path() / "cs-apps-bench-XXXXXX").string();
-    if (mkdtemp(pattern.data()) == nullptr)
-      throw std::runtime_error("mkdtemp failed");
-    path_ = pattern;
-  }
-  ~TempDir() {
-    std::error_code ec;
-    fs::remove_all(path_, ec);
-  }
-  const fs::path& path() const { return path_; }
-
- private:
-  fs::path path_;
-};
+using testing::read_text;
+using testing::TempDir;
 
 struct ReportRun {
   int exit_code = -1;

@@ -15,6 +15,7 @@
 #include "reports/results_file.hpp"
 #include "reports/results_index.hpp"
 #include "reports/study_reference.hpp"
+#include "support/temp_dir.hpp"
 
 namespace cs::reports::testing {
 
@@ -46,25 +47,7 @@ struct Loaded {
   ResultsIndex index;
 };
 
-/// A fresh temporary directory, removed at the end of the test.
-class TempDir {
- public:
-  TempDir() {
-    std::string pattern =
-        (std::filesystem::temp_directory_path() / "cs-reports-test-XXXXXX").string();
-    if (mkdtemp(pattern.data()) == nullptr)
-      throw std::runtime_error("mkdtemp failed");
-    path_ = pattern;
-  }
-  ~TempDir() {
-    std::error_code ec;
-    std::filesystem::remove_all(path_, ec);
-  }
-  const std::filesystem::path& path() const { return path_; }
-
- private:
-  std::filesystem::path path_;
-};
+using cs::testing::TempDir;
 
 inline std::string read_text(const std::filesystem::path& p) {
   std::ifstream in(p, std::ios::binary);
