@@ -9,6 +9,7 @@
 #include "reports/grade_tables.hpp"
 #include "reports/markdown_table.hpp"
 #include "reports/problem_catalog.hpp"
+#include "reports/recovery_section.hpp"
 
 namespace cs::reports {
 namespace {
@@ -252,13 +253,36 @@ std::vector<Finding> mortar_on_mismatched(const ResultsIndex& index, const Study
                        join_names(parts, "; ", "; "))}};
 }
 
+std::vector<Finding> recovery(const ResultsIndex& index) {
+  std::vector<std::string> parts;
+  for (const auto& c : compare_recoveries(index)) {
+    std::string part = fmt::format(
+        "{} grades change in {} of {} option sets (better with patch recovery in {}, worse in "
+        "{})",
+        c.element, c.better + c.worse, c.compared, c.better, c.worse);
+    if (c.differing_with_pressure > 0) {
+      part += fmt::format(
+          ", and where they change the patch-recovered value is the closer to "
+          "the contact pressure in {} of {}",
+          c.spr_closer_to_pressure, c.differing_with_pressure);
+    }
+    parts.push_back(part);
+  }
+  if (parts.empty())
+    return {};
+  return {{FindingTopic::recovery,
+           fmt::format("Graded with extrapolated nodal stresses, as the study's were, instead of "
+                       "patch-recovered ones (section 7): {}.",
+                       join_names(parts, "; ", "; "))}};
+}
+
 }  // namespace
 
 std::vector<Finding> generate_findings(const ResultsIndex& index, const StudyReference& study) {
   std::vector<Finding> out;
   for (auto part :
        {best_options(index, study), agreement(index, study), largest_differences(index, study),
-        divergence(index, study), mortar_on_mismatched(index, study)}) {
+        divergence(index, study), mortar_on_mismatched(index, study), recovery(index)}) {
     out.insert(out.end(), part.begin(), part.end());
   }
   return out;

@@ -17,6 +17,7 @@ enum class FindingTopic {
   largest_difference,  ///< where our values and the study's ANSYS values differ most
   divergence,          ///< which option sets fail to diverge on the flat punch (Eq. 47)
   mortar_mismatched,   ///< mortar on the mismatched-node patch tests (P')
+  recovery,            ///< patch-recovered against extrapolated nodal stresses (section 7)
 };
 
 struct Finding {

@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include "report_test_support.hpp"
+#include "reports/findings.hpp"
 #include "reports/recovery_section.hpp"
 #include "reports/report_writer.hpp"
 
@@ -47,6 +48,34 @@ TEST(RecoverySection, ListsTheOptionSetsWhoseGradeDiffers) {
   EXPECT_NE(md.find("| +0.45 % (e) | +1.25 % (g) |"), std::string::npos) << md;
   EXPECT_NE(md.find("| +2.10 % (g) | −0.51 % (e) |"), std::string::npos) << md;
   EXPECT_EQ(md.find("Q8:"), std::string::npos);  // no Q8 twins in the sample
+}
+
+// Requirement: the comparison counts, per element, the grades that change and in how many of
+// those the patch-recovered value is the closer to the contact pressure (the sample's contact
+// pressures are 0.995 times the patch-recovered values: closer in both), and the summary's
+// findings say so.
+TEST(RecoverySection, ComparesWithTheContactPressureAsWitness) {
+  const Loaded data(sample_json());
+  const auto comparisons = compare_recoveries(data.index);
+  ASSERT_EQ(comparisons.size(), 1u);
+  const RecoveryComparison& c = comparisons[0];
+  EXPECT_EQ(c.element, "Q4");
+  EXPECT_EQ(c.compared, 2);
+  EXPECT_EQ(c.better, 1);
+  EXPECT_EQ(c.worse, 1);
+  EXPECT_EQ(c.differing_with_pressure, 2);
+  EXPECT_EQ(c.spr_closer_to_pressure, 2);
+  bool found = false;
+  for (const Finding& f : generate_findings(data.index, testing::study())) {
+    if (f.topic != FindingTopic::recovery)
+      continue;
+    found = true;
+    EXPECT_NE(f.sentence.find("Q4 grades change in 2 of 2 option sets"), std::string::npos)
+        << f.sentence;
+    EXPECT_NE(f.sentence.find("closer to the contact pressure in 2 of 2"), std::string::npos)
+        << f.sentence;
+  }
+  EXPECT_TRUE(found);
 }
 
 // Requirement: without extrapolated rows there is no section, and report.md has no entry.
