@@ -64,8 +64,11 @@ std::string converging_text(const std::optional<bool>& c) {
   return *c ? "c" : "—";
 }
 
+/// "+0.45 % (e)" on the fine mesh; "+0.45 % (e, on M)" where the row is graded on another.
 std::string error_cell(const RowRecord& row, std::size_t mesh) {
-  return fmt::format("{} ({})", format_percent(*row.errors[mesh]), *row.grade);
+  const std::string where =
+      mesh + 1 == kMeshLevels.size() ? std::string() : fmt::format(", on {}", kMeshLevels[mesh]);
+  return fmt::format("{} ({}{})", format_percent(*row.errors[mesh]), *row.grade, where);
 }
 
 /// One line per element: how many rows, the median |error| both ways, grades better/worse.
@@ -177,7 +180,7 @@ std::string recovery_section(const ResultsIndex& index) {
     return out + "The two recoveries give the same grade for every option set.\n\n";
   out += fmt::format(
       "The {} option set(s) whose grade differs, with the error on the graded mesh (F unless "
-      "marked otherwise in Table 2) and that mesh's contact-pressure error:\n\n",
+      "the cell names another) and that mesh's contact-pressure error:\n\n",
       differing);
   return out + table.render() + "\n";
 }

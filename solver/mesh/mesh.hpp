@@ -26,10 +26,14 @@ enum class ElementType {
 };
 
 /// Number of nodes of an element of the given type.
-constexpr int nodes_per_element(ElementType type) { return type == ElementType::Q4 ? 4 : 8; }
+constexpr int nodes_per_element(ElementType type) {
+  return type == ElementType::Q4 ? 4 : 8;
+}
 
 /// Number of nodes on one side of an element of the given type (2 for Q4, 3 for Q8).
-constexpr int nodes_per_side(ElementType type) { return type == ElementType::Q4 ? 2 : 3; }
+constexpr int nodes_per_side(ElementType type) {
+  return type == ElementType::Q4 ? 2 : 3;
+}
 
 /// One side of one element: the unit in which edge sets, tractions and contact surfaces are given.
 struct ElementSide {
@@ -41,11 +45,11 @@ struct ElementSide {
 /// A mesh of one element type, possibly of several bodies (e.g. indenter and indented block).
 struct Mesh {
   ElementType type = ElementType::Q4;
-  std::vector<Eigen::Vector2d> nodes;             ///< node coordinates (x|r, z)
-  std::vector<std::array<int, 8>> elements;       ///< connectivity; Q4 uses the first 4 entries
-  std::vector<int> element_body;                  ///< body index of each element
-  std::vector<std::string> body_names;            ///< name of each body, indexed by body index
-  std::map<std::string, std::vector<int>> node_sets;           ///< named sets of node indices
+  std::vector<Eigen::Vector2d> nodes;                 ///< node coordinates (x|r, z)
+  std::vector<std::array<int, 8>> elements;           ///< connectivity; Q4 uses the first 4 entries
+  std::vector<int> element_body;                      ///< body index of each element
+  std::vector<std::string> body_names;                ///< name of each body, indexed by body index
+  std::map<std::string, std::vector<int>> node_sets;  ///< named sets of node indices
   std::map<std::string, std::vector<ElementSide>> edge_sets;  ///< named sets of element sides
 
   int n_nodes() const { return static_cast<int>(nodes.size()); }

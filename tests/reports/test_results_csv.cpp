@@ -31,7 +31,8 @@ TEST(ResultsCsv, OneRowPerCaseAndQuantity) {
   const auto lines = lines_of(results_csv(data.index, study()));
   ASSERT_EQ(lines.size(), expected + 1);
   EXPECT_EQ(
-      lines[0].rfind("case_id,problem,mesh,element,algorithm,contact,target,recovery,overrides,status,", 0),
+      lines[0].rfind(
+          "case_id,problem,mesh,element,algorithm,contact,target,recovery,overrides,status,", 0),
       0u);
   // The H_p fine AL ss contact stress, beside the study's Table 7a value.
   bool found = false;
