@@ -13,7 +13,17 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   gnuplot-nox                             # figures of the report
   python3 python3-meshio                  # independent VTU reader used by a test
+  calculix-ccx                            # the second solver graded by the suite (ccx 2.20)
 )
+# Optional groups: `--slurm` adds a single-node Slurm cluster (ci/slurm-smoke.sh);
+# `--fuzz` adds clang with libFuzzer and the sanitizer runtimes (ci/fuzz.sh, ci/sanitize.sh).
+for arg in "$@"; do
+  case "$arg" in
+    --slurm) packages+=(slurm-wlm munge) ;;
+    --fuzz) packages+=(clang libclang-rt-14-dev) ;;
+    *) echo "ci/install-deps.sh: unknown option '$arg' (expected --slurm or --fuzz)" >&2; exit 2 ;;
+  esac
+done
 
 missing=()
 for p in "${packages[@]}"; do
