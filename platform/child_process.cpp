@@ -1,0 +1,246 @@
+#include "platform/child_process.hpp"
+
+#include <fcntl.h>
+#include <signal.h>
+#include <spawn.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <thread>
+
+#include "platform/interrupts.hpp"
+#include "platform/platform_error.hpp"
+
+extern char** environ;
+
+namespace cs::platform {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+void check(const ChildOptions& options) {
+  if (options.argv.empty() || options.argv[0].empty())
+    throw PlatformError("run_child: no program given (empty argument vector)");
+  for (const auto& [name, value] : options.environment) {
+    if (name.empty() || name.find('=') != std::string::npos)
+      throw PlatformError("run_child: bad environment variable name '" + name + "'");
+  }
+  if (!(options.time_limit_seconds >= 0.0) || !std::isfinite(options.time_limit_seconds))
+    throw PlatformError("run_child: time limit must be >= 0 and finite");
+  if (!(options.kill_grace_seconds >= 0.0) || !std::isfinite(options.kill_grace_seconds))
+    throw PlatformError("run_child: kill grace period must be >= 0 and finite");
+  const auto& dir = options.working_directory;
+  if (!dir.empty() && !std::filesystem::is_directory(dir))
+    throw PlatformError("run_child: working directory '" + dir.string() + "' does not exist");
+}
+
+/// Our environment with the options' variables added or replaced, as "NAME=value" strings.
+std::vector<std::string> child_environment(const ChildOptions& options) {
+  std::vector<std::string> env;
+  for (char** e = environ; e != nullptr && *e != nullptr; ++e) {
+    const std::string entry(*e);
+    const auto name = entry.substr(0, entry.find('='));
+    const bool replaced = std::any_of(options.environment.begin(), options.environment.end(),
+                                      [&](const auto& kv) { return kv.first == name; });
+    if (!replaced)
+      env.push_back(entry);
+  }
+  for (const auto& [name, value] : options.environment)
+    env.push_back(name + "=" + value);
+  return env;
+}
+
+/// A null-terminated array of pointers into `strings` (which must outlive it).
+std::vector<char*> c_array(std::vector<std::string>& strings) {
+  std::vector<char*> out;
+  for (auto& s : strings)
+    out.push_back(s.data());
+  out.push_back(nullptr);
+  return out;
+}
+
+std::string output_target(const std::filesystem::path& path) {
+  return path.empty() ? std::string("/dev/null") : std::filesystem::absolute(path).string();
+}
+
+/// File actions and attributes of the spawn, released on destruction.
+class SpawnSetup {
+ public:
+  explicit SpawnSetup(const ChildOptions& options)
+      : out_(output_target(options.stdout_path)),
+        err_(output_target(options.stderr_path)),
+        dir_(options.working_directory.string()) {
+    posix_spawn_file_actions_init(&actions_);
+    posix_spawnattr_init(&attr_);
+    constexpr int kWrite = O_WRONLY | O_CREAT | O_TRUNC;
+    posix_spawn_file_actions_addopen(&actions_, 0, "/dev/null", O_RDONLY, 0);
+    posix_spawn_file_actions_addopen(&actions_, 1, out_.c_str(), kWrite, 0644);
+    if (err_ == out_ && err_ != "/dev/null")
+      posix_spawn_file_actions_adddup2(&actions_, 1, 2);
+    else
+      posix_spawn_file_actions_addopen(&actions_, 2, err_.c_str(), kWrite, 0644);
+    posix_spawn_file_actions_addclosefrom_np(&actions_, 3);
+    if (!dir_.empty())
+      posix_spawn_file_actions_addchdir_np(&actions_, dir_.c_str());
+    set_attributes();
+  }
+  ~SpawnSetup() {
+    posix_spawn_file_actions_destroy(&actions_);
+    posix_spawnattr_destroy(&attr_);
+  }
+  SpawnSetup(const SpawnSetup&) = delete;
+  SpawnSetup& operator=(const SpawnSetup&) = delete;
+
+  const posix_spawn_file_actions_t* actions() const { return &actions_; }
+  const posix_spawnattr_t* attributes() const { return &attr_; }
+
+ private:
+  void set_attributes() {
+    sigset_t defaults, empty;
+    sigemptyset(&defaults);
+    for (int sig : {SIGINT, SIGTERM, SIGQUIT, SIGHUP, SIGPIPE})
+      sigaddset(&defaults, sig);
+    sigemptyset(&empty);
+    posix_spawnattr_setsigdefault(&attr_, &defaults);
+    posix_spawnattr_setsigmask(&attr_, &empty);
+    posix_spawnattr_setpgroup(&attr_, 0);  // a new group whose id is the child's pid
+    posix_spawnattr_setflags(
+        &attr_, POSIX_SPAWN_SETPGROUP | POSIX_SPAWN_SETSIGDEF | POSIX_SPAWN_SETSIGMASK);
+  }
+
+  std::string out_, err_, dir_;
+  posix_spawn_file_actions_t actions_;
+  posix_spawnattr_t attr_;
+};
+
+std::string spawn_error_message(const ChildOptions& options, int error) {
+  const std::string& program = options.argv[0];
+  if (error == ENOENT && program.find('/') == std::string::npos)
+    return "cannot run '" + program + "': program not found in PATH";
+  return "cannot run '" + program + "': " + std::strerror(error);
+}
+
+/// True once the child has exited (it stays a zombie: its pid and group id stay reserved).
+bool has_exited(pid_t pid) {
+  siginfo_t info{};
+  const int rc = waitid(P_PID, static_cast<id_t>(pid), &info, WEXITED | WNOHANG | WNOWAIT);
+  return rc == 0 ? info.si_pid == pid : errno != EINTR;
+}
+
+/// Waits until the child exits or `deadline` passes; false on the deadline or, when
+/// `stop_on_interrupt`, on an interrupt.
+bool wait_until(pid_t pid, Clock::time_point deadline, bool stop_on_interrupt) {
+  auto nap = std::chrono::microseconds(500);
+  while (!has_exited(pid)) {
+    if (Clock::now() >= deadline || (stop_on_interrupt && interrupted_signal() != 0))
+      return false;
+    std::this_thread::sleep_for(nap);
+    nap = std::min(nap * 2, std::chrono::microseconds(20000));
+  }
+  return true;
+}
+
+/// Sends `first` to the child's group, then SIGKILL after the grace period if it still runs.
+void stop_group(pid_t pgid, int first, double grace_seconds) {
+  kill(-pgid, first);
+  const auto grace = std::chrono::duration<double>(grace_seconds);
+  wait_until(pgid, Clock::now() + std::chrono::duration_cast<Clock::duration>(grace), false);
+  kill(-pgid, SIGKILL);  // a leader that ignored `first`, or stragglers of its group
+}
+
+/// Reaps the child, filling exit code, signal and peak RSS.
+void reap(pid_t pid, ChildResult& result) {
+  int status = 0;
+  struct rusage usage {};
+  while (wait4(pid, &status, 0, &usage) < 0 && errno == EINTR) {
+  }
+  if (WIFEXITED(status))
+    result.exit_code = WEXITSTATUS(status);
+  else if (WIFSIGNALED(status))
+    result.signal = WTERMSIG(status);
+  result.peak_rss_mb = static_cast<double>(usage.ru_maxrss) / 1024.0;  // ru_maxrss is in KiB
+}
+
+/// Waits for the child under the time limit and interrupts; stops its group if needed.
+void supervise(pid_t pid, const ChildOptions& options, Clock::time_point start,
+               ChildResult& result) {
+  const auto limit = std::chrono::duration<double>(options.time_limit_seconds);
+  const auto deadline = options.time_limit_seconds > 0.0
+                            ? start + std::chrono::duration_cast<Clock::duration>(limit)
+                            : Clock::time_point::max();
+  const bool exited = interrupted_signal() == 0 && wait_until(pid, deadline, true);
+  // The handler may have killed the child before we looked: an interrupt seen now counts.
+  const int sig = interrupted_signal();
+  result.interrupted = sig != 0;
+  result.timed_out = !exited && sig == 0;
+  if (!exited || sig != 0)
+    stop_group(pid, sig != 0 ? sig : SIGTERM, options.kill_grace_seconds);
+}
+
+/// Releases a registry slot on every path out of run_child.
+struct SlotGuard {
+  int slot;
+  ~SlotGuard() {
+    if (slot >= 0)
+      release_child_group_slot(slot);
+  }
+};
+
+}  // namespace
+
+ChildResult run_child(const ChildOptions& options) {
+  check(options);
+  ChildResult result;
+  if (interrupted_signal() != 0) {
+    result.interrupted = true;
+    result.spawn_error =
+        "not started: interrupted by signal " + std::to_string(interrupted_signal());
+    return result;
+  }
+  SlotGuard guard{reserve_child_group_slot()};
+  if (guard.slot < 0)
+    throw PlatformError("run_child: too many children running at once");
+  std::vector<std::string> args = options.argv;
+  std::vector<std::string> env = child_environment(options);
+  std::vector<char*> c_args = c_array(args), c_env = c_array(env);
+  SpawnSetup setup(options);
+  const auto start = Clock::now();
+  pid_t pid = 0;
+  const int rc = posix_spawnp(&pid, c_args[0], setup.actions(), setup.attributes(), c_args.data(),
+                              c_env.data());
+  if (rc != 0) {
+    result.spawn_error = spawn_error_message(options, rc);
+    return result;
+  }
+  result.started = true;
+  set_child_group(guard.slot, pid);
+  supervise(pid, options, start, result);
+  release_child_group_slot(guard.slot);  // before reaping: the group id is still ours
+  guard.slot = -1;
+  reap(pid, result);
+  result.wall_seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  return result;
+}
+
+std::string ChildResult::describe() const {
+  if (!started)
+    return spawn_error;
+  if (timed_out) {
+    char text[64];
+    std::snprintf(text, sizeof text, "timed out (stopped after %.3g s)", wall_seconds);
+    return text;
+  }
+  if (interrupted)
+    return "interrupted (child stopped, signal " + std::to_string(signal) + ")";
+  if (signal != 0)
+    return "killed by signal " + std::to_string(signal) + " (" + strsignal(signal) + ")";
+  return "exited with status " + std::to_string(exit_code);
+}
+
+}  // namespace cs::platform
