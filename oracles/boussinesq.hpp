@@ -21,9 +21,15 @@ struct BoussinesqLoad {
 ///   sigma_theta = -(P / 2pi) (1 - 2nu) (1 / r^2 (1 - z/rho) - z / rho^3),
 ///   sigma_z     = -(3P / 2pi) z^3 / rho^5,
 ///   tau_rz      = -(3P / 2pi) r z^2 / rho^5.
-/// (1/r^2)(1 - z/rho) is evaluated as 1 / (rho (rho + z)), finite on the axis.
-/// Throws InvalidInput for P not positive, nu outside [0, 0.5), r < 0, z < 0, or the load point
-/// (r, z) = (0, 0) itself, where the field is singular.
+/// Evaluated scale-free, as (P / (2pi rho^2)) times functions of the direction cosines
+/// r/rho and z/rho ((1/r^2)(1 - z/rho) = 1 / (rho^2 (1 + z/rho)), finite on the axis), so no
+/// intermediate over- or underflows.
+/// Domain: every finite point (r, z) != (0, 0) of the quadrant r, z >= 0 at which the stress
+/// scale P / (2pi rho^2) does not overflow. Far points whose stress is below the smallest
+/// double answer 0 (or a subnormal number): the exact value is that small.
+/// Throws InvalidInput for P not positive, nu outside [0, 0.5), r < 0, z < 0, a non-finite
+/// point, the load point (r, z) = (0, 0) itself, where the field is singular, or a point so
+/// close to it that the stress overflows.
 AxiStress boussinesq_stress(const BoussinesqLoad& load, AxiPoint at);
 
 }  // namespace cs::oracles

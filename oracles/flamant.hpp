@@ -19,8 +19,10 @@ struct FlamantLoad {
 /// Flamant's field, with r^2 = x^2 + z^2:
 ///   sigma_x = -(2P / pi) x^2 z / r^4,  sigma_z = -(2P / pi) z^3 / r^4,
 ///   tau_xz  = -(2P / pi) x z^2 / r^4.
-/// The surface z = 0 is traction free away from the load.
-/// Throws InvalidInput for P not positive, z < 0, non-finite x, or the load point (0, 0).
+/// The surface z = 0 is traction free away from the load. Evaluated in units of
+/// max(|x|, z): far points answer (2P / pi) / r times O(1) factors, 0 once below the
+/// smallest double. Throws InvalidInput for P not positive, z < 0, non-finite x, the load
+/// point (0, 0), or a point so close to it that the stress overflows.
 PlaneStress flamant_stress(const FlamantLoad& load, PlanePoint at);
 
 }  // namespace cs::oracles

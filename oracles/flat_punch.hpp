@@ -7,6 +7,12 @@
 // References: M.A. Sadowsky (1928), Z. angew. Math. Mech. 8, 107-121; J.W. Harding and
 // I.N. Sneddon (1945), Proc. Camb. Phil. Soc. 41, 16-26; K.L. Johnson, Contact Mechanics
 // (1985), p. 37 and pp. 59-60, as cited by the study.
+//
+// Domain: every a, P > 0 and finite, and every finite position, for which the pressure scale
+// (P/a plane, P/a^2 circular) is a normal double: [2.2e-308, 1.8e308]. The pressure is
+// evaluated as that scale times a function of x/a alone, so a = 1e300 or 1e-300 answers to
+// full precision; outside the range the oracle refuses ("out of floating-point range")
+// instead of returning 0 or infinity.
 
 namespace cs::oracles {
 

@@ -13,10 +13,25 @@
 // the default here) the peaks are 10.1956, 11.2424, 13.4622 at nu = 1/4, p/E = 1e-3. Both are
 // available through Eq32Factor; see docs/conventions.md.
 //
-// Numerics: phi0 solves Eq. 32 with GSL's Brent root finder, on u = pi/2 - phi0 so that light
-// loads keep their digits. The bracket of Eq. 31 is O(u^3) while its terms are O(u): the
-// pressure carries a relative rounding error of about 1e-16 / u^3 (1e-12 for the study's cases,
-// u ~ 0.1-0.3; 1e-7 at u = 1e-3, i.e. r_e/b ~ 1e-7 at the study's load).
+// Numerics: everything is computed from the dimensionless groups r_e/b and
+// lambda = 2 r_e (1 - nu^2) P / (b^2 E) = 2 (1 - nu^2) (r_e/b) (P/b) / E, the pressure as
+// (P/b) times a function of x/a. Eq. 32 is solved with GSL's Brent root finder in
+// u = pi/2 - phi0 for light loads (u <= pi/4, lambda ~ 2u^3/3) and in phi0 for heavy ones
+// (lambda ~ pi / (2 phi0^2), the Hertz limit r_e >> b), so that the smaller angle keeps its
+// relative precision; SteuermannContact carries both. Eq. 31's bracket, O(u^2) on the rounded
+// edges and O(u^3) on the flat face while its printed terms are O(1) and O(u), is evaluated
+// in a regrouped form without cancellation (steuermann.cpp; the identities are checked against
+// the printed form in 250-digit arithmetic by tests/oracles/steuermann_reference.py): the
+// pressure and the peak keep about 1e-15 relative accuracy from u = 1e-64 to phi0 = 1e-20.
+//
+// Domain (documented and enforced): b, r_e, P, E > 0 and finite, nu in [0, 0.5),
+//   1e-100 <= r_e/b <= 1e100 (beyond: a sharp-cornered punch, Sadowsky; a cylinder, Hertz),
+//   lambda >= 1e-300 and P/b a normal double (lighter: the limit is Sadowsky's punch),
+//   lambda finite, P <= steuermann_max_load (contact within the rounded edges), a finite.
+// Outside it the oracle throws InvalidInput naming the bound. When u < 1e-8 the rounded edges
+// (width a - b ~ b u^2 / 2) are narrower than the spacing of doubles near b: a rounds to b,
+// x_peak to b, and the pressure is resolved at x = b and on the flat face only; the peak value
+// itself is computed at its angle and stays accurate.
 
 #include <string_view>
 
@@ -45,7 +60,7 @@ struct SteuermannPunch {
 struct SteuermannContact {
   double b;                     ///< half-width of the flat face [length]
   double P;                     ///< load per unit length [force / length]
-  double phi0;                  ///< the root of Eq. 32, in (0, pi/2)
+  double phi0;                  ///< the root of Eq. 32, in (0, pi/2), to full relative precision
   double half_pi_minus_phi0;    ///< u = pi/2 - phi0, to full relative precision
   double contact_half_width_a;  ///< a = b / sin(phi0) [length], b < a <= b + r_e
 };
@@ -62,13 +77,14 @@ struct SteuermannPeak {
 double steuermann_load_parameter(const SteuermannPunch& punch);
 
 /// The largest load for which contact stays on the rounded edges, a = b + r_e (the punch's
-/// own P is not used). Throws InvalidInput for non-positive b, r_e, E or nu outside [0, 0.5).
+/// own P is not used); +inf if it exceeds the largest double. Throws InvalidInput for
+/// non-positive b, r_e, E, nu outside [0, 0.5), or r_e/b outside [1e-100, 1e100].
 double steuermann_max_load(const SteuermannPunch& punch);
 
 /// Study Eq. 32: phi0 from lambda = (pi - 2 phi0) / (2 sin^2 phi0) - cot(phi0), solved with
-/// gsl_root_fsolver_brent; then a = b / sin(phi0). Throws InvalidInput for bad parameters and
-/// for a load that would spread contact past the rounded edges (a > b + r_e, i.e.
-/// P > steuermann_max_load).
+/// gsl_root_fsolver_brent; then a = b / sin(phi0). Throws InvalidInput for bad parameters,
+/// for input outside the domain above (a load too light, r_e/b out of range), and for a load
+/// that would spread contact past the rounded edges (a > b + r_e, i.e. P > steuermann_max_load).
 SteuermannContact steuermann_contact(const SteuermannPunch& punch);
 
 /// Study Eq. 31: the contact pressure -sigma_z(x, 0) for |x| <= a, with sin(phi) = x sin(phi0)/b:
@@ -77,7 +93,8 @@ SteuermannContact steuermann_contact(const SteuermannPunch& punch);
 ///                  |tan((phi + phi0)/2) tan((phi - phi0)/2)|^sin(phi0))),
 /// and 0 for |x| > a. The logarithms are regrouped so that the singular factors cancel
 /// analytically: at x = +-b (phi = phi0) the pressure is finite, the bracket's log term being
-/// 2 sin(phi0) ln(sin(phi0)). Throws InvalidInput for a non-finite x or an inconsistent contact.
+/// 2 sin(phi0) ln(sin(phi0)). 0 for |x| >= a (but x = +-b, when a rounds to b). Throws
+/// InvalidInput for a non-finite x or an inconsistent contact.
 double steuermann_pressure(const SteuermannContact& contact, double x);
 
 /// The peak of Eq. 31 and its location: the root in (phi0, pi/2) of the analytic derivative

@@ -4,6 +4,7 @@
 #include <numbers>
 
 #include "oracles/invalid_input.hpp"
+#include "oracles/length_scale.hpp"
 
 namespace cs::oracles {
 
@@ -13,10 +14,8 @@ PlaneStress strip_load_stress(const StripLoad& load, PlanePoint at) {
   require_positive(kWhere, "pressure p", load.p);
   require_finite(kWhere, "position x", at.x);
   require_in_half_space(kWhere, at.z);
-  const double x = at.x;
-  const double z = at.z + 0.0;  // -0 becomes +0, so that atan2 picks pi, not -pi, behind an edge
-  if (z == 0.0 && std::abs(x) == load.a) {
-    throw InvalidInput(std::string(kWhere) + ": the point (x, z) = (" + format_value(x) +
+  if (at.z == 0.0 && std::abs(at.x) == load.a) {
+    throw InvalidInput(std::string(kWhere) + ": the point (x, z) = (" + format_value(at.x) +
                        ", 0) is an edge of the loaded strip, where the stress is discontinuous");
   }
   // Angles from the surface, in [0, pi]. The printed differences are evaluated through
@@ -24,7 +23,11 @@ PlaneStress strip_load_stress(const StripLoad& load, PlanePoint at) {
   // cancel far away) and beta = theta1 + theta2:
   //   sin 2theta1 - sin 2theta2 = 2 cos(beta) sin(alpha),
   //   cos 2theta1 - cos 2theta2 = -2 sin(beta) sin(alpha).
-  const double a = load.a;
+  // The angles depend on lengths in units of L ~ max(a, |x|, z) only: no product overflows.
+  const LengthScale L = length_scale({load.a, at.x, at.z});
+  const double a = L.of(load.a);
+  const double x = L.of(at.x);
+  const double z = L.of(at.z) + 0.0;  // -0 becomes +0, so atan2 picks pi, not -pi, behind an edge
   const double alpha = std::atan2(2.0 * a * z, (x - a) * (x + a) + z * z);
   const double beta = std::atan2(z, x - a) + std::atan2(z, x + a);
   const double c = load.p / (2.0 * std::numbers::pi);

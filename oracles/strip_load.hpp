@@ -21,6 +21,8 @@ struct StripLoad {
 /// with the angles measured from the surface, tan(theta_i) = z / (x + (-1)^i a), in [0, pi]
 /// (theta1 seen from the edge x = +a, theta2 from x = -a). Compression negative. On z = 0:
 /// sigma_x = sigma_z = -p under the load and 0 outside.
+/// The angles are taken in units of max(a, |x|, z), so every finite point has its value
+/// (far points: ~ p a / r, 0 once below the smallest double).
 /// Throws InvalidInput for a, p not positive, z < 0, non-finite x, or an edge of the strip on
 /// the surface (|x| = a, z = 0), where the stress jumps and has no value.
 PlaneStress strip_load_stress(const StripLoad& load, PlanePoint at);
