@@ -43,6 +43,13 @@ void require_poisson_ratio(std::string_view where, double nu) {
   }
 }
 
+void require_friction_coefficient(std::string_view where, double mu) {
+  if (!(mu >= 0.0 && mu <= kMaxFrictionCoefficient)) {
+    throw InvalidInput(std::string(where) + ": friction coefficient mu must lie in [0, " +
+                       format_value(kMaxFrictionCoefficient) + "] (got " + format_value(mu) + ")");
+  }
+}
+
 void require_in_half_space(std::string_view where, double z) {
   if (!(z >= 0.0) || !std::isfinite(z)) {
     throw InvalidInput(std::string(where) +

@@ -34,6 +34,14 @@ void require_finite(std::string_view where, std::string_view what, double value)
 /// nu = 0.5 makes the half-space incompressible, nu < 0 is excluded by the issue).
 void require_poisson_ratio(std::string_view where, double nu);
 
+/// The largest friction coefficient an oracle accepts: Coulomb coefficients of real pairs lie
+/// below about 1.5; past 10 an input is a typo or a unit error, not a material.
+inline constexpr double kMaxFrictionCoefficient = 10.0;
+
+/// Throws InvalidInput unless 0 <= mu <= kMaxFrictionCoefficient (finite), e.g.
+/// "<where>: friction coefficient mu must lie in [0, 10] (got 12)".
+void require_friction_coefficient(std::string_view where, double mu);
+
 /// Throws InvalidInput unless the depth z (pointing into the body) is finite and >= 0.
 void require_in_half_space(std::string_view where, double z);
 
