@@ -1,0 +1,145 @@
+#include "adapters/calculix/calculix_options.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <fmt/format.h>
+
+#include "adapters/calculix/calculix_error.hpp"
+#include "solver/contact/contact_surface.hpp"
+
+namespace cs::adapters::calculix {
+namespace {
+
+bool positive_finite(double v) {
+  return v > 0.0 && std::isfinite(v);
+}
+
+bool plain_stem(const std::string& name) {
+  return !name.empty() && name.size() <= 64 && std::all_of(name.begin(), name.end(), [](char c) {
+    return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_' ||
+           c == '-';
+  });
+}
+
+}  // namespace
+
+const char* to_string(CcxContactType type) {
+  switch (type) {
+    case CcxContactType::NodeToSurface:
+      return "NODE TO SURFACE";
+    case CcxContactType::SurfaceToSurface:
+      return "SURFACE TO SURFACE";
+    case CcxContactType::Mortar:
+      return "MORTAR";
+  }
+  return "unknown";
+}
+
+const char* to_string(CcxPressureOverclosure behavior) {
+  return behavior == CcxPressureOverclosure::Linear ? "LINEAR" : "HARD";
+}
+
+void validate(const CalculixOptions& options) {
+  if (options.contact == CcxContactType::Mortar)
+    throw UnsupportedByCalculix(
+        "CalculiX: mortar contact is not supported on 2D elements (ccx 2.20 rejects it: the "
+        "expanded plane-strain/axisymmetric elements are tied by MPCs)");
+  if (options.behavior == CcxPressureOverclosure::Linear) {
+    if (!positive_finite(options.penalty_K))
+      throw CalculixError(
+          fmt::format("CalculiX: penalty K must be positive and finite for LINEAR contact (got {})",
+                      options.penalty_K));
+    if (options.contact == CcxContactType::NodeToSurface &&
+        !positive_finite(options.tension_sigma_inf))
+      throw CalculixError(fmt::format(
+          "CalculiX: sigma_inf must be positive and finite for LINEAR node-to-surface contact "
+          "(got {})",
+          options.tension_sigma_inf));
+  }
+  if (!(options.axis_offset >= 0.0 && options.axis_offset <= 1e-3))
+    throw CalculixError(
+        fmt::format("CalculiX: axis offset must be in [0, 1e-3] (got {})", options.axis_offset));
+  if (!(options.time_limit_seconds >= 0.0) || !std::isfinite(options.time_limit_seconds))
+    throw CalculixError(fmt::format("CalculiX: time limit must be >= 0 and finite (got {})",
+                                    options.time_limit_seconds));
+  if (options.executable.empty())
+    throw CalculixError("CalculiX: no executable given");
+  if (!plain_stem(options.job_name))
+    throw CalculixError("CalculiX: job name '" + options.job_name +
+                        "' must be 1-64 characters of [A-Za-z0-9_-]");
+}
+
+std::vector<OptionMapping> calculix_option_mapping() {
+  return {
+      {"ns", "*CONTACT PAIR, TYPE=NODE TO SURFACE, SMALL SLIDING", "same",
+       "penalty springs at the slave nodes; pairing once per increment like our small sliding"},
+      {"ss", "*CONTACT PAIR, TYPE=SURFACE TO SURFACE", "same",
+       "face-to-face penalty at integration points of the cut slave/master faces (not Gauss "
+       "points of the slave side alone)"},
+      {"mortar", "TYPE=MORTAR", "not supported",
+       "ccx 2.20 rejects mortar on 2D elements (the expanded elements are tied by MPCs)"},
+      {"PM", "*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=LINEAR, K = FKN E / h", "same",
+       "our penalty law p = FKN E / h x penetration with one h (the finest of the surface); "
+       "ns adds CalculiX's tension sigma_inf = 0.25 % p at large clearance"},
+      {"AL", "PRESSURE-OVERCLOSURE=LINEAR, K = FKN E / h", "approximated",
+       "CalculiX has no augmented Lagrangian: the penalty alone, without augmentation"},
+      {"LMP", "PRESSURE-OVERCLOSURE=HARD", "approximated",
+       "for node/surface-to-surface pairs HARD is a penalty whose stiffness CalculiX picks; "
+       "its Lagrange-multiplier contact is mortar (not supported in 2D)"},
+      {"PLM", "PRESSURE-OVERCLOSURE=HARD", "approximated", "as LMP (no friction: they coincide)"},
+      {"MPC", "-", "not supported",
+       "*TIE and PRESSURE-OVERCLOSURE=TIED tie tangentially too (TIED needs friction data); "
+       "no frictionless bonded contact"},
+  };
+}
+
+CalculixOptions map_contact_settings(const solver::ContactSettings& settings,
+                                     const PenaltyScale& scale) {
+  if (!positive_finite(scale.youngs_modulus_E) || !positive_finite(scale.depth_h) ||
+      !positive_finite(scale.pressure_p))
+    throw CalculixError("CalculiX: the penalty scale needs positive finite E, h and p");
+  CalculixOptions options;
+  switch (settings.discretization) {
+    case solver::ContactDiscretization::NodeToSurface:
+      options.contact = CcxContactType::NodeToSurface;
+      break;
+    case solver::ContactDiscretization::SurfaceToSurface:
+      options.contact = CcxContactType::SurfaceToSurface;
+      break;
+    case solver::ContactDiscretization::Mortar:
+      throw UnsupportedByCalculix(
+          "CalculiX: mortar contact is not supported on 2D elements (ccx 2.20 rejects it)");
+  }
+  switch (settings.algorithm) {
+    case solver::ContactAlgorithm::Penalty:
+    case solver::ContactAlgorithm::AugmentedLagrangian:
+      options.behavior = CcxPressureOverclosure::Linear;
+      break;
+    case solver::ContactAlgorithm::LagrangeMultiplier:
+      options.behavior = CcxPressureOverclosure::Hard;
+      break;
+    case solver::ContactAlgorithm::MultipointConstraint:
+      throw UnsupportedByCalculix(
+          "CalculiX: MPC contact is not supported (no frictionless bonded contact in CalculiX)");
+  }
+  options.penalty_K = settings.fkn * scale.youngs_modulus_E / scale.depth_h;
+  options.tension_sigma_inf = 0.0025 * scale.pressure_p;
+  return options;
+}
+
+PenaltyScale penalty_scale(const solver::Model& model, const solver::ContactPair& pair,
+                           double pressure_p) {
+  const solver::ContactSurface surface(model, pair.contact_surface);
+  PenaltyScale scale;
+  scale.pressure_p = pressure_p;
+  scale.depth_h = std::numeric_limits<double>::infinity();
+  for (const auto& segment : surface.segments()) {
+    scale.depth_h = std::min(scale.depth_h, segment.depth_h);
+    scale.youngs_modulus_E = segment.youngs_modulus_E;
+  }
+  return scale;
+}
+
+}  // namespace cs::adapters::calculix

@@ -1,0 +1,110 @@
+#pragma once
+// The CalculiX contact options the adapter writes, and how the study's options map onto them.
+//
+// CalculiX 2.20 (ccx) offers, for 2D plane-strain and axisymmetric elements:
+//   *CONTACT PAIR, TYPE=NODE TO SURFACE   node-to-face penalty springs (slave nodes)
+//   *CONTACT PAIR, TYPE=SURFACE TO SURFACE face-to-face penalty (slave integration points)
+//   *SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=LINEAR  p = K x overclosure (K: pressure / length)
+//   *SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=HARD    with the two pair types above, a linear
+//       penalty whose stiffness CalculiX chooses itself (measured: the penetration of a patch
+//       test is p / (50 E)); CalculiX's Lagrange-multiplier "hard" contact is its mortar method
+//   TYPE=MORTAR (and LINMORTAR, PGMORTAR, PGLINMORTAR): ccx 2.20 rejects it on 2D elements
+//       ("*ERROR in catsmpcslavno: slave node ... is connected als dependent node in a MPC":
+//       the 2D elements are expanded into 3D ones tied by MPCs, which mortar forbids).
+// How the study's options map (calculix_option_mapping() returns this table as data; the
+// `list` command prints it and docs/calculix.md explains it):
+//   ns -> NODE TO SURFACE (SMALL SLIDING), ss -> SURFACE TO SURFACE, mortar -> not supported;
+//   PM -> LINEAR with K = FKN E / h (our penalty law); AL -> LINEAR with the same K (CalculiX
+//   has no augmentation: approximated by the penalty); LMP, PLM -> HARD (approximated: a penalty
+//   with CalculiX's own stiffness); MPC -> not supported (CalculiX's *TIE and TIED behaviour
+//   also tie tangentially, and need friction data).
+
+#include <string>
+#include <vector>
+
+#include "solver/contact/contact_analysis.hpp"
+#include "solver/contact/contact_options.hpp"
+#include "solver/model.hpp"
+
+namespace cs::adapters::calculix {
+
+/// *CONTACT PAIR, TYPE=...
+enum class CcxContactType {
+  NodeToSurface,     ///< NODE TO SURFACE (with SMALL SLIDING, like our small-sliding solver)
+  SurfaceToSurface,  ///< SURFACE TO SURFACE
+  Mortar,            ///< MORTAR: rejected by ccx 2.20 on 2D elements (kept to say so)
+};
+
+/// *SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=...
+enum class CcxPressureOverclosure {
+  Linear,  ///< p = K g for an overclosure g > 0 (node-to-surface: quasi-bilinear, see K_tension)
+  Hard,    ///< CalculiX chooses (for ns and ss: a linear penalty of its own stiffness)
+};
+
+/// "NODE TO SURFACE", "SURFACE TO SURFACE", "MORTAR" (as written in the deck).
+const char* to_string(CcxContactType type);
+/// "LINEAR", "HARD" (as written in the deck).
+const char* to_string(CcxPressureOverclosure behavior);
+
+/// Everything the adapter writes or runs that is not in the model.
+struct CalculixOptions {
+  CcxContactType contact = CcxContactType::NodeToSurface;
+  CcxPressureOverclosure behavior = CcxPressureOverclosure::Linear;
+  /// LINEAR: the slope K of the pressure-overclosure law (pressure / length), > 0. The suite
+  /// passes K = FKN E / h, our penalty law (see map_contact_settings()).
+  double penalty_K = 0.0;
+  /// LINEAR with NODE TO SURFACE: the tension sigma_inf at large clearance (pressure), > 0.
+  /// CalculiX's manual advises about 0.25 % of the largest stress expected.
+  double tension_sigma_inf = 0.0;
+  /// Axisymmetry: nodes on the axis (r = 0) are written at r = axis_offset x the shortest
+  /// element side that touches the axis (0: left on the axis). CalculiX expands axisymmetric
+  /// elements by rotation; a face with a node on the axis collapses and its contact normal is
+  /// undefined (ccx manual, *CONTACT PAIR): measured on the patch test, node-to-surface does not
+  /// converge and surface-to-surface gives sigma_z up to +26 % off near the axis, while with
+  /// the offset both are exact. The default moves them by a millionth of an element.
+  double axis_offset = 1e-6;
+  /// Wall-clock limit of one ccx run in seconds; 0: none.
+  double time_limit_seconds = 0.0;
+  /// The program to run (searched in PATH unless it contains '/').
+  std::string executable = "ccx";
+  /// The job name: files job.inp, job.frd, job.sta, ... in the run directory.
+  std::string job_name = "job";
+};
+
+/// Throws CalculixError with a one-line message for an option out of range (K or sigma_inf
+/// missing or not finite where needed, a negative time limit, an empty executable, a job name
+/// that is not a plain file stem), and UnsupportedByCalculix for mortar.
+void validate(const CalculixOptions& options);
+
+/// One row of the study-to-CalculiX mapping.
+struct OptionMapping {
+  std::string study_option;  ///< "ns", "ss", "mortar", "PM", "AL", "LMP", "PLM", "MPC"
+  std::string calculix;      ///< what is written, e.g. "*CONTACT PAIR, TYPE=NODE TO SURFACE"
+  std::string fidelity;      ///< "same", "approximated" or "not supported"
+  std::string note;          ///< why, in one line
+};
+
+/// The mapping of every contact option of the study (and mortar) to CalculiX, as data.
+std::vector<OptionMapping> calculix_option_mapping();
+
+/// The scales that turn the study's dimensionless settings into CalculiX's numbers.
+struct PenaltyScale {
+  double youngs_modulus_E = 0.0;  ///< E of the contact (slave) body
+  double depth_h = 0.0;           ///< underlying element depth of the contact surface
+  double pressure_p = 1.0;        ///< the problem's pressure scale (for sigma_inf)
+};
+
+/// CalculiX options for the solver settings `settings` (discretization, algorithm, FKN):
+/// the pair type and behaviour of calculix_option_mapping(), K = FKN E / h and
+/// sigma_inf = 0.25 % p. Throws UnsupportedByCalculix for mortar and MPC, CalculixError for a
+/// non-positive E, h or p.
+CalculixOptions map_contact_settings(const solver::ContactSettings& settings,
+                                     const PenaltyScale& scale);
+
+/// The scale of `pair` on `model`: E of the contact surface's body and the smallest
+/// underlying element depth h of its sides (the finest elements, where contact is resolved).
+/// Throws solver::ContactError for an unknown or empty contact surface.
+PenaltyScale penalty_scale(const solver::Model& model, const solver::ContactPair& pair,
+                           double pressure_p);
+
+}  // namespace cs::adapters::calculix
