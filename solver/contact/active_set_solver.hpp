@@ -78,8 +78,9 @@ struct AlgorithmOutcome {
   double residual = 0.0;     ///< last max_j |residual_j| / max(force_scale, max_j |lambda_j|)
   int iterations = 0;        ///< linear solves (active-set iterations), all augmentations
   int augmentations = 0;     ///< AL multiplier updates
-  std::vector<char> active;  ///< last active set
-  ActiveSetStep step;        ///< last solution (finite, or empty on failure)
+  std::vector<char> active;  ///< last active set (frictional loops: the 2m states)
+  std::vector<FrictionState> friction;  ///< frictional loops: the state of every pair
+  ActiveSetStep step;                   ///< last solution (finite, or empty on failure)
   bool has_solution() const { return step.ok; }
 };
 

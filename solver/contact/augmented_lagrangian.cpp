@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include <cmath>
+
 #include <fmt/format.h>
 
 namespace cs::solver {
@@ -52,6 +54,64 @@ AlgorithmOutcome solve_augmented_lagrangian(const AlgorithmInput& in) {
     }
     lambda_hat = out.step.lambda.cwiseMax(0.0);
     active = out.active;
+  }
+}
+
+namespace {
+
+/// How far an AL pass is from its tolerances: the largest penetration of a closed row over
+/// FTOLN h and the largest slip increment of a sticking row over FTOLT h (> 1: augment).
+double frictional_violation(const FrictionalInput& in, const AlgorithmOutcome& out,
+                            double& penetration_ratio, double& slip_ratio) {
+  const int m = in.n_pairs();
+  penetration_ratio = 0.0;
+  slip_ratio = 0.0;
+  for (int j = 0; j < m; ++j) {
+    if (out.step.lambda[j] > 0.0)
+      penetration_ratio = std::max(penetration_ratio, -out.step.gap[j] / in.depth_h[j]);
+    if (out.friction[j] == FrictionState::Stick) {
+      const double slip_increment = -out.step.gap[m + j] - in.slip_prev[j];
+      slip_ratio = std::max(slip_ratio, std::abs(slip_increment) / in.depth_h[j]);
+    }
+  }
+  return std::max(penetration_ratio / in.settings.ftoln, slip_ratio / in.settings.ftolt);
+}
+
+}  // namespace
+
+AlgorithmOutcome solve_augmented_lagrangian_frictional(const FrictionalInput& in) {
+  const int m = in.n_pairs();
+  const Eigen::VectorXd kt = in.settings.fkt * in.penalty_kp;
+  Eigen::VectorXd lambda_hat_n = Eigen::VectorXd::Zero(m);
+  Eigen::VectorXd lambda_hat_t = in.force_t_prev;
+  std::vector<char> states = in.initial_states;
+  int total_iterations = 0;
+  for (int aug = 0;; ++aug) {
+    const AugmentedLagrangianRules normal(in.penalty_kp, lambda_hat_n);
+    const TangentialPenaltyRules tangential(kt, lambda_hat_t, in.slip_prev);
+    AlgorithmOutcome out = run_frictional_active_set(in.problem, normal, tangential, in.settings.mu,
+                                                     states, in.settings.max_iterations);
+    total_iterations += out.iterations;
+    out.iterations = total_iterations;
+    out.augmentations = aug;
+    if (out.status != ContactStatus::Converged)
+      return out;
+    double penetration_ratio = 0.0, slip_ratio = 0.0;
+    if (frictional_violation(in, out, penetration_ratio, slip_ratio) <= 1.0)
+      return out;
+    if (aug + 1 >= in.settings.max_augmentations) {
+      out.status = ContactStatus::NotConverged;
+      out.failure = ContactFailure::AugmentationLimit;
+      out.reason = fmt::format(
+          "augmentation cap of {} reached: largest penetration {:.3g} h (FTOLN = {}), largest "
+          "stick slip increment {:.3g} h (FTOLT = {})",
+          in.settings.max_augmentations, penetration_ratio, in.settings.ftoln, slip_ratio,
+          in.settings.ftolt);
+      return out;
+    }
+    lambda_hat_n = out.step.lambda.head(m).cwiseMax(0.0);
+    lambda_hat_t = out.step.lambda.tail(m);
+    states = out.active;
   }
 }
 

@@ -75,23 +75,31 @@ int find_contact_node(const std::vector<ContactNode>& nodes, int node) {
 void add_gap_triplets(int row, double scale, const TargetPoint& tp, int n_slave,
                       const std::array<int, 3>& slave_nodes, const std::array<double, 3>& slave_N,
                       std::vector<Eigen::Triplet<double>>& triplets) {
+  add_direction_triplets(row, scale, tp.normal, tp, n_slave, slave_nodes, slave_N, triplets);
+}
+
+void add_direction_triplets(int row, double scale, const Eigen::Vector2d& direction,
+                            const TargetPoint& tp, int n_slave,
+                            const std::array<int, 3>& slave_nodes,
+                            const std::array<double, 3>& slave_N,
+                            std::vector<Eigen::Triplet<double>>& triplets) {
   for (int b = 0; b < n_slave; ++b) {
     if (slave_N[b] == 0.0)
       continue;
     for (int c = 0; c < 2; ++c) {
-      if (tp.normal[c] == 0.0)
+      if (direction[c] == 0.0)
         continue;
-      triplets.emplace_back(row, 2 * slave_nodes[b] + c, scale * slave_N[b] * tp.normal[c]);
+      triplets.emplace_back(row, 2 * slave_nodes[b] + c, scale * slave_N[b] * direction[c]);
     }
   }
   for (int i = 0; i < tp.n_master; ++i) {
     if (tp.master_weights[i] == 0.0)
       continue;
     for (int c = 0; c < 2; ++c) {
-      if (tp.normal[c] == 0.0)
+      if (direction[c] == 0.0)
         continue;
       triplets.emplace_back(row, 2 * tp.master_nodes[i] + c,
-                            -scale * tp.master_weights[i] * tp.normal[c]);
+                            -scale * tp.master_weights[i] * direction[c]);
     }
   }
 }
@@ -114,7 +122,7 @@ ConstraintSet weighted_gap_constraints(const ContactSurface& surface, const Cont
   const int m = static_cast<int>(set.nodes.size());
   std::vector<double> gap_integral(m, 0.0), weight(m, 0.0), weight_abs(m, 0.0);
   std::vector<Eigen::Vector2d> normal_sum(m, Eigen::Vector2d::Zero());
-  std::vector<Eigen::Triplet<double>> triplets;
+  std::vector<Eigen::Triplet<double>> triplets, slip_triplets;
   const GaussRule1D& rule = gauss_rule_1d(points);
   std::array<int, 3> slave_index{-1, -1, -1};
   for (int k = 0; k < surface.n_segments(); ++k) {
@@ -143,6 +151,8 @@ ConstraintSet weighted_gap_constraints(const ContactSurface& surface, const Cont
           weight_abs[i] += std::abs(f);
           normal_sum[i] += std::abs(f) * tp.normal;
           add_gap_triplets(i, f, tp, seg.n_nodes, seg.nodes, N, triplets);
+          add_direction_triplets(i, f, target_tangent(tp), tp, seg.n_nodes, seg.nodes, N,
+                                 slip_triplets);
         }
       }
     }
@@ -172,6 +182,11 @@ ConstraintSet weighted_gap_constraints(const ContactSurface& surface, const Cont
   for (const auto& t : triplets)
     scaled.emplace_back(t.row(), t.col(), t.value() / row_weight[t.row()]);
   set.B = assemble_rows(m, n_dofs, scaled);
+  scaled.clear();
+  for (const auto& t : slip_triplets)
+    scaled.emplace_back(t.row(), t.col(), t.value() / row_weight[t.row()]);
+  set.T = assemble_rows(m, n_dofs, scaled);
+  set.s0 = Eigen::VectorXd::Zero(m);
   return set;
 }
 

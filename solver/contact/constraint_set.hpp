@@ -13,6 +13,16 @@
 //     FKN (E / h) w turns a penetration d into the pressure FKN E d / h;
 //   - its underlying element depth h scales the pinball and the AL tolerance FTOLN.
 //
+// Every row has a tangential twin at the same point with the same weight: the relative
+// tangential displacement of the contact side with respect to the target,
+//
+//   s = s0 + T u,   s0 = 0 (the closest-point projection leaves no tangential offset),
+//
+// along the target's tangent t = (n_z, -n_x) (n turned clockwise: +x for the study's n = +z).
+// Friction (solver/contact/coulomb_friction.hpp) carries the tangential force lambda_T of a row,
+// the force the contact side exerts on the target along t (the shear it transmits); the force on
+// the DOFs is -T^T lambda_T. Frictionless analyses never read T.
+//
 // Nodal rows (node-to-surface, mortar, and surface-to-surface with Lagrange multipliers or MPC)
 // have one row per contact node; Gauss-point rows (surface-to-surface with penalty or augmented
 // Lagrangian) one row per Gauss point of each contact segment.
@@ -60,6 +70,8 @@ struct ContactConstraint {
   double stiffness_per_area = 0.0;   ///< E / h of the host element(s)
   double depth_h = 0.0;              ///< underlying element depth
   Eigen::Vector2d normal{0.0, 1.0};  ///< target normal (averaged over a weighted row)
+  /// Target tangent t = (n_z, -n_x) of `normal` (the direction of the slip s and the shear).
+  Eigen::Vector2d tangent() const { return {normal.y(), -normal.x()}; }
   /// The penalty stiffness scale (E / h) w (force / length): FKN times it is the penalty.
   double stiffness_scale() const { return stiffness_per_area * weight_w; }
 };
@@ -70,7 +82,10 @@ struct ConstraintSet {
   std::vector<ContactConstraint> rows;  ///< one per constraint
   Eigen::SparseMatrix<double, Eigen::RowMajor> B;  ///< rows x global DOFs (2 n_nodes)
   Eigen::VectorXd g0;                              ///< reference-configuration gaps
-  bool nodal = true;  ///< one row per contact node (else one per Gauss point)
+  /// The tangential rows s = s0 + T u, row for row (same points and weights as B).
+  Eigen::SparseMatrix<double, Eigen::RowMajor> T;
+  Eigen::VectorXd s0;  ///< reference-configuration slips (zero)
+  bool nodal = true;   ///< one row per contact node (else one per Gauss point)
   /// True when a row's pressure is its multiplier coefficient lambda / w (weighted rows), false
   /// when it is a nodal force over the node's tributary weight (collocated or Gauss rows).
   bool weighted = false;
@@ -89,6 +104,20 @@ int find_contact_node(const std::vector<ContactNode>& nodes, int node);
 void add_gap_triplets(int row, double scale, const TargetPoint& tp, int n_slave,
                       const std::array<int, 3>& slave_nodes, const std::array<double, 3>& slave_N,
                       std::vector<Eigen::Triplet<double>>& triplets);
+
+/// The tangent (n_z, -n_x) of a target point's normal.
+inline Eigen::Vector2d target_tangent(const TargetPoint& tp) {
+  return {tp.normal.y(), -tp.normal.x()};
+}
+
+/// Accumulates the triplets of `scale` x the linearized relative displacement of a contact
+/// point along `direction` (the gap for the normal, the slip for the tangent): +scale direction
+/// N_b on the contact-side nodes, -scale direction N_i on the target's nodes of `tp`.
+void add_direction_triplets(int row, double scale, const Eigen::Vector2d& direction,
+                            const TargetPoint& tp, int n_slave,
+                            const std::array<int, 3>& slave_nodes,
+                            const std::array<double, 3>& slave_N,
+                            std::vector<Eigen::Triplet<double>>& triplets);
 
 /// Builds B (rows x n_dofs) from triplets, summing duplicates.
 Eigen::SparseMatrix<double, Eigen::RowMajor> assemble_rows(

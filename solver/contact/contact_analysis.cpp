@@ -10,6 +10,8 @@
 #include "solver/contact/active_set_solver.hpp"
 #include "solver/contact/augmented_lagrangian.hpp"
 #include "solver/contact/contact_error.hpp"
+#include "solver/contact/contact_node_results.hpp"
+#include "solver/contact/frictional_active_set.hpp"
 #include "solver/contact/lagrange_multiplier.hpp"
 #include "solver/contact/mortar.hpp"
 #include "solver/contact/multipoint_constraint.hpp"
@@ -42,87 +44,34 @@ AlgorithmOutcome run_algorithm(const AlgorithmInput& in) {
   throw ContactError("contact: unknown algorithm");
 }
 
-/// A gap this far below zero (relative to the element depth) counts as a penetration of a
-/// point outside the pinball.
-constexpr double kPinballPenetration = 1e-10;
-
-/// A candidate whose |gap| is below this (relative to the element depth) touches the target.
-constexpr double kTouchingGap = 1e-10;
-
-/// The state of every row of a constraint set after a solve.
-struct RowState {
-  const Eigen::VectorXd& gap;                ///< g = g0 + B u
-  const Eigen::VectorXd& lambda;             ///< force (0 outside the candidates)
-  const std::vector<char>& active;           ///< the algorithm's last active flags
-  const std::vector<int>& candidate_of_row;  ///< -1 outside the pinball
-};
-
-/// A row outside the pinball never acts: if it penetrates, the answer cannot be trusted.
-void check_pinball(const ConstraintSet& set, const RowState& rows, double pinball,
-                   ContactResult& result) {
-  for (int j = 0; j < set.n_rows(); ++j) {
-    if (rows.candidate_of_row[j] < 0 && rows.gap[j] < -kPinballPenetration * set.rows[j].depth_h) {
-      result.status = ContactStatus::NotConverged;
-      result.failure = ContactFailure::ContactBeyondPinball;
-      result.reason = fmt::format(
-          "the contact point at ({:.6g}, {:.6g}) is outside the pinball ({} h) but penetrates "
-          "the target by {:.3g}; increase the pinball",
-          set.rows[j].position.x(), set.rows[j].position.y(), pinball, -rows.gap[j]);
-      return;
-    }
+/// The frictional algorithm dispatch: the one place that maps ContactAlgorithm to its
+/// frictional implementation (validate() rejects MPC with friction).
+AlgorithmOutcome run_frictional_algorithm(const FrictionalInput& in) {
+  switch (in.settings.algorithm) {
+    case ContactAlgorithm::Penalty:
+      return solve_penalty_frictional(in);
+    case ContactAlgorithm::AugmentedLagrangian:
+      return solve_augmented_lagrangian_frictional(in);
+    case ContactAlgorithm::LagrangeMultiplier:
+      return solve_lagrange_multiplier_frictional(in);
+    case ContactAlgorithm::MultipointConstraint:
+      break;
   }
+  throw ContactError("contact: friction is not defined for MPC (tied constraints have no slip)");
 }
 
-/// Per-node results, sorted by position. The pressure of a node is its multiplier coefficient
-/// lambda / w (weighted rows: mortar, ss with LM/MPC) or its nodal force over its consistent
-/// weight (ns; ss Gauss rows, whose forces are shared out with N_a); a node whose consistent
-/// weight vanishes reports its neighbour's.
-std::vector<ContactNodeResult> node_results(const ConstraintSet& set, const RowState& rows,
-                                            const Eigen::VectorXd& node_gap) {
-  const int n_nodes = static_cast<int>(set.nodes.size());
-  std::vector<ContactNodeResult> nodes(n_nodes);
-  std::vector<double> force(n_nodes, 0.0);
-  for (int j = 0; j < set.n_rows(); ++j) {
-    const ContactConstraint& row = set.rows[j];
-    const bool candidate = rows.candidate_of_row[j] >= 0;
-    // Closed: active, or a candidate lying on the target (a tie lambda = g = 0 that the active
-    // set may resolve either way, e.g. a node that carries no consistent force).
-    const bool closed =
-        rows.active[j] != 0 || (candidate && std::abs(rows.gap[j]) <= kTouchingGap * row.depth_h);
-    for (int s = 0; s < row.n_shares; ++s) {
-      const int i = row.share_nodes[s];
-      force[i] += row.shares[s] * rows.lambda[j];
-      if (row.shares[s] != 0.0) {
-        nodes[i].closed = nodes[i].closed || closed;
-        nodes[i].candidate = nodes[i].candidate || candidate;
-      }
-    }
+/// Throws ContactError unless `previous` is empty or belongs to the rows `set` of kind `kind`.
+void check_history(const FrictionHistory& previous, ConstraintRows kind, const ConstraintSet& set) {
+  if (previous.empty())
+    return;
+  if (previous.rows != kind || previous.slip_s.size() != set.n_rows() ||
+      previous.force_t.size() != set.n_rows() ||
+      previous.node_slip.size() != static_cast<Eigen::Index>(set.nodes.size())) {
+    throw ContactError(fmt::format(
+        "contact: the friction history of {} {} rows does not belong to the {} {} rows of these "
+        "settings",
+        previous.slip_s.size(), to_string(previous.rows), set.n_rows(), to_string(kind)));
   }
-  for (int i = 0; i < n_nodes; ++i) {
-    const ContactNode& n = set.nodes[i];
-    ContactNodeResult& r = nodes[i];
-    r.node = n.node;
-    r.position = n.position;
-    r.gap = node_gap[i];
-    r.penetration = std::max(0.0, -r.gap);
-    if (set.weighted) {
-      r.pressure = rows.lambda[i] / set.rows[i].weight_w;  // the coefficient p_a
-    } else if (!n.degenerate()) {
-      r.pressure = force[i] / n.weight_w;
-    }
-  }
-  if (!set.weighted) {
-    for (int i = 0; i < n_nodes; ++i) {
-      const int nb = set.nodes[i].pressure_neighbour;
-      if (set.nodes[i].degenerate() && nb >= 0)
-        nodes[i].pressure = nodes[nb].pressure;
-    }
-  }
-  std::sort(nodes.begin(), nodes.end(), [](const ContactNodeResult& a, const ContactNodeResult& b) {
-    return a.position.x() != b.position.x() ? a.position.x() < b.position.x()
-                                            : a.position.y() < b.position.y();
-  });
-  return nodes;
 }
 
 }  // namespace
@@ -214,9 +163,13 @@ std::vector<int> ContactAnalysis::candidates(const ConstraintSet& set, double pi
   return rows;
 }
 
-ContactAnalysis::DofStage& ContactAnalysis::dof_stage(double pinball, CondensationMethod method,
+ContactAnalysis::StageKey ContactAnalysis::dof_key(const StageKey& key) {
+  return {ConstraintRows::NodeToSurface, key.pinball, key.method, key.frictional};
+}
+
+ContactAnalysis::DofStage& ContactAnalysis::dof_stage(const StageKey& row_key,
                                                       ContactResult& result) {
-  const auto key = std::make_pair(pinball, method);
+  const StageKey key = dof_key(row_key);
   auto it = dof_stages_.find(key);
   if (it != dof_stages_.end()) {
     result.timings.condensation_reused = true;
@@ -229,17 +182,23 @@ ContactAnalysis::DofStage& ContactAnalysis::dof_stage(double pinball, Condensati
     prescribed_ = elastic_.dof_map().prescribed_values();
   }
   const DofMap& dofs = elastic_.dof_map();
-  // The contact DOFs: every free DOF a candidate row of any row kind touches.
+  // The contact DOFs: every free DOF a candidate row of any row kind touches (and, for
+  // friction, its tangential twin).
   std::vector<char> touched(dofs.n_free(), 0);
+  const auto touch = [&](const Eigen::SparseMatrix<double, Eigen::RowMajor>& rows, int j) {
+    for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator e(rows, j); e; ++e) {
+      const int eq = dofs.equation(static_cast<int>(e.col()));
+      if (eq >= 0)
+        touched[eq] = 1;
+    }
+  };
   for (ConstraintRows rows : {ConstraintRows::NodeToSurface, ConstraintRows::GaussPoints,
                               ConstraintRows::NodalWeightedGaps, ConstraintRows::Mortar}) {
     const ConstraintSet& set = constraints(rows);
-    for (int j : candidates(set, pinball)) {
-      for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator e(set.B, j); e; ++e) {
-        const int eq = dofs.equation(static_cast<int>(e.col()));
-        if (eq >= 0)
-          touched[eq] = 1;
-      }
+    for (int j : candidates(set, key.pinball)) {
+      touch(set.B, j);
+      if (key.frictional)
+        touch(set.T, j);
     }
   }
   std::vector<int> contact_dofs, node_of_equation(dofs.n_free());
@@ -248,7 +207,7 @@ ContactAnalysis::DofStage& ContactAnalysis::dof_stage(double pinball, Condensati
       contact_dofs.push_back(eq);
     node_of_equation[eq] = dofs.free_dofs()[eq] / 2;
   }
-  auto stage = std::make_unique<DofStage>(method);
+  auto stage = std::make_unique<DofStage>(key.method);
   stage->outcome = stage->condensation.compute(
       {elastic_.stiffness().K_ff, load_f_, contact_dofs, node_of_equation});
   const CondensationTimings& t = stage->condensation.timings();
@@ -259,19 +218,16 @@ ContactAnalysis::DofStage& ContactAnalysis::dof_stage(double pinball, Condensati
   return *dof_stages_.emplace(key, std::move(stage)).first->second;
 }
 
-ContactAnalysis::RowStage& ContactAnalysis::row_stage(ConstraintRows rows, double pinball,
-                                                      CondensationMethod method,
-                                                      ContactResult& result) {
-  const auto key = std::make_tuple(rows, pinball, method);
+ContactAnalysis::RowStage& ContactAnalysis::row_stage(const StageKey& key, ContactResult& result) {
   auto it = row_stages_.find(key);
   if (it != row_stages_.end()) {
     result.timings.condensation_reused = true;
     return *it->second;
   }
-  const ConstraintSet& set = constraints(rows);
+  const ConstraintSet& set = constraints(key.rows);
   auto stage = std::make_unique<RowStage>();
   RowStage& rs = *stage;
-  rs.candidates = candidates(set, pinball);
+  rs.candidates = candidates(set, key.pinball);
   if (rs.candidates.empty()) {
     const Eigen::VectorXd g_start = set.g0 + set.B * elastic_.dof_map().prescribed_values();
     double closest = std::numeric_limits<double>::infinity();
@@ -281,15 +237,29 @@ ContactAnalysis::RowStage& ContactAnalysis::row_stage(ConstraintRows rows, doubl
     throw ContactError(
         fmt::format("contact: the {} never comes within the pinball of contact "
                     "surface '{}' (closest point at {:.3g} h > pinball {} h)",
-                    describe(target_), surface_.name(), closest, pinball));
+                    describe(target_), surface_.name(), closest, key.pinball));
   }
-  DofStage& ds = dof_stage(pinball, method, result);
+  DofStage& ds = dof_stage(key, result);
+  fill_row_stage(key, set, rs);
+  if (!ds.outcome.ok()) {
+    rs.outcome = ds.outcome;
+  } else {
+    rs.outcome = rs.condensation.compute(ds.condensation, rs.B_free, rs.rho);
+    result.timings.condensation_s += rs.condensation.condense_seconds();
+    result.timings.condense_s += rs.condensation.condense_seconds();
+  }
+  return *row_stages_.emplace(key, std::move(stage)).first->second;
+}
+
+void ContactAnalysis::fill_row_stage(const StageKey& key, const ConstraintSet& set,
+                                     RowStage& rs) const {
   const DofMap& dofs = elastic_.dof_map();
   const Eigen::VectorXd g_start = set.g0 + set.B * dofs.prescribed_values();
   const int m = static_cast<int>(rs.candidates.size());
+  const int n_rows = key.frictional ? 2 * m : m;  // friction: the tangential twins follow
   rs.candidate_of_row.assign(set.n_rows(), -1);
-  rs.g0.resize(m);
-  rs.rho.resize(m);
+  rs.g0.resize(n_rows);
+  rs.rho.resize(n_rows);
   rs.depth.resize(m);
   std::vector<Eigen::Triplet<double>> triplets;
   for (int a = 0; a < m; ++a) {
@@ -306,17 +276,22 @@ ContactAnalysis::RowStage& ContactAnalysis::row_stage(ConstraintRows rows, doubl
         triplets.emplace_back(a, eq, e.value());
     }
   }
-  rs.B_free.resize(m, dofs.n_free());
+  if (key.frictional) {  // r = -s = -(s0 + T u): the force on the DOFs is -T^T lambda_T
+    const Eigen::VectorXd s_start = set.s0 + set.T * dofs.prescribed_values();
+    for (int a = 0; a < m; ++a) {
+      const int j = rs.candidates[a];
+      rs.g0[m + a] = -s_start[j];
+      rs.rho[m + a] = rs.rho[a];
+      for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator e(set.T, j); e; ++e) {
+        const int eq = dofs.equation(static_cast<int>(e.col()));
+        if (eq >= 0)
+          triplets.emplace_back(m + a, eq, -e.value());
+      }
+    }
+  }
+  rs.B_free.resize(n_rows, dofs.n_free());
   rs.B_free.setFromTriplets(triplets.begin(), triplets.end());
   rs.B_free.makeCompressed();
-  if (!ds.outcome.ok()) {
-    rs.outcome = ds.outcome;
-  } else {
-    rs.outcome = rs.condensation.compute(ds.condensation, rs.B_free, rs.rho);
-    result.timings.condensation_s += rs.condensation.condense_seconds();
-    result.timings.condense_s += rs.condensation.condense_seconds();
-  }
-  return *row_stages_.emplace(key, std::move(stage)).first->second;
 }
 
 void ContactAnalysis::refresh_loads() {
@@ -325,19 +300,25 @@ void ContactAnalysis::refresh_loads() {
   const Eigen::VectorXd f = elastic_.reduced_load(elastic_.model().loads);
   const Eigen::VectorXd& u_prescribed = elastic_.dof_map().prescribed_values();
   if (u_prescribed != prescribed_) {
-    // The reference gaps move with prescribed contact DOFs; a changed candidate set needs new
-    // stages, an unchanged one only new gaps.
+    // The reference gaps (and slips) move with prescribed contact DOFs; a changed candidate set
+    // needs new stages, an unchanged one only new reference values.
     for (auto& [key, rs] : row_stages_) {
-      const ConstraintSet& set = constraints(std::get<0>(key));
-      if (candidates(set, std::get<1>(key)) != rs->candidates) {
+      const ConstraintSet& set = constraints(key.rows);
+      if (candidates(set, key.pinball) != rs->candidates) {
         row_stages_.clear();
         dof_stages_.clear();
         load_f_.resize(0);
         return;
       }
+      const int m = static_cast<int>(rs->candidates.size());
       const Eigen::VectorXd g_start = set.g0 + set.B * u_prescribed;
-      for (int a = 0; a < static_cast<int>(rs->candidates.size()); ++a) {
+      for (int a = 0; a < m; ++a) {
         rs->g0[a] = g_start[rs->candidates[a]];
+      }
+      if (key.frictional) {
+        const Eigen::VectorXd s_start = set.s0 + set.T * u_prescribed;
+        for (int a = 0; a < m; ++a)
+          rs->g0[m + a] = -s_start[rs->candidates[a]];
       }
     }
     prescribed_ = u_prescribed;
@@ -349,14 +330,50 @@ void ContactAnalysis::refresh_loads() {
         ds->condensation.update_load(load_f_);
     }
     for (auto& [key, rs] : row_stages_) {
-      const DofStage& ds = *dof_stages_.at(std::make_pair(std::get<1>(key), std::get<2>(key)));
+      const DofStage& ds = *dof_stages_.at(dof_key(key));
       if (rs->outcome.ok())
         rs->condensation.update_load(ds.condensation);
     }
   }
 }
 
+AlgorithmOutcome ContactAnalysis::run_frictionless(const ContactSettings& settings,
+                                                   const RowStage& cd) const {
+  const CondensedProblem problem{cd.condensation.W(), cd.condensation.d(), cd.rho, cd.g0,
+                                 cd.force_floor};
+  const Eigen::VectorXd kp = settings.fkn * cd.rho;
+  const AlgorithmInput input{problem, kp, cd.depth, settings,
+                             std::vector<char>(cd.candidates.size(), 1)};
+  return run_algorithm(input);
+}
+
+AlgorithmOutcome ContactAnalysis::run_frictional(const ContactSettings& settings,
+                                                 const FrictionHistory& previous,
+                                                 const RowStage& cd) const {
+  const int m = static_cast<int>(cd.candidates.size());
+  Eigen::VectorXd s_prev = Eigen::VectorXd::Zero(m);
+  Eigen::VectorXd t_prev = Eigen::VectorXd::Zero(m);
+  if (!previous.empty()) {
+    for (int a = 0; a < m; ++a) {
+      s_prev[a] = previous.slip_s[cd.candidates[a]];
+      t_prev[a] = previous.force_t[cd.candidates[a]];
+    }
+  }
+  const CondensedProblem problem{cd.condensation.W(), cd.condensation.d(), cd.rho, cd.g0,
+                                 cd.force_floor};
+  const Eigen::VectorXd kp = settings.fkn * cd.rho.head(m);
+  std::vector<char> states(2 * m, kStickCode);  // every candidate closed and sticking
+  std::fill(states.begin(), states.begin() + m, 1);
+  const FrictionalInput input{problem, kp, cd.depth, settings, s_prev, t_prev, states};
+  return run_frictional_algorithm(input);
+}
+
 ContactResult ContactAnalysis::solve(const ContactSettings& settings) {
+  return solve(settings, FrictionHistory{});
+}
+
+ContactResult ContactAnalysis::solve(const ContactSettings& settings,
+                                     const FrictionHistory& previous) {
   validate(settings);
   const auto start = Clock::now();
   refresh_loads();
@@ -372,8 +389,12 @@ ContactResult ContactAnalysis::solve(const ContactSettings& settings) {
     result.timings.constraints_s = seconds_since(t0);
   }
   const ConstraintSet& set = constraints(kind);
-  RowStage& cd = row_stage(kind, settings.pinball, settings.condensation, result);
-  const DofStage& ds = *dof_stages_.at(std::make_pair(settings.pinball, settings.condensation));
+  const bool frictional = settings.frictional();
+  if (frictional)
+    check_history(previous, kind, set);
+  const StageKey key{kind, settings.pinball, settings.condensation, frictional};
+  RowStage& cd = row_stage(key, result);
+  const DofStage& ds = *dof_stages_.at(dof_key(key));
   result.n_constraints = set.n_rows();
   result.n_candidates = static_cast<int>(cd.candidates.size());
   result.n_contact_dofs = ds.condensation.n_contact_dofs();
@@ -386,12 +407,8 @@ ContactResult ContactAnalysis::solve(const ContactSettings& settings) {
   }
 
   auto t0 = Clock::now();
-  const CondensedProblem problem{cd.condensation.W(), cd.condensation.d(), cd.rho, cd.g0,
-                                 cd.force_floor};
-  const Eigen::VectorXd kp = settings.fkn * cd.rho;
-  const AlgorithmInput input{problem, kp, cd.depth, settings,
-                             std::vector<char>(cd.candidates.size(), 1)};
-  const AlgorithmOutcome out = run_algorithm(input);
+  const AlgorithmOutcome out =
+      frictional ? run_frictional(settings, previous, cd) : run_frictionless(settings, cd);
   result.timings.iterations_s = seconds_since(t0);
   result.status = out.status;
   result.failure = out.failure;
@@ -399,12 +416,19 @@ ContactResult ContactAnalysis::solve(const ContactSettings& settings) {
   result.residual = out.residual;
   result.active_set_iterations = out.iterations;
   result.augmentations = out.augmentations;
-  if (!out.has_solution()) {
-    result.timings.total_s = seconds_since(start);
-    return result;
+  if (out.has_solution()) {
+    t0 = Clock::now();
+    recover_results(settings, previous, set, cd, ds, out, result);
+    result.timings.recovery_s = seconds_since(t0);
   }
+  result.timings.total_s = seconds_since(start);
+  return result;
+}
 
-  t0 = Clock::now();
+void ContactAnalysis::recover_results(const ContactSettings& settings,
+                                      const FrictionHistory& previous, const ConstraintSet& set,
+                                      const RowStage& cd, const DofStage& ds,
+                                      const AlgorithmOutcome& out, ContactResult& result) {
   const Eigen::VectorXd u_free = cd.condensation.recover(ds.condensation, out.step.mu);
   result.displacement = elastic_.expand(u_free);
   if (!result.displacement.allFinite()) {
@@ -412,10 +436,10 @@ ContactResult ContactAnalysis::solve(const ContactSettings& settings) {
     result.status = ContactStatus::NotConverged;
     result.failure = ContactFailure::NonFinite;
     result.reason = "the recovered displacement is not finite";
-    result.timings.total_s = seconds_since(start);
-    return result;
+    return;
   }
-  // Row quantities over every row (candidates carry the algorithm's forces and flags).
+  // Row quantities over every row (candidates carry the algorithm's forces and flags; a
+  // frictional outcome's first m entries are the normal rows').
   const Eigen::VectorXd gap = set.g0 + set.B * result.displacement;
   Eigen::VectorXd lambda = Eigen::VectorXd::Zero(set.n_rows());
   std::vector<char> active(set.n_rows(), 0);
@@ -433,14 +457,56 @@ ContactResult ContactAnalysis::solve(const ContactSettings& settings) {
           : Eigen::VectorXd(constraints(ConstraintRows::NodeToSurface).g0 +
                             constraints(ConstraintRows::NodeToSurface).B * result.displacement);
   result.nodes = node_results(set, rows, node_gap);
+  if (settings.frictional())
+    recover_friction(previous, set, cd, out, rows, result);
   for (const ContactNodeResult& r : result.nodes) {
     if (r.closed)
       result.contact_extent = std::max(result.contact_extent, r.position.x());
     result.peak_pressure = std::max(result.peak_pressure, r.pressure);
+    result.peak_shear = std::max(result.peak_shear, std::abs(r.shear));
   }
-  result.timings.recovery_s = seconds_since(t0);
-  result.timings.total_s = seconds_since(start);
-  return result;
+}
+
+void ContactAnalysis::recover_friction(const FrictionHistory& previous, const ConstraintSet& set,
+                                       const RowStage& cd, const AlgorithmOutcome& out,
+                                       const RowState& rows, ContactResult& result) {
+  const int m = static_cast<int>(cd.candidates.size());
+  FrictionHistory& h = result.friction_history;
+  h.rows = constraint_rows(result.settings);
+  h.slip_s = set.s0 + set.T * result.displacement;
+  h.force_t = Eigen::VectorXd::Zero(set.n_rows());
+  std::vector<FrictionState> state(set.n_rows(), FrictionState::Open);
+  for (int a = 0; a < m; ++a) {
+    h.force_t[cd.candidates[a]] = out.step.lambda[m + a];
+    state[cd.candidates[a]] = out.friction[a];
+  }
+  const ConstraintSet& ns = constraints(ConstraintRows::NodeToSurface);
+  const Eigen::Index n_nodes = static_cast<Eigen::Index>(set.nodes.size());
+  h.node_slip = set.nodal ? Eigen::VectorXd(h.slip_s.head(n_nodes))
+                          : Eigen::VectorXd(ns.s0 + ns.T * result.displacement);
+  const Eigen::VectorXd node_slip_prev =
+      previous.empty() ? Eigen::VectorXd(Eigen::VectorXd::Zero(n_nodes)) : previous.node_slip;
+  add_friction_results(set, rows, {h.slip_s, h.force_t, state, h.node_slip, node_slip_prev},
+                       result.nodes);
+  if (!result.converged())
+    result.friction_history = FrictionHistory{};  // not a state to continue from
+}
+
+std::vector<ContactResult> ContactAnalysis::solve_steps(const ContactSettings& settings,
+                                                        const std::vector<LoadStep>& steps) {
+  validate(settings);
+  std::vector<ContactResult> results;
+  FrictionHistory history;
+  for (const LoadStep& step : steps) {
+    if (step.apply)
+      step.apply();
+    elastic_.update_prescribed_values();
+    results.push_back(solve(settings, history));
+    if (!results.back().converged())
+      break;
+    history = results.back().friction_history;
+  }
+  return results;
 }
 
 ContactResult solve_contact(const Model& model, const ContactPair& pair,

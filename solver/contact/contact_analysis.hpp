@@ -38,28 +38,25 @@
 #include <vector>
 
 #include "solver/contact/condensation.hpp"
+#include "solver/contact/constraint_rows.hpp"
 #include "solver/contact/constraint_set.hpp"
 #include "solver/contact/contact_options.hpp"
 #include "solver/contact/contact_result.hpp"
 #include "solver/contact/contact_surface.hpp"
+#include "solver/contact/load_step.hpp"
 #include "solver/contact/target.hpp"
 #include "solver/linear_static.hpp"
 
 namespace cs::solver {
+
+struct AlgorithmOutcome;
+struct RowState;
 
 /// The contact pair of a model: the contact surface of a deformable body (the study's contact
 /// elements' side, e.g. the indented block's top edge set) and its target.
 struct ContactPair {
   std::string contact_surface;  ///< edge set name, e.g. "block.top"
   TargetSpec target;            ///< TargetSurface{"indenter.bottom"} or a RigidProfile
-};
-
-/// The constraint rows a discretization and algorithm use (what the condensation depends on).
-enum class ConstraintRows {
-  NodeToSurface,      ///< ns, every algorithm
-  GaussPoints,        ///< ss with PM / AL
-  NodalWeightedGaps,  ///< ss with LM / MPC
-  Mortar,             ///< mortar, every algorithm
 };
 
 /// The rows `settings` select.
@@ -80,6 +77,20 @@ class ContactAnalysis {
   /// coordinates) needs a new ContactAnalysis.
   ContactResult solve(const ContactSettings& settings);
 
+  /// One load step from the converged tangential state `previous` of the step before (empty:
+  /// the unloaded reference state; what solve(settings) uses). Without friction (mu = 0)
+  /// `previous` is not read and this is solve(settings). Throws ContactError as solve() does, or
+  /// if `previous` belongs to other constraint rows.
+  ContactResult solve(const ContactSettings& settings, const FrictionHistory& previous);
+
+  /// Runs the load steps in order from the unloaded state: for each, step.apply(), the
+  /// prescribed values re-read (elastic.update_prescribed_values()), then solve(settings,
+  /// previous step's friction_history). Returns one result per step run; stops after the first
+  /// step that does not converge (its result is the last). Without friction every step is an
+  /// independent frictionless solve.
+  std::vector<ContactResult> solve_steps(const ContactSettings& settings,
+                                         const std::vector<LoadStep>& steps);
+
   const ContactSurface& surface() const { return surface_; }
   const ContactTarget& target() const { return target_; }
   /// The constraint rows of a kind (built on first use).
@@ -88,9 +99,31 @@ class ContactAnalysis {
  private:
   struct DofStage;
   struct RowStage;
-  DofStage& dof_stage(double pinball, CondensationMethod method, ContactResult& result);
-  RowStage& row_stage(ConstraintRows rows, double pinball, CondensationMethod method,
-                      ContactResult& result);
+  /// The stages of a row kind and pinball; `frictional`: the contact DOFs and rows include the
+  /// tangential twins (a separate factorization, so that frictionless solves never change).
+  struct StageKey {
+    ConstraintRows rows;
+    double pinball;
+    CondensationMethod method;
+    bool frictional;
+    auto tie() const { return std::tie(rows, pinball, method, frictional); }
+    bool operator<(const StageKey& o) const { return tie() < o.tie(); }
+  };
+  DofStage& dof_stage(const StageKey& key, ContactResult& result);
+  RowStage& row_stage(const StageKey& key, ContactResult& result);
+  /// The candidate rows and their condensation, stacked with the tangential twins if frictional.
+  void fill_row_stage(const StageKey& key, const ConstraintSet& set, RowStage& rs) const;
+  static StageKey dof_key(const StageKey& row_key);
+  AlgorithmOutcome run_frictionless(const ContactSettings& settings, const RowStage& cd) const;
+  AlgorithmOutcome run_frictional(const ContactSettings& settings, const FrictionHistory& previous,
+                                  const RowStage& cd) const;
+  /// Displacement, row quantities and per-node results of a solution (friction included).
+  void recover_results(const ContactSettings& settings, const FrictionHistory& previous,
+                       const ConstraintSet& set, const RowStage& cd, const DofStage& ds,
+                       const AlgorithmOutcome& out, ContactResult& result);
+  void recover_friction(const FrictionHistory& previous, const ConstraintSet& set,
+                        const RowStage& cd, const AlgorithmOutcome& out, const RowState& rows,
+                        ContactResult& result);
   /// Picks up changed loads and prescribed values (see solve()).
   void refresh_loads();
   /// Rows of `set` within the pinball (|g0 + B u_prescribed| <= pinball h).
@@ -101,9 +134,9 @@ class ContactAnalysis {
   ContactSurface surface_;
   ContactTarget target_;
   std::map<ConstraintRows, ConstraintSet> constraints_;
-  std::map<std::pair<double, CondensationMethod>, std::unique_ptr<DofStage>> dof_stages_;
-  std::map<std::tuple<ConstraintRows, double, CondensationMethod>, std::unique_ptr<RowStage>>
-      row_stages_;
+  /// Stage 1, keyed by dof_key() (pinball, method, frictional: every row kind shares it).
+  std::map<StageKey, std::unique_ptr<DofStage>> dof_stages_;
+  std::map<StageKey, std::unique_ptr<RowStage>> row_stages_;  ///< stage 2, per row kind
   Eigen::VectorXd load_f_;      ///< the reduced load f_f the stages were computed for
   Eigen::VectorXd prescribed_;  ///< the prescribed values the stages were computed for
 };

@@ -4,12 +4,18 @@
 //
 // Units: positions and gaps in length; pressures in force / area (positive in compression);
 // in axisymmetry forces are per radian but pressures are true pressures.
+//
+// Friction (settings.mu > 0): the shear is the tangential traction the contact side exerts on
+// the target along the target's tangent t = (n_z, -n_x) (+x for the study's n = +z), i.e. the
+// shear it transmits; the slip is the contact side's tangential displacement relative to the
+// target along t. A slipping point's shear is mu p with the sign of its slip increment.
 
 #include <string>
 #include <vector>
 
 #include <Eigen/Core>
 
+#include "solver/contact/constraint_rows.hpp"
 #include "solver/contact/contact_options.hpp"
 
 namespace cs::solver {
@@ -57,6 +63,37 @@ constexpr const char* to_string(ContactFailure f) {
   return "unknown";
 }
 
+/// The Coulomb state of a contact point.
+enum class FrictionState {
+  Open,   ///< not in contact (no force)
+  Stick,  ///< |shear| <= mu p, no slip increment (LM) or an elastic one (penalty)
+  Slip,   ///< |shear| = mu p, slipping in the direction of the shear
+};
+
+/// "open", "stick", "slip".
+constexpr const char* to_string(FrictionState s) {
+  switch (s) {
+    case FrictionState::Open:
+      return "open";
+    case FrictionState::Stick:
+      return "stick";
+    case FrictionState::Slip:
+      return "slip";
+  }
+  return "unknown";
+}
+
+/// The tangential state of every constraint row after a converged step: what the next step's
+/// slip increments are measured from (friction is path dependent). Empty: the unloaded
+/// reference state (no slip, no shear).
+struct FrictionHistory {
+  ConstraintRows rows = ConstraintRows::NodeToSurface;  ///< the row kind it belongs to
+  Eigen::VectorXd slip_s;     ///< s = s0 + T u per constraint row (all rows of the set)
+  Eigen::VectorXd force_t;    ///< tangential force lambda_T per row (0 outside the candidates)
+  Eigen::VectorXd node_slip;  ///< s per contact node (the constraint set's node order)
+  bool empty() const { return slip_s.size() == 0; }
+};
+
 /// The contact state of one node of the contact surface.
 struct ContactNodeResult {
   int node = -1;             ///< mesh node index
@@ -66,6 +103,13 @@ struct ContactNodeResult {
   double pressure = 0.0;     ///< contact pressure, > 0 compressive
   bool closed = false;       ///< in contact (its constraint active / tied)
   bool candidate = false;    ///< within the pinball at the start
+  // Friction (mu > 0; zero / Open otherwise):
+  double shear = 0.0;           ///< tangential traction transmitted along t (see the file comment)
+  double slip = 0.0;            ///< relative tangential displacement s (mortar, ss LM: weighted)
+  double slip_increment = 0.0;  ///< s minus the previous step's s
+  /// Nodal rows: the row's state. Gauss rows: Stick if a closed row sharing the node sticks,
+  /// else Slip if one slips, else Open.
+  FrictionState friction = FrictionState::Open;
 };
 
 /// Wall-clock seconds of a contact analysis' phases.
@@ -92,7 +136,7 @@ struct ContactResult {
 
   ContactSettings settings;       ///< what was run
   int active_set_iterations = 0;  ///< linear solves of the condensed problem
-  int augmentations = 0;          ///< AL multiplier updates
+  int augmentations = 0;          ///< AL multiplier updates (normal and tangential together)
   int n_constraints = 0;          ///< constraint rows (nodes or Gauss points)
   int n_candidates = 0;           ///< rows within the pinball
   int n_contact_dofs = 0;         ///< DOFs touched by the candidate rows (condensed block)
@@ -103,6 +147,11 @@ struct ContactResult {
   double contact_extent = 0.0;
   /// The largest contact pressure over the nodes (0 if none).
   double peak_pressure = 0.0;
+  /// Friction: the largest |shear| over the nodes (0 without friction).
+  double peak_shear = 0.0;
+  /// Friction: the tangential state of every row, the start of the next load step (empty
+  /// without friction or without a converged solution).
+  FrictionHistory friction_history;
 
   ContactTimings timings;
   /// Global displacement (2 n_nodes, DOF 2 n + c), prescribed values included. Empty when no

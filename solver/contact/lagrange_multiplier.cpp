@@ -21,4 +21,19 @@ AlgorithmOutcome solve_lagrange_multiplier(const AlgorithmInput& in) {
   return run_active_set(in.problem, rules, in.initial_active, in.settings.max_iterations);
 }
 
+AlgorithmOutcome solve_lagrange_multiplier_frictional(const FrictionalInput& in) {
+  const int m = in.n_pairs();
+  const LagrangeMultiplierRules normal(in.problem.rho);  // reads rho of rows 0..m-1
+  if (in.settings.tangential == TangentialEnforcement::LagrangeMultiplier) {
+    const Eigen::VectorXd c = in.problem.rho.head(m);
+    const TangentialMultiplierRules tangential(c, in.slip_prev);
+    return run_frictional_active_set(in.problem, normal, tangential, in.settings.mu,
+                                     in.initial_states, in.settings.max_iterations);
+  }
+  const Eigen::VectorXd kt = in.settings.fkt * in.penalty_kp;
+  const TangentialPenaltyRules tangential(kt, in.force_t_prev, in.slip_prev);
+  return run_frictional_active_set(in.problem, normal, tangential, in.settings.mu,
+                                   in.initial_states, in.settings.max_iterations);
+}
+
 }  // namespace cs::solver

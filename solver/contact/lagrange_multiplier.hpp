@@ -8,8 +8,15 @@
 //
 // starting from every candidate active. At convergence lambda >= 0, g >= 0 and lambda g = 0
 // hold on every row to the tolerance.
+//
+// With friction (mu > 0) the tangent is enforced as settings.tangential says (see
+// solver/contact/coulomb_friction.hpp): TangentialEnforcement::Penalty is the study's LMP
+// (penalty tangent kt = FKT x FKN x (E / h) w with its return mapping), LagrangeMultiplier its
+// PLM (exact stick: zero slip increment at every sticking row). Normal and tangential states are
+// updated together in one semi-smooth Newton loop (solver/contact/frictional_active_set.hpp).
 
 #include "solver/contact/active_set_solver.hpp"
+#include "solver/contact/frictional_active_set.hpp"
 
 namespace cs::solver {
 
@@ -27,5 +34,9 @@ class LagrangeMultiplierRules : public ActiveSetRules {
 
 /// Solves the condensed problem by Lagrange multipliers.
 AlgorithmOutcome solve_lagrange_multiplier(const AlgorithmInput& input);
+
+/// Solves the frictional condensed problem by normal Lagrange multipliers and the tangential
+/// enforcement of input.settings (LMP or PLM).
+AlgorithmOutcome solve_lagrange_multiplier_frictional(const FrictionalInput& input);
 
 }  // namespace cs::solver

@@ -11,7 +11,7 @@ ConstraintSet node_to_surface_constraints(const ContactSurface& surface,
   const int m = static_cast<int>(set.nodes.size());
   set.rows.resize(m);
   set.g0.resize(m);
-  std::vector<Eigen::Triplet<double>> triplets;
+  std::vector<Eigen::Triplet<double>> triplets, slip_triplets;
   for (int i = 0; i < m; ++i) {
     const ContactNode& n = set.nodes[i];
     const TargetPoint tp = project(target, n.position);
@@ -27,8 +27,12 @@ ConstraintSet node_to_surface_constraints(const ContactSurface& surface,
     r.normal = tp.normal;
     set.g0[i] = tp.gap;
     add_gap_triplets(i, 1.0, tp, 1, {n.node, -1, -1}, {1.0, 0.0, 0.0}, triplets);
+    add_direction_triplets(i, 1.0, target_tangent(tp), tp, 1, {n.node, -1, -1}, {1.0, 0.0, 0.0},
+                           slip_triplets);
   }
   set.B = assemble_rows(m, n_dofs, triplets);
+  set.T = assemble_rows(m, n_dofs, slip_triplets);
+  set.s0 = Eigen::VectorXd::Zero(m);
   return set;
 }
 

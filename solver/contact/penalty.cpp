@@ -21,4 +21,12 @@ AlgorithmOutcome solve_penalty(const AlgorithmInput& in) {
   return run_active_set(in.problem, rules, in.initial_active, in.settings.max_iterations);
 }
 
+AlgorithmOutcome solve_penalty_frictional(const FrictionalInput& in) {
+  const PenaltyRules normal(in.penalty_kp);
+  const Eigen::VectorXd kt = in.settings.fkt * in.penalty_kp;
+  const TangentialPenaltyRules tangential(kt, in.force_t_prev, in.slip_prev);
+  return run_frictional_active_set(in.problem, normal, tangential, in.settings.mu,
+                                   in.initial_states, in.settings.max_iterations);
+}
+
 }  // namespace cs::solver

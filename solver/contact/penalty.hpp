@@ -9,8 +9,13 @@
 // FKN E d / h, i.e. the penalty is FKN times the stiffness of the underlying element layer.
 // The active set is updated by the sign of the gap (semi-smooth Newton on the piecewise linear
 // law); it starts from every candidate active.
+//
+// With friction (mu > 0) the tangent is a penalty too, kt = FKT x k, with the return mapping of
+// solver/contact/coulomb_friction.hpp: lambda_T = lambda_T,prev + kt (s - s_prev) capped at
+// mu lambda_N; a sticking point slips elastically by the shear increment over kt.
 
 #include "solver/contact/active_set_solver.hpp"
+#include "solver/contact/frictional_active_set.hpp"
 
 namespace cs::solver {
 
@@ -28,5 +33,8 @@ class PenaltyRules : public ActiveSetRules {
 
 /// Solves the condensed problem by the penalty method.
 AlgorithmOutcome solve_penalty(const AlgorithmInput& input);
+
+/// Solves the frictional condensed problem by the penalty method (penalty normal and tangent).
+AlgorithmOutcome solve_penalty_frictional(const FrictionalInput& input);
 
 }  // namespace cs::solver

@@ -17,7 +17,7 @@ ConstraintSet gauss_point_constraints(const ContactSurface& surface, const Conta
   set.nodal = false;
   set.weighted = false;
   const GaussRule1D& rule = gauss_rule_1d(surface_gauss_points(surface.element_type()));
-  std::vector<Eigen::Triplet<double>> triplets;
+  std::vector<Eigen::Triplet<double>> triplets, slip_triplets;
   std::vector<double> g0;
   for (int k = 0; k < surface.n_segments(); ++k) {
     const ContactSegment& seg = surface.segment(k);
@@ -39,13 +39,18 @@ ConstraintSet gauss_point_constraints(const ContactSurface& surface, const Conta
       r.depth_h = seg.depth_h;
       r.normal = tp.normal;
       const int row = static_cast<int>(set.rows.size());
-      add_gap_triplets(row, 1.0, tp, seg.n_nodes, seg.nodes, {sv.N[0], sv.N[1], sv.N[2]}, triplets);
+      const std::array<double, 3> N{sv.N[0], sv.N[1], sv.N[2]};
+      add_gap_triplets(row, 1.0, tp, seg.n_nodes, seg.nodes, N, triplets);
+      add_direction_triplets(row, 1.0, target_tangent(tp), tp, seg.n_nodes, seg.nodes, N,
+                             slip_triplets);
       set.rows.push_back(r);
       g0.push_back(tp.gap);
     }
   }
   set.g0 = Eigen::Map<const Eigen::VectorXd>(g0.data(), static_cast<Eigen::Index>(g0.size()));
   set.B = assemble_rows(set.n_rows(), n_dofs, triplets);
+  set.T = assemble_rows(set.n_rows(), n_dofs, slip_triplets);
+  set.s0 = Eigen::VectorXd::Zero(set.n_rows());
   return set;
 }
 

@@ -1,0 +1,56 @@
+#pragma once
+// Per-node results of a contact solve, from the state of every constraint row: the normal
+// pressure and gap (any analysis) and the shear, slip and Coulomb state (friction), and the
+// pinball check. Used by solver/contact/contact_analysis.cpp.
+
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "solver/contact/constraint_set.hpp"
+#include "solver/contact/contact_result.hpp"
+
+namespace cs::solver {
+
+/// A gap this far below zero (relative to the element depth) counts as a penetration of a
+/// point outside the pinball.
+inline constexpr double kPinballPenetration = 1e-10;
+
+/// A candidate whose |gap| is below this (relative to the element depth) touches the target.
+inline constexpr double kTouchingGap = 1e-10;
+
+/// The state of every row of a constraint set after a solve.
+struct RowState {
+  const Eigen::VectorXd& gap;                ///< g = g0 + B u
+  const Eigen::VectorXd& lambda;             ///< force (0 outside the candidates)
+  const std::vector<char>& active;           ///< the algorithm's last active flags
+  const std::vector<int>& candidate_of_row;  ///< -1 outside the pinball
+};
+
+/// The tangential state of every row of a constraint set after a frictional solve.
+struct FrictionRowState {
+  const Eigen::VectorXd& slip;              ///< s = s0 + T u
+  const Eigen::VectorXd& force_t;           ///< lambda_T (0 outside the candidates)
+  const std::vector<FrictionState>& state;  ///< Open outside the candidates
+  const Eigen::VectorXd& node_slip;         ///< s per contact node (set.nodes order)
+  const Eigen::VectorXd& node_slip_prev;    ///< the previous step's, same order
+};
+
+/// A row outside the pinball never acts: if it penetrates, `result` becomes NotConverged
+/// (ContactBeyondPinball) with a reason naming the point.
+void check_pinball(const ConstraintSet& set, const RowState& rows, double pinball,
+                   ContactResult& result);
+
+/// Per-node results, sorted by position. The pressure of a node is its multiplier coefficient
+/// lambda / w (weighted rows: mortar, ss with LM/MPC) or its nodal force over its consistent
+/// weight (ns; ss Gauss rows, whose forces are shared out with N_a); a node whose consistent
+/// weight vanishes reports its neighbour's.
+std::vector<ContactNodeResult> node_results(const ConstraintSet& set, const RowState& rows,
+                                            const Eigen::VectorXd& node_gap);
+
+/// Adds the shear (from lambda_T exactly as the pressure from lambda), the slip, its increment
+/// and the Coulomb state to `nodes` (the node_results of the same set and rows).
+void add_friction_results(const ConstraintSet& set, const RowState& rows,
+                          const FrictionRowState& friction, std::vector<ContactNodeResult>& nodes);
+
+}  // namespace cs::solver
