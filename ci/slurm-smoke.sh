@@ -246,7 +246,10 @@ run_real() {
   cluster_wait_jobs "${timeout:-900}" "$array_job" "$merge_job" || fail "$cluster_error"
   expect_states "$array_job" COMPLETED
   expect_states "$merge_job" COMPLETED
-  [ -f "$work/sharded/results.json" ] || fail "the merge job wrote no $work/sharded/results.json"
+  local f
+  for f in results.json report.md; do
+    [ -f "$work/sharded/$f" ] || fail "the merge job wrote no $work/sharded/$f"
+  done
   timings+=("$shards slices + merge in $(seconds_since "$t") s")
 
   t=$EPOCHREALTIME
