@@ -31,12 +31,16 @@ while [ $# -gt 0 ]; do
   case $1 in
     --selftest) selftest=1; shift ;;
     --keep) keep=1; shift ;;
-    --exe) exe=$2; shift 2 ;;
-    --timeout) timeout=$2; shift 2 ;;
+    --exe | --timeout)
+      [ $# -ge 2 ] || { echo "ci/slurm-smoke.sh: $1 needs a value" >&2; exit 2; }
+      [ "$1" = --exe ] && exe=$2 || timeout=$2
+      shift 2 ;;
     --) shift; run_flags+=("$@"); break ;;
     *) run_flags+=("$1"); shift ;;
   esac
 done
+[ -z "$timeout" ] || [[ $timeout =~ ^[1-9][0-9]*$ ]] ||
+  { echo "ci/slurm-smoke.sh: --timeout '$timeout' is not a number of seconds" >&2; exit 2; }
 [ ${#run_flags[@]} -gt 0 ] || run_flags=(--problems "P_p,H_p" --meshes "C,M")
 shards=3
 
