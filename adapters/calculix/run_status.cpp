@@ -34,6 +34,15 @@ std::string_view trim(std::string_view s) {
   return s;
 }
 
+std::string collapse_spaces(const std::string& text) {
+  std::string out;
+  for (char c : text) {
+    if (c != ' ' || out.empty() || out.back() != ' ')
+      out += c;
+  }
+  return out;
+}
+
 bool to_int(std::string_view s, int& v) {
   const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
   return ec == std::errc() && end == s.data() + s.size();
@@ -99,14 +108,15 @@ std::string first_error_message(std::string_view ccx_output) {
     if (at == std::string_view::npos)
       continue;
     std::string message(trim(lines[k].substr(at)));
-    // Continuation lines: indented text that starts no new message.
+    // Continuation lines: deeper-indented text (ccx indents them by 7 or more spaces).
     for (std::size_t j = k + 1; j < lines.size(); ++j) {
       const std::string_view next = trim(lines[j]);
-      if (next.empty() || next.front() == '*' || lines[j].front() != ' ')
+      if (next.empty() || next.front() == '*' || lines[j].substr(0, 3) != "   ")
         break;
       message += " ";
       message += next;
     }
+    message = collapse_spaces(message);  // "element           1" -> "element 1"
     return message.size() > 300 ? message.substr(0, 297) + "..." : message;
   }
   return "";

@@ -35,8 +35,8 @@ struct StaSummary {
 /// Parses the rows of a .sta file; lines that are not rows are ignored.
 StaSummary parse_sta(std::string_view text);
 
-/// ccx's first "*ERROR ..." message with its continuation lines joined into one line (at most
-/// 300 characters), or "" if there is none.
+/// ccx's first "*ERROR ..." message with its continuation lines joined into one line, runs of
+/// spaces collapsed (at most 300 characters), or "" if there is none.
 std::string first_error_message(std::string_view ccx_output);
 
 /// Status and reason of a run.
