@@ -10,7 +10,7 @@
 #include "apps/usage_error.hpp"
 #include "suites/problem_catalog.hpp"
 #include "suites/problem_executor.hpp"
-#include "suites/results_json.hpp"
+#include "schema/results_file.hpp"
 #include "suites/suite_error.hpp"
 
 namespace cs::apps {
@@ -18,9 +18,12 @@ namespace {
 
 struct CaseArgs {
   std::string problem;
-  std::string mesh = "C", element = "Q4", algorithm = "AL", contact = "ss";
-  std::string target = "discretized";
-  std::string recovery = "spr";
+  std::string mesh{schema::to_string(schema::MeshLevel::C)};
+  std::string element{schema::to_string(schema::Element::Q4)};
+  std::string algorithm{schema::to_string(schema::Algorithm::AL)};
+  std::string contact{schema::to_string(schema::ContactKind::ss)};
+  std::string target{schema::to_string(schema::TargetKind::Discretized)};
+  std::string recovery{schema::to_string(schema::Recovery::spr)};
   std::vector<std::string> sets;
   bool json = false;
   std::string vtu;
@@ -28,17 +31,17 @@ struct CaseArgs {
 
 suites::CaseSpec make_spec(const CaseArgs& args) {
   suites::CaseSpec spec;
-  spec.problem = suites::parse_problem(args.problem);
-  spec.mesh = suites::parse_mesh_level(args.mesh);
-  spec.element = suites::parse_element(args.element);
-  spec.algorithm = suites::parse_algorithm(args.algorithm);
-  spec.contact = suites::parse_contact(args.contact);
-  spec.target = suites::parse_target(args.target);
-  spec.recovery = suites::parse_recovery(args.recovery);
+  spec.problem = schema::parse<schema::ProblemId>(args.problem);
+  spec.mesh = schema::parse<schema::MeshLevel>(args.mesh);
+  spec.element = schema::parse<schema::Element>(args.element);
+  spec.algorithm = schema::parse<schema::Algorithm>(args.algorithm);
+  spec.contact = schema::parse<schema::ContactKind>(args.contact);
+  spec.target = schema::parse<schema::TargetKind>(args.target);
+  spec.recovery = schema::parse<schema::Recovery>(args.recovery);
   for (const auto& text : args.sets)
     spec.overrides.insert(suites::parse_override(text));
   // Validate the parameters now: a bad --set is bad input, not a failed case.
-  suites::Parameters(suites::problem_info(spec.problem).parameters, spec.overrides,
+  suites::Parameters(suites::problem_descriptor(spec.problem).parameters, spec.overrides,
                      suites::to_string(spec.problem));
   return spec;
 }
@@ -59,7 +62,7 @@ void print_text(const suites::CaseResult& r) {
     const std::string exact =
         std::isfinite(q.exact) ? fmt::format("{:.4f}", q.exact) : std::string("inf");
     std::string line =
-        fmt::format("  {:<13} {:>9}  exact {:>8}", q.name,
+        fmt::format("  {:<13} {:>9}  exact {:>8}", schema::to_string(q.quantity),
                     std::isfinite(q.value) ? fmt::format("{:.4f}", q.value) : "-", exact);
     if (std::isfinite(q.exact) && std::isfinite(q.value)) {
       line +=
@@ -97,7 +100,7 @@ int run_case(const CaseArgs& args) {
     executor->write_vtu(args.vtu);
   }
   if (args.json) {
-    fmt::print("{}\n", suites::to_json(result).dump(2));
+    fmt::print("{}\n", schema::to_json(result).dump(2));
   } else {
     print_text(result);
   }
@@ -110,7 +113,7 @@ void add_case_command(CLI::App& app, int& exit_code) {
   auto args = std::make_shared<CaseArgs>();
   auto* cmd = app.add_subcommand("case", "Run one analysis of the battery and grade it");
   cmd->add_option("problem", args->problem,
-                  "Problem: P_p P_a Pprime_p Pprime_a H_p H_a S_1 S_1_3 S_1_7 F_p F_a")
+                  "Problem: " + schema::accepted_names<schema::ProblemId>())
       ->required();
   cmd->add_option("--mesh", args->mesh, "Mesh level: C, M or F")->capture_default_str();
   cmd->add_option("--element", args->element, "Element: Q4 or Q8")->capture_default_str();

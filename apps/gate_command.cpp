@@ -5,10 +5,11 @@
 
 #include <fmt/core.h>
 
-#include "apps/json_file.hpp"
 #include "apps/usage_error.hpp"
 #include "suites/gate.hpp"
-#include "suites/results_json.hpp"
+#include "schema/baseline_file.hpp"
+#include "schema/json_file.hpp"
+#include "schema/results_file.hpp"
 
 namespace cs::apps {
 namespace {
@@ -19,24 +20,23 @@ struct GateArgs {
 };
 
 int update_baseline(const GateArgs& args, const std::vector<suites::CaseResult>& results) {
-  double default_tolerance = suites::kDefaultGateTolerance;
-  std::map<std::string, double> tolerances;
+  schema::GateTolerances tolerances;
   if (std::filesystem::exists(args.baseline)) {  // keep the tolerances a team has set
-    std::tie(default_tolerance, tolerances) =
-        suites::baseline_tolerances_from_json(read_json_file(args.baseline, "baseline"));
+    tolerances = schema::tolerances_from_json(schema::read_json_file(args.baseline, "baseline"),
+                                              args.baseline);
   }
-  const auto baseline = suites::make_baseline(results, default_tolerance, tolerances);
-  write_json_file_atomically(args.baseline, suites::to_json(baseline));
+  const auto baseline = suites::make_baseline(results, tolerances);
+  schema::write_baseline_file(args.baseline, baseline);
   fmt::print("gate: baseline {} updated from {} ({} cases, {} rows)\n", args.baseline, args.results,
              baseline.cases.size(), baseline.rows.size());
   return kSuccess;
 }
 
 int run_gate(const GateArgs& args) {
-  const auto results = suites::cases_from_results_document(read_json_file(args.results, "results"));
+  const auto results = schema::read_results_file(args.results).cases;
   if (args.update)
     return update_baseline(args, results);
-  const auto baseline = suites::baseline_from_json(read_json_file(args.baseline, "baseline"));
+  const auto baseline = schema::read_baseline_file(args.baseline);
   const auto report = suites::run_gate(baseline, results);
   if (report.passed()) {
     fmt::print("gate: passed — {} cases and {} rows within the baseline {}\n", report.cases_checked,

@@ -7,16 +7,34 @@
 
 #include "suites/case_spec.hpp"
 #include "suites/problem_catalog.hpp"
+#include "suites/problems/problem_builders.hpp"
 
 namespace cs::apps {
 namespace {
 
+/// "AL PM LMP PLM MPC": every name of an axis.
 template <class E>
-std::string joined(const std::vector<E>& values) {
+std::string joined() {
   std::string out;
-  for (const auto& v : values)
-    out += (out.empty() ? "" : " ") + std::string(suites::to_string(v));
+  for (const auto& v : schema::values<E>())
+    out += (out.empty() ? "" : " ") + std::string(schema::to_string(v));
   return out;
+}
+
+/// The names of an axis as a JSON array.
+template <class E>
+nlohmann::json names() {
+  nlohmann::json a = nlohmann::json::array();
+  for (const auto& v : schema::values<E>())
+    a.push_back(std::string(schema::to_string(v)));
+  return a;
+}
+
+nlohmann::json quantity_names(const schema::ProblemRecord& record) {
+  nlohmann::json a = nlohmann::json::array();
+  for (const auto& q : record.quantities)
+    a.push_back(std::string(schema::to_string(q.quantity)));
+  return a;
 }
 
 void print_parameter(const suites::ParameterSpec& p) {
@@ -35,71 +53,67 @@ bool is_common(const std::string& name) {
 void print_text() {
   using namespace cs::suites;
   fmt::print("Problems (the study's battery), with the parameters particular to each:\n");
-  for (auto id : all_problems()) {
-    const auto& info = problem_info(id);
+  for (auto id : schema::values<ProblemId>()) {
+    const auto& info = problem_descriptor(id);
     std::string quantities;
-    for (const auto& q : info.quantities)
-      quantities += (quantities.empty() ? "" : ", ") + q;
-    fmt::print("  {:<9} {} — graded: {} (study Tables {})\n", to_string(id), info.title, quantities,
-               info.study_tables);
+    for (const auto& q : info.record.quantities)
+      quantities += (quantities.empty() ? "" : ", ") + std::string(to_string(q.quantity));
+    fmt::print("  {:<9} {} — graded: {} (study Tables {})\n", to_string(id), info.record.title,
+               quantities, info.record.study_tables);
     for (const auto& p : info.parameters) {
       if (!is_common(p.name))
         print_parameter(p);
     }
   }
   fmt::print("\nParameters of every problem (--set name=value):\n");
-  for (const auto& p : problem_info(ProblemId::S_1).parameters) {
+  for (const auto& p : common_parameters(problems::kStudyPOverE)) {
     if (is_common(p.name))
       print_parameter(p);
   }
   fmt::print("\nOptions:\n");
-  fmt::print("  --mesh       {}   (coarse h, medium h/2, fine h/4)\n", joined(all_mesh_levels()));
+  fmt::print("  --mesh       {}   (coarse h, medium h/2, fine h/4)\n", joined<schema::MeshLevel>());
   fmt::print("  --element    {}   (4-node bilinear, 8-node serendipity; 4Q/8Q accepted)\n",
-             joined(all_elements()));
+             joined<schema::Element>());
   fmt::print(
       "  --algorithm  {}   (IMC accepted for MPC; LMP and PLM are the same method "
       "without friction)\n",
-      joined(all_algorithms()));
-  fmt::print("  --contact    {}   (the study's ss and ns, and mortar)\n", joined(all_contacts()));
+      joined<schema::Algorithm>());
+  fmt::print("  --contact    {}   (the study's ss and ns, and mortar)\n", joined<schema::ContactKind>());
   fmt::print(
       "  --target     discretized rigid   (stiff meshed indenter, E ratio 1e6; or a rigid "
       "analytic profile)\n");
   fmt::print(
       "  --recovery   {}   (nodal stresses: superconvergent patch recovery; or "
       "extrapolated and averaged, as commercial codes print)\n",
-      joined(all_recoveries()));
+      joined<schema::Recovery>());
 }
 
 void print_json() {
   using namespace cs::suites;
   nlohmann::json problems = nlohmann::json::array();
-  for (auto id : all_problems()) {
-    const auto& info = problem_info(id);
+  for (auto id : schema::values<ProblemId>()) {
+    const auto& info = problem_descriptor(id);
     nlohmann::json params = nlohmann::json::object();
     for (const auto& p : info.parameters) {
       params[p.name] = {
           {"default", p.default_value}, {"range", range_text(p)}, {"description", p.description}};
     }
     problems.push_back({{"name", std::string(to_string(id))},
-                        {"title", info.title},
-                        {"axisymmetric", info.axisymmetric},
-                        {"quantities", info.quantities},
-                        {"study_tables", info.study_tables},
+                        {"title", info.record.title},
+                        {"axisymmetric", info.record.axisymmetric},
+                        {"singular", info.record.singular},
+                        {"quantities", quantity_names(info.record)},
+                        {"study_tables", info.record.study_tables},
                         {"parameters", params}});
   }
-  auto names = [](const auto& values) {
-    nlohmann::json a = nlohmann::json::array();
-    for (const auto& v : values)
-      a.push_back(std::string(to_string(v)));
-    return a;
-  };
   const nlohmann::json out{{"problems", problems},
-                           {"meshes", names(all_mesh_levels())},
-                           {"elements", names(all_elements())},
-                           {"algorithms", names(all_algorithms())},
-                           {"contacts", names(all_contacts())},
-                           {"targets", {"discretized", "rigid"}},
-                           {"recoveries", names(all_recoveries())}};
+                           {"meshes", names<schema::MeshLevel>()},
+                           {"elements", names<schema::Element>()},
+                           {"algorithms", names<schema::Algorithm>()},
+                           {"contacts", names<schema::ContactKind>()},
+                           {"targets", names<schema::TargetKind>()},
+                           {"recoveries", names<schema::Recovery>()},
+                           {"solvers", names<schema::SolverKind>()}};
   fmt::print("{}\n", out.dump(2));
 }
 

@@ -16,6 +16,7 @@
 #include "apps/report_command.hpp"
 #include "apps/run_command.hpp"
 #include "apps/usage_error.hpp"
+#include "schema/schema_error.hpp"
 
 namespace {
 
@@ -59,6 +60,9 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "contact-suite: error: %s\n", one_line(e.what()).c_str());
     return cs::apps::kBadInput;
   } catch (const cs::apps::UsageError& e) {
+    std::fprintf(stderr, "contact-suite: error: %s\n", one_line(e.what()).c_str());
+    return cs::apps::kBadInput;
+  } catch (const cs::schema::SchemaError& e) {
     std::fprintf(stderr, "contact-suite: error: %s\n", one_line(e.what()).c_str());
     return cs::apps::kBadInput;
   } catch (const std::invalid_argument& e) {

@@ -17,39 +17,42 @@
 #include "suites/problem_catalog.hpp"
 #include "suites/problem_executor.hpp"
 #include "suites/progress.hpp"
-#include "suites/results_json.hpp"
+#include "schema/results_file.hpp"
+#include "suites/row_verdict.hpp"
 #include "suites/run_environment.hpp"
+#include "suites/shard.hpp"
 
 namespace cs::apps {
 namespace {
 
 struct RunArgs {
   std::vector<std::string> problems, meshes, elements, algorithms, contacts, sets;
-  std::string target = "discretized";
+  std::string target{schema::to_string(schema::TargetKind::Discretized)};
   std::vector<std::string> recoveries;
   int jobs = 0;
   std::string out = "out";
+  std::string shard;
   bool no_report = false;
   std::string command_line;
 };
 
-template <class E, class Parse>
-std::vector<E> parse_all(const std::vector<std::string>& names, Parse parse) {
+template <class E>
+std::vector<E> parse_all(const std::vector<std::string>& names) {
   std::vector<E> out;
   for (const auto& n : names)
-    out.push_back(parse(n));
+    out.push_back(schema::parse<E>(n));
   return out;
 }
 
 suites::CaseSelection make_selection(const RunArgs& args) {
   suites::CaseSelection sel;
-  sel.problems = parse_all<suites::ProblemId>(args.problems, suites::parse_problem);
-  sel.meshes = parse_all<suites::MeshLevel>(args.meshes, suites::parse_mesh_level);
-  sel.elements = parse_all<suites::ElementType>(args.elements, suites::parse_element);
-  sel.algorithms = parse_all<suites::Algorithm>(args.algorithms, suites::parse_algorithm);
-  sel.contacts = parse_all<suites::ContactKind>(args.contacts, suites::parse_contact);
-  sel.target = suites::parse_target(args.target);
-  sel.recoveries = parse_all<suites::Recovery>(args.recoveries, suites::parse_recovery);
+  sel.problems = parse_all<schema::ProblemId>(args.problems);
+  sel.meshes = parse_all<schema::MeshLevel>(args.meshes);
+  sel.elements = parse_all<schema::Element>(args.elements);
+  sel.algorithms = parse_all<schema::Algorithm>(args.algorithms);
+  sel.contacts = parse_all<schema::ContactKind>(args.contacts);
+  sel.target = schema::parse<schema::TargetKind>(args.target);
+  sel.recoveries = parse_all<schema::Recovery>(args.recoveries);
   for (const auto& text : args.sets)
     sel.overrides.insert(suites::parse_override(text));
   return sel;
@@ -58,7 +61,7 @@ suites::CaseSelection make_selection(const RunArgs& args) {
 /// Every case's --set keys must exist for its problem: checked before anything runs.
 void validate_overrides(const std::vector<suites::CaseSpec>& cases) {
   for (const auto& spec : cases) {
-    suites::Parameters(suites::problem_info(spec.problem).parameters, spec.overrides,
+    suites::Parameters(suites::problem_descriptor(spec.problem).parameters, spec.overrides,
                        suites::to_string(spec.problem));
   }
 }
@@ -71,12 +74,21 @@ double group_cost(const suites::CaseSpec& spec) {
       spec.problem == suites::ProblemId::S_1_7) {
     cost *= 30.0;
   }
-  return spec.element == suites::ElementType::Q8 ? 3.0 * cost : cost;
+  return spec.element == schema::Element::Q8 ? 3.0 * cost : cost;
 }
 
 int run(const RunArgs& args) {
-  const auto cases = suites::make_case_matrix(make_selection(args));
-  validate_overrides(cases);
+  const auto all_cases = suites::make_case_matrix(make_selection(args));
+  validate_overrides(all_cases);
+  std::optional<schema::ShardInfo> shard;
+  auto cases = all_cases;
+  if (!args.shard.empty()) {
+    const auto s = suites::parse_shard(args.shard);
+    cases = suites::shard_cases(all_cases, s, group_cost);
+    shard = schema::ShardInfo{s.index, s.count,
+                              suites::run_key(all_cases, suites::contact_suite_version(), s.count),
+                              static_cast<long long>(all_cases.size())};
+  }
   // Stage the output directory before running: an unwritable one fails now, not at the end.
   reports::AtomicOutput output(args.out);
 
@@ -91,11 +103,12 @@ int run(const RunArgs& args) {
   options.on_case_done = [&progress](const suites::CaseResult& r) { progress.case_done(r); };
   options.group_cost = group_cost;
 
-  suites::RunInfo info;
+  schema::RunInfo info;
   info.started_utc = suites::utc_now_iso8601();
   info.jobs = jobs;
   info.command_line = args.command_line;
   info.environment = suites::run_environment();
+  info.shard = shard;
   const auto start = std::chrono::steady_clock::now();
   const auto results = suites::run_cases(cases, suites::make_problem_executor, options);
   info.wall_seconds =
@@ -103,7 +116,12 @@ int run(const RunArgs& args) {
   info.peak_rss_mb = suites::peak_rss_mb();
   progress.finish();
 
-  output.write_text("results.json", suites::make_results_document(info, results).dump(1) + "\n");
+  const schema::ResultsDocument doc{.source = {},
+                                    .run = info,
+                                    .problems = suites::problem_records(results),
+                                    .cases = results,
+                                    .rows = suites::make_row_verdicts(results)};
+  output.write_text("results.json", schema::to_json(doc).dump(1) + "\n");
   const auto written = output.commit();
   const auto results_path = std::filesystem::path(args.out) / "results.json";
   fmt::print("wrote {}\n", results_path.string());
@@ -144,6 +162,9 @@ void add_run_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--jobs", args->jobs, "Parallel workers (default: the number of cores)");
   cmd->add_option("--out", args->out, "Output directory")->capture_default_str();
   cmd->add_flag("--no-report", args->no_report, "Write results.json only");
+  cmd->add_option("--shard", args->shard,
+                  "Run slice K of N (K/N, 1-based) of the selected cases; slices keep the cases "
+                  "of one model together and are balanced by cost; combine them with `merge`");
   cmd->callback([args, &exit_code] {
     args->command_line = invocation().empty() ? "contact-suite run" : invocation();
     exit_code = run(*args);

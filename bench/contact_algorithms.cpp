@@ -190,8 +190,8 @@ void BM_ContactAllOptions(benchmark::State& state, const suites::CaseSpec& spec)
 std::vector<suites::CaseSpec> models() {
   std::vector<suites::CaseSpec> out;
   for (const auto problem : kProblems) {
-    for (const auto mesh : suites::all_mesh_levels()) {
-      for (const auto element : suites::all_elements()) {
+    for (const auto mesh : schema::values<schema::MeshLevel>()) {
+      for (const auto element : schema::values<schema::Element>()) {
         suites::CaseSpec spec;
         spec.problem = problem;
         spec.mesh = mesh;

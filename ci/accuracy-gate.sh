@@ -17,18 +17,9 @@ mkdir -p "$out"
   --out "$out/steuermann" --no-report
 "$exe" run --meshes C,M,F --problems P_p,P_a,Pprime_p,Pprime_a,H_p,H_a,F_p,F_a \
   --contacts ss,ns,mortar --out "$out/others" --no-report
-python3 - "$out" <<'PY'
-import json, sys
-out = sys.argv[1]
-a = json.load(open(f"{out}/steuermann/results.json"))
-b = json.load(open(f"{out}/others/results.json"))
-a["cases"] += b["cases"]
-a["rows"] += b["rows"]
-a["run"]["wall_seconds"] += b["run"]["wall_seconds"]
-json.dump(a, open(f"{out}/results.json", "w"))
-PY
+"$exe" merge "$out/all" "$out/steuermann/results.json" "$out/others/results.json" --no-report
 if [ "${2:-}" = "--update" ]; then
-  "$exe" gate --baseline ci/baseline.json --results "$out/results.json" --update
+  "$exe" gate --baseline ci/baseline.json --results "$out/all/results.json" --update
 else
-  "$exe" gate --baseline ci/baseline.json --results "$out/results.json"
+  "$exe" gate --baseline ci/baseline.json --results "$out/all/results.json"
 fi

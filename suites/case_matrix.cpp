@@ -5,10 +5,10 @@
 namespace cs::suites {
 namespace {
 
-template <class E>
-std::vector<E> or_all(const std::vector<E>& chosen, const std::vector<E>& all) {
+template <class E, class All>
+std::vector<E> or_all(const std::vector<E>& chosen, const All& all) {
   if (chosen.empty())
-    return all;
+    return {all.begin(), all.end()};
   std::vector<E> unique;
   for (E v : chosen) {
     if (std::find(unique.begin(), unique.end(), v) == unique.end())
@@ -21,13 +21,13 @@ std::vector<E> or_all(const std::vector<E>& chosen, const std::vector<E>& all) {
 
 std::vector<CaseSpec> make_case_matrix(const CaseSelection& sel) {
   std::vector<CaseSpec> cases;
-  for (ProblemId p : or_all(sel.problems, all_problems())) {
-    for (MeshLevel m : or_all(sel.meshes, all_mesh_levels())) {
-      for (ElementType e : or_all(sel.elements, all_elements())) {
-        for (Algorithm a : or_all(sel.algorithms, all_algorithms())) {
+  for (ProblemId p : or_all(sel.problems, values<ProblemId>())) {
+    for (MeshLevel m : or_all(sel.meshes, values<MeshLevel>())) {
+      for (Element e : or_all(sel.elements, values<Element>())) {
+        for (Algorithm a : or_all(sel.algorithms, values<Algorithm>())) {
           for (ContactKind c : or_all(sel.contacts, study_contacts())) {
-            for (Recovery r : or_all(sel.recoveries, {Recovery::spr}))
-              cases.push_back(CaseSpec{p, m, e, a, c, sel.target, r, sel.overrides});
+            for (Recovery r : or_all(sel.recoveries, std::vector<Recovery>{Recovery::spr}))
+              cases.push_back(CaseSpec{.problem = p, .mesh = m, .element = e, .algorithm = a, .contact = c, .target = sel.target, .recovery = r, .overrides = sel.overrides});
           }
         }
       }

@@ -15,7 +15,7 @@ namespace cs::suites {
 struct CaseSelection {
   std::vector<ProblemId> problems;
   std::vector<MeshLevel> meshes;
-  std::vector<ElementType> elements;
+  std::vector<Element> elements;
   std::vector<Algorithm> algorithms;
   std::vector<ContactKind> contacts;
   TargetKind target = TargetKind::Discretized;

@@ -1,67 +1,17 @@
 #pragma once
-// What one analysis produced: its status, the graded quantities, the surface profile and
-// the cost. A case that fails is still a CaseResult (status + reason), never an exception
-// escaping the runner.
+// What one analysis produced (the schema's record, schema/case_result.hpp), in cs::suites.
 
-#include <optional>
-#include <string>
-#include <vector>
-
+#include "schema/case_result.hpp"
 #include "suites/case_spec.hpp"
 #include "suites/grading.hpp"
 
 namespace cs::suites {
 
-/// How a case ended.
-enum class CaseStatus {
-  converged,      ///< solved; contact iterations converged
-  not_converged,  ///< contact iterations hit the cap or cycled; values are the last iterate
-  failed,         ///< no values: singular system, bad model, exception in the solver
-};
-
-std::string_view to_string(CaseStatus status);
-CaseStatus parse_case_status(std::string_view text);
-
-/// One graded quantity, normalized by p and positive in compression (e.g. -sigma_z/p).
-struct QuantityResult {
-  std::string name;            ///< sigma_z_max | sigma_c | sigma_h | sigma_c_star
-  double value = 0.0;          ///< from the nodal stresses, as the study graded
-  double exact = 0.0;          ///< the physically consistent exact value (inf: singular)
-  double error_percent = 0.0;  ///< signed; 0 for singular quantities (no finite exact value)
-  Grade grade = Grade::u;      ///< Eq. 46 on |error_percent|; u for singular quantities
-  /// The same quantity from the contact solution's pressure (multipliers or penalty forces).
-  std::optional<double> contact_pressure;
-  /// The study's printed exact value where it differs from ours (Steuermann; see docs).
-  std::optional<double> study_exact;
-};
-
-/// The contact surface of the indented body, sorted by x: for the figures of the report.
-struct SurfaceProfile {
-  std::vector<double> x_over_a;         ///< position / contact half-width (b for S)
-  std::vector<double> sigma_z_over_p;   ///< -sigma_z/p, nodal (the case's recovery)
-  std::vector<double> pressure_over_p;  ///< contact pressure / p from the contact solution
-};
-
-/// The exact -sigma_z/p on z = 0 on a fine grid of x / a (infinite values left out).
-struct ExactProfile {
-  std::vector<double> x_over_a;
-  std::vector<double> sigma_z_over_p;
-};
-
-/// Everything recorded about one analysis.
-struct CaseResult {
-  CaseSpec spec;
-  CaseStatus status = CaseStatus::failed;
-  std::string reason;  ///< why a case did not converge or failed; empty when converged
-  int iterations = 0;  ///< active-set (+ augmentation) iterations
-  double wall_seconds = 0.0;
-  double peak_rss_mb = 0.0;     ///< process peak resident memory when the case finished
-  int n_elements = 0;           ///< elements of the indented body
-  int n_equations = 0;          ///< free degrees of freedom of the whole model
-  double element_size_h = 0.0;  ///< characteristic element size at the contact, over a (or b)
-  std::vector<QuantityResult> quantities;
-  SurfaceProfile profile;
-  ExactProfile exact_profile;
-};
+using schema::CaseResult;
+using schema::CaseStatus;
+using schema::ExactProfile;
+using schema::Quantity;
+using schema::QuantityResult;
+using schema::SurfaceProfile;
 
 }  // namespace cs::suites

@@ -5,13 +5,10 @@
 
 #include <fmt/format.h>
 
-#include "suites/results_json.hpp"
 #include "suites/suite_error.hpp"
 
 namespace cs::suites {
 namespace {
-
-using nlohmann::json;
 
 std::string number_text(double v) {
   return std::isfinite(v) ? fmt::format("{:.10g}", v) : std::string("none");
@@ -19,11 +16,6 @@ std::string number_text(double v) {
 
 std::string optional_bool_text(const std::optional<bool>& v) {
   return v ? (*v ? "yes" : "no") : "n/a";
-}
-
-double tolerance_for(const Baseline& b, const std::string& quantity) {
-  const auto it = b.tolerances.find(quantity);
-  return it != b.tolerances.end() ? it->second : b.default_tolerance;
 }
 
 /// A value that was finite must stay within tolerance; a value that was missing may appear.
@@ -39,15 +31,15 @@ void check_case(const Baseline& baseline, const CaseResult& old_case, const Case
       continue;
     const QuantityResult* q_new = nullptr;
     for (const auto& q : new_case.quantities) {
-      if (q.name == q_old.name)
+      if (q.quantity == q_old.quantity)
         q_new = &q;
     }
-    const std::string qid = id + " " + q_old.name;
+    const std::string qid = id + " " + std::string(to_string(q_old.quantity));
     if (q_new == nullptr || !std::isfinite(q_new->value)) {
       report.failures.push_back({qid, "value drift", number_text(q_old.value), "none", "no value"});
       continue;
     }
-    const double tol = tolerance_for(baseline, q_old.name);
+    const double tol = baseline.tolerances.of(q_old.quantity);
     const double drift =
         std::abs(q_new->value - q_old.value) / std::max(std::abs(q_old.value), 1e-300);
     if (!(drift <= tol)) {
@@ -77,24 +69,10 @@ void check_row(const RowVerdict& old_row, const RowVerdict& new_row, GateReport&
   }
 }
 
-std::optional<Grade> grade_from(const json& j) {
-  if (!j.contains("grade") || j.at("grade").is_null())
-    return std::nullopt;
-  return parse_grade(j.at("grade").get<std::string>());
-}
-
-std::optional<bool> bool_from(const json& j, const char* key) {
-  if (!j.contains(key) || j.at(key).is_null())
-    return std::nullopt;
-  return j.at(key).get<bool>();
-}
-
 }  // namespace
 
-Baseline make_baseline(const std::vector<CaseResult>& cases, double default_tolerance,
-                       const std::map<std::string, double>& tolerances) {
+Baseline make_baseline(const std::vector<CaseResult>& cases, const schema::GateTolerances& tolerances) {
   Baseline b;
-  b.default_tolerance = default_tolerance;
   b.tolerances = tolerances;
   for (const auto& c : cases) {
     CaseResult slim;
@@ -105,90 +83,6 @@ Baseline make_baseline(const std::vector<CaseResult>& cases, double default_tole
     b.cases.push_back(std::move(slim));
   }
   b.rows = make_row_verdicts(cases);
-  return b;
-}
-
-json to_json(const Baseline& b) {
-  json doc{{"schema", kBaselineSchemaName},
-           {"schema_version", kBaselineSchemaVersion},
-           {"default_tolerance", b.default_tolerance},
-           {"tolerances", json(b.tolerances)}};
-  json cases = json::array();
-  for (const auto& c : b.cases) {
-    json j = to_json(c);
-    // A baseline keeps what the gate compares: no timings, memory or profiles.
-    for (const char* key : {"wall_seconds", "peak_rss_mb", "profile", "exact_profile", "iterations",
-                            "n_elements", "n_equations", "element_size_h"}) {
-      j.erase(key);
-    }
-    cases.push_back(j);
-  }
-  doc["cases"] = cases;
-  json rows = json::array();
-  for (const auto& r : b.rows)
-    rows.push_back(to_json(r));
-  doc["rows"] = rows;
-  return doc;
-}
-
-namespace {
-
-void check_baseline_schema(const json& doc) {
-  if (!doc.is_object() || doc.value("schema", "") != kBaselineSchemaName) {
-    throw SuiteInputError(
-        fmt::format("not a contact-suite baseline (no \"schema\": \"{}\")", kBaselineSchemaName));
-  }
-}
-
-}  // namespace
-
-std::pair<double, std::map<std::string, double>> baseline_tolerances_from_json(const json& doc) {
-  check_baseline_schema(doc);
-  try {
-    std::map<std::string, double> tolerances;
-    if (doc.contains("tolerances"))
-      tolerances = doc.at("tolerances").get<std::map<std::string, double>>();
-    return {doc.value("default_tolerance", kDefaultGateTolerance), tolerances};
-  } catch (const json::exception& e) {
-    throw SuiteInputError(fmt::format("malformed baseline tolerances: {}", e.what()));
-  }
-}
-
-Baseline baseline_from_json(const json& doc) {
-  check_baseline_schema(doc);
-  if (doc.value("schema_version", -1) != kBaselineSchemaVersion) {
-    throw SuiteInputError(fmt::format("baseline schema version {} is not supported (expected {})",
-                                      doc.value("schema_version", -1), kBaselineSchemaVersion));
-  }
-  Baseline b;
-  try {
-    b.default_tolerance = doc.value("default_tolerance", kDefaultGateTolerance);
-    if (doc.contains("tolerances"))
-      b.tolerances = doc.at("tolerances").get<std::map<std::string, double>>();
-    // The case records share the results schema, less the fields a baseline drops.
-    json as_results{{"schema", kResultsSchemaName}, {"schema_version", kResultsSchemaVersion}};
-    json cases = doc.at("cases");
-    for (auto& c : cases) {
-      if (!c.contains("wall_seconds"))
-        c["wall_seconds"] = nullptr;
-    }
-    as_results["cases"] = cases;
-    b.cases = cases_from_results_document(as_results);
-    for (const auto& r : doc.at("rows")) {
-      RowVerdict row;
-      row.id = r.at("id").get<std::string>();
-      row.problem = parse_problem(r.at("problem").get<std::string>());
-      row.quantity = r.at("quantity").get<std::string>();
-      row.grade = grade_from(r);
-      row.converging = bool_from(r, "converging");
-      row.diverging = bool_from(r, "diverging");
-      b.rows.push_back(row);
-    }
-  } catch (const json::exception& e) {
-    throw SuiteInputError(fmt::format("malformed baseline: {}", e.what()));
-  }
-  if (!(b.default_tolerance > 0.0))
-    throw SuiteInputError("baseline default_tolerance must be > 0");
   return b;
 }
 

@@ -7,33 +7,20 @@
 //      converged in the baseline still converges;
 //   2. analytic reference: every row's grade (Eq. 46) is no worse than the baseline's, and a
 //      row that was converging (or, for the singular problems, diverging, Eq. 47) still is.
-// The baseline file (schema `contact-suite/baseline`, version 2: its case records carry the
-// nodal stress recovery) is written by --update from a results file; it keeps the tolerances
-// it had, also from a baseline of an older version.
+// The baseline file (schema/baseline_file.hpp) is written by --update from a results file; it
+// keeps the tolerances it had.
 
 #include <map>
 #include <string>
 #include <vector>
 
-#include <nlohmann/json.hpp>
-
+#include "schema/baseline_file.hpp"
 #include "suites/case_result.hpp"
 #include "suites/row_verdict.hpp"
 
 namespace cs::suites {
 
-inline constexpr const char* kBaselineSchemaName = "contact-suite/baseline";
-inline constexpr int kBaselineSchemaVersion = 2;
-/// Survives compiler and BLAS differences; far below any change that matters to a grade.
-inline constexpr double kDefaultGateTolerance = 1e-6;
-
-/// A baseline: per-case values and statuses, per-row verdicts, tolerances.
-struct Baseline {
-  double default_tolerance = kDefaultGateTolerance;
-  std::map<std::string, double> tolerances;  ///< per quantity name
-  std::vector<CaseResult> cases;             ///< values, grades and statuses only
-  std::vector<RowVerdict> rows;
-};
+using schema::Baseline;
 
 /// One failed check.
 struct GateFailure {
@@ -52,17 +39,9 @@ struct GateReport {
   bool passed() const { return failures.empty(); }
 };
 
-/// Reads a baseline document; throws SuiteInputError naming the problem (schema, version,
-/// malformed record).
-Baseline baseline_from_json(const nlohmann::json& doc);
-/// The tolerances of a baseline of any version of the schema: {default, per quantity}. What
-/// --update keeps when it rewrites an older baseline. Throws SuiteInputError as above.
-std::pair<double, std::map<std::string, double>> baseline_tolerances_from_json(
-    const nlohmann::json& doc);
-/// A baseline from results, keeping `tolerances` (and the default) from an old one.
-Baseline make_baseline(const std::vector<CaseResult>& cases, double default_tolerance,
-                       const std::map<std::string, double>& tolerances);
-nlohmann::json to_json(const Baseline& baseline);
+/// A baseline from results, with `tolerances` (kept from an old baseline by --update).
+Baseline make_baseline(const std::vector<CaseResult>& cases,
+                       const schema::GateTolerances& tolerances);
 
 /// Runs both checks. Throws SuiteInputError listing the cases found in only one of the two
 /// (the files must cover the same cases).

@@ -1,37 +1,8 @@
 #include "suites/grading.hpp"
 
 #include <cmath>
-#include <string>
-
-#include "suites/suite_error.hpp"
 
 namespace cs::suites {
-
-std::string_view to_string(Grade grade) {
-  switch (grade) {
-    case Grade::e:
-      return "e";
-    case Grade::g:
-      return "g";
-    case Grade::s:
-      return "s";
-    case Grade::u:
-      return "u";
-  }
-  return "?";
-}
-
-Grade parse_grade(std::string_view text) {
-  if (text == "e")
-    return Grade::e;
-  if (text == "g")
-    return Grade::g;
-  if (text == "s")
-    return Grade::s;
-  if (text == "u")
-    return Grade::u;
-  throw SuiteInputError("unknown grade '" + std::string(text) + "' (expected e, g, s or u)");
-}
 
 double error_percent(double value, double exact) {
   return 100.0 * (value - exact) / std::abs(exact);
@@ -46,10 +17,6 @@ Grade grade_from_error(double error_percent) {
   if (e < 5.0)
     return Grade::g;
   return Grade::s;
-}
-
-bool is_worse(Grade grade, Grade reference) {
-  return static_cast<int>(grade) > static_cast<int>(reference);
 }
 
 bool is_converging(double error_c, double error_m, double error_f) {

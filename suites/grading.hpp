@@ -12,28 +12,22 @@
 // Diverging (the study's Eq. 47, singular problems only): |s_C - s_M| < |s_M - s_F|.
 
 #include <optional>
-#include <string_view>
+
+#include "schema/grade.hpp"
 
 namespace cs::suites {
 
-/// The study's accuracy grades, best first.
-enum class Grade { e, g, s, u };
+using schema::Grade;
+using schema::is_worse;
 
 /// Percentage differences below this count as equal in the convergence verdict.
 inline constexpr double kErrorResolutionPercent = 0.01;
-
-std::string_view to_string(Grade grade);
-/// Parses "e", "g", "s" or "u"; throws SuiteInputError otherwise.
-Grade parse_grade(std::string_view text);
 
 /// Signed percentage error 100 (value - exact) / |exact|. Precondition: exact != 0, finite.
 double error_percent(double value, double exact);
 
 /// Eq. 46 on the magnitude of a percentage error.
 Grade grade_from_error(double error_percent);
-
-/// True when `grade` is worse than `reference` (u worse than s worse than g worse than e).
-bool is_worse(Grade grade, Grade reference);
 
 /// The converging verdict for the errors (percent, signed or not) on meshes C, M, F.
 bool is_converging(double error_c, double error_m, double error_f);

@@ -1,27 +1,24 @@
 #pragma once
-// What is known about each of the study's problems before anything is built: its title,
-// analysis type, graded quantities, settable parameters and the study's tables for it.
-// Read by `contact-suite list`, by the problem builders and by the case validation.
+// The catalogue of the battery's problems, built from their descriptors (one file each under
+// suites/problems/): read by `contact-suite list`, the case matrix, the case validation, the
+// builders and the results file's `problems` records.
 
-#include <string>
 #include <vector>
 
-#include "suites/case_spec.hpp"
-#include "suites/parameters.hpp"
+#include "suites/case_result.hpp"
+#include "suites/problem_descriptor.hpp"
 
 namespace cs::suites {
 
-/// The catalog entry of one problem.
-struct ProblemInfo {
-  ProblemId id;
-  std::string title;                    ///< e.g. "Hertz contact of a cylinder (plane strain)"
-  bool axisymmetric;                    ///< plane strain otherwise
-  std::vector<std::string> quantities;  ///< graded quantities, e.g. {"sigma_c", "sigma_h"}
-  std::vector<ParameterSpec> parameters;
-  std::string study_tables;  ///< the study's appendix tables for it, e.g. "7a-7d, 8a-8d"
-};
+/// The descriptor of `id`.
+const ProblemDescriptor& problem_descriptor(ProblemId id);
 
-/// The catalog entry of `id`.
-const ProblemInfo& problem_info(ProblemId id);
+/// True for the axisymmetric problems.
+bool is_axisymmetric(ProblemId id);
+/// True for the singular problems (flat punches): graded for divergence, not accuracy.
+bool is_singular(ProblemId id);
+
+/// The schema records of the problems that have a case in `cases`, in battery order.
+std::vector<schema::ProblemRecord> problem_records(const std::vector<CaseResult>& cases);
 
 }  // namespace cs::suites

@@ -90,7 +90,7 @@ void grade_case(const ProblemSetup& setup, const std::vector<solver::SurfaceStre
     for (const auto& s : surface)
       values.push_back(normalized(s.stress, rule.component, p));
     QuantityResult q;
-    q.name = rule.name;
+    q.quantity = rule.quantity;
     q.exact = rule.exact;
     q.study_exact = rule.study_exact;
     const int i = sample_index(x_nodal, values, rule.where, a);
@@ -149,7 +149,7 @@ ExactProfile exact_profile(const ProblemSetup& setup) {
 void mark_missing(const ProblemSetup& setup, CaseResult& result) {
   for (const QuantityRule& rule : setup.quantities) {
     QuantityResult q;
-    q.name = rule.name;
+    q.quantity = rule.quantity;
     q.exact = rule.exact;
     q.study_exact = rule.study_exact;
     q.value = std::nan("");
@@ -161,7 +161,7 @@ void mark_missing(const ProblemSetup& setup, CaseResult& result) {
 }  // namespace
 
 solver::ContactSettings contact_settings(const CaseSpec& spec) {
-  const Parameters params(problem_info(spec.problem).parameters, spec.overrides,
+  const Parameters params(problem_descriptor(spec.problem).parameters, spec.overrides,
                           to_string(spec.problem));
   solver::ContactSettings s;
   s.algorithm = to_solver(spec.algorithm);

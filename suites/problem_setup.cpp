@@ -2,34 +2,22 @@
 
 #include "suites/problem_catalog.hpp"
 #include "suites/problems/problem_builders.hpp"
-#include "suites/suite_error.hpp"
 
 namespace cs::suites {
 
 ProblemSetup build_problem(const CaseSpec& spec) {
-  const Parameters params(problem_info(spec.problem).parameters, spec.overrides,
-                          to_string(spec.problem));
-  switch (spec.problem) {
-    case ProblemId::P_p:
-    case ProblemId::P_a:
-    case ProblemId::Pprime_p:
-    case ProblemId::Pprime_a:
-      return problems::build_patch_test(spec, params);
-    case ProblemId::H_p:
-    case ProblemId::H_a:
-      return problems::build_hertz(spec, params);
-    case ProblemId::S_1:
-    case ProblemId::S_1_3:
-    case ProblemId::S_1_7:
-      return problems::build_steuermann(spec, params);
-    case ProblemId::F_p:
-    case ProblemId::F_a:
-      return problems::build_flat_punch(spec, params);
-  }
-  throw SuiteInputError("unknown problem");
+  const ProblemDescriptor& d = problem_descriptor(spec.problem);
+  const Parameters params(d.parameters, spec.overrides, to_string(spec.problem));
+  return d.build(spec, params);
 }
 
 namespace problems {
+
+std::vector<ParameterSpec> study_parameters(std::vector<ParameterSpec> extra) {
+  auto params = common_parameters(kStudyPOverE);
+  params.insert(params.end(), extra.begin(), extra.end());
+  return params;
+}
 
 ProblemSetup start_setup(const CaseSpec& spec, const Parameters& params,
                          const StudyMeshSpec& mesh_spec, const solver::RigidProfile& rigid) {

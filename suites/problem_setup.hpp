@@ -13,6 +13,7 @@
 
 #include "solver/contact/contact_analysis.hpp"
 #include "solver/model.hpp"
+#include "schema/quantity.hpp"
 #include "suites/case_spec.hpp"
 #include "suites/parameters.hpp"
 #include "suites/study_meshes.hpp"
@@ -31,7 +32,7 @@ enum class StressComponent { SigmaZ, SigmaX };
 
 /// One graded quantity of a problem.
 struct QuantityRule {
-  std::string name;  ///< sigma_z_max | sigma_c | sigma_h | sigma_c_star
+  schema::Quantity quantity = schema::Quantity::sigma_c;
   SamplePoint where = SamplePoint::MaxOnSurface;
   StressComponent component = StressComponent::SigmaZ;
   double exact = 0.0;                 ///< the physically consistent exact value (inf: singular)

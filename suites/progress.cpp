@@ -30,6 +30,7 @@ void ProgressReporter::case_done(const CaseResult& r) {
       ++not_converged_;
       break;
     case CaseStatus::failed:
+    case CaseStatus::timeout:
       ++failed_;
       break;
   }

@@ -3,19 +3,13 @@
 #include <cmath>
 #include <map>
 
+#include "suites/problem_catalog.hpp"
+
 namespace cs::suites {
 namespace {
 
-/// The case id with the mesh level left out: cases sharing it form one row per quantity.
-std::string row_key(const CaseSpec& spec, const std::string& quantity) {
-  CaseSpec s = spec;
-  s.mesh = MeshLevel::C;
-  std::string id = case_id(s);
-  // case_id is "problem/mesh/..."; drop the mesh field.
-  const auto first = id.find('/');
-  const auto second = id.find('/', first + 1);
-  id.erase(first, second - first);
-  return id + "/" + quantity;
+std::string row_key(const CaseSpec& spec, Quantity quantity) {
+  return schema::case_key(spec) + "/" + std::string(to_string(quantity));
 }
 
 void apply_verdicts(RowVerdict& row) {
@@ -29,7 +23,7 @@ void apply_verdicts(RowVerdict& row) {
   const bool complete = row.values[0] && row.values[1] && row.values[2];
   if (!complete)
     return;
-  if (is_singular(row.problem)) {
+  if (is_singular(row.spec.problem)) {
     row.diverging = is_diverging(*row.values[0], *row.values[1], *row.values[2]);
     row.grade.reset();  // no finite exact value to grade against
     row.graded_mesh.reset();
@@ -45,21 +39,18 @@ std::vector<RowVerdict> make_row_verdicts(const std::vector<CaseResult>& cases) 
   std::vector<std::string> order;  // first-seen order keeps the runner's (study) order
   for (const auto& c : cases) {
     for (const auto& q : c.quantities) {
-      const std::string key = row_key(c.spec, q.name);
+      const std::string key = row_key(c.spec, q.quantity);
       auto [it, inserted] = rows.try_emplace(key);
       RowVerdict& row = it->second;
       if (inserted) {
         order.push_back(key);
         row.id = key;
-        row.problem = c.spec.problem;
-        row.element = c.spec.element;
-        row.algorithm = c.spec.algorithm;
-        row.contact = c.spec.contact;
-        row.target = c.spec.target;
-        row.recovery = c.spec.recovery;
-        row.quantity = q.name;
+        row.spec = c.spec;
+        row.spec.mesh = MeshLevel::C;
+        row.quantity = q.quantity;
       }
-      if (c.status == CaseStatus::failed || !std::isfinite(q.value))
+      if (c.status == CaseStatus::failed || c.status == CaseStatus::timeout ||
+          !std::isfinite(q.value))
         continue;
       const auto level = static_cast<std::size_t>(c.spec.mesh);
       row.values[level] = q.value;

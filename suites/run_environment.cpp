@@ -53,7 +53,7 @@ nlohmann::json run_environment() {
   uname(&un);
   char host[256] = {0};
   gethostname(host, sizeof host - 1);
-  return {{"contact_suite_version", CONTACT_SUITE_VERSION},
+  return {{"contact_suite_version", contact_suite_version()},
           {"hostname", host},
           {"os", fmt::format("{} {} {}", un.sysname, un.release, un.machine)},
           {"cpu", cpu_model()},
@@ -82,6 +82,10 @@ bool set_blas_threads(int threads) {
     return true;
   }
   return false;
+}
+
+std::string contact_suite_version() {
+  return CONTACT_SUITE_VERSION;
 }
 
 }  // namespace cs::suites

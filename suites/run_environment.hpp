@@ -8,6 +8,9 @@ namespace cs::suites {
 /// The environment of this process as a JSON object (results.json `run.environment`).
 nlohmann::json run_environment();
 
+/// This build's version: the project version and, in a git checkout, the commit.
+std::string contact_suite_version();
+
 /// The current UTC time in ISO 8601 ("2026-11-22T10:00:00Z").
 std::string utc_now_iso8601();
 

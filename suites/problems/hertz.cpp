@@ -42,7 +42,7 @@ ProblemSetup build_hertz_plane(const CaseSpec& spec, const Parameters& params) {
 
   StudyMeshSpec mesh{.problem = spec.problem,
                      .level = spec.mesh,
-                     .element = spec.element,
+                     .element = to_solver(spec.element),
                      .a = contact.contact_half_width_a,
                      .R = R,
                      .options = {}};
@@ -67,9 +67,8 @@ ProblemSetup build_hertz_plane(const CaseSpec& spec, const Parameters& params) {
   };
   const auto surface = oracles::mcewen_stress(field, {0.0, 0.0});
   const double sigma_c = oracles::hertz_plane_pressure(contact, 0.0) / contact.p_mean;
-  setup.quantities.push_back(
-      {"sigma_c", SamplePoint::AtAxis, StressComponent::SigmaZ, sigma_c, std::nullopt});
-  setup.quantities.push_back({"sigma_h", SamplePoint::AtAxis, StressComponent::SigmaX,
+  setup.quantities.push_back({schema::Quantity::sigma_c, SamplePoint::AtAxis, StressComponent::SigmaZ, sigma_c, std::nullopt});
+  setup.quantities.push_back({schema::Quantity::sigma_h, SamplePoint::AtAxis, StressComponent::SigmaX,
                               -surface.sigma_x / contact.p_mean, std::nullopt});
   return setup;
 }
@@ -82,7 +81,7 @@ ProblemSetup build_hertz_axi(const CaseSpec& spec, const Parameters& params) {
 
   StudyMeshSpec mesh{.problem = spec.problem,
                      .level = spec.mesh,
-                     .element = spec.element,
+                     .element = to_solver(spec.element),
                      .a = contact.contact_radius_a,
                      .R = R,
                      .options = {}};
@@ -106,7 +105,7 @@ ProblemSetup build_hertz_axi(const CaseSpec& spec, const Parameters& params) {
   setup.exact_pressure_over_p = [contact](double r) {
     return oracles::hertz_axi_pressure(contact, r) / contact.p_mean;
   };
-  setup.quantities.push_back({"sigma_c", SamplePoint::AtAxis, StressComponent::SigmaZ,
+  setup.quantities.push_back({schema::Quantity::sigma_c, SamplePoint::AtAxis, StressComponent::SigmaZ,
                               oracles::hertz_axi_pressure(contact, 0.0) / contact.p_mean,
                               std::nullopt});
   return setup;

@@ -19,7 +19,7 @@ ProblemSetup build_patch_test(const CaseSpec& spec, const Parameters& params) {
   StudyMeshSpec mesh;
   mesh.problem = spec.problem;
   mesh.level = spec.mesh;
-  mesh.element = spec.element;
+  mesh.element = to_solver(spec.element);
   mesh.a = 1.0;
   // A rigid plane z = 0 with the rigid side z < 0: its normal points into the slab (+z).
   const solver::RigidProfile rigid = solver::RigidPlane{{0.0, 0.0}, {0.0, 1.0}};
@@ -38,8 +38,7 @@ ProblemSetup build_patch_test(const CaseSpec& spec, const Parameters& params) {
                            ? -oracles::patch_test_axi_stress(load, {0.0, 0.0}).sigma_z / setup.p
                            : -oracles::patch_test_plane_stress(load, {0.0, 0.0}).sigma_z / setup.p;
   setup.exact_pressure_over_p = [a = mesh.a, exact](double x) { return x <= a ? exact : 0.0; };
-  setup.quantities.push_back(
-      {"sigma_z_max", SamplePoint::MaxOnSurface, StressComponent::SigmaZ, exact, std::nullopt});
+  setup.quantities.push_back({schema::Quantity::sigma_z_max, SamplePoint::MaxOnSurface, StressComponent::SigmaZ, exact, std::nullopt});
   return setup;
 }
 

@@ -2,9 +2,18 @@
 // The builders of the study's problems, one file per family (patch test, Hertz, Steuermann,
 // flat punch), and the pieces they share.
 
+#include "suites/problem_catalog.hpp"
 #include "suites/problem_setup.hpp"
 
 namespace cs::suites::problems {
+
+/// The study fixes p/E = 1e-3 for the Steuermann problems; it gives no value for the others,
+/// where the normalized answers do not depend on it (linear elasticity, small strains). We
+/// use 1e-3 throughout so that every indentation is small.
+inline constexpr double kStudyPOverE = 1e-3;
+
+/// The parameters every problem has (suites/parameters.hpp), then `extra`.
+std::vector<ParameterSpec> study_parameters(std::vector<ParameterSpec> extra);
 
 ProblemSetup build_patch_test(const CaseSpec& spec, const Parameters& params);
 ProblemSetup build_hertz(const CaseSpec& spec, const Parameters& params);

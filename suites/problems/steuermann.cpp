@@ -55,7 +55,7 @@ ProblemSetup build_steuermann(const CaseSpec& spec, const Parameters& params) {
 
   StudyMeshSpec mesh{.problem = spec.problem,
                      .level = spec.mesh,
-                     .element = spec.element,
+                     .element = to_solver(spec.element),
                      .a = a,
                      .b = b,
                      .r_e = r_e,
@@ -84,7 +84,7 @@ ProblemSetup build_steuermann(const CaseSpec& spec, const Parameters& params) {
   setup.exact_pressure_over_p = [contact = exact.contact, p = exact.p](double x) {
     return oracles::steuermann_pressure(contact, x) / p;
   };
-  setup.quantities.push_back({"sigma_c", SamplePoint::MaxOnSurface, StressComponent::SigmaZ,
+  setup.quantities.push_back({schema::Quantity::sigma_c, SamplePoint::MaxOnSurface, StressComponent::SigmaZ,
                               exact.peak_over_p, study.peak_over_p});
   return setup;
 }

@@ -3,44 +3,45 @@
 #include <gtest/gtest.h>
 
 #include "suites/case_spec.hpp"
+#include "schema/schema_error.hpp"
 #include "suites/suite_error.hpp"
 
 namespace cs::suites {
 namespace {
 
 TEST(CaseSpec, EveryNameRoundTrips) {
-  for (auto p : all_problems())
-    EXPECT_EQ(parse_problem(to_string(p)), p);
-  for (auto m : all_mesh_levels())
-    EXPECT_EQ(parse_mesh_level(to_string(m)), m);
-  for (auto e : all_elements())
-    EXPECT_EQ(parse_element(to_string(e)), e);
-  for (auto a : all_algorithms())
-    EXPECT_EQ(parse_algorithm(to_string(a)), a);
-  for (auto c : all_contacts())
-    EXPECT_EQ(parse_contact(to_string(c)), c);
-  EXPECT_EQ(all_problems().size(), 11u);
+  for (auto p : values<ProblemId>())
+    EXPECT_EQ(parse<ProblemId>(to_string(p)), p);
+  for (auto m : values<MeshLevel>())
+    EXPECT_EQ(parse<MeshLevel>(to_string(m)), m);
+  for (auto e : values<Element>())
+    EXPECT_EQ(parse<Element>(to_string(e)), e);
+  for (auto a : values<Algorithm>())
+    EXPECT_EQ(parse<Algorithm>(to_string(a)), a);
+  for (auto c : values<ContactKind>())
+    EXPECT_EQ(parse<ContactKind>(to_string(c)), c);
+  EXPECT_EQ(values<ProblemId>().size(), 11u);
   // 11 problems x 3 meshes x 2 elements x 5 algorithms x 2 discretizations: the study's 660.
-  EXPECT_EQ(all_problems().size() * all_mesh_levels().size() * all_elements().size() *
-                all_algorithms().size() * study_contacts().size(),
+  EXPECT_EQ(values<ProblemId>().size() * values<MeshLevel>().size() * values<Element>().size() *
+                values<Algorithm>().size() * study_contacts().size(),
             660u);
 }
 
 TEST(CaseSpec, StudyAliasesAreAccepted) {
-  EXPECT_EQ(parse_algorithm("IMC"), Algorithm::MPC);
-  EXPECT_EQ(parse_element("8Q"), ElementType::Q8);
-  EXPECT_EQ(parse_problem("P'_p"), ProblemId::Pprime_p);
+  EXPECT_EQ(parse<Algorithm>("IMC"), Algorithm::MPC);
+  EXPECT_EQ(parse<Element>("8Q"), Element::Q8);
+  EXPECT_EQ(parse<ProblemId>("P'_p"), ProblemId::Pprime_p);
 }
 
 TEST(CaseSpec, UnknownNamesListTheAcceptedOnes) {
   try {
-    parse_algorithm("XYZ");
+    parse<Algorithm>("XYZ");
     FAIL() << "no exception";
-  } catch (const SuiteInputError& e) {
+  } catch (const schema::SchemaError& e) {
     EXPECT_NE(std::string(e.what()).find("AL, PM, LMP, PLM, MPC"), std::string::npos);
   }
-  EXPECT_THROW(parse_problem("H_x"), SuiteInputError);
-  EXPECT_THROW(parse_contact("SS"), SuiteInputError);
+  EXPECT_THROW(parse<ProblemId>("H_x"), schema::SchemaError);
+  EXPECT_THROW(parse<ContactKind>("SS"), schema::SchemaError);
 }
 
 TEST(CaseSpec, OverridesParseNumbersAndRatios) {
@@ -68,10 +69,10 @@ TEST(CaseSpec, CaseIdNamesEveryAxis) {
 }
 
 TEST(CaseSpec, RecoveryNamesRoundTripAndBadOnesAreRejected) {
-  for (Recovery r : all_recoveries())
-    EXPECT_EQ(parse_recovery(to_string(r)), r);
+  for (Recovery r : values<Recovery>())
+    EXPECT_EQ(parse<Recovery>(to_string(r)), r);
   EXPECT_EQ(CaseSpec{}.recovery, Recovery::spr);
-  EXPECT_THROW(parse_recovery("smoothed"), SuiteInputError);
+  EXPECT_THROW(parse<Recovery>("smoothed"), schema::SchemaError);
 }
 
 }  // namespace

@@ -38,7 +38,7 @@ TEST(EngineDeterminism, OneAndTwoWorkersGiveIdenticalValuesOnRealProblems) {
 
 TEST(EngineDeterminism, MortarPatchTestsAreExact) {
   for (ProblemId p : {ProblemId::P_p, ProblemId::Pprime_p, ProblemId::P_a, ProblemId::Pprime_a}) {
-    for (ElementType e : {ElementType::Q4, ElementType::Q8}) {
+    for (Element e : {Element::Q4, Element::Q8}) {
       CaseSpec spec{.problem = p,
                     .mesh = MeshLevel::C,
                     .element = e,

@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include "schema/baseline_file.hpp"
+#include "schema/schema_error.hpp"
 #include "suites/gate.hpp"
 #include "suites/suite_error.hpp"
 
@@ -18,7 +20,7 @@ CaseResult hertz_case(MeshLevel mesh, double value) {
   r.spec.algorithm = Algorithm::AL;
   r.status = CaseStatus::converged;
   QuantityResult q;
-  q.name = "sigma_c";
+  q.quantity = Quantity::sigma_c;
   q.exact = 4.0 / M_PI;
   q.value = value;
   q.error_percent = error_percent(value, q.exact);
@@ -35,7 +37,7 @@ std::vector<CaseResult> good_results() {
 
 Baseline good_baseline() {
   // Round trip through JSON, as the gate reads the committed file.
-  return baseline_from_json(to_json(make_baseline(good_results(), kDefaultGateTolerance, {})));
+  return schema::baseline_from_json(schema::to_json(make_baseline(good_results(), {})), "B");
 }
 
 bool has_failure(const GateReport& r, const std::string& id, const std::string& check) {
@@ -94,14 +96,14 @@ TEST(Gate, LostDivergenceFails) {
   auto punch = [](MeshLevel m, double v) {
     CaseResult r = hertz_case(m, v);
     r.spec.problem = ProblemId::F_p;
-    r.quantities[0].name = "sigma_c_star";
+    r.quantities[0].quantity = Quantity::sigma_c_star;
     r.quantities[0].exact = INFINITY;
     r.quantities[0].error_percent = 0.0;
     return r;
   };
   const std::vector<CaseResult> diverging{punch(MeshLevel::C, 2.0), punch(MeshLevel::M, 2.4),
                                           punch(MeshLevel::F, 3.0)};
-  Baseline b = make_baseline(diverging, kDefaultGateTolerance, {{"sigma_c_star", 1.0}});
+  Baseline b = make_baseline(diverging, {schema::kDefaultGateTolerance, {{Quantity::sigma_c_star, 1.0}}});
   auto now = diverging;
   now[2].quantities[0].value = 2.5;  // increments shrink: no longer diverging
   EXPECT_TRUE(has_failure(run_gate(b, now), "F_p/Q4/AL/ss/sigma_c_star", "diverging"));
@@ -120,28 +122,29 @@ TEST(Gate, DifferentCasesAreBadInputListingThem) {
 }
 
 TEST(Gate, BaselineSchemaIsChecked) {
-  auto doc = to_json(make_baseline(good_results(), kDefaultGateTolerance, {}));
+  auto doc = schema::to_json(make_baseline(good_results(), {}));
   doc["schema_version"] = 99;
-  EXPECT_THROW(baseline_from_json(doc), SuiteInputError);
-  EXPECT_THROW(baseline_from_json(nlohmann::json::parse(R"({"schema":"x"})")), SuiteInputError);
-  doc = to_json(make_baseline(good_results(), kDefaultGateTolerance, {}));
+  EXPECT_THROW(schema::baseline_from_json(doc, "B"), schema::SchemaError);
+  EXPECT_THROW(schema::baseline_from_json(nlohmann::json::parse(R"({"schema":"x"})"), "B"),
+               schema::SchemaError);
+  doc = schema::to_json(make_baseline(good_results(), {}));
   doc.erase("rows");
-  EXPECT_THROW(baseline_from_json(doc), SuiteInputError);
+  EXPECT_THROW(schema::baseline_from_json(doc, "B"), schema::SchemaError);
 }
 
 // Requirement: --update keeps the tolerances of a baseline of an older schema version (whose
 // case records it can no longer read), and still refuses a file that is not a baseline.
 TEST(Gate, TolerancesAreReadFromAnOlderBaseline) {
-  auto doc = to_json(make_baseline(good_results(), 1e-5, {{"sigma_c", 1e-3}}));
+  auto doc = schema::to_json(make_baseline(good_results(), {1e-5, {{Quantity::sigma_c, 1e-3}}}));
   doc["schema_version"] = 1;
   for (auto& c : doc["cases"])
     c.erase("recovery");  // a version-1 case record
-  EXPECT_THROW(baseline_from_json(doc), SuiteInputError);
-  const auto [default_tolerance, tolerances] = baseline_tolerances_from_json(doc);
-  EXPECT_EQ(default_tolerance, 1e-5);
-  EXPECT_EQ(tolerances.at("sigma_c"), 1e-3);
-  EXPECT_THROW(baseline_tolerances_from_json(nlohmann::json::parse(R"({"schema":"x"})")),
-               SuiteInputError);
+  EXPECT_THROW(schema::baseline_from_json(doc, "B"), schema::SchemaError);
+  const auto tolerances = schema::tolerances_from_json(doc, "B");
+  EXPECT_EQ(tolerances.default_tolerance, 1e-5);
+  EXPECT_EQ(tolerances.of(Quantity::sigma_c), 1e-3);
+  EXPECT_THROW(schema::tolerances_from_json(nlohmann::json::parse(R"({"schema":"x"})"), "B"),
+               schema::SchemaError);
 }
 
 }  // namespace

@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include "schema/schema_error.hpp"
+
 #include "suites/grading.hpp"
 #include "suites/suite_error.hpp"
 
@@ -59,9 +61,9 @@ TEST(Grading, GradeOrderAndNames) {
   EXPECT_TRUE(is_worse(Grade::u, Grade::s));
   EXPECT_FALSE(is_worse(Grade::e, Grade::g));
   for (Grade g : {Grade::e, Grade::g, Grade::s, Grade::u}) {
-    EXPECT_EQ(parse_grade(to_string(g)), g);
+    EXPECT_EQ(schema::parse<Grade>(schema::to_string(g)), g);
   }
-  EXPECT_THROW(parse_grade("x"), SuiteInputError);
+  EXPECT_THROW(schema::parse<Grade>("x"), schema::SchemaError);
 }
 
 }  // namespace

@@ -22,10 +22,10 @@ struct HertzErrors {
 
 HertzErrors hertz_errors(Recovery recovery) {
   HertzErrors out;
-  for (MeshLevel mesh : all_mesh_levels()) {
+  for (MeshLevel mesh : values<MeshLevel>()) {
     const CaseSpec spec{.problem = ProblemId::H_p,
                         .mesh = mesh,
-                        .element = ElementType::Q4,
+                        .element = Element::Q4,
                         .algorithm = Algorithm::LMP,
                         .contact = ContactKind::ss,
                         .recovery = recovery,
@@ -34,7 +34,7 @@ HertzErrors hertz_errors(Recovery recovery) {
     const CaseResult r = executor.run(spec);
     EXPECT_EQ(r.status, CaseStatus::converged) << case_id(spec) << ": " << r.reason;
     const QuantityResult& q = r.quantities.at(0);
-    EXPECT_EQ(q.name, "sigma_c");
+    EXPECT_EQ(q.quantity, Quantity::sigma_c);
     out.sigma_c.push_back(q.error_percent);
     if (mesh == MeshLevel::F && q.contact_pressure)
       out.pressure_f = 100.0 * (*q.contact_pressure - q.exact) / q.exact;
@@ -80,7 +80,7 @@ TEST(NodalStressAccuracy, ExtrapolatedQ4StressesCarryAFirstOrderBias) {
 TEST(NodalStressAccuracy, RecoveriesOfOneCaseShareItsContactSolution) {
   CaseSpec spec{.problem = ProblemId::H_p,
                 .mesh = MeshLevel::C,
-                .element = ElementType::Q4,
+                .element = Element::Q4,
                 .algorithm = Algorithm::AL,
                 .contact = ContactKind::ns,
                 .overrides = {}};

@@ -10,7 +10,7 @@ namespace cs::suites {
 namespace {
 
 TEST(Parameters, DefaultsAreTheStudysValues) {
-  const auto& s13 = problem_info(ProblemId::S_1_3);
+  const auto& s13 = problem_descriptor(ProblemId::S_1_3);
   const Parameters p(s13.parameters, {}, "S_1_3");
   EXPECT_EQ(p.get("nu"), 0.25);        // the study's nu = 1/4
   EXPECT_EQ(p.get("p_over_E"), 1e-3);  // the study's p/E = 1/1000
@@ -20,14 +20,14 @@ TEST(Parameters, DefaultsAreTheStudysValues) {
 }
 
 TEST(Parameters, OverridesReplaceDefaults) {
-  const Parameters p(problem_info(ProblemId::S_1_3).parameters, {{"re_over_b", 0.25}}, "S_1_3");
+  const Parameters p(problem_descriptor(ProblemId::S_1_3).parameters, {{"re_over_b", 0.25}}, "S_1_3");
   EXPECT_EQ(p.get("re_over_b"), 0.25);
   EXPECT_TRUE(p.overridden("re_over_b"));
 }
 
 TEST(Parameters, UnknownKeyNamesTheProblemAndItsKeys) {
   try {
-    Parameters(problem_info(ProblemId::H_p).parameters, {{"re_over_b", 0.25}}, "H_p");
+    Parameters(problem_descriptor(ProblemId::H_p).parameters, {{"re_over_b", 0.25}}, "H_p");
     FAIL() << "no exception";
   } catch (const SuiteInputError& e) {
     const std::string what = e.what();
@@ -37,7 +37,7 @@ TEST(Parameters, UnknownKeyNamesTheProblemAndItsKeys) {
 }
 
 TEST(Parameters, OutOfRangeValuesAreRejected) {
-  const auto& params = problem_info(ProblemId::H_p).parameters;
+  const auto& params = problem_descriptor(ProblemId::H_p).parameters;
   EXPECT_THROW(Parameters(params, {{"nu", 0.5}}, "H_p"), SuiteInputError);  // nu < 0.5
   EXPECT_THROW(Parameters(params, {{"nu", -0.1}}, "H_p"), SuiteInputError);
   EXPECT_THROW(Parameters(params, {{"fkn", 0.0}}, "H_p"), SuiteInputError);  // fkn > 0
@@ -47,8 +47,8 @@ TEST(Parameters, OutOfRangeValuesAreRejected) {
 }
 
 TEST(ProblemCatalog, EveryProblemHasAQuantityAndTheCommonParameters) {
-  for (auto id : all_problems()) {
-    const auto& info = problem_info(id);
+  for (auto id : values<ProblemId>()) {
+    const auto& info = problem_descriptor(id);
     EXPECT_EQ(info.id, id);
     EXPECT_FALSE(info.quantities.empty());
     EXPECT_EQ(info.axisymmetric, is_axisymmetric(id));

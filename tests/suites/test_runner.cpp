@@ -24,7 +24,7 @@ class FakeExecutor : public GroupExecutor {
     CaseResult r;
     r.status = CaseStatus::converged;
     QuantityResult q;
-    q.name = "sigma_c";
+    q.quantity = Quantity::sigma_c;
     q.value = static_cast<double>(case_id(spec).size()) + static_cast<int>(spec.algorithm);
     r.quantities.push_back(q);
     return r;
@@ -85,7 +85,7 @@ TEST(Runner, SharesOneModelPerGroupAndKeepsOrder) {
 TEST(Runner, FailuresBecomeResultsAndTheRunGoesOn) {
   const auto cases = small_matrix();
   auto factory = [](const CaseSpec& s) -> std::unique_ptr<GroupExecutor> {
-    if (s.problem == ProblemId::S_1 && s.mesh == MeshLevel::M && s.element == ElementType::Q8) {
+    if (s.problem == ProblemId::S_1 && s.mesh == MeshLevel::M && s.element == Element::Q8) {
       throw std::invalid_argument("mesh too coarse for the contact width");
     }
     return std::make_unique<FakeExecutor>(s);

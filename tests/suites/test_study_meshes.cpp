@@ -72,7 +72,7 @@ TEST(StudyMeshes, Table1Values) {
 
 TEST(StudyMeshes, StructuredCountsEqualTable1AndElementsAreValid) {
   for (ProblemId p : kStructured) {
-    for (MeshLevel level : all_mesh_levels()) {
+    for (MeshLevel level : values<MeshLevel>()) {
       for (ElementType element : {ElementType::Q4, ElementType::Q8}) {
         const StudyMesh m = build_study_mesh(spec_for(p, level, element));
         const std::string what =
@@ -146,7 +146,7 @@ std::pair<int, int> aligned_surface_nodes(const StudyMesh& m, double x_max) {
 }
 
 TEST(StudyMeshes, PatchTestNodesMatchButPrimeNodesDoNot) {
-  for (MeshLevel level : all_mesh_levels()) {
+  for (MeshLevel level : values<MeshLevel>()) {
     for (ElementType element : {ElementType::Q4, ElementType::Q8}) {
       const StudyMesh p = build_study_mesh(spec_for(ProblemId::P_p, level, element));
       const auto [aligned_p, under_p] = aligned_surface_nodes(p, 1.0);
@@ -173,7 +173,7 @@ TEST(StudyMeshes, IndenterNodesMatchForHertzAndFlatPunch) {
 
 TEST(StudyMeshes, SteuermannCountsWithin5PercentOfTable1AtEveryLevel) {
   for (ProblemId p : kSteuermann) {
-    for (MeshLevel level : all_mesh_levels()) {
+    for (MeshLevel level : values<MeshLevel>()) {
       const StudyMeshSpec spec = spec_for(p, level, ElementType::Q4);
       const StudyMesh m = build_study_mesh(spec);
       const double table = table1_elements(p, level);

@@ -1,0 +1,44 @@
+#pragma once
+// One analysis of the battery: its value on every case axis (schema/case_axes.hpp) and any
+// parameter overrides, and its stable identifier.
+
+#include <map>
+#include <string>
+
+#include "schema/case_axes.hpp"
+
+namespace cs::schema {
+
+/// One analysis. `overrides` holds `--set name=value` pairs, validated by the problem.
+struct CaseSpec {
+  ProblemId problem = ProblemId::P_p;
+  MeshLevel mesh = MeshLevel::C;
+  Element element = Element::Q4;
+  Algorithm algorithm = Algorithm::LMP;
+  ContactKind contact = ContactKind::ss;
+  TargetKind target = TargetKind::Discretized;
+  Recovery recovery = Recovery::spr;
+  SolverKind solver = SolverKind::builtin;
+  /// The name of the code for imported results (e.g. "abaqus-2024"); empty otherwise.
+  std::string solver_name;
+  std::map<std::string, double> overrides;
+
+  friend bool operator==(const CaseSpec&, const CaseSpec&) = default;
+};
+
+/// The solver as results.json and the report name it: "builtin", "calculix", or the imported
+/// code's own name.
+std::string solver_label(const CaseSpec& spec);
+
+/// A stable identifier of a case: "H_p/F/Q4/LMP/ss" (+ "/rigid", "/extrapolated", "/k=v"
+/// overrides, and "/@calculix" or "/@<name>" for a solver other than ours).
+std::string case_id(const CaseSpec& spec);
+
+/// True for the study's option sets: our solver, a discretized target, patch-recovered nodal
+/// stresses and no parameter overrides (the "baseline" rows of the report).
+bool is_baseline(const CaseSpec& spec);
+
+/// The case id less its mesh field: "H_p/Q4/LMP/ss" (the key of a row, without quantity).
+std::string case_key(const CaseSpec& spec);
+
+}  // namespace cs::schema

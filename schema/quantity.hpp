@@ -1,0 +1,51 @@
+#pragma once
+// The graded quantities, normalized by p and positive in compression (docs/conventions.md).
+// Where a quantity is sampled (the axis, the peak, the punch edge) is the problem's: see its
+// descriptor in suites/problems/.
+
+#include <cstdint>
+#include <string_view>
+
+#include "schema/name_table.hpp"
+
+namespace cs::schema {
+
+enum class Quantity : std::uint8_t {
+  sigma_z_max,   ///< -sigma_z^max/p: the largest vertical stress on the surface (patch tests)
+  sigma_c,       ///< -sigma_z/p at the contact centre (H) or its peak on z = 0 (S)
+  sigma_h,       ///< -sigma_x(0,0)/p: the horizontal stress at the contact centre (H_p)
+  sigma_c_star,  ///< -sigma_z(a,0)/p: the contact stress at a flat punch's edge (singular)
+};
+constexpr std::string_view axis_name(Quantity) {
+  return "quantity";
+}
+constexpr AxisEntry entry(Quantity v) {
+  switch (v) {
+    case Quantity::sigma_z_max:
+      return {"sigma_z_max", "", "σ̄<sub>z</sub>"};
+    case Quantity::sigma_c:
+      return {"sigma_c", "", "σ̄<sub>c</sub>"};
+    case Quantity::sigma_h:
+      return {"sigma_h", "", "σ̄<sub>h</sub>"};
+    case Quantity::sigma_c_star:
+      return {"sigma_c_star", "", "σ̄<sub>c</sub><sup>*</sup>"};
+  }
+  return {};
+}
+
+/// What a quantity is, in words, for the report's catalogue.
+constexpr std::string_view description(Quantity v) {
+  switch (v) {
+    case Quantity::sigma_z_max:
+      return "maximum vertical stress";
+    case Quantity::sigma_c:
+      return "contact stress";
+    case Quantity::sigma_h:
+      return "horizontal stress";
+    case Quantity::sigma_c_star:
+      return "contact stress at the punch edge";
+  }
+  return {};
+}
+
+}  // namespace cs::schema

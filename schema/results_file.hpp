@@ -1,0 +1,77 @@
+#pragma once
+// results.json (schema `contact-suite/results`, docs/results-schema.md): the one file a run
+// writes and the gate, the report and the scripts read. This is its only reader and writer.
+// Bump kResultsSchemaVersion on any change a reader would notice.
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "schema/case_result.hpp"
+#include "schema/problem_record.hpp"
+#include "schema/row_verdict.hpp"
+
+namespace cs::schema {
+
+inline constexpr const char* kResultsSchemaName = "contact-suite/results";
+inline constexpr int kResultsSchemaVersion = 3;
+
+/// Which slice of a sharded run a results file holds (`run --shard K/N`).
+struct ShardInfo {
+  int index = 1;            ///< K, 1-based
+  int count = 1;            ///< N
+  std::string run_key;      ///< shared by the slices of one run (suites/shard.hpp)
+  long long total_cases = 0;  ///< cases of the whole run, over all slices
+
+  friend bool operator==(const ShardInfo&, const ShardInfo&) = default;
+};
+
+/// What is known about the run as a whole (machine, versions, settings, timing).
+struct RunInfo {
+  std::string started_utc;                                ///< ISO 8601
+  double wall_seconds = 0.0;                              ///< whole run
+  int jobs = 1;                                           ///< parallel workers
+  double peak_rss_mb = 0.0;                               ///< process peak resident memory
+  std::string command_line;                               ///< how the run was started
+  nlohmann::json environment = nlohmann::json::object();  ///< machine, versions, settings
+  std::optional<ShardInfo> shard;  ///< set when the file holds one slice of a sharded run
+};
+
+/// A whole results file.
+struct ResultsDocument {
+  std::string source;  ///< where it was read from (a path), for messages; empty when built
+  RunInfo run;
+  std::vector<ProblemRecord> problems;  ///< every problem that has a case, in battery order
+  std::vector<CaseResult> cases;
+  std::vector<RowVerdict> rows;
+
+  /// The record of a problem, or nullptr.
+  const ProblemRecord* problem(ProblemId id) const;
+};
+
+/// One case / row / problem as JSON (the fields of `contact-suite case --json` for a case).
+nlohmann::json to_json(const CaseResult& result);
+nlohmann::json to_json(const RowVerdict& row);
+nlohmann::json to_json(const ProblemRecord& problem);
+nlohmann::json to_json(const ResultsDocument& doc);
+
+/// Case and row records read back; `path` names the record in messages. Throw SchemaError.
+CaseResult case_from_json(const nlohmann::json& j, const std::string& path);
+RowVerdict row_from_json(const nlohmann::json& j, const std::string& path);
+
+/// Validates a parsed document: schema name and version, every record typed and named, no
+/// duplicate case or row ids, every case's problem in `problems`. Throws SchemaError with a
+/// one-line message that starts with `source`.
+ResultsDocument results_from_json(const nlohmann::json& doc, const std::string& source);
+
+/// Reads and validates a results file (see results_from_json; a missing, unreadable,
+/// non-JSON or truncated file is a SchemaError too).
+ResultsDocument read_results_file(const std::filesystem::path& path);
+
+/// Writes a results file atomically (see write_json_file_atomically).
+void write_results_file(const std::filesystem::path& path, const ResultsDocument& doc);
+
+}  // namespace cs::schema

@@ -1,0 +1,26 @@
+// F_a: Harding-Sneddon flat punch, singular (axisymmetric). The model is built by build_flat_punch
+// (suites/problems/flat_punch.cpp, whose header states the geometry, boundary conditions, oracle
+// and sampling). Run: contact-suite case F_a --mesh F --element Q4 --algorithm LMP --contact ss
+
+#include "suites/problems/problem_builders.hpp"
+
+namespace cs::suites {
+
+template <>
+const ProblemDescriptor& problem_descriptor<ProblemId::F_a>() {
+  using schema::Quantity;
+  static const ProblemDescriptor d{
+      {ProblemId::F_a,
+       "Harding-Sneddon flat punch, singular (axisymmetric)",
+       "axisymmetric flat punch",
+       /*axisymmetric=*/true,
+       /*singular=*/true,
+       "14",
+       "Eq. 45",
+       {{Quantity::sigma_c_star, "−σ<sub>z</sub>(a, 0)/p", "-sigma_z(a,0)/p", "14", ""}}},
+      problems::study_parameters({}),
+      problems::build_flat_punch};
+  return d;
+}
+
+}  // namespace cs::suites

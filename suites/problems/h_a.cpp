@@ -1,0 +1,27 @@
+// H_a: Hertz contact of a sphere (axisymmetric). The model is built by build_hertz
+// (suites/problems/hertz.cpp, whose header states the geometry, boundary conditions, oracle and
+// sampling).
+// Run: contact-suite case H_a --mesh F --element Q4 --algorithm LMP --contact ss
+
+#include "suites/problems/problem_builders.hpp"
+
+namespace cs::suites {
+
+template <>
+const ProblemDescriptor& problem_descriptor<ProblemId::H_a>() {
+  using schema::Quantity;
+  static const ProblemDescriptor d{
+      {ProblemId::H_a,
+       "Hertz contact of a sphere (axisymmetric)",
+       "axisymmetric Hertzian contact",
+       /*axisymmetric=*/true,
+       /*singular=*/false,
+       "9",
+       "Eq. 22",
+       {{Quantity::sigma_c, "−σ<sub>z</sub>(0, 0)/p", "-sigma_z(0,0)/p", "9", "main"}}},
+      problems::study_parameters({}),
+      problems::build_hertz};
+  return d;
+}
+
+}  // namespace cs::suites

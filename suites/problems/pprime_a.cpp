@@ -1,0 +1,27 @@
+// Pprime_a: contact patch test, non-matching nodes (axisymmetric). The model is built by
+// build_patch_test (suites/problems/patch_test.cpp, whose header states the geometry, boundary
+// conditions, oracle and sampling). Run: contact-suite case Pprime_a --mesh F --element Q4
+// --algorithm LMP --contact ss
+
+#include "suites/problems/problem_builders.hpp"
+
+namespace cs::suites {
+
+template <>
+const ProblemDescriptor& problem_descriptor<ProblemId::Pprime_a>() {
+  using schema::Quantity;
+  static const ProblemDescriptor d{
+      {ProblemId::Pprime_a,
+       "contact patch test, non-matching nodes (axisymmetric)",
+       "axisymmetric contact patch test, mismatched nodes",
+       /*axisymmetric=*/true,
+       /*singular=*/false,
+       "6",
+       "Eq. 8",
+       {{Quantity::sigma_z_max, "−σ<sub>z</sub><sup>max</sup>/p", "-sigma_z^max/p", "6", "main"}}},
+      problems::study_parameters({}),
+      problems::build_patch_test};
+  return d;
+}
+
+}  // namespace cs::suites

@@ -1,0 +1,114 @@
+#include "suites/results_merge.hpp"
+
+#include <algorithm>
+#include <set>
+#include <tuple>
+
+#include <fmt/format.h>
+
+#include "suites/problem_catalog.hpp"
+#include "suites/row_verdict.hpp"
+#include "suites/suite_error.hpp"
+
+namespace cs::suites {
+namespace {
+
+std::string version_of(const schema::ResultsDocument& d) {
+  const auto& env = d.run.environment;
+  const auto it = env.find("contact_suite_version");
+  return it != env.end() && it->is_string() ? it->get<std::string>() : std::string("unknown");
+}
+
+void check_versions(const std::vector<schema::ResultsDocument>& parts) {
+  for (const auto& p : parts) {
+    if (version_of(p) != version_of(parts.front())) {
+      throw SuiteInputError(fmt::format(
+          "merge: {} comes from contact-suite {} but {} from {}: results of different builds",
+          p.source, version_of(p), parts.front().source, version_of(parts.front())));
+    }
+  }
+}
+
+/// All or none sharded; one run key and count; every slice exactly once.
+void check_slices(const std::vector<schema::ResultsDocument>& parts) {
+  const auto& first = parts.front().run.shard;
+  std::set<int> seen;
+  for (const auto& p : parts) {
+    const auto& s = p.run.shard;
+    if (s.has_value() != first.has_value()) {
+      throw SuiteInputError(fmt::format("merge: {} and {} mix a slice with unsharded results",
+                                        parts.front().source, p.source));
+    }
+    if (!s)
+      continue;
+    if (s->run_key != first->run_key || s->count != first->count) {
+      throw SuiteInputError(fmt::format(
+          "merge: {} (slice {}/{}, run {}) and {} (slice {}/{}, run {}) are slices of different "
+          "runs (different selections, settings or versions)",
+          parts.front().source, first->index, first->count, first->run_key, p.source, s->index,
+          s->count, s->run_key));
+    }
+    if (!seen.insert(s->index).second) {
+      throw SuiteInputError(
+          fmt::format("merge: slice {}/{} is given twice ({})", s->index, s->count, p.source));
+    }
+  }
+  if (!first)
+    return;
+  for (int k = 1; k <= first->count; ++k) {
+    if (!seen.count(k))
+      throw SuiteInputError(fmt::format("merge: slice {}/{} is missing", k, first->count));
+  }
+}
+
+auto order_key(const schema::CaseResult& c) {
+  const auto& s = c.spec;
+  return std::make_tuple(s.problem, s.mesh, s.element, s.algorithm, s.contact, s.recovery,
+                         s.target, s.solver, s.solver_name, s.overrides);
+}
+
+}  // namespace
+
+void sort_cases(std::vector<schema::CaseResult>& cases) {
+  std::stable_sort(cases.begin(), cases.end(),
+                   [](const auto& a, const auto& b) { return order_key(a) < order_key(b); });
+}
+
+schema::ResultsDocument merge_results(const std::vector<schema::ResultsDocument>& parts,
+                                      const std::string& command_line) {
+  if (parts.empty())
+    throw SuiteInputError("merge: no results files given");
+  check_versions(parts);
+  check_slices(parts);
+  schema::ResultsDocument out;
+  out.run = parts.front().run;
+  out.run.shard.reset();
+  out.run.command_line = command_line;
+  out.run.wall_seconds = 0.0;
+  out.run.jobs = 0;
+  std::set<std::string> ids;
+  for (const auto& p : parts) {
+    out.run.started_utc = std::min(out.run.started_utc, p.run.started_utc);
+    out.run.wall_seconds += p.run.wall_seconds;  // summed over the parts: machine time
+    out.run.jobs += p.run.jobs;
+    out.run.peak_rss_mb = std::max(out.run.peak_rss_mb, p.run.peak_rss_mb);
+    for (const auto& c : p.cases) {
+      if (!ids.insert(schema::case_id(c.spec)).second) {
+        throw SuiteInputError(fmt::format("merge: case {} is in more than one file (again in {})",
+                                          schema::case_id(c.spec), p.source));
+      }
+      out.cases.push_back(c);
+    }
+  }
+  const auto& shard = parts.front().run.shard;
+  if (shard && static_cast<long long>(out.cases.size()) != shard->total_cases) {
+    throw SuiteInputError(fmt::format("merge: the slices hold {} cases but the run had {}",
+                                      out.cases.size(), shard->total_cases));
+  }
+  sort_cases(out.cases);
+  out.problems = problem_records(out.cases);
+  out.rows = make_row_verdicts(out.cases);
+  return out;
+}
+
+}  // namespace cs::suites

@@ -1,0 +1,156 @@
+// Requirement: results.json has one reader and one writer. A document round-trips exactly; every
+// malformed field (wrong type, unknown name, out-of-range integer, non-finite number, duplicate
+// id) is rejected with a SchemaError naming the field's path, never another exception.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <functional>
+#include <limits>
+#include <string>
+
+#include "schema/baseline_file.hpp"
+#include "schema/json_file.hpp"
+#include "schema/results_file.hpp"
+#include "schema/schema_error.hpp"
+#include "support/temp_dir.hpp"
+
+namespace cs::schema {
+namespace {
+
+using nlohmann::json;
+
+ResultsDocument small_document() {
+  ResultsDocument doc;
+  doc.run.started_utc = "2026-11-22T00:00:00Z";
+  doc.run.wall_seconds = 1.5;
+  doc.run.jobs = 2;
+  doc.run.command_line = "contact-suite run";
+  ProblemRecord p;
+  p.id = ProblemId::F_p;
+  p.title = "flat punch";
+  p.singular = true;
+  p.quantities = {{Quantity::sigma_c_star, "md", "plain", "13", ""}};
+  doc.problems.push_back(p);
+  CaseResult c;
+  c.spec.problem = ProblemId::F_p;
+  c.spec.mesh = MeshLevel::M;
+  c.spec.overrides["fkn"] = 10.0;
+  c.status = CaseStatus::converged;
+  c.iterations = 3;
+  c.wall_seconds = 0.25;
+  QuantityResult q;
+  q.quantity = Quantity::sigma_c_star;
+  q.value = 3.5;
+  q.exact = std::numeric_limits<double>::infinity();
+  q.error_percent = std::nan("");
+  q.contact_pressure = 3.25;
+  c.quantities.push_back(q);
+  c.profile = {{0.0, 0.5}, {1.0, std::nan("")}, {1.1, 1.2}};
+  doc.cases.push_back(c);
+  RowVerdict row;
+  row.spec = c.spec;
+  row.spec.mesh = MeshLevel::C;
+  row.quantity = Quantity::sigma_c_star;
+  row.id = case_key(row.spec) + "/sigma_c_star";
+  row.values[1] = 3.5;
+  row.diverging = true;
+  doc.rows.push_back(row);
+  return doc;
+}
+
+/// Expects `mutate(doc)` to make the document invalid with a message containing `needle`.
+void expect_rejected(const std::function<void(json&)>& mutate, const std::string& needle) {
+  json j = to_json(small_document());
+  mutate(j);
+  try {
+    results_from_json(j, "R");
+    ADD_FAILURE() << "accepted; expected an error containing: " << needle;
+  } catch (const SchemaError& e) {
+    EXPECT_NE(std::string(e.what()).find(needle), std::string::npos) << e.what();
+    EXPECT_EQ(std::string(e.what()).find('\n'), std::string::npos) << "one line";
+  }
+}
+
+TEST(SchemaResultsFile, RoundTripsEveryField) {
+  const ResultsDocument doc = small_document();
+  const json once = to_json(doc);
+  const ResultsDocument back = results_from_json(once, "mem");
+  EXPECT_EQ(to_json(back), once);
+  ASSERT_EQ(back.cases.size(), 1u);
+  EXPECT_EQ(back.cases[0].spec, doc.cases[0].spec);
+  EXPECT_TRUE(back.cases[0].quantities[0].singular());
+  EXPECT_TRUE(std::isnan(back.cases[0].profile.sigma_z_over_p[1]));
+  EXPECT_EQ(back.rows[0].diverging, std::optional<bool>(true));
+}
+
+TEST(SchemaResultsFile, RejectsWrongTypesWithTheFieldPath) {
+  expect_rejected([](json& j) { j["schema_version"] = "3"; }, "R.schema_version: is a string");
+  expect_rejected([](json& j) { j["schema_version"] = 4294967298ULL; }, "out of range");
+  expect_rejected([](json& j) { j["schema_version"] = 2; }, "2 is not supported");
+  expect_rejected([](json& j) { j["schema"] = "other"; }, "not a contact-suite results file");
+  expect_rejected([](json& j) { j["cases"][0]["overrides"] = "fkn=1"; },
+                  "R.cases[0].overrides: is a string, expected an object");
+  expect_rejected([](json& j) { j["cases"][0]["overrides"]["fkn"] = "10"; },
+                  "R.cases[0].overrides.fkn: is a string");
+  expect_rejected([](json& j) { j["cases"][0]["reason"] = 5; }, "R.cases[0].reason: is a number");
+  expect_rejected([](json& j) { j["cases"][0]["iterations"] = "3"; },
+                  "R.cases[0].iterations: is a string");
+  expect_rejected([](json& j) { j["cases"][0]["iterations"] = -1; }, "out of range");
+  expect_rejected([](json& j) { j["cases"][0]["quantities"]["sigma_c_star"]["study_exact"] = "x"; },
+                  "study_exact: is a string");
+  expect_rejected([](json& j) { j["run"]["jobs"] = 2.5; },
+                  "R.run.jobs: is a number, expected an integer");
+}
+
+TEST(SchemaResultsFile, RejectsUnknownNamesAndDuplicates) {
+  expect_rejected([](json& j) { j["cases"][0]["algorithm"] = "ALM"; },
+                  "R.cases[0].algorithm: unknown algorithm \"ALM\"");
+  expect_rejected([](json& j) { j["cases"][0]["quantities"]["sigma_q"] = json::object(); },
+                  "unknown quantity");
+  expect_rejected([](json& j) { j["rows"][0]["grade"] = "a"; }, "unknown grade");
+  expect_rejected([](json& j) { j["cases"].push_back(j["cases"][0]); }, "duplicate case id");
+  expect_rejected([](json& j) { j["cases"][0]["id"] = "x"; }, "does not match its fields");
+  expect_rejected([](json& j) { j["problems"] = json::array(); }, "has no entry in 'problems'");
+  expect_rejected([](json& j) { j["cases"][0]["solver"] = ""; }, "name the code");
+}
+
+TEST(SchemaResultsFile, FileErrorsAreSchemaErrors) {
+  cs::testing::TempDir dir;
+  EXPECT_THROW(read_results_file(dir.path() / "missing.json"), SchemaError);
+  EXPECT_THROW(read_results_file(dir.path()), SchemaError);  // a directory
+  const auto huge = dir.path() / "huge.json";
+  std::ofstream(huge) << R"({"schema": "contact-suite/results", "schema_version": 1e999})";
+  EXPECT_THROW(read_results_file(huge), SchemaError);
+  const auto truncated = dir.path() / "truncated.json";
+  std::ofstream(truncated) << to_json(small_document()).dump().substr(0, 40);
+  EXPECT_THROW(read_results_file(truncated), SchemaError);
+  const auto good = dir.path() / "good.json";
+  write_results_file(good, small_document());
+  EXPECT_EQ(to_json(read_results_file(good)), to_json(small_document()));
+}
+
+TEST(SchemaBaselineFile, RoundTripsAndRejectsBadTolerances) {
+  Baseline b;
+  b.tolerances.per_quantity[Quantity::sigma_c] = 1e-4;
+  b.cases = small_document().cases;
+  b.rows = small_document().rows;
+  const json j = to_json(b);
+  const Baseline back = baseline_from_json(j, "B");
+  EXPECT_EQ(to_json(back), j);
+  EXPECT_EQ(back.tolerances.of(Quantity::sigma_c), 1e-4);
+  EXPECT_EQ(back.tolerances.of(Quantity::sigma_h), kDefaultGateTolerance);
+  json negative = j;
+  negative["tolerances"]["sigma_c"] = -1e-4;
+  EXPECT_THROW(baseline_from_json(negative, "B"), SchemaError);
+  json zero = j;
+  zero["default_tolerance"] = 0;
+  EXPECT_THROW(baseline_from_json(zero, "B"), SchemaError);
+  json dup = j;
+  dup["cases"].push_back(dup["cases"][0]);
+  EXPECT_THROW(baseline_from_json(dup, "B"), SchemaError);
+}
+
+}  // namespace
+}  // namespace cs::schema
