@@ -2,20 +2,19 @@
 
 #include <fmt/format.h>
 
-#include "reports/appendix_tables.hpp"
 #include "reports/atomic_output.hpp"
-#include "reports/bench_figure.hpp"
-#include "reports/bench_results.hpp"
-#include "reports/bench_section.hpp"
-#include "reports/divergence_table.hpp"
-#include "reports/findings.hpp"
-#include "reports/grade_tables.hpp"
-#include "reports/markdown_table.hpp"
-#include "reports/problem_catalog.hpp"
-#include "reports/recovery_section.hpp"
-#include "reports/regression_report.hpp"
-#include "reports/results_csv.hpp"
-#include "reports/summary_section.hpp"
+#include "reports/bench/bench_results.hpp"
+#include "reports/bench/bench_section.hpp"
+#include "reports/figures/bench_figure.hpp"
+#include "reports/findings/findings.hpp"
+#include "reports/findings/recovery_section.hpp"
+#include "reports/findings/regression_report.hpp"
+#include "reports/findings/summary_section.hpp"
+#include "reports/results/results_csv.hpp"
+#include "reports/tables/appendix_tables.hpp"
+#include "reports/tables/divergence_table.hpp"
+#include "reports/tables/grade_tables.hpp"
+#include "reports/tables/markdown_table.hpp"
 
 namespace cs::reports {
 namespace {
@@ -37,9 +36,9 @@ std::string variants_section(const ResultsIndex& index) {
   if (rows.empty())
     return {};
   MarkdownTable table({"Row", "Variant", "C", "M", "F", "Grade"});
-  for (const RowRecord* r : rows) {
+  for (const schema::RowVerdict* r : rows) {
     std::array<std::string, 3> cells;
-    for (std::size_t m = 0; m < kMeshLevels.size(); ++m) {
+    for (std::size_t m = 0; m < kMeshes.size(); ++m) {
       cells[m] = format_value(r->values[m]);
       if (r->errors[m])
         cells[m] += fmt::format(" ({})", format_percent(*r->errors[m]));
@@ -47,9 +46,11 @@ std::string variants_section(const ResultsIndex& index) {
     std::string grade = format_grade_cell(index, r);
     if (r->diverging)
       grade = *r->diverging ? "diverges" : "does not diverge";
-    table.add_row({fmt::format("{} {} {} {} {}", r->problem, r->quantity, r->element, r->algorithm,
-                               r->contact),
-                   r->variant(), cells[0], cells[1], cells[2], grade});
+    const schema::CaseSpec& s = r->spec;
+    table.add_row({fmt::format("{} {} {} {} {}", schema::to_string(s.problem),
+                               schema::to_string(r->quantity), schema::to_string(s.element),
+                               schema::to_string(s.algorithm), schema::to_string(s.contact)),
+                   variant_of(s), cells[0], cells[1], cells[2], grade});
   }
   return "## 6. Other option sets (rigid target, parameter overrides)\n\n"
          "Not in the study, so not in Tables 2 or the appendix tables: our value (our % error) "
@@ -103,12 +104,11 @@ std::string report_markdown(const ResultsIndex& index, const StudyReference& stu
   return out;
 }
 
-ReportOutcome write_report(const ReportOptions& options) {
+ReportOutcome write_report(const schema::ResultsDocument& results, const ReportOptions& options) {
   // Read and check every input before touching the output directory.
-  const ResultsFile results = load_results_file(options.results);
-  std::optional<ResultsFile> baseline;
+  std::optional<schema::ResultsDocument> baseline;
   if (options.baseline)
-    baseline = load_results_file(*options.baseline);
+    baseline = schema::read_results_file(*options.baseline);
   const StudyReference study =
       load_study_reference(options.study_data ? *options.study_data : default_study_data_dir());
   std::optional<BenchResults> bench;

@@ -1,28 +1,36 @@
 #pragma once
-// `contact-suite report`: everything a results file turns into, written atomically into one
+// `contact-suite report`: everything a results document turns into, written atomically into one
 // directory: report.md (summary and findings, Tables 2a/2b, appendix tables, figures, the
-// flat-punch divergence table, other option sets and, with Google Benchmark JSON of
-// bench_contact_algorithms, the benchmarks), figures/*.png, results.csv, and with a baseline,
-// regression.md.
+// flat-punch divergence table, other option sets, the recovery comparison and, with Google
+// Benchmark JSON of bench_contact_algorithms, the benchmarks), figures/*.png, results.csv, and
+// with a baseline, regression.md.
 //
-// All input is read and checked before the output directory is touched: a bad results file,
-// baseline, bench file or study data throws ReportError and leaves the directory as it was.
+// The layout of the folder follows the report: results/ (the index over a results document,
+// the study's reference data, the CSV export), tables/ (Tables 2a/2b, the appendix tables, the
+// divergence table), figures/ (gnuplot figures, the bench chart), bench/ (benchmark files and
+// their section), findings/ (summary, findings, recovery comparison, regression report).
+//
+// The report is built from a ResultsDocument in memory (`run` hands over what it ran; `report
+// --results FILE` reads the file with schema::read_results_file). All other input is read and
+// checked before the output directory is touched: a bad baseline (schema::SchemaError), bench
+// file or study data (ReportError) leaves the directory as it was.
 
 #include <filesystem>
 #include <optional>
 #include <string>
 #include <vector>
 
-#include "reports/figures.hpp"
-#include "reports/results_index.hpp"
-#include "reports/study_reference.hpp"
+#include "reports/figures/figures.hpp"
+#include "reports/results/results_index.hpp"
+#include "reports/results/study_reference.hpp"
+#include "schema/results_file.hpp"
 
 namespace cs::reports {
 
 struct ReportOptions {
-  std::filesystem::path results;                  ///< results.json to report on
-  std::filesystem::path out_dir;                  ///< where report.md and the rest go
-  std::optional<std::filesystem::path> baseline;  ///< older results.json for regression.md
+  std::filesystem::path out_dir;  ///< where report.md and the rest go
+  /// An older results.json for regression.md, read with schema::read_results_file.
+  std::optional<std::filesystem::path> baseline;
   /// data/study with the study's CSVs; default: default_study_data_dir().
   std::optional<std::filesystem::path> study_data;
   /// Google Benchmark JSON files of bench_contact_algorithms: section 8, "Benchmarks" (none:
@@ -40,8 +48,10 @@ struct ReportOutcome {
   std::string figures_unavailable;  ///< why no figure was drawn, if so
 };
 
-/// Writes the report; throws ReportError for bad input or an unwritable directory.
-ReportOutcome write_report(const ReportOptions& options);
+/// Writes the report of `results` (its `source`, when set, is named in the summary as the
+/// results file); throws ReportError for bad study data, a bad bench file or an unwritable
+/// directory, schema::SchemaError for a bad baseline.
+ReportOutcome write_report(const schema::ResultsDocument& results, const ReportOptions& options);
 
 /// The whole report.md text from its parts (no I/O); `bench_md` is section 8 (empty: none).
 std::string report_markdown(const ResultsIndex& index, const StudyReference& study,

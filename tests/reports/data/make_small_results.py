@@ -1,8 +1,11 @@
 #!/usr/bin/env python3
-"""Writes small_results.json: a hand-made results file (schema contact-suite/results v2,
+"""Writes small_results.json: a hand-made results file (schema contact-suite/results v3,
 docs/results-schema.md) for the tests of reports/. The values are invented near the study's
 (they exercise the tables; they are not solver output). Rows follow the schema's rules:
 grade of the finest mesh present, converging as in suites/grading.hpp, Eq. 47 for F_p/F_a.
+The `problems` records are those the run writes from each problem's descriptor (titles,
+study tables, quantity definitions), for the problems that have a case, in battery order.
+This script only writes the file; the results are read by the C++ reader (schema/) alone.
 
 Run: python3 make_small_results.py > small_results.json
 """
@@ -69,6 +72,69 @@ def exact_profile_for(problem):
     return None
 
 
+# The battery's problems in order, as their descriptors describe them (suites/problems/).
+def patch_quantity(table):
+    return {"quantity": "sigma_z_max", "definition_md": "−σ<sub>z</sub><sup>max</sup>/p",
+            "definition_plain": "-sigma_z^max/p", "study_table": table, "study_row": "main"}
+
+
+def centre_quantity(table, row="main"):
+    return {"quantity": "sigma_c", "definition_md": "−σ<sub>z</sub>(0, 0)/p",
+            "definition_plain": "-sigma_z(0,0)/p", "study_table": table, "study_row": row}
+
+
+def steuermann_quantity(table):
+    return {"quantity": "sigma_c", "definition_md": "max of −σ<sub>z</sub>/p on z = 0",
+            "definition_plain": "max -sigma_z/p on z = 0", "study_table": table,
+            "study_row": "main"}
+
+
+def punch_quantity(table):
+    return {"quantity": "sigma_c_star", "definition_md": "−σ<sub>z</sub>(a, 0)/p",
+            "definition_plain": "-sigma_z(a,0)/p", "study_table": table, "study_row": ""}
+
+
+def problem(pid, title, description, axisymmetric, singular, tables, source, quantities):
+    return {"id": pid, "title": title, "description": description, "axisymmetric": axisymmetric,
+            "singular": singular, "study_tables": tables, "exact_source": source,
+            "quantities": quantities}
+
+
+PROBLEMS = [
+    problem("P_p", "Contact patch test, matched nodes (plane strain)",
+            "plane-strain contact patch test, matched nodes", False, False, "3", "Eq. 6",
+            [patch_quantity("3")]),
+    problem("P_a", "Contact patch test, matched nodes (axisymmetric)",
+            "axisymmetric contact patch test, matched nodes", True, False, "5", "Eq. 8",
+            [patch_quantity("5")]),
+    problem("Pprime_p", "Contact patch test, mismatched nodes (plane strain)",
+            "plane-strain contact patch test, mismatched nodes", False, False, "4", "Eq. 6",
+            [patch_quantity("4")]),
+    problem("Pprime_a", "Contact patch test, mismatched nodes (axisymmetric)",
+            "axisymmetric contact patch test, mismatched nodes", True, False, "6", "Eq. 8",
+            [patch_quantity("6")]),
+    problem("H_p", "Hertz contact of a cylinder (plane strain)", "plane-strain Hertzian contact",
+            False, False, "7, 8", "Eq. 15",
+            [centre_quantity("7", "contact"),
+             {"quantity": "sigma_h", "definition_md": "−σ<sub>x</sub>(0, 0)/p",
+              "definition_plain": "-sigma_x(0,0)/p", "study_table": "8",
+              "study_row": "horizontal"}]),
+    problem("H_a", "Hertz contact of a sphere (axisymmetric)", "axisymmetric Hertzian contact",
+            True, False, "9", "Eq. 22", [centre_quantity("9")]),
+    problem("S_1", "Steuermann punch, r_e/b = 1", "plane-strain Steuermann contact, r_e/b = 1",
+            False, False, "10", "Eq. 31", [steuermann_quantity("10")]),
+    problem("S_1_3", "Steuermann punch, r_e/b = 1/3",
+            "plane-strain Steuermann contact, r_e/b = 1/3", False, False, "11", "Eq. 31",
+            [steuermann_quantity("11")]),
+    problem("S_1_7", "Steuermann punch, r_e/b = 1/7",
+            "plane-strain Steuermann contact, r_e/b = 1/7", False, False, "12", "Eq. 31",
+            [steuermann_quantity("12")]),
+    problem("F_p", "Sadowsky flat punch (plane strain)", "plane-strain flat punch", False, True,
+            "13", "Eq. 39", [punch_quantity("13")]),
+    problem("F_a", "Harding-Sneddon flat punch (axisymmetric)", "axisymmetric flat punch", True,
+            True, "14", "Eq. 45", [punch_quantity("14")]),
+]
+
 cases, rows = [], []
 
 
@@ -106,8 +172,8 @@ def add(problem, element, algorithm, contact, quantities, statuses=None, target=
         case = {
             "id": f"{problem}/{mesh}/{element}/{algorithm}/{contact}{suffix}",
             "problem": problem, "mesh": mesh, "element": element, "algorithm": algorithm,
-            "contact": contact, "target": target, "recovery": recovery, "overrides": overrides,
-            "status": status,
+            "contact": contact, "target": target, "recovery": recovery, "solver": "builtin",
+            "overrides": overrides, "status": status,
             "reason": {"converged": "", "not_converged": "active set cycling after 40 iterations",
                        "failed": "singular stiffness matrix (rigid body mode)"}[status],
             "iterations": 0 if status == "failed" else 3 + mi,
@@ -131,7 +197,8 @@ def add(problem, element, algorithm, contact, quantities, statuses=None, target=
         row = {
             "id": f"{problem}/{element}/{algorithm}/{contact}{suffix}/{name}",
             "problem": problem, "element": element, "algorithm": algorithm, "contact": contact,
-            "target": target, "recovery": recovery, "quantity": name, "values": vals, "error_percent": errs,
+            "target": target, "recovery": recovery, "solver": "builtin", "overrides": overrides,
+            "quantity": name, "values": vals, "error_percent": errs,
             "grade": None if singular or finest is None else grade(errs[finest]),
             "graded_mesh": None if singular or finest is None else finest,
             "converging": None if singular or not complete else converging([errs[m] for m in MESHES]),
@@ -176,7 +243,7 @@ add("H_p", "Q4", "LMP", "ss", hp([1.3311, 1.3012, 1.2892], [1.2066, 1.2573, 1.26
 
 doc = {
     "schema": "contact-suite/results",
-    "schema_version": 2,
+    "schema_version": 3,
     "run": {
         "started_utc": "2026-11-22T10:00:00Z", "wall_seconds": 12.5, "jobs": 2,
         "peak_rss_mb": 310.5, "command_line": "contact-suite run --out out --problems H_p,P_p",
@@ -184,6 +251,7 @@ doc = {
                         "version": "0.1.0", "blas": "OpenBLAS",
                         "solver": {"factorization": "CHOLMOD supernodal", "max_iterations": 40}},
     },
+    "problems": [p for p in PROBLEMS if any(c["problem"] == p["id"] for c in cases)],
     "cases": cases,
     "rows": rows,
 }

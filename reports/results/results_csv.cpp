@@ -1,0 +1,111 @@
+#include "reports/results/results_csv.hpp"
+
+#include <fmt/format.h>
+
+namespace cs::reports {
+namespace {
+
+std::string csv_field(const std::string& text) {
+  if (text.find_first_of(",\"\n\r") == std::string::npos)
+    return text;
+  std::string out = "\"";
+  for (char c : text) {
+    if (c == '"')
+      out += "\"\"";
+    else
+      out += c;
+  }
+  return out + "\"";
+}
+
+std::string number(const std::optional<double>& v) {
+  return v ? fmt::format("{:.10g}", *v) : std::string();
+}
+
+std::string number(double v) {
+  return number(finite(v));
+}
+
+template <schema::Axis E>
+std::string name(E v) {
+  return std::string(schema::to_string(v));
+}
+
+std::string overrides_text(const schema::CaseSpec& s) {
+  std::string out;
+  for (const auto& [k, v] : s.overrides)
+    out += fmt::format("{}{}={}", out.empty() ? "" : ";", k, v);
+  return out;
+}
+
+}  // namespace
+
+const std::vector<std::string>& results_csv_columns() {
+  static const std::vector<std::string> columns{
+      "case_id",        "problem",          "mesh",         "element",     "algorithm",
+      "contact",        "target",           "recovery",     "overrides",   "status",
+      "reason",         "iterations",       "wall_seconds", "n_elements",  "n_equations",
+      "element_size_h", "quantity",         "value",        "exact",       "error_percent",
+      "grade",          "contact_pressure", "study_exact",  "ansys_value", "ansys_table"};
+  return columns;
+}
+
+std::string results_csv(const ResultsIndex& index, const StudyReference& study) {
+  std::string out;
+  for (const auto& name : results_csv_columns())
+    out += (out.empty() ? "" : ",") + name;
+  out += "\n";
+  for (const auto& c : index.results().cases) {
+    const schema::CaseSpec& s = c.spec;
+    const std::vector<std::string> head{schema::case_id(s),
+                                        name(s.problem),
+                                        name(s.mesh),
+                                        name(s.element),
+                                        name(s.algorithm),
+                                        name(s.contact),
+                                        name(s.target),
+                                        name(s.recovery),
+                                        overrides_text(s),
+                                        name(c.status),
+                                        c.reason,
+                                        std::to_string(c.iterations),
+                                        number(c.wall_seconds),
+                                        std::to_string(c.n_elements),
+                                        std::to_string(c.n_equations),
+                                        number(c.element_size_h)};
+    auto emit = [&](const std::vector<std::string>& tail) {
+      std::string line;
+      for (const auto& f : head) {
+        if (!line.empty())
+          line += ',';
+        line += csv_field(f);
+      }
+      for (const auto& f : tail) {
+        line += ',';
+        line += csv_field(f);
+      }
+      out += line + "\n";
+    };
+    if (c.quantities.empty()) {
+      emit(std::vector<std::string>(9));
+      continue;
+    }
+    for (const auto& q : c.quantities) {
+      std::string ansys_value, ansys_table;
+      if (c.is_baseline()) {
+        const auto match =
+            study.find_value(s.problem, q.quantity, s.element, s.algorithm, s.contact, s.mesh);
+        if (match.value != nullptr) {
+          ansys_value = match.value->printed;
+          ansys_table = match.value->table;
+        }
+      }
+      emit({name(q.quantity), number(q.value), q.singular() ? "inf" : number(q.exact),
+            number(q.error_percent), name(q.grade), number(q.contact_pressure),
+            number(q.study_exact), ansys_value, ansys_table});
+    }
+  }
+  return out;
+}
+
+}  // namespace cs::reports

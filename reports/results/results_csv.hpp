@@ -1,0 +1,20 @@
+#pragma once
+// DIR/results.csv: one row per case and quantity (a case without quantities, e.g. a failed
+// one, still gets one row), for spreadsheets; with the study's ANSYS value for the same
+// option set where it printed one.
+
+#include <string>
+#include <vector>
+
+#include "reports/results/results_index.hpp"
+#include "reports/results/study_reference.hpp"
+
+namespace cs::reports {
+
+/// The CSV header line's fields, in order.
+const std::vector<std::string>& results_csv_columns();
+
+/// The whole CSV text (RFC 4180 quoting; numbers with 10 significant digits; empty = none).
+std::string results_csv(const ResultsIndex& index, const StudyReference& study);
+
+}  // namespace cs::reports

@@ -1,0 +1,204 @@
+#include "reports/results/results_index.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <climits>
+#include <cmath>
+
+#include <fmt/format.h>
+
+namespace cs::reports {
+namespace {
+
+using schema::CaseResult;
+using schema::RowVerdict;
+
+std::vector<Option> make_all_options() {
+  std::vector<Option> out;
+  for (const auto a : schema::values<schema::Algorithm>()) {
+    for (const auto c : schema::values<schema::ContactKind>())
+      out.push_back({a, c});
+  }
+  return out;
+}
+
+/// The first table number of "7, 8" (7); INT_MAX when the problem records no study table.
+int first_study_table(const schema::ProblemRecord& p) {
+  int n = 0;
+  bool any = false;
+  for (const char c : p.study_tables) {
+    if (std::isdigit(static_cast<unsigned char>(c)) == 0)
+      break;
+    n = 10 * n + (c - '0');
+    any = true;
+  }
+  return any ? n : INT_MAX;
+}
+
+/// True for a row or case with the study's options except for extrapolated nodal stresses.
+bool is_extrapolated_twin(const schema::CaseSpec& spec) {
+  schema::CaseSpec as_baseline = spec;
+  as_baseline.recovery = schema::Recovery::spr;
+  return spec.recovery == schema::Recovery::extrapolated && schema::is_baseline(as_baseline);
+}
+
+}  // namespace
+
+std::optional<double> finite(double v) {
+  return std::isfinite(v) ? std::optional<double>(v) : std::nullopt;
+}
+
+std::string Option::label() const {
+  return fmt::format("{} {}", schema::to_string(algorithm), schema::to_string(contact));
+}
+
+const std::vector<Option>& all_options() {
+  static const std::vector<Option> options = make_all_options();
+  return options;
+}
+
+std::string variant_of(const schema::CaseSpec& spec) {
+  schema::CaseSpec study_options = spec;
+  study_options.target = schema::TargetKind::Discretized;
+  study_options.recovery = schema::Recovery::spr;
+  study_options.solver = schema::SolverKind::builtin;
+  study_options.solver_name.clear();
+  study_options.overrides.clear();
+  const std::string key = schema::case_key(spec);
+  const std::string base = schema::case_key(study_options);
+  return key.size() > base.size() ? key.substr(base.size() + 1) : std::string();
+}
+
+ResultsIndex::RowKey ResultsIndex::key_of(const RowVerdict& r) {
+  return {r.spec.problem, r.quantity, r.spec.element, r.spec.algorithm, r.spec.contact};
+}
+
+ResultsIndex::ResultsIndex(const schema::ResultsDocument& results) : results_(results) {
+  for (const auto& p : results_.problems)
+    problems_.push_back(&p);
+  std::stable_sort(problems_.begin(), problems_.end(), [](const auto* a, const auto* b) {
+    return std::pair(first_study_table(*a), a->id) < std::pair(first_study_table(*b), b->id);
+  });
+  for (const auto& c : results_.cases)
+    case_by_key_.emplace(std::pair(schema::case_key(c.spec), c.spec.mesh), &c);
+  for (const auto& r : results_.rows) {
+    if (r.is_baseline()) {
+      baseline_.push_back(&r);
+      baseline_by_key_.emplace(key_of(r), &r);
+    } else if (is_extrapolated_twin(r.spec)) {
+      extrapolated_by_key_.emplace(key_of(r), &r);
+    } else {
+      variants_.push_back(&r);
+    }
+  }
+  // An extrapolated row without its baseline (a run of extrapolated stresses only) is a variant.
+  for (auto it = extrapolated_by_key_.begin(); it != extrapolated_by_key_.end();) {
+    if (baseline_by_key_.count(it->first) == 0) {
+      variants_.push_back(it->second);
+      it = extrapolated_by_key_.erase(it);
+    } else {
+      ++it;
+    }
+  }
+}
+
+const schema::ProblemRecord* ResultsIndex::problem(schema::ProblemId id) const {
+  return results_.problem(id);
+}
+
+const schema::QuantityDefinition* ResultsIndex::definition(schema::ProblemId id,
+                                                           schema::Quantity q) const {
+  const schema::ProblemRecord* p = problem(id);
+  return p == nullptr ? nullptr : p->definition(q);
+}
+
+bool ResultsIndex::singular(schema::ProblemId id) const {
+  const schema::ProblemRecord* p = problem(id);
+  return p != nullptr && p->singular;
+}
+
+const RowVerdict* ResultsIndex::extrapolated_twin(const RowVerdict& b) const {
+  const auto it = extrapolated_by_key_.find(key_of(b));
+  return it == extrapolated_by_key_.end() ? nullptr : it->second;
+}
+
+const RowVerdict* ResultsIndex::row(schema::ProblemId problem, schema::Quantity quantity,
+                                    schema::Element element, const Option& option) const {
+  const auto it =
+      baseline_by_key_.find(RowKey{problem, quantity, element, option.algorithm, option.contact});
+  return it == baseline_by_key_.end() ? nullptr : it->second;
+}
+
+const CaseResult* ResultsIndex::case_of(const RowVerdict& row, schema::MeshLevel mesh) const {
+  const auto it = case_by_key_.find(std::pair(schema::case_key(row.spec), mesh));
+  return it == case_by_key_.end() ? nullptr : it->second;
+}
+
+const schema::QuantityResult* ResultsIndex::quantity_of(const RowVerdict& row,
+                                                        schema::MeshLevel mesh) const {
+  const CaseResult* c = case_of(row, mesh);
+  return c == nullptr ? nullptr : c->quantity(row.quantity);
+}
+
+MeshState ResultsIndex::state(const RowVerdict& row, schema::MeshLevel mesh) const {
+  const CaseResult* c = case_of(row, mesh);
+  if (c == nullptr)
+    return MeshState::missing;
+  switch (c->status) {
+    case schema::CaseStatus::converged:
+      return MeshState::converged;
+    case schema::CaseStatus::not_converged:
+      return MeshState::not_converged;
+    case schema::CaseStatus::failed:
+    case schema::CaseStatus::timeout:
+      return MeshState::failed;
+  }
+  return MeshState::failed;
+}
+
+bool ResultsIndex::any_not_converged(const RowVerdict& row) const {
+  return std::any_of(kMeshes.begin(), kMeshes.end(), [&](schema::MeshLevel m) {
+    return state(row, m) == MeshState::not_converged;
+  });
+}
+
+bool ResultsIndex::complete(const RowVerdict& row) {
+  return std::all_of(row.values.begin(), row.values.end(),
+                     [](const auto& v) { return v.has_value(); });
+}
+
+std::vector<Option> ResultsIndex::options_present(schema::ProblemId problem,
+                                                  schema::Quantity quantity,
+                                                  schema::Element element) const {
+  std::vector<Option> out;
+  for (const auto& o : all_options()) {
+    if (row(problem, quantity, element, o) != nullptr)
+      out.push_back(o);
+  }
+  return out;
+}
+
+bool ResultsIndex::has(schema::ProblemId problem, schema::Quantity quantity,
+                       schema::Element element) const {
+  return !options_present(problem, quantity, element).empty();
+}
+
+std::optional<double> ResultsIndex::exact_of(const RowVerdict& row) const {
+  for (const auto m : kMeshes) {
+    const schema::QuantityResult* q = quantity_of(row, m);
+    if (q != nullptr && std::isfinite(q->exact))
+      return q->exact;
+  }
+  return std::nullopt;
+}
+
+std::optional<double> ResultsIndex::study_exact_of(const RowVerdict& row) const {
+  for (const auto m : kMeshes) {
+    const schema::QuantityResult* q = quantity_of(row, m);
+    if (q != nullptr && q->study_exact)
+      return q->study_exact;
+  }
+  return std::nullopt;
+}
+
+}  // namespace cs::reports

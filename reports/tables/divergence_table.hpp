@@ -1,0 +1,38 @@
+#pragma once
+// The flat-punch divergence table (the study's Eq. 47): for F_p and F_a, per element and
+// option set, the edge stress on C, M, F, the two differences and whether
+// |s_C - s_M| < |s_M - s_F| (the stress grows without bound, as it should at a singularity),
+// beside the study's ANSYS values and the same test applied to them.
+
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "reports/results/results_index.hpp"
+#include "reports/results/study_reference.hpp"
+
+namespace cs::reports {
+
+/// One row of the divergence table.
+struct DivergenceRow {
+  schema::ProblemId problem = schema::ProblemId::F_p;
+  schema::Element element = schema::Element::Q4;
+  Option option;
+  std::array<std::optional<double>, 3> values;        ///< ours, C M F
+  std::optional<bool> diverging;                      ///< ours, from the results file's row verdict
+  std::array<std::optional<double>, 3> study_values;  ///< ANSYS, C M F
+  std::optional<bool> study_diverging;                ///< Eq. 47 on the ANSYS values
+};
+
+/// Eq. 47: |s_C - s_M| < |s_M - s_F|.
+bool satisfies_eq47(double c, double m, double f);
+
+/// The rows of the singular problems (F_p, F_a) present in the results, in the study's order.
+std::vector<DivergenceRow> build_divergence_rows(const ResultsIndex& index,
+                                                 const StudyReference& study);
+
+/// The report section (empty when no case of a singular problem was run).
+std::string divergence_section(const ResultsIndex& index, const StudyReference& study);
+
+}  // namespace cs::reports

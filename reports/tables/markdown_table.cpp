@@ -1,0 +1,75 @@
+#include "reports/tables/markdown_table.hpp"
+
+#include <cmath>
+
+#include <fmt/format.h>
+
+namespace cs::reports {
+namespace {
+
+std::string escape_cell(const std::string& text) {
+  std::string out;
+  out.reserve(text.size());
+  for (char c : text) {
+    if (c == '|') {
+      out += "\\|";
+    } else if (c == '\n' || c == '\r') {
+      out += ' ';
+    } else {
+      out += c;
+    }
+  }
+  return out;
+}
+
+std::string render_row(const std::vector<std::string>& cells, std::size_t width) {
+  std::string line = "|";
+  for (std::size_t i = 0; i < width; ++i) {
+    line += ' ';
+    line += i < cells.size() ? escape_cell(cells[i]) : std::string();
+    line += " |";
+  }
+  return line + "\n";
+}
+
+}  // namespace
+
+std::string MarkdownTable::render() const {
+  std::size_t width = header_.size();
+  std::string out = render_row(header_, width);
+  out += "|";
+  for (std::size_t i = 0; i < width; ++i)
+    out += i == 0 ? " :-- |" : " :-: |";
+  out += "\n";
+  for (const auto& row : rows_)
+    out += render_row(row, width);
+  return out;
+}
+
+std::string format_value(double v) {
+  return fmt::format("{:.4f}", v);
+}
+
+std::string format_milliseconds(double ms) {
+  if (ms >= 100)
+    return fmt::format("{:.0f}", ms);
+  if (ms >= 10)
+    return fmt::format("{:.1f}", ms);
+  if (ms >= 1)
+    return fmt::format("{:.2f}", ms);
+  return fmt::format("{:.3f}", ms);
+}
+
+std::string format_value(const std::optional<double>& v) {
+  return v ? format_value(*v) : std::string(kMissing);
+}
+
+std::string format_percent(double percent) {
+  const double magnitude = std::abs(percent);
+  const std::string sign = percent < 0 ? "−" : "+";
+  if (magnitude >= 10)
+    return fmt::format("{}{:.1f} %", sign, magnitude);
+  return fmt::format("{}{:.2f} %", sign, magnitude);
+}
+
+}  // namespace cs::reports
