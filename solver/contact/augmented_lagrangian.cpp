@@ -109,8 +109,12 @@ AlgorithmOutcome solve_augmented_lagrangian_frictional(const FrictionalInput& in
           in.settings.ftolt);
       return out;
     }
-    lambda_hat_n = out.step.lambda.head(m).cwiseMax(0.0);
-    lambda_hat_t = out.step.lambda.tail(m);
+    // Each estimate is augmented where its own tolerance fails (as without friction, where AL
+    // is PM while the penetration is within FTOLN h).
+    if (penetration_ratio > in.settings.ftoln)
+      lambda_hat_n = out.step.lambda.head(m).cwiseMax(0.0);
+    if (slip_ratio > in.settings.ftolt)
+      lambda_hat_t = out.step.lambda.tail(m);
     states = out.active;
   }
 }

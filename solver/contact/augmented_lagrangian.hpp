@@ -14,8 +14,8 @@
 // lambda_T = lambda_hat_T + kt (s - s_prev) while sticking (kt = FKT x k), and the augmentation
 // acts on it too: lambda_hat_T starts at the previous step's shear (the first pass is the penalty
 // method) and is set to the converged shear while some sticking row slips by more than FTOLT x h
-// in the step, so that the elastic slip of a sticking point tends to zero. Normal and tangential
-// estimates are updated together until both tolerances hold. (Where no augmentation is needed,
+// in the step, so that the elastic slip of a sticking point tends to zero. Each estimate is
+// updated while its own tolerance fails, until both hold. (Where no augmentation is needed,
 // AL and PM give the same answer; with friction the default FTOLT makes them differ.)
 // Limitation: with ss Gauss-point rows (two per Q4 side, three per Q8 side) exact stick
 // over-constrains the relative displacement of a segment next to a slipping row, so the stick

@@ -282,6 +282,8 @@ void ContactAnalysis::fill_row_stage(const StageKey& key, const ConstraintSet& s
       const int j = rs.candidates[a];
       rs.g0[m + a] = -s_start[j];
       rs.rho[m + a] = rs.rho[a];
+      if (tangent_held(set.rows[j]))
+        continue;  // an empty row: no shear (frictional_active_set.hpp)
       for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator e(set.T, j); e; ++e) {
         const int eq = dofs.equation(static_cast<int>(e.col()));
         if (eq >= 0)
@@ -292,6 +294,19 @@ void ContactAnalysis::fill_row_stage(const StageKey& key, const ConstraintSet& s
   rs.B_free.resize(n_rows, dofs.n_free());
   rs.B_free.setFromTriplets(triplets.begin(), triplets.end());
   rs.B_free.makeCompressed();
+}
+
+bool ContactAnalysis::tangent_held(const ContactConstraint& row) const {
+  if (row.node < 0)
+    return false;
+  // The node's own slip (its node-to-surface tangential row) involves no free DOF.
+  const ConstraintSet& ns = constraints_.at(ConstraintRows::NodeToSurface);
+  const DofMap& dofs = elastic_.dof_map();
+  for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator e(ns.T, row.node); e; ++e) {
+    if (dofs.equation(static_cast<int>(e.col())) >= 0)
+      return false;
+  }
+  return true;
 }
 
 void ContactAnalysis::refresh_loads() {

@@ -114,6 +114,11 @@ class ContactAnalysis {
   /// The candidate rows and their condensation, stacked with the tangential twins if frictional.
   void fill_row_stage(const StageKey& key, const ConstraintSet& set, RowStage& rs) const;
   static StageKey dof_key(const StageKey& row_key);
+  /// Whether a nodal row's node cannot slip because its tangential DOFs (and its target point's)
+  /// are all prescribed, e.g. a node on a symmetry line against a rigid target. Its tangential
+  /// twin is left empty: the support takes the shear. (Weighted rows would otherwise constrain
+  /// more slips than there are free tangential DOFs, a singular system with multipliers.)
+  bool tangent_held(const ContactConstraint& row) const;
   AlgorithmOutcome run_frictionless(const ContactSettings& settings, const RowStage& cd) const;
   AlgorithmOutcome run_frictional(const ContactSettings& settings, const FrictionHistory& previous,
                                   const RowStage& cd) const;

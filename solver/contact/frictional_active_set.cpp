@@ -30,41 +30,43 @@ ActiveSetStep failed_step(ContactFailure kind, std::string why) {
 
 /// Row j of the system in mu: alpha mu_j + kappa mu_q + delta_j (W mu)_j
 /// - kappa rho_q (W mu)_q = gamma - beta r0_j - delta_j d_j + kappa rho_q d_q, delta = beta -
-/// alpha rho, q the partner row; equilibrated by its largest coefficient.
-bool fill_row(const CondensedProblem& p, const CoupledLaws& c, int j, int q, Eigen::MatrixXd& A,
+/// alpha rho, q the partner row; equilibrated by its largest coefficient. Stored as column j of
+/// At = A^T (contiguous, W being symmetric).
+bool fill_row(const CondensedProblem& p, const CoupledLaws& c, int j, int q, Eigen::MatrixXd& At,
               Eigen::VectorXd& rhs) {
   const RowLaw& l = c.laws[j];
   const double kappa = c.kappa[j];
   const double delta = l.beta - l.alpha * p.rho[j];
-  A.row(j) = delta * p.W.col(j).transpose();  // W is symmetric
+  At.col(j) = delta * p.W.col(j);
   rhs[j] = l.gamma - l.beta * p.g0[j] - delta * p.d[j];
   if (kappa != 0.0) {
-    A.row(j) -= (kappa * p.rho[q]) * p.W.col(q).transpose();
-    A(j, q) += kappa;
+    At.col(j) -= (kappa * p.rho[q]) * p.W.col(q);
+    At(q, j) += kappa;
     rhs[j] += kappa * p.rho[q] * p.d[q];
   }
-  A(j, j) += l.alpha;
-  const double scale = A.row(j).cwiseAbs().maxCoeff();
+  At(j, j) += l.alpha;
+  const double scale = At.col(j).cwiseAbs().maxCoeff();
   if (!(scale > 0.0))
     return false;
-  A.row(j) /= scale;
+  At.col(j) /= scale;
   rhs[j] /= scale;
   return true;
 }
 
-/// Solves the condensed problem with one (possibly coupled) law per row.
-ActiveSetStep solve_coupled(const CondensedProblem& p, const CoupledLaws& c) {
+/// Solves the condensed problem with one (possibly coupled) law per row. `At` is the workspace
+/// of the transposed system matrix (n x n, reused across iterations, factorized in place).
+ActiveSetStep solve_coupled(const CondensedProblem& p, const CoupledLaws& c, Eigen::MatrixXd& At) {
   const int n = p.size();
   const int m = n / 2;
-  Eigen::MatrixXd A(n, n);
+  At.resize(n, n);
   Eigen::VectorXd rhs(n);
   for (int j = 0; j < n; ++j) {
-    if (!fill_row(p, c, j, j < m ? j + m : j - m, A, rhs)) {
+    if (!fill_row(p, c, j, j < m ? j + m : j - m, At, rhs)) {
       return failed_step(ContactFailure::SingularSystem,
                          fmt::format("row {} has the empty law 0 = {}", j, c.laws[j].gamma));
     }
   }
-  const Eigen::PartialPivLU<Eigen::MatrixXd> lu(A);
+  const Eigen::PartialPivLU<Eigen::Ref<Eigen::MatrixXd>> lu(At);  // in place
   const double rcond = lu.rcond();
   if (!(rcond > kMinRcond)) {
     return failed_step(ContactFailure::SingularSystem,
@@ -74,7 +76,7 @@ ActiveSetStep solve_coupled(const CondensedProblem& p, const CoupledLaws& c) {
                                    n, rcond));
   }
   ActiveSetStep step;
-  step.mu = lu.solve(rhs);
+  step.mu = lu.transpose().solve(rhs);
   const Eigen::VectorXd v = p.d + p.W * step.mu;
   step.gap = p.g0 + v;
   step.lambda = step.mu - p.rho.cwiseProduct(v);
@@ -97,15 +99,19 @@ ActiveSetStep solve_coupled(const CondensedProblem& p, const CoupledLaws& c) {
 }
 
 /// The laws of every row for the states (2m).
-void laws_for(const std::vector<char>& states, const ActiveSetRules& normal,
-              const TangentialRules& tangential, double mu, CoupledLaws& c) {
+void laws_for(const CondensedProblem& p, const std::vector<char>& states,
+              const ActiveSetRules& normal, const TangentialRules& tangential, double mu,
+              CoupledLaws& c) {
   const int m = static_cast<int>(states.size()) / 2;
   for (int j = 0; j < m; ++j) {
     c.laws[j] = normal.law(j, states[j] != 0);
     c.kappa[j] = 0.0;
     c.kappa[m + j] = 0.0;
-    if (states[j] == 0) {
-      c.laws[m + j] = RowLaw{1.0, 0.0, 0.0};  // open: no shear
+    if (states[j] == 0 || p.W(m + j, m + j) == 0.0) {
+      // Open: no shear. A tangential twin none of whose DOFs is free (W's column is zero: a
+      // node on a symmetry line against a rigid target) cannot slip; its support takes the
+      // shear, and the row carries none.
+      c.laws[m + j] = RowLaw{1.0, 0.0, 0.0};
     } else if (states[m + j] == kStickCode) {
       const RowLaw l = tangential.stick_law(j);  // on (lambda_T, s); the row holds r = -s
       c.laws[m + j] = RowLaw{l.alpha, -l.beta, l.gamma};
@@ -145,10 +151,11 @@ AlgorithmOutcome run_frictional_active_set(const CondensedProblem& problem,
   std::map<std::vector<char>, int> visited;  // states -> iteration that used them
   CoupledLaws laws{std::vector<RowLaw>(n), std::vector<double>(n, 0.0)};
   std::vector<char> next(n);
+  Eigen::MatrixXd workspace(n, n);
   for (int it = 1; it <= max_iterations; ++it) {
     visited.emplace(states, it);
-    laws_for(states, normal, tangential, mu, laws);
-    ActiveSetStep step = solve_coupled(problem, laws);
+    laws_for(problem, states, normal, tangential, mu, laws);
+    ActiveSetStep step = solve_coupled(problem, laws, workspace);
     out.iterations = it;
     if (!step.ok) {
       out.status = ContactStatus::NotConverged;

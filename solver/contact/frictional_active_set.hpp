@@ -9,7 +9,8 @@
 // Pair j is row j (normal) and row m + j (tangential). In one iteration every row obeys a linear
 // law alpha lambda_j + beta r_j + kappa lambda_{partner} = gamma:
 //   - the normal row: the algorithm's ActiveSetRules (kappa = 0);
-//   - the tangential row: open (normal inactive) lambda_T = 0; stick: the TangentialRules'
+//   - the tangential row: open (normal inactive, or an empty twin: a node whose slip is held by
+//     supports, which take the shear) lambda_T = 0; stick: the TangentialRules'
 //     stick law (solver/contact/coulomb_friction.hpp); slip with sign sigma: lambda_T =
 //     sigma mu lambda_N, the one coupled law (kappa = -sigma mu).
 // Substituted, the laws give a dense nonsymmetric system in mu (rows equilibrated, LU with

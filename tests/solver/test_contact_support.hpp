@@ -5,6 +5,8 @@
 // Frame as in the study: z points into the indented block, whose contact surface is z = 0; a
 // meshed indenter occupies z < 0, its back face fixed.
 
+#include <cmath>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -152,6 +154,147 @@ inline ContactSettings settings(ContactDiscretization d, ContactAlgorithm a) {
   ContactSettings s;
   s.discretization = d;
   s.algorithm = a;
+  return s;
+}
+
+/// The loads of a frictional test model, read by its load and support callables whenever the
+/// solver evaluates them: a load step only changes these numbers.
+struct FrictionLoad {
+  double p = 0.0;          ///< normal pressure (patch) or its resultant's scale (Cattaneo-Mindlin)
+  double tau_top = 0.0;    ///< shear traction on the loaded body's far face (+x)
+  double tau_sides = 0.0;  ///< shear traction of the uniform shear state on the sides
+  double top_ux = 0.0;     ///< prescribed u_x of the block's top (sliding support), plus eps_x x
+};
+
+/// The frictional contact patch test: a block [0, a] x [0, h] ("block", nx x nz elements) on a
+/// base [0, a] x [-h, 0] ("base", base_nx x nz) of the same material; the block's bottom is the
+/// contact surface, the base's top its target. Supports and loads make the exact solution the
+/// uniform stress sigma_z = -p, tau_xz = tau (sigma_x = 0), whose displacements are linear, so
+/// that the FE space holds it (between non-matching meshes too, with mortar):
+///   - base bottom z = -h: u_z = 0 and u_x = eps_x x, eps_x = nu (1 + nu) p / E (plane strain,
+///     the lateral expansion under p);
+///   - block top: the traction (tau_top, -p); with `sliding_support` its u_x is prescribed to
+///     eps_x x + top_ux instead (a support that can drive the block into sliding);
+///   - the sides of both bodies: (0, -tau_sides) on x = 0 and (0, +tau_sides) on x = a.
+/// The shear transmitted along t = +x is tau; the block's x position is held by friction alone
+/// unless the support slides it.
+struct FrictionPatchSpec {
+  ElementType type = ElementType::Q4;
+  int nx = 4;
+  int nz = 4;
+  int base_nx = 4;
+  double a = 1.0;
+  double h = 1.0;
+  double E = 1000.0;
+  double nu = 0.3;
+  bool sliding_support = false;
+  double shear_modulus() const { return E / (2.0 * (1.0 + nu)); }
+  double eps_x(double p) const { return nu * (1.0 + nu) * p / E; }
+};
+
+inline Model friction_patch_model(const FrictionPatchSpec& s,
+                                  const std::shared_ptr<const FrictionLoad>& load) {
+  std::vector<Mesh> parts{block_mesh(s.type, 0.0, 0.0, s.a, s.h, s.nx, s.nz, "block"),
+                          block_mesh(s.type, 0.0, -s.h, s.a, s.h, s.base_nx, s.nz, "base")};
+  Model model;
+  model.mesh = merge_bodies(parts);
+  model.analysis = AnalysisType::PlaneStrain;
+  model.materials.push_back({s.E, s.nu});
+  model.materials.push_back({s.E, s.nu});
+  model.fix(NodeSelection::node_set("base.bottom"), Component::Z);
+  model.prescribe(NodeSelection::node_set("base.bottom"), Component::X,
+                  [s, load](const Eigen::Vector2d& x) { return s.eps_x(load->p) * x.x(); });
+  if (s.sliding_support) {
+    model.prescribe(
+        NodeSelection::node_set("block.top"), Component::X,
+        [s, load](const Eigen::Vector2d& x) { return s.eps_x(load->p) * x.x() + load->top_ux; });
+  }
+  model.loads.add_traction("block.top", [load](const Eigen::Vector2d&) {
+    return Eigen::Vector2d(load->tau_top, -load->p);
+  });
+  for (const char* body : {"block", "base"}) {
+    model.loads.add_traction(std::string(body) + ".left", [load](const Eigen::Vector2d&) {
+      return Eigen::Vector2d(0.0, -load->tau_sides);
+    });
+    model.loads.add_traction(std::string(body) + ".right", [load](const Eigen::Vector2d&) {
+      return Eigen::Vector2d(0.0, load->tau_sides);
+    });
+  }
+  return model;
+}
+
+inline ContactPair friction_patch_pair() {
+  return {"block.bottom", TargetSurface{"base.top"}};
+}
+
+/// Cattaneo-Mindlin in plane strain, two bodies of the same material: a block [-L, L] x [0, L]
+/// ("block", n_x x n_x / 2 elements; its bottom z = 0 the contact surface) pressed by a cylinder
+/// of radius R ("cylinder": [-L, L] wide, from its contact surface z = -(R - sqrt(R^2 - x^2))
+/// to its back z = -H, held fixed; n_x x n_x / 4 elements; its contact surface the target).
+/// The block carries on its top z = L the uniform traction (tau_top, -p) and on its sides the
+/// couple (0, -+tau_sides) of the uniform shear state (so that the tangential load adds no
+/// moment about the contact); it is held by the contact alone. Normal load P = 2 L p, tangential
+/// Q = 2 L tau_top (per unit thickness).
+struct MindlinSpec {
+  ElementType type = ElementType::Q4;
+  int n_x = 64;       ///< elements across 2L (element size 2L / n_x at the contact)
+  double L = 4.0;     ///< half-width and depth of the block, H of the cylinder
+  double R = 100.0;   ///< cylinder radius
+  double E = 1000.0;  ///< both bodies
+  double nu = 0.3;
+  /// Hertz's half-width of two equal bodies, a^2 = 8 P R (1 - nu^2) / (pi E).
+  double hertz_a(double P) const {
+    return std::sqrt(8.0 * P * R * (1.0 - nu * nu) / (3.14159265358979323846 * E));
+  }
+};
+
+inline Model mindlin_model(const MindlinSpec& s, const std::shared_ptr<const FrictionLoad>& load) {
+  std::vector<Mesh> parts{block_mesh(s.type, -s.L, 0.0, 2.0 * s.L, s.L, s.n_x, s.n_x / 2, "block")};
+  MappedBlockSpec cyl;
+  cyl.type = s.type;
+  for (int i = 0; i <= s.n_x; ++i)
+    cyl.u.push_back(static_cast<double>(i) / s.n_x);
+  for (int j = 0; j <= s.n_x / 4; ++j)
+    cyl.v.push_back(static_cast<double>(j) / (s.n_x / 4));
+  const double L = s.L, R = s.R;
+  cyl.map = [L, R](double u, double v) {
+    const double x = -L + 2.0 * L * u;
+    const double surface = -(R - std::sqrt(R * R - x * x));
+    return Eigen::Vector2d(x, -L + v * (L + surface));
+  };
+  cyl.body_name = "cylinder";
+  parts.push_back(make_mapped_block(cyl));
+  Model model;
+  model.mesh = merge_bodies(parts);
+  model.analysis = AnalysisType::PlaneStrain;
+  model.materials.push_back({s.E, s.nu});
+  model.materials.push_back({s.E, s.nu});
+  model.fix(NodeSelection::node_set("cylinder.bottom"), Component::X);
+  model.fix(NodeSelection::node_set("cylinder.bottom"), Component::Z);
+  model.loads.add_traction("block.top", [load](const Eigen::Vector2d&) {
+    return Eigen::Vector2d(load->tau_top, -load->p);
+  });
+  model.loads.add_traction("block.left", [load](const Eigen::Vector2d&) {
+    return Eigen::Vector2d(0.0, -load->tau_sides);
+  });
+  model.loads.add_traction("block.right", [load](const Eigen::Vector2d&) {
+    return Eigen::Vector2d(0.0, load->tau_sides);
+  });
+  return model;
+}
+
+inline ContactPair mindlin_pair() {
+  return {"block.bottom", TargetSurface{"cylinder.top"}};
+}
+
+/// The settings of a frictional method: the study's PM, AL, LMP, PLM.
+inline ContactSettings friction_settings(ContactDiscretization d, ContactAlgorithm a, double mu,
+                                         TangentialEnforcement t = TangentialEnforcement::Penalty) {
+  ContactSettings s;
+  s.discretization = d;
+  s.algorithm = a;
+  s.mu = mu;
+  s.tangential = t;
   return s;
 }
 
