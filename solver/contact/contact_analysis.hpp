@@ -70,7 +70,8 @@ class ContactAnalysis {
   ContactAnalysis(LinearStaticAnalysis& elastic, ContactPair pair);
   ~ContactAnalysis();
 
-  /// Runs one contact analysis. Throws ContactError for invalid settings or a target that no
+  /// Runs one contact analysis (with friction: one load step from the unloaded reference state,
+  /// the loads applied at once). Throws ContactError for invalid settings or a target that no
   /// contact point comes within the pinball of; a failure to converge is a status.
   /// Changed loads or prescribed displacement values of the model (elastic.update_prescribed_
   /// values()) are picked up at the cost of one forward solve; a changed stiffness (materials,

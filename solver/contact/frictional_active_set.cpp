@@ -161,7 +161,7 @@ AlgorithmOutcome run_frictional_active_set(const CondensedProblem& problem,
       out.status = ContactStatus::NotConverged;
       out.failure = step.failure_kind;
       out.reason = fmt::format("frictional active-set iteration {}: {}", it, step.failure);
-      return out;
+      break;  // out.step keeps the last finite solution, if any
     }
     double residual = 0.0;
     for (int j = 0; j < m; ++j) {

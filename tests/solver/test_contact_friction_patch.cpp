@@ -8,8 +8,9 @@
 //     sticks; PLM has no slip increment (1e-8 of the block's shear displacement); the penalty
 //     tangents (PM, LMP) slip elastically by exactly tau h / (FKT FKN E); AL by <= FTOLT h;
 //   - slip (a sliding support drives the block's top to 1.2 x the displacement that transmits
-//     mu p, after a stick step at 0.6 x): every point slips and the shear is mu p exactly (1e-8)
-//     for every method; in the stick step PLM transmits 0.6 mu p exactly with no slip;
+//     mu p, after a stick step at 0.6 x, then back to -1.2 x): every point slips and the shear
+//     is mu p, then -mu p, exactly (1e-8) for every method, with the slips the kinematics
+//     demand; in the stick step PLM transmits 0.6 mu p exactly with no slip;
 //   - LMP and PLM are different methods: on the same stick case their blocks differ by exactly
 //     LMP's elastic slip.
 // ns and ss with matching meshes, mortar also between non-matching meshes (7 vs 10 elements).
@@ -171,9 +172,14 @@ TEST_P(FrictionPatchTest, SlidingSupportSlipsEverywhereAtMuP) {
          load->top_ux = 1.2 * U_mu;
          load->tau_sides = kMu * kP;
        }},
+      {"back to -1.2",
+       [&] {
+         load->top_ux = -1.2 * U_mu;
+         load->tau_sides = -kMu * kP;
+       }},
   };
   const std::vector<ContactResult> path = contact.solve_steps(settings(), steps);
-  ASSERT_EQ(path.size(), 3u) << path.back().reason;
+  ASSERT_EQ(path.size(), 4u) << path.back().reason;
   expect_uniform(path[0], 0.0, FrictionState::Stick, "normal");
   if (exact_stick()) {  // penalty tangents transmit less than 0.6 mu p: their compliance
     expect_uniform(path[1], 0.6 * kMu * kP, FrictionState::Stick, "stick 0.6");
@@ -184,6 +190,13 @@ TEST_P(FrictionPatchTest, SlidingSupportSlipsEverywhereAtMuP) {
   for (const ContactNodeResult& n : path[2].nodes) {
     EXPECT_TRUE(Near(n.slip, 0.2 * U_mu, {1e-8, 0.0})) << "x = " << n.position.x();
     EXPECT_GT(n.slip_increment, 0.0);  // along +t, the sign of the shear
+  }
+  // Reversed: the block slides back, shear -mu p, total slip -0.2 U_mu (an increment of
+  // -0.4 U_mu from the slipping state: the history carries the sign).
+  expect_uniform(path[3], -kMu * kP, FrictionState::Slip, "back to -1.2");
+  for (const ContactNodeResult& n : path[3].nodes) {
+    EXPECT_TRUE(Near(n.slip, -0.2 * U_mu, {1e-8, 0.0})) << "x = " << n.position.x();
+    EXPECT_TRUE(Near(n.slip_increment, -0.4 * U_mu, {1e-8, 0.0})) << "x = " << n.position.x();
   }
   std::printf("[ info     ] %s: slip step %d iterations, peak shear / (mu p) - 1 = %.1e\n",
               case_name({GetParam(), 0}).c_str(), path[2].active_set_iterations,
