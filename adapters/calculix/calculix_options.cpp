@@ -58,6 +58,11 @@ void validate(const CalculixOptions& options) {
           "(got {})",
           options.tension_sigma_inf));
   }
+  if (options.contact == CcxContactType::NodeToSurface &&
+      options.behavior == CcxPressureOverclosure::Linear &&
+      !positive_finite(options.spring_distance_c0))
+    throw CalculixError(fmt::format("CalculiX: c0 must be positive and finite (got {})",
+                                    options.spring_distance_c0));
   if (!(options.axis_offset >= 0.0 && options.axis_offset <= 1e-3))
     throw CalculixError(
         fmt::format("CalculiX: axis offset must be in [0, 1e-3] (got {})", options.axis_offset));
@@ -74,7 +79,8 @@ void validate(const CalculixOptions& options) {
 std::vector<OptionMapping> calculix_option_mapping() {
   return {
       {"ns", "*CONTACT PAIR, TYPE=NODE TO SURFACE, SMALL SLIDING", "same",
-       "penalty springs at the slave nodes; pairing once per increment like our small sliding"},
+       "penalty springs at the slave nodes, paired once per increment (small sliding, like "
+       "ours); springs for clearances up to c0 = 0.1 (x sqrt of the spring area)"},
       {"ss", "*CONTACT PAIR, TYPE=SURFACE TO SURFACE", "same",
        "face-to-face penalty at integration points of the cut slave/master faces (not Gauss "
        "points of the slave side alone)"},

@@ -126,11 +126,11 @@ void write_interaction(std::ostream& out, const CalculixOptions& options) {
   if (options.behavior == CcxPressureOverclosure::Linear) {
     out << num(options.penalty_K);
     if (options.contact == CcxContactType::NodeToSurface)
-      out << ", " << num(options.tension_sigma_inf);
+      out << ", " << num(options.tension_sigma_inf) << ", " << num(options.spring_distance_c0);
     out << "\n";
   }
   out << "*CONTACT PAIR, INTERACTION=CONTACT, TYPE=" << to_string(options.contact);
-  if (options.contact == CcxContactType::NodeToSurface)
+  if (options.contact == CcxContactType::NodeToSurface && options.small_sliding)
     out << ", SMALL SLIDING";
   out << "\nSLAVE, MASTER\n";
 }

@@ -6,6 +6,8 @@
 #include <vector>
 
 #include "adapters/calculix/calculix_options.hpp"
+#include "oracles/mcewen.hpp"
+#include "solver/mesh/indenter.hpp"
 #include "solver/mesh/mesh_merge.hpp"
 #include "solver/mesh/structured_block.hpp"
 #include "solver/model.hpp"
@@ -75,6 +77,56 @@ inline CalculixOptions penalty_options(const PatchSpec& s, CcxContactType type, 
   options.tension_sigma_inf = 0.0025 * s.p;
   options.time_limit_seconds = 60.0;
   return options;
+}
+
+/// Plane-strain Hertz contact (the study's H_p): a block [0, 4a] x [0, 4a] of n x n elements
+/// loaded by McEwen's exact tractions (study Eqs. 11-12) on z = 4a and x = 4a, symmetric about
+/// x = 0, held vertically only by a stiff cylinder of radius R = pi E a / (8 (1 - nu^2) p)
+/// (Eq. 16; E ratio 1e6, back face fixed) whose surface nodes line up with the block's.
+/// Exact: contact half-width a, -sigma_z(0, 0) / p = 4 / pi, contact force a p (half model).
+struct HertzSpec {
+  solver::ElementType type = solver::ElementType::Q4;
+  int n = 32;
+  double a = 1.0;
+  double E = 1000.0;
+  double nu = 0.3;
+  double p = 1.0;
+  double R() const { return 3.14159265358979323846 * E * a / (8.0 * (1.0 - nu * nu) * p); }
+};
+
+inline solver::Model hertz_model(const HertzSpec& s) {
+  using solver::Component;
+  using solver::NodeSelection;
+  const double L = 4.0 * s.a;
+  solver::IndenterSpec ind;
+  ind.type = s.type;
+  ind.profile = solver::circle_profile(s.R(), 2.0 * s.a);
+  for (int i = 0; i <= s.n / 2; ++i)
+    ind.surface_x.push_back(2.0 * s.a * i / (s.n / 2));
+  ind.height = s.a;
+  ind.n_rows = s.n / 4;
+  solver::Model model;
+  model.mesh = solver::merge_bodies(
+      {block_mesh(s.type, 0.0, 0.0, L, L, s.n, s.n, "block"), solver::make_indenter(ind)});
+  model.materials = {{s.E, s.nu}, {s.E * 1e6, s.nu}};
+  model.fix(NodeSelection::node_set("block.left"), Component::X);
+  model.fix(NodeSelection::node_set("indenter.left"), Component::X);
+  model.fix(NodeSelection::node_set("indenter.back"), Component::X);
+  model.fix(NodeSelection::node_set("indenter.back"), Component::Z);
+  const oracles::McEwenLoad load{s.a, s.p};
+  model.loads.add_traction("block.top", [load](const Eigen::Vector2d& x) {
+    const oracles::PlaneStress st = oracles::mcewen_stress(load, {x.x(), x.y()});
+    return Eigen::Vector2d(st.tau_xz, st.sigma_z);  // outward normal +z
+  });
+  model.loads.add_traction("block.right", [load](const Eigen::Vector2d& x) {
+    const oracles::PlaneStress st = oracles::mcewen_stress(load, {x.x(), x.y()});
+    return Eigen::Vector2d(st.sigma_x, st.tau_xz);  // outward normal +x
+  });
+  return model;
+}
+
+inline solver::ContactPair hertz_pair() {
+  return {"block.bottom", solver::TargetSurface{"indenter.contact"}};
 }
 
 }  // namespace cs::adapters::calculix::test

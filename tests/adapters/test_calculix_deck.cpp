@@ -123,9 +123,10 @@ TEST(CalculixDeck, InteractionFollowsTheOptions) {
   EXPECT_NE(ns.find("TYPE=NODE TO SURFACE, SMALL SLIDING\nSLAVE, MASTER"), std::string::npos);
   const auto law = block(ns, "*SURFACE BEHAVIOR");
   ASSERT_EQ(law.size(), 1u);
-  ASSERT_EQ(law[0].size(), 2u);                         // K, sigma_inf
+  ASSERT_EQ(law[0].size(), 3u);                         // K, sigma_inf, c0
   EXPECT_EQ(std::stod(law[0][0]), 10 * 1000.0 / 0.25);  // fkn E / h
   EXPECT_EQ(std::stod(law[0][1]), 0.0025);
+  EXPECT_EQ(std::stod(law[0][2]), 0.1);
   const std::string ss = patch_deck(s, CcxContactType::SurfaceToSurface);
   EXPECT_NE(ss.find("TYPE=SURFACE TO SURFACE\n"), std::string::npos);
   EXPECT_EQ(block(ss, "*SURFACE BEHAVIOR")[0].size(), 1u);  // K only

@@ -309,3 +309,42 @@ TEST(CalculixOptionMapping, StudyOptionsMapToCalculix) {
 
 }  // namespace
 }  // namespace cs::adapters::calculix
+
+namespace cs::adapters::calculix {
+namespace {
+
+TEST(CalculixHertz, NodeToSurfaceQ4) {
+  // H_p at h = a / 8 (32 x 32 block), K = 1000 E / h. Exact: -sigma_z(0, 0) / p = 4 / pi, the
+  // contact force a p on the half model, no pressure beyond x = a.
+  test::HertzSpec s;
+  const solver::Model model = test::hertz_model(s);
+  CalculixOptions options;
+  options.contact = CcxContactType::NodeToSurface;
+  options.penalty_K = 1000.0 * s.E / (4.0 * s.a / s.n);
+  options.tension_sigma_inf = 0.0025 * s.p;
+  options.time_limit_seconds = 120.0;
+  cs::testing::TempDir dir;
+  const CalculixResult r = run_calculix(model, test::hertz_pair(), options, dir.path());
+  print_run("Hertz H_p Q4 ns h = a/8", r);
+  ASSERT_TRUE(r.converged()) << r.reason;
+  double support = 0.0;
+  for (int n : solver::node_set(model.mesh, "indenter.back"))
+    support += r.reaction[n].y();
+  EXPECT_TRUE(Near(support, s.a * s.p, {1e-4, 0}));  // equilibrium with McEwen's tractions
+  const CalculixContactNode& axis = r.contact.front();
+  ASSERT_EQ(axis.position.x(), 0.0);
+  const double exact = 4.0 / std::numbers::pi;
+  // The nodal pressure converges fast (the hand run: -0.01 % at h = a/16); the
+  // extrapolated nodal stress is first order in h (+2.95 % at h = a/16, +5.5 % here).
+  EXPECT_TRUE(Near(axis.pressure / s.p, exact, {0.01, 0}));
+  EXPECT_TRUE(Near(-r.nodal_stress[axis.node].sigma_z / s.p, exact, {0.08, 0}));
+  for (const auto& c : r.contact) {
+    if (c.position.x() > 1.2 * s.a)  // outside the contact zone (a + 1.6 h)
+      EXPECT_LT(std::abs(c.pressure), 0.01 * s.p) << "x = " << c.position.x();
+  }
+  std::printf("[ ccx      ] Hertz: -sigma_z/p = %.4f, p_axis/p = %.4f (exact %.4f)\n",
+              -r.nodal_stress[axis.node].sigma_z / s.p, axis.pressure / s.p, exact);
+}
+
+}  // namespace
+}  // namespace cs::adapters::calculix
