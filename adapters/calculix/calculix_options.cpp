@@ -59,7 +59,6 @@ void validate(const CalculixOptions& options) {
           options.tension_sigma_inf));
   }
   if (options.contact == CcxContactType::NodeToSurface &&
-      options.behavior == CcxPressureOverclosure::Linear &&
       !positive_finite(options.spring_distance_c0))
     throw CalculixError(fmt::format("CalculiX: c0 must be positive and finite (got {})",
                                     options.spring_distance_c0));
@@ -92,8 +91,8 @@ std::vector<OptionMapping> calculix_option_mapping() {
       {"AL", "PRESSURE-OVERCLOSURE=LINEAR, K = FKN E / h", "approximated",
        "CalculiX has no augmented Lagrangian: the penalty alone, without augmentation"},
       {"LMP", "PRESSURE-OVERCLOSURE=HARD", "approximated",
-       "for node/surface-to-surface pairs HARD is a penalty whose stiffness CalculiX picks; "
-       "its Lagrange-multiplier contact is mortar (not supported in 2D)"},
+       "for node/surface-to-surface pairs ccx reduces HARD to a penalty with K = 50 E (its "
+       "default); its Lagrange-multiplier contact is mortar (not supported in 2D)"},
       {"PLM", "PRESSURE-OVERCLOSURE=HARD", "approximated", "as LMP (no friction: they coincide)"},
       {"MPC", "-", "not supported",
        "*TIE and PRESSURE-OVERCLOSURE=TIED tie tangentially too (TIED needs friction data); "

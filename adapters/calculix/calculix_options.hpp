@@ -5,9 +5,11 @@
 //   *CONTACT PAIR, TYPE=NODE TO SURFACE   node-to-face penalty springs (slave nodes)
 //   *CONTACT PAIR, TYPE=SURFACE TO SURFACE face-to-face penalty (slave integration points)
 //   *SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=LINEAR  p = K x overclosure (K: pressure / length)
-//   *SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=HARD    with the two pair types above, a linear
-//       penalty whose stiffness CalculiX chooses itself (measured: the penetration of a patch
-//       test is p / (50 E)); CalculiX's Lagrange-multiplier "hard" contact is its mortar method
+//   *SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=HARD    with the two pair types above, ccx reduces
+//       it to LINEAR with its defaults: K = 50 E_1 (E of the deck's first material, i.e. our
+//       body 0, per unit length), sigma_inf = E_1 / 70000, c0 = 1e-3 (ccx warns so); the
+//       adapter sets only c0 (data line "0, 0, c0" for node-to-surface). CalculiX's
+//       Lagrange-multiplier "hard" contact is its mortar method
 //   TYPE=MORTAR (and LINMORTAR, PGMORTAR, PGLINMORTAR): ccx 2.20 rejects it on 2D elements
 //       ("*ERROR in catsmpcslavno: slave node ... is connected als dependent node in a MPC":
 //       the 2D elements are expanded into 3D ones tied by MPCs, which mortar forbids).
@@ -39,7 +41,7 @@ enum class CcxContactType {
 /// *SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=...
 enum class CcxPressureOverclosure {
   Linear,  ///< p = K g for an overclosure g > 0 (node-to-surface: quasi-bilinear, see K_tension)
-  Hard,    ///< CalculiX chooses (for ns and ss: a linear penalty of its own stiffness)
+  Hard,    ///< CalculiX's defaults (for ns and ss: LINEAR with K = 50 E of its first material)
 };
 
 /// "NODE TO SURFACE", "SURFACE TO SURFACE", "MORTAR" (as written in the deck).

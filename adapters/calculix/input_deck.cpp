@@ -123,11 +123,15 @@ void write_surface(std::ostream& out, const std::string& name,
 void write_interaction(std::ostream& out, const CalculixOptions& options) {
   out << "*SURFACE INTERACTION, NAME=CONTACT\n";
   out << "*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=" << to_string(options.behavior) << "\n";
+  const bool ns = options.contact == CcxContactType::NodeToSurface;
   if (options.behavior == CcxPressureOverclosure::Linear) {
     out << num(options.penalty_K);
-    if (options.contact == CcxContactType::NodeToSurface)
+    if (ns)
       out << ", " << num(options.tension_sigma_inf) << ", " << num(options.spring_distance_c0);
     out << "\n";
+  } else if (ns) {
+    // HARD is LINEAR with ccx's defaults where a value is 0: keep K and sigma_inf, set c0.
+    out << "0, 0, " << num(options.spring_distance_c0) << "\n";
   }
   out << "*CONTACT PAIR, INTERACTION=CONTACT, TYPE=" << to_string(options.contact);
   if (options.contact == CcxContactType::NodeToSurface && options.small_sliding)

@@ -134,6 +134,9 @@ TEST(CalculixDeck, InteractionFollowsTheOptions) {
   hard.behavior = CcxPressureOverclosure::Hard;
   const std::string h = input_deck(test::patch_model(s), test::patch_pair(), hard);
   EXPECT_NE(h.find("PRESSURE-OVERCLOSURE=HARD\n*CONTACT PAIR"), std::string::npos);
+  hard.contact = CcxContactType::NodeToSurface;  // ccx's defaults but our c0
+  const std::string hn = input_deck(test::patch_model(s), test::patch_pair(), hard);
+  EXPECT_NE(hn.find("PRESSURE-OVERCLOSURE=HARD\n0, 0, 1.000000000000e-01\n"), std::string::npos);
 }
 
 TEST(CalculixDeck, MaterialsPerBody) {
