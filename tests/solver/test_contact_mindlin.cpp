@@ -6,15 +6,17 @@
 //
 //   c = a sqrt(1 - Q / (mu P)),
 //
-// slipping (shear = mu p) over c < |x| < a. The bodies are finite (8a wide, 4a deep, uniform
-// tractions on the far faces), so a is taken from the computed normal step (a_FE, compared
-// with Hertz's two-body a in the output) and c is expected at a_FE sqrt(1 - Q / (mu P)).
+// slipping (shear = mu p) over c < |x| < a. The bodies are finite (8a wide, 4a deep, the
+// tractions of a uniform stress state on their far faces), so a is taken from the computed
+// normal step (a_FE, compared with Hertz's two-body a in the output) and c is expected at
+// a_FE sqrt(1 - Q / (mu P)).
 //
 // Requirements, every discretization and PM, AL, LMP, PLM, Q4 and Q8, h = a / 8:
 //   - every step converges;
 //   - the stick half-width is within 2 elements of a_FE sqrt(1 - Q / (mu P)) (the stick-slip
 //     boundary lies between two nodes: one element is the resolution, 2 leaves the finite
-//     bodies' small deviation from the half-space room);
+//     bodies' small deviation from the half-space room), and the stick zone is centred to
+//     within one element (the model is symmetric about x = 0);
 //   - slipping nodes carry shear = mu p exactly (1e-8) in the direction of their slip
 //     increment; sticking nodes |shear| <= mu p;
 //   - the shear transmitted adds up to Q (1e-3: the target's tangent turns by at most a / R =
@@ -138,6 +140,7 @@ TEST_P(MindlinTest, StickZoneHalfWidth) {
   const Zone stick = zone_of(path[2].nodes, sticking);
   const double c_expected = a_fe * std::sqrt(1.0 - kQOverMuP);
   EXPECT_LE(std::abs(stick.half_width - c_expected), 2.0 * h);  // see the file comment
+  EXPECT_LE(std::abs(stick.centre), h);  // symmetric bodies: centred, to the node spacing
 
   double shear_sum = 0.0;
   for (double f : path[2].friction_history.force_t)

@@ -230,15 +230,20 @@ inline ContactPair friction_patch_pair() {
 /// Cattaneo-Mindlin in plane strain, two bodies of the same material: a block [-L, L] x [0, L]
 /// ("block", n_x x n_x / 2 elements; its bottom z = 0 the contact surface) pressed by a cylinder
 /// of radius R ("cylinder": [-L, L] wide, from its contact surface z = -(R - sqrt(R^2 - x^2))
-/// to its back z = -H, held fixed; n_x x n_x / 4 elements; its contact surface the target).
-/// The block carries on its top z = L the uniform traction (tau_top, -p) and on its sides the
-/// couple (0, -+tau_sides) of the uniform shear state (so that the tangential load adds no
-/// moment about the contact); it is held by the contact alone. Normal load P = 2 L p, tangential
-/// Q = 2 L tau_top (per unit thickness).
+/// to its back z = -L; n_x x n_x / 4 elements; its contact surface the target). Both bodies
+/// carry on their far boundaries the tractions of the same uniform stress state (sigma_z = -p,
+/// tau_xz = tau_top): the block (tau_top, -p) on its top, the cylinder (-tau_top, p) on its back,
+/// and both the couple (0, -+tau_sides) on their sides (so that the tangential load adds no
+/// moment about the contact). The loads are self-equilibrated; a statically determinate and
+/// symmetric support (the cylinder's back centre held in x, its back corners in z) only removes
+/// the rigid-body modes, so both bodies deform alike, as two half-spaces would, and the assembly
+/// does not turn (small-sliding rows with an initial gap are not invariant under a rigid
+/// rotation: an asymmetric support tilts the shear at the contact edges by ~0.01 p0). Normal load
+/// P = 2 L p, tangential Q = 2 L tau_top (per unit thickness).
 struct MindlinSpec {
   ElementType type = ElementType::Q4;
-  int n_x = 64;       ///< elements across 2L (element size 2L / n_x at the contact)
-  double L = 4.0;     ///< half-width and depth of the block, H of the cylinder
+  int n_x = 64;       ///< elements across 2L (element size 2L / n_x at the contact); n_x % 4 == 0
+  double L = 4.0;     ///< half-width and depth of both bodies
   double R = 100.0;   ///< cylinder radius
   double E = 1000.0;  ///< both bodies
   double nu = 0.3;
@@ -248,8 +253,7 @@ struct MindlinSpec {
   }
 };
 
-inline Model mindlin_model(const MindlinSpec& s, const std::shared_ptr<const FrictionLoad>& load) {
-  std::vector<Mesh> parts{block_mesh(s.type, -s.L, 0.0, 2.0 * s.L, s.L, s.n_x, s.n_x / 2, "block")};
+inline Mesh mindlin_cylinder(const MindlinSpec& s) {
   MappedBlockSpec cyl;
   cyl.type = s.type;
   for (int i = 0; i <= s.n_x; ++i)
@@ -263,23 +267,36 @@ inline Model mindlin_model(const MindlinSpec& s, const std::shared_ptr<const Fri
     return Eigen::Vector2d(x, -L + v * (L + surface));
   };
   cyl.body_name = "cylinder";
-  parts.push_back(make_mapped_block(cyl));
+  return make_mapped_block(cyl);
+}
+
+inline Model mindlin_model(const MindlinSpec& s, const std::shared_ptr<const FrictionLoad>& load) {
+  std::vector<Mesh> parts{block_mesh(s.type, -s.L, 0.0, 2.0 * s.L, s.L, s.n_x, s.n_x / 2, "block"),
+                          mindlin_cylinder(s)};
   Model model;
   model.mesh = merge_bodies(parts);
   model.analysis = AnalysisType::PlaneStrain;
   model.materials.push_back({s.E, s.nu});
   model.materials.push_back({s.E, s.nu});
-  model.fix(NodeSelection::node_set("cylinder.bottom"), Component::X);
-  model.fix(NodeSelection::node_set("cylinder.bottom"), Component::Z);
+  const std::vector<int>& back = model.mesh.node_sets.at("cylinder.bottom");  // sorted by x
+  const int centre = back[back.size() / 2];
+  model.fix(NodeSelection::list({centre}, "cylinder back centre"), Component::X);
+  model.fix(NodeSelection::list({back.front(), back.back()}, "cylinder back corners"),
+            Component::Z);
   model.loads.add_traction("block.top", [load](const Eigen::Vector2d&) {
     return Eigen::Vector2d(load->tau_top, -load->p);
   });
-  model.loads.add_traction("block.left", [load](const Eigen::Vector2d&) {
-    return Eigen::Vector2d(0.0, -load->tau_sides);
+  model.loads.add_traction("cylinder.bottom", [load](const Eigen::Vector2d&) {
+    return Eigen::Vector2d(-load->tau_top, load->p);
   });
-  model.loads.add_traction("block.right", [load](const Eigen::Vector2d&) {
-    return Eigen::Vector2d(0.0, load->tau_sides);
-  });
+  for (const char* body : {"block", "cylinder"}) {
+    model.loads.add_traction(std::string(body) + ".left", [load](const Eigen::Vector2d&) {
+      return Eigen::Vector2d(0.0, -load->tau_sides);
+    });
+    model.loads.add_traction(std::string(body) + ".right", [load](const Eigen::Vector2d&) {
+      return Eigen::Vector2d(0.0, load->tau_sides);
+    });
+  }
   return model;
 }
 
