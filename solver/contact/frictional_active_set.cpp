@@ -131,6 +131,28 @@ void canonicalize(std::vector<char>& states) {
   }
 }
 
+/// The states of the next iteration from a solution (2m), and the largest complementarity
+/// residual (force units).
+double next_states(const ActiveSetStep& step, const ActiveSetRules& normal,
+                   const TangentialRules& tangential, double mu, std::vector<char>& next) {
+  const int m = static_cast<int>(next.size()) / 2;
+  double residual = 0.0;
+  for (int j = 0; j < m; ++j) {
+    const double lambda_n = step.lambda[j];
+    const double lambda_t = step.lambda[m + j];
+    const double trial = tangential.trial(j, lambda_t, -step.gap[m + j]);
+    const double bound = coulomb_bound(mu, lambda_n);
+    residual = std::max({residual, std::abs(normal.residual(j, lambda_n, step.gap[j])),
+                         std::abs(coulomb_residual(lambda_t, trial, bound))});
+    next[j] = normal.next_active(j, lambda_n, step.gap[j]) ? 1 : 0;
+    next[m + j] = std::abs(trial) <= bound ? kStickCode
+                  : trial > 0.0            ? kSlipPositiveCode
+                                           : kSlipNegativeCode;
+  }
+  canonicalize(next);
+  return residual;
+}
+
 }  // namespace
 
 FrictionState friction_state(const std::vector<char>& states, int j) {
@@ -163,20 +185,7 @@ AlgorithmOutcome run_frictional_active_set(const CondensedProblem& problem,
       out.reason = fmt::format("frictional active-set iteration {}: {}", it, step.failure);
       break;  // out.step keeps the last finite solution, if any
     }
-    double residual = 0.0;
-    for (int j = 0; j < m; ++j) {
-      const double lambda_n = step.lambda[j];
-      const double lambda_t = step.lambda[m + j];
-      const double trial = tangential.trial(j, lambda_t, -step.gap[m + j]);
-      const double bound = coulomb_bound(mu, lambda_n);
-      residual = std::max({residual, std::abs(normal.residual(j, lambda_n, step.gap[j])),
-                           std::abs(coulomb_residual(lambda_t, trial, bound))});
-      next[j] = normal.next_active(j, lambda_n, step.gap[j]) ? 1 : 0;
-      next[m + j] = std::abs(trial) <= bound ? kStickCode
-                    : trial > 0.0            ? kSlipPositiveCode
-                                             : kSlipNegativeCode;
-    }
-    canonicalize(next);
+    const double residual = next_states(step, normal, tangential, mu, next);
     out.residual = residual / std::max(problem.force_scale, step.lambda.cwiseAbs().maxCoeff());
     out.active = states;
     out.step = std::move(step);

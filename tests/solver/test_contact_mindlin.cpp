@@ -100,6 +100,36 @@ double seconds_since(Clock::time_point t) {
   return std::chrono::duration<double>(Clock::now() - t).count();
 }
 
+/// The Coulomb law node by node: slipping nodes carry mu p along their slip increment, sticking
+/// ones at most mu p. Nodal rows carry the law node by node; Gauss-point rows (ss with PM / AL)
+/// carry it per Gauss point, and a Q8 node's shares (N_a, negative at corners) mix points of
+/// both kinds, so those are not checked here.
+void expect_coulomb(const ContactResult& r, ConstraintRows rows) {
+  if (rows == ConstraintRows::GaussPoints)
+    return;
+  for (const ContactNodeResult& n : r.nodes) {
+    if (n.friction == FrictionState::Slip) {
+      EXPECT_TRUE(Near(std::abs(n.shear), kMu * n.pressure, {1e-8, 1e-12})) << n.position.x();
+      EXPECT_GE(n.shear * n.slip_increment, 0.0) << n.position.x();
+    } else if (n.friction == FrictionState::Stick) {
+      EXPECT_LE(std::abs(n.shear), kMu * n.pressure * (1.0 + 1e-8)) << n.position.x();
+    }
+  }
+}
+
+/// The normal load P, then the tangential load Q in two increments.
+std::vector<LoadStep> mindlin_steps(const MindlinSpec& spec,
+                                    const std::shared_ptr<FrictionLoad>& load, double P, double Q) {
+  const double width = 2.0 * spec.L;
+  std::vector<LoadStep> steps{{"normal", [=] {
+                                 load->p = P / width;
+                                 load->tau_top = load->tau_sides = 0.0;
+                               }}};
+  for (int k = 1; k <= 2; ++k)
+    steps.push_back({"tangential", [=] { load->tau_top = load->tau_sides = 0.5 * k * Q / width; }});
+  return steps;
+}
+
 class MindlinTest : public ::testing::TestWithParam<MindlinCase> {};
 
 TEST_P(MindlinTest, StickZoneHalfWidth) {
@@ -114,15 +144,7 @@ TEST_P(MindlinTest, StickZoneHalfWidth) {
   const Model model = contact_test::mindlin_model(spec, load);
   LinearStaticAnalysis elastic(model);
   ContactAnalysis contact(elastic, contact_test::mindlin_pair());
-  const auto normal = [&] {
-    load->p = P / (2.0 * spec.L);
-    load->tau_top = load->tau_sides = 0.0;
-  };
-  std::vector<LoadStep> steps{{"normal", normal}};
-  for (int k = 1; k <= 2; ++k) {
-    steps.push_back(
-        {"tangential", [&, k] { load->tau_top = load->tau_sides = 0.5 * k * Q / (2.0 * spec.L); }});
-  }
+  const std::vector<LoadStep> steps = mindlin_steps(spec, load, P, Q);
   const ContactSettings settings =
       contact_test::friction_settings(c.discretization, c.algorithm, kMu, c.tangential);
   std::vector<ContactResult> path = contact.solve_steps(settings, steps);  // factorizes
@@ -146,19 +168,7 @@ TEST_P(MindlinTest, StickZoneHalfWidth) {
   for (double f : path[2].friction_history.force_t)
     shear_sum += f;
   EXPECT_TRUE(Near(shear_sum, Q, {1e-3, 0.0}));  // see the file comment
-  // Nodal rows carry the Coulomb law node by node; Gauss-point rows (ss with PM / AL) carry it
-  // per Gauss point, and a Q8 node's shares (N_a, negative at corners) mix points of both kinds.
-  const bool nodal_rows = constraint_rows(settings) != ConstraintRows::GaussPoints;
-  for (const ContactNodeResult& n : path[2].nodes) {
-    if (!nodal_rows)
-      break;
-    if (n.friction == FrictionState::Slip) {
-      EXPECT_TRUE(Near(std::abs(n.shear), kMu * n.pressure, {1e-8, 1e-12})) << n.position.x();
-      EXPECT_GE(n.shear * n.slip_increment, 0.0) << n.position.x();
-    } else if (n.friction == FrictionState::Stick) {
-      EXPECT_LE(std::abs(n.shear), kMu * n.pressure * (1.0 + 1e-8)) << n.position.x();
-    }
-  }
+  expect_coulomb(path[2], constraint_rows(settings));
 
   // Cattaneo-Mindlin's peak shear, at x = c: mu p0 sqrt(1 - c^2 / a^2), p0 = 2 P / (pi a).
   const double a_hertz = spec.hertz_a(P);
