@@ -63,8 +63,8 @@ struct CalculixOptions {
   /// element side that touches the axis (0: left on the axis). CalculiX expands axisymmetric
   /// elements by rotation; a face with a node on the axis collapses and its contact normal is
   /// undefined (ccx manual, *CONTACT PAIR): measured on the patch test, node-to-surface does not
-  /// converge and surface-to-surface gives sigma_z up to +26 % off near the axis, while with
-  /// the offset both are exact. The default moves them by a millionth of an element.
+  /// converge and surface-to-surface gives a tensile sigma_z at the axis, while with the offset
+  /// both are exact. The default moves them by a millionth of an element.
   double axis_offset = 1e-6;
   /// LINEAR with NODE TO SURFACE: c0, the clearance (over the square root of the node's spring
   /// area) up to which a slave node gets a contact spring at the start of an increment.

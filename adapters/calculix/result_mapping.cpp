@@ -34,7 +34,7 @@ void check_nodes(const FrdNodes& nodes, const Model& model) {
   for (std::size_t k = 0; k < nodes.ids.size(); ++k) {
     const int node = our_node(model, nodes.ids[k], "nodes");
     const Eigen::Vector2d frd(nodes.coordinates[3 * k], nodes.coordinates[3 * k + 1]);
-    if ((frd - model.mesh.nodes[node]).lpNorm<Eigen::Infinity>() > tolerance)
+    if (!((frd - model.mesh.nodes[node]).lpNorm<Eigen::Infinity>() <= tolerance))  // NaN too
       throw CalculixOutputError(fmt::format(
           "CalculiX results: node {} is at ({}, {}) in the .frd but at ({}, {}) in the model",
           nodes.ids[k], frd.x(), frd.y(), model.mesh.nodes[node].x(), model.mesh.nodes[node].y()));

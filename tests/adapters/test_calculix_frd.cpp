@@ -253,6 +253,13 @@ TEST(ResultMapping, WrongModelIsLoud) {
       map_results(parse_frd(data("patch_q4_ns.frd")), parse_expansion(data("patch_q4_ns.12d")),
                   test::patch_model(other), test::patch_pair(), result),
       CalculixOutputError);
+  // ... a NaN coordinate ...
+  std::string nan_node = data("patch_q4_ns.frd");
+  nan_node.replace(nan_node.find(" 5.00000E-01"), 12, "         NaN");
+  EXPECT_THROW(
+      map_results(parse_frd(nan_node), {}, test::patch_model(data_spec(solver::ElementType::Q4)),
+                  test::patch_pair(), result),
+      CalculixOutputError);
   // ... and against a model with fewer nodes.
   test::PatchSpec smaller = data_spec(solver::ElementType::Q4);
   smaller.nx = 1;
