@@ -44,6 +44,9 @@ AlgorithmOutcome run_algorithm(const AlgorithmInput& in) {
   throw ContactError("contact: unknown algorithm");
 }
 
+/// A node's slip counts as held by supports when its free DOFs' share of it is below this.
+constexpr double kHeldSlipShare = 1e-9;
+
 /// The frictional algorithm dispatch: the one place that maps ContactAlgorithm to its
 /// frictional implementation (validate() rejects MPC with friction).
 AlgorithmOutcome run_frictional_algorithm(const FrictionalInput& in) {
@@ -207,7 +210,17 @@ ContactAnalysis::DofStage& ContactAnalysis::dof_stage(const StageKey& row_key,
       contact_dofs.push_back(eq);
     node_of_equation[eq] = dofs.free_dofs()[eq] / 2;
   }
-  auto stage = std::make_unique<DofStage>(key.method);
+  // The frictionless and the frictional stage are one when their contact DOFs coincide (e.g. a
+  // curved or meshed target, whose rows touch both components already): same input, same
+  // factorization.
+  StageKey twin = key;
+  twin.frictional = !key.frictional;
+  const auto other = dof_stages_.find(twin);
+  if (other != dof_stages_.end() && other->second->condensation.contact_dofs() == contact_dofs) {
+    result.timings.condensation_reused = true;
+    return *dof_stages_.emplace(key, other->second).first->second;
+  }
+  auto stage = std::make_shared<DofStage>(key.method);
   stage->outcome = stage->condensation.compute(
       {elastic_.stiffness().K_ff, load_f_, contact_dofs, node_of_equation});
   const CondensationTimings& t = stage->condensation.timings();
@@ -299,14 +312,18 @@ void ContactAnalysis::fill_row_stage(const StageKey& key, const ConstraintSet& s
 bool ContactAnalysis::tangent_held(const ContactConstraint& row) const {
   if (row.node < 0)
     return false;
-  // The node's own slip (its node-to-surface tangential row) involves no free DOF.
+  // The node's own slip (its node-to-surface tangential row) involves no free DOF, but for
+  // round-off (a target normal a few 1e-11 off the axis gives the held node's slip a 1e-11
+  // share of its free normal DOF).
   const ConstraintSet& ns = constraints_.at(ConstraintRows::NodeToSurface);
   const DofMap& dofs = elastic_.dof_map();
+  double all = 0.0, free = 0.0;
   for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator e(ns.T, row.node); e; ++e) {
+    all = std::max(all, std::abs(e.value()));
     if (dofs.equation(static_cast<int>(e.col())) >= 0)
-      return false;
+      free = std::max(free, std::abs(e.value()));
   }
-  return true;
+  return free <= kHeldSlipShare * all;
 }
 
 void ContactAnalysis::refresh_loads() {
@@ -340,9 +357,11 @@ void ContactAnalysis::refresh_loads() {
   }
   if (f != load_f_) {
     load_f_ = f;
+    const DofStage* updated = nullptr;  // a shared stage appears under both of its keys
     for (auto& [key, ds] : dof_stages_) {
-      if (ds->outcome.ok())
+      if (ds->outcome.ok() && ds.get() != updated)
         ds->condensation.update_load(load_f_);
+      updated = ds.get();
     }
     for (auto& [key, rs] : row_stages_) {
       const DofStage& ds = *dof_stages_.at(dof_key(key));

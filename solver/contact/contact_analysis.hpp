@@ -141,7 +141,7 @@ class ContactAnalysis {
   ContactTarget target_;
   std::map<ConstraintRows, ConstraintSet> constraints_;
   /// Stage 1, keyed by dof_key() (pinball, method, frictional: every row kind shares it).
-  std::map<StageKey, std::unique_ptr<DofStage>> dof_stages_;
+  std::map<StageKey, std::shared_ptr<DofStage>> dof_stages_;  ///< shared: see dof_stage()
   std::map<StageKey, std::unique_ptr<RowStage>> row_stages_;  ///< stage 2, per row kind
   Eigen::VectorXd load_f_;      ///< the reduced load f_f the stages were computed for
   Eigen::VectorXd prescribed_;  ///< the prescribed values the stages were computed for
