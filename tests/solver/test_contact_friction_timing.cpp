@@ -1,12 +1,13 @@
 // Time of a frictional solve against the frictionless one on the same model: H_p (the study's
-// plane Hertz problem, McEwen's far-field tractions, rigid cylinder, symmetric half model), M
-// mesh, Q4, every discretization and PM, AL, LMP, PLM with mu = 0.3, the normal load in one step.
+// plane Hertz problem, McEwen's far-field tractions, symmetric half model) with the rigid
+// cylinder (M mesh, Q4) and with the meshed stiff indenter (C mesh, Q8), every discretization
+// and PM, AL, LMP, PLM with mu = 0.3, the normal load in one step.
 //
-// Requirement: every frictional solve converges (the node on the symmetry line, whose tangential
-// DOF is held, included). The output gives both times (the sparse factorizations, one each,
-// excluded: second solves), the iteration counts and how friction changes the peak pressure (a
-// rigid cylinder resisting the block's inward surface displacement, Spence's problem: a few
-// percent for nu = 0.3).
+// Requirement: every frictional solve converges (the node on the symmetry line, whose slip is
+// held by both bodies' supports, included: its tangential row is left out). The output gives both
+// times (the sparse factorizations, one each, excluded: second solves), the iteration counts and
+// how friction changes the peak pressure (a rigid cylinder resisting the block's inward surface
+// displacement, Spence's problem: a few percent for nu = 0.3).
 
 #include <chrono>
 #include <cmath>
@@ -28,9 +29,11 @@ double timed_ms(ContactAnalysis& contact, const ContactSettings& s, ContactResul
   return 1e3 * std::chrono::duration<double>(Clock::now() - t0).count();
 }
 
-TEST(FrictionTiming, FrictionalAgainstFrictionlessOnHertz) {
-  contact_test::HertzSpec spec;
-  spec.n = 32;
+class FrictionTiming : public ::testing::TestWithParam<contact_test::HertzSpec> {};
+
+TEST_P(FrictionTiming, FrictionalAgainstFrictionlessOnHertz) {
+  const contact_test::HertzSpec spec = GetParam();
+  const char* label = spec.meshed_indenter ? "C Q8 meshed" : "M Q4 rigid";
   const Model model = contact_test::hertz_model(spec);
   LinearStaticAnalysis elastic(model);
   ContactAnalysis contact(elastic, contact_test::hertz_pair(spec));
@@ -52,14 +55,30 @@ TEST(FrictionTiming, FrictionalAgainstFrictionlessOnHertz) {
       EXPECT_TRUE(frictional.converged())
           << to_string(d) << " " << method << ": " << frictional.reason;
       std::printf(
-          "[ info     ] H_p M Q4 %s %s: frictionless %.2f ms (%d iterations), mu = 0.3 %.2f ms "
+          "[ info     ] H_p %s %s %s: frictionless %.2f ms (%d iterations), mu = 0.3 %.2f ms "
           "(%d iterations, %d augmentations, %d rows); peak p %.4f -> %.4f, peak shear %.4f\n",
-          to_string(d), method, t0, frictionless.active_set_iterations, t1,
+          label, to_string(d), method, t0, frictionless.active_set_iterations, t1,
           frictional.active_set_iterations, frictional.augmentations, frictional.n_candidates,
           frictionless.peak_pressure, frictional.peak_pressure, frictional.peak_shear);
     }
   }
 }
+
+contact_test::HertzSpec hertz(int n, ElementType type, bool meshed) {
+  contact_test::HertzSpec spec;
+  spec.n = n;
+  spec.type = type;
+  spec.meshed_indenter = meshed;
+  return spec;
+}
+
+INSTANTIATE_TEST_SUITE_P(Hertz, FrictionTiming,
+                         ::testing::Values(hertz(32, ElementType::Q4, false),
+                                           hertz(16, ElementType::Q8, true)),
+                         [](const auto& info) {
+                           return std::string(info.param.meshed_indenter ? "C_Q8_meshed"
+                                                                         : "M_Q4_rigid");
+                         });
 
 }  // namespace
 }  // namespace cs::solver
