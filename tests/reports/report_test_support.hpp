@@ -1,7 +1,8 @@
 #pragma once
 // Shared helpers of the reports tests: the hand-made results file (data/small_results.json,
-// written by data/make_small_results.py), the study data of the source tree, a temporary
-// directory, and an edit of one value that keeps the case record and its row consistent.
+// written by data/make_small_results.py, schema v3), read by the one reader of results
+// (schema/), the study data of the source tree, a temporary directory, and an edit of one value
+// that keeps the case record and its row consistent.
 
 #include <cmath>
 #include <filesystem>
@@ -12,9 +13,9 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "reports/results_file.hpp"
-#include "reports/results_index.hpp"
-#include "reports/study_reference.hpp"
+#include "reports/results/results_index.hpp"
+#include "reports/results/study_reference.hpp"
+#include "schema/results_file.hpp"
 #include "support/temp_dir.hpp"
 
 namespace cs::reports::testing {
@@ -39,11 +40,12 @@ inline const StudyReference& study() {
   return s;
 }
 
-/// A loaded results file and its index, kept together (the index references the file).
+/// A results document read from JSON by the schema's reader, and its index, kept together
+/// (the index references the document).
 struct Loaded {
   explicit Loaded(const nlohmann::json& doc)
-      : file(parse_results_document(doc, "test")), index(file) {}
-  ResultsFile file;
+      : file(schema::results_from_json(doc, "test")), index(file) {}
+  schema::ResultsDocument file;
   ResultsIndex index;
 };
 
@@ -65,6 +67,13 @@ inline std::string eq46(double error_percent) {
   return e < 1 ? "e" : e < 5 ? "g" : e < 10 ? "s" : "u";
 }
 
+/// A case id less its mesh field: "H_p/F/Q4/LMP/ss" -> "H_p/Q4/LMP/ss".
+inline std::string row_key_of(const std::string& case_id) {
+  const auto first = case_id.find('/');
+  const auto second = case_id.find('/', first + 1);
+  return case_id.substr(0, first) + case_id.substr(second);
+}
+
 /// Sets the value of `quantity` in case `case_id` (nonsingular) and updates the error and
 /// grade of the case and the values, errors and (fine-mesh) grade of its row. The row's
 /// converging flag is left as it is: tests that depend on it set it themselves.
@@ -80,7 +89,7 @@ inline void set_value(nlohmann::json& doc, const std::string& case_id, const std
     q["error_percent"] = err;
     q["grade"] = eq46(err);
     const std::string mesh = c["mesh"];
-    const std::string row_id = case_key_of(case_id) + "/" + quantity;
+    const std::string row_id = row_key_of(case_id) + "/" + quantity;
     for (auto& r : doc["rows"]) {
       if (r["id"] != row_id)
         continue;

@@ -6,18 +6,26 @@
 #include <gtest/gtest.h>
 
 #include "report_test_support.hpp"
-#include "reports/appendix_tables.hpp"
+#include "reports/report_error.hpp"
+#include "reports/tables/appendix_tables.hpp"
 
 namespace cs::reports {
 namespace {
 
+using schema::Algorithm;
+using schema::ContactKind;
+using schema::Element;
+using schema::MeshLevel;
+using schema::ProblemId;
+using schema::Quantity;
 using testing::Loaded;
 using testing::sample_json;
 using testing::study;
 
-const AppendixTable* find_table(const std::vector<AppendixTable>& tables,
-                                const std::string& problem, const std::string& quantity,
-                                const std::string& element, const std::string& contact) {
+constexpr MeshLevel C = MeshLevel::C, M = MeshLevel::M, F = MeshLevel::F;
+
+const AppendixTable* find_table(const std::vector<AppendixTable>& tables, ProblemId problem,
+                                Quantity quantity, Element element, ContactKind contact) {
   for (const auto& t : tables) {
     if (t.problem == problem && t.quantity == quantity && t.element == element &&
         t.contact == contact)
@@ -29,16 +37,17 @@ const AppendixTable* find_table(const std::vector<AppendixTable>& tables,
 TEST(AppendixTables, OurValueBesideTheStudysValue) {
   const Loaded data(sample_json());
   const auto tables = build_appendix_tables(data.index, study());
-  const AppendixTable* t = find_table(tables, "H_p", "sigma_c", "Q4", "ss");
+  const AppendixTable* t =
+      find_table(tables, ProblemId::H_p, Quantity::sigma_c, Element::Q4, ContactKind::ss);
   ASSERT_NE(t, nullptr);
   // Ours 1.2730 against 4/pi = 1.27324: -0.02 %; the study's Table 7a F row: 1.2737.
-  EXPECT_EQ(t->cell("F", "AL = PM"), "1.2730 (−0.02 %)");
-  EXPECT_EQ(t->cell("F", "ANSYS AL, PM"), "1.2737");
-  EXPECT_EQ(t->cell("C", "ANSYS LMP, PLM"), "1.3124");
+  EXPECT_EQ(t->cell(F, "AL = PM"), "1.2730 (−0.02 %)");
+  EXPECT_EQ(t->cell(F, "ANSYS AL, PM"), "1.2737");
+  EXPECT_EQ(t->cell(C, "ANSYS LMP, PLM"), "1.3124");
   // MPC is the study's IMC; its fine case did not converge ("!").
-  EXPECT_EQ(t->cell("F", "MPC"), "1.5200 (+19.4 %)!");
-  EXPECT_EQ(t->cell("F", "ANSYS IMC"), "1.7387");
-  EXPECT_EQ(t->cell("M", "h"), "0.0625");
+  EXPECT_EQ(t->cell(F, "MPC"), "1.5200 (+19.4 %)!");
+  EXPECT_EQ(t->cell(F, "ANSYS IMC"), "1.7387");
+  EXPECT_EQ(t->cell(M, "h"), "0.0625");
   EXPECT_NE(t->title.find("the study's Table 7a"), std::string::npos);
 }
 
@@ -47,12 +56,13 @@ TEST(AppendixTables, TheStudysEitherColumnsAndTheSurfaceToSurfaceTable) {
   const auto tables = build_appendix_tables(data.index, study());
   // P_p ss: the study's AL, PM ss values are in the sentence above Table 3a (1.0000), its
   // LMP, PLM column is "either node-to-surface or surface-to-surface" (Table 3a).
-  const AppendixTable* t = find_table(tables, "P_p", "sigma_z_max", "Q4", "ss");
+  const AppendixTable* t =
+      find_table(tables, ProblemId::P_p, Quantity::sigma_z_max, Element::Q4, ContactKind::ss);
   ASSERT_NE(t, nullptr);
-  EXPECT_EQ(t->cell("F", "ANSYS AL, PM"), "1.0000");
-  EXPECT_EQ(t->cell("F", "LMP"), "1.0019 (+0.19 %)");
-  EXPECT_EQ(t->cell("F", "ANSYS LMP, PLM"), "1.0019");
-  EXPECT_EQ(t->cell("F", "ANSYS IMC"), "2.7767");
+  EXPECT_EQ(t->cell(F, "ANSYS AL, PM"), "1.0000");
+  EXPECT_EQ(t->cell(F, "LMP"), "1.0019 (+0.19 %)");
+  EXPECT_EQ(t->cell(F, "ANSYS LMP, PLM"), "1.0019");
+  EXPECT_EQ(t->cell(F, "ANSYS IMC"), "2.7767");
   EXPECT_NE(t->title.find("3a"), std::string::npos);
   EXPECT_NE(t->title.find("3text"), std::string::npos);
 }
@@ -60,21 +70,24 @@ TEST(AppendixTables, TheStudysEitherColumnsAndTheSurfaceToSurfaceTable) {
 TEST(AppendixTables, MissingAndFailedCasesAreMarkedNotDropped) {
   const Loaded data(sample_json());
   const auto tables = build_appendix_tables(data.index, study());
-  const AppendixTable* t = find_table(tables, "H_p", "sigma_c", "Q8", "ss");
+  const AppendixTable* t =
+      find_table(tables, ProblemId::H_p, Quantity::sigma_c, Element::Q8, ContactKind::ss);
   ASSERT_NE(t, nullptr);
   ASSERT_EQ(t->rows.size(), 3u);  // C, M and F all shown
-  EXPECT_EQ(t->cell("F", "AL"), "—");
-  EXPECT_EQ(t->cell("F", "PM"), "failed");
-  EXPECT_EQ(t->cell("M", "AL"), "1.2810 (+0.61 %)");
-  EXPECT_EQ(t->cell("F", "ANSYS AL, PM"), "1.2761");
+  EXPECT_EQ(t->cell(F, "AL"), "—");
+  EXPECT_EQ(t->cell(F, "PM"), "failed");
+  EXPECT_EQ(t->cell(M, "AL"), "1.2810 (+0.61 %)");
+  EXPECT_EQ(t->cell(F, "ANSYS AL, PM"), "1.2761");
   const bool noted = std::any_of(t->notes.begin(), t->notes.end(), [](const std::string& n) {
     return n.find("not in this results file") != std::string::npos;
   });
   EXPECT_TRUE(noted);
   // Problems not run have no table at all.
-  EXPECT_EQ(find_table(tables, "H_a", "sigma_c", "Q4", "ss"), nullptr);
+  EXPECT_EQ(find_table(tables, ProblemId::H_a, Quantity::sigma_c, Element::Q4, ContactKind::ss),
+            nullptr);
   // Mortar: ours only.
-  const AppendixTable* m = find_table(tables, "H_p", "sigma_c", "Q4", "mortar");
+  const AppendixTable* m =
+      find_table(tables, ProblemId::H_p, Quantity::sigma_c, Element::Q4, ContactKind::mortar);
   ASSERT_NE(m, nullptr);
   EXPECT_EQ(std::count_if(m->columns.begin(), m->columns.end(),
                           [](const std::string& c) { return c.rfind("ANSYS", 0) == 0; }),
@@ -84,12 +97,13 @@ TEST(AppendixTables, MissingAndFailedCasesAreMarkedNotDropped) {
 
 TEST(AppendixTables, ExactValueLineShowsOursAndTheStudysPrintedValue) {
   const Loaded data(sample_json());
-  const std::string s = exact_value_line(data.index, study(), "S_1_3", "sigma_c");
+  const std::string s = exact_value_line(data.index, study(), ProblemId::S_1_3, Quantity::sigma_c);
   EXPECT_NE(s.find("11.2424"), std::string::npos) << s;
   EXPECT_NE(s.find("the study printed 10.9571"), std::string::npos) << s;
-  const std::string h = exact_value_line(data.index, study(), "H_p", "sigma_c");
+  const std::string h = exact_value_line(data.index, study(), ProblemId::H_p, Quantity::sigma_c);
   EXPECT_NE(h.find("1.2732"), std::string::npos) << h;
-  const std::string f = exact_value_line(data.index, study(), "F_p", "sigma_c_star");
+  const std::string f =
+      exact_value_line(data.index, study(), ProblemId::F_p, Quantity::sigma_c_star);
   EXPECT_NE(f.find("→ ∞"), std::string::npos) << f;
 }
 
@@ -98,24 +112,68 @@ TEST(StudyReference, MapsOurOptionsOntoTheStudysKeys) {
   EXPECT_EQ(s.values().size(), 354u);
   EXPECT_EQ(s.grades().size(), 80u);
   // PM maps to AL_PM; ns AL, PM in Table 7b.
-  auto m = s.find_value("H_p", "sigma_c", "Q4", "PM", "ns", "F");
+  auto m = s.find_value(ProblemId::H_p, Quantity::sigma_c, Element::Q4, Algorithm::PM,
+                        ContactKind::ns, F);
   ASSERT_NE(m.value, nullptr);
   EXPECT_EQ(m.value->printed, "1.4104");
   EXPECT_EQ(m.value->table, "7b");
   // Table 7d prints no LMP, PLM column ("same results as surface-to-surface"): Table 7c's.
-  m = s.find_value("H_p", "sigma_c", "Q8", "PLM", "ns", "F");
+  m = s.find_value(ProblemId::H_p, Quantity::sigma_c, Element::Q8, Algorithm::PLM, ContactKind::ns,
+                   F);
   ASSERT_NE(m.value, nullptr);
   EXPECT_TRUE(m.via_ss_note);
   EXPECT_EQ(m.value->printed, "1.3121");
   // MPC is the study's IMC.
-  m = s.find_value("F_a", "sigma_c_star", "Q8", "MPC", "ns", "F");
+  m = s.find_value(ProblemId::F_a, Quantity::sigma_c_star, Element::Q8, Algorithm::MPC,
+                   ContactKind::ns, F);
   ASSERT_NE(m.value, nullptr);
   EXPECT_EQ(m.value->printed, "2.7352");
-  EXPECT_EQ(s.find_value("H_p", "sigma_c", "Q4", "LMP", "mortar", "F").value, nullptr);
-  const StudyGrade* g = s.find_grade("H_a", "main", "Q8", "MPC", "ns");
+  EXPECT_EQ(s.find_value(ProblemId::H_p, Quantity::sigma_c, Element::Q4, Algorithm::LMP,
+                         ContactKind::mortar, F)
+                .value,
+            nullptr);
+  const StudyGrade* g =
+      s.find_grade(ProblemId::H_a, "main", Element::Q8, Algorithm::MPC, ContactKind::ns);
   ASSERT_NE(g, nullptr);
   EXPECT_EQ(g->cell(), "u, c");
-  EXPECT_EQ(s.find_grade("H_a", "main", "Q8", "AL", "mortar"), nullptr);
+  EXPECT_EQ(g->column_label(), "IMC");
+  EXPECT_EQ(s.find_grade(ProblemId::H_a, "main", Element::Q8, Algorithm::AL, ContactKind::mortar),
+            nullptr);
+  // AL, PM has a column per contact type in Table 2; LMP, PLM one for both.
+  const StudyGrade* al =
+      s.find_grade(ProblemId::P_p, "main", Element::Q4, Algorithm::PM, ContactKind::ns);
+  ASSERT_NE(al, nullptr);
+  EXPECT_EQ(al->column_label(), "AL, PM ns");
+  EXPECT_EQ(al->cell(), "s");
+  EXPECT_TRUE(s.separates_contacts(Algorithm::AL));
+  EXPECT_FALSE(s.separates_contacts(Algorithm::PLM));
+  EXPECT_EQ(s.grade_table(Element::Q8), "2b");
+  EXPECT_EQ(s.singular_problems(), (std::vector<ProblemId>{ProblemId::F_p, ProblemId::F_a}));
+}
+
+// Requirement: the study's names (4Q, IMC, AL_PM, either) are read with the vocabulary; a name
+// it does not know is rejected with the file and line.
+TEST(StudyReference, NamesTheVocabularyDoesNotKnowAreRejected) {
+  EXPECT_EQ(study_name(Element::Q4), "4Q");
+  EXPECT_EQ(study_name(Algorithm::MPC), "IMC");
+  EXPECT_EQ(study_name(Algorithm::LMP), "LMP");
+  EXPECT_EQ(study_column_label(Algorithm::PLM), "LMP, PLM");
+  EXPECT_EQ(study_columns(),
+            (std::vector<Algorithm>{Algorithm::AL, Algorithm::LMP, Algorithm::MPC}));
+  testing::TempDir tmp;
+  const std::string grades = testing::read_text(testing::study_dir() / "ansys_grades.csv");
+  std::string results = testing::read_text(testing::study_dir() / "ansys_results.csv");
+  results.replace(results.find(",H_p,"), 5, ",H_x,");
+  testing::write_text(tmp.path() / "ansys_results.csv", results);
+  testing::write_text(tmp.path() / "ansys_grades.csv", grades);
+  try {
+    load_study_reference(tmp.path());
+    FAIL() << "an unknown problem was accepted";
+  } catch (const ReportError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("ansys_results.csv' line "), std::string::npos) << what;
+    EXPECT_NE(what.find("unknown problem 'H_x'"), std::string::npos) << what;
+  }
 }
 
 }  // namespace

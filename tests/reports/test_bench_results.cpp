@@ -15,7 +15,7 @@
 #include <gtest/gtest.h>
 
 #include "report_test_support.hpp"
-#include "reports/bench_results.hpp"
+#include "reports/bench/bench_results.hpp"
 #include "reports/report_error.hpp"
 #include "support/tolerance.hpp"
 
@@ -31,12 +31,16 @@ fs::path bench_path() {
   return testing::source_dir() / "tests" / "reports" / "data" / "small_bench.json";
 }
 
+/// The Contact benchmark named "problem/mesh/element/contact/algorithm" as in the file.
 const ContactBenchmark& find(const BenchResults& r, const std::string& problem,
                              const std::string& mesh, const std::string& element,
                              const std::string& contact, const std::string& algorithm) {
+  const BenchModel model{schema::parse<schema::ProblemId>(problem),
+                         schema::parse<schema::MeshLevel>(mesh),
+                         schema::parse<schema::Element>(element)};
   const auto it = std::find_if(r.contact.begin(), r.contact.end(), [&](const auto& b) {
-    return b.model == BenchModel{problem, mesh, element} && b.contact == contact &&
-           b.algorithm == algorithm;
+    return b.model == model && b.contact == schema::parse<schema::ContactKind>(contact) &&
+           b.algorithm == schema::parse<BenchMethod>(algorithm);
   });
   if (it == r.contact.end())
     throw std::runtime_error("no case " + problem + "/" + mesh + "/" + element + "/" + contact +
@@ -65,9 +69,12 @@ TEST(BenchResults, DecodesNamesAndReadsTheContext) {
   const ContactBenchmark& pm = find(r, "H_p", "F", "Q4", "ss", "PM");
   EXPECT_EQ(pm.name, "Contact/H_p/F/Q4/ss/PM/iterations:1/manual_time");
   const ContactBenchmark& lm = find(r, "Pprime_p", "F", "Q8", "mortar", "LM");
-  EXPECT_EQ(lm.model.problem, "Pprime_p");
+  EXPECT_EQ(lm.model.problem, schema::ProblemId::Pprime_p);
+  EXPECT_EQ(lm.algorithm, BenchMethod::LM);
+  EXPECT_EQ(study_algorithm(lm.algorithm), schema::Algorithm::LMP);
   ASSERT_EQ(r.all_options.size(), 1u);
-  EXPECT_EQ(r.all_options[0].model, (BenchModel{"H_p", "F", "Q4"}));
+  EXPECT_EQ(r.all_options[0].model,
+            (BenchModel{schema::ProblemId::H_p, schema::MeshLevel::F, schema::Element::Q4}));
   EXPECT_EQ(r.all_options[0].cases, 12);
   EXPECT_EQ(r.all_options[0].converged, 11);
   EXPECT_TRUE(cs::testing::Near(*r.all_options[0].ratio_per_case, 0.9, kRoundOff));
@@ -203,6 +210,12 @@ TEST(BenchResults, RejectsFilesItCannotUseWithOneLineNamingTheFile) {
       {write("indexed.json", R"({"benchmarks": [{"name":
            "Contact/problem:0/mesh:1/element:0/contact:1/algorithm:2/iterations:1/manual_time",
            "real_time": 1, "time_unit": "ms"}]})"),
+       "does not name its case as Contact/<problem>/<mesh>/<element>/<contact>/<algorithm>"},
+      {write("unknown.json", R"({"benchmarks": [{"name": "Contact/H_p/C/Q4/ss/LMX",
+                                  "real_time": 1, "time_unit": "ms"}]})"),
+       "does not name its case as Contact/<problem>/<mesh>/<element>/<contact>/<algorithm>"},
+      {write("problem.json", R"({"benchmarks": [{"name": "Contact/H_x/C/Q4/ss/LM",
+                                  "real_time": 1, "time_unit": "ms"}]})"),
        "does not name its case as Contact/<problem>/<mesh>/<element>/<contact>/<algorithm>"},
       {write("unit.json", R"({"benchmarks": [{"name": "Contact/H_p/C/Q4/ss/PM",
                                "real_time": 1, "time_unit": "min"}]})"),

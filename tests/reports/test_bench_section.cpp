@@ -8,13 +8,15 @@
 
 #include <algorithm>
 
+#include <fmt/format.h>
+
 #include <gtest/gtest.h>
 
 #include "report_test_support.hpp"
-#include "reports/bench_figure.hpp"
-#include "reports/bench_results.hpp"
-#include "reports/bench_section.hpp"
-#include "reports/gnuplot.hpp"
+#include "reports/bench/bench_results.hpp"
+#include "reports/bench/bench_section.hpp"
+#include "reports/figures/bench_figure.hpp"
+#include "reports/figures/gnuplot.hpp"
 #include "reports/report_error.hpp"
 #include "reports/report_writer.hpp"
 
@@ -39,8 +41,9 @@ const BenchResults& sample() {
 std::vector<std::string> names(const std::vector<const ContactBenchmark*>& cases) {
   std::vector<std::string> out;
   for (const auto* b : cases) {
-    out.push_back(b->model.problem + "/" + b->model.mesh + "/" + b->model.element + "/" +
-                  b->contact + "/" + b->algorithm);
+    out.push_back(fmt::format("{}/{}/{}/{}/{}", schema::to_string(b->model.problem),
+                              schema::to_string(b->model.mesh), schema::to_string(b->model.element),
+                              schema::to_string(b->contact), schema::to_string(b->algorithm)));
   }
   return out;
 }
@@ -73,7 +76,7 @@ TEST(BenchTarget, FollowsTheTargetItIsGiven) {
   EXPECT_EQ(names(check_target(sample(), strict).met),
             (std::vector<std::string>{"Pprime_p/F/Q8/mortar/LM"}));
   BenchTarget coarse;
-  coarse.mesh = "C";
+  coarse.mesh = schema::MeshLevel::C;
   EXPECT_EQ(names(check_target(sample(), coarse).missed),
             (std::vector<std::string>{"H_p/C/Q4/ss/AL"}));
 }
@@ -141,9 +144,10 @@ TEST(BenchSection, OneTablePerModelWithEveryCaseAndWhyItFailed) {
 
 TEST(BenchSection, WithoutMeshFTheTargetIsNotJudged) {
   BenchResults coarse = sample();
-  coarse.contact.erase(std::remove_if(coarse.contact.begin(), coarse.contact.end(),
-                                      [](const auto& b) { return b.model.mesh == "F"; }),
-                       coarse.contact.end());
+  coarse.contact.erase(
+      std::remove_if(coarse.contact.begin(), coarse.contact.end(),
+                     [](const auto& b) { return b.model.mesh == schema::MeshLevel::F; }),
+      coarse.contact.end());
   const std::string md = bench_section(coarse, {});
   EXPECT_NE(md.find("**Not judged:** no PM, AL or LM case at mesh F in the bench file (meshes "
                     "measured: C). For orientation, at mesh C, the finest measured, 0 of 1 such "
@@ -156,7 +160,7 @@ TEST(BenchSection, RatiosBelowThePhysicalFloorAreFlagged) {
   EXPECT_EQ(bench_section(sample(), {}).find("below 1"), std::string::npos);
   BenchResults low = sample();
   for (auto& b : low.contact) {
-    if (b.model.mesh == "C")
+    if (b.model.mesh == schema::MeshLevel::C)
       b.ratio = 0.8;
   }
   EXPECT_NE(bench_section(low, {}).find("**1 of 6 cases have a ratio below 1** (the lowest, "
@@ -164,9 +168,13 @@ TEST(BenchSection, RatiosBelowThePhysicalFloorAreFlagged) {
             std::string::npos);
 }
 
+const schema::ResultsDocument& results() {
+  static const schema::ResultsDocument doc = schema::read_results_file(testing::sample_path());
+  return doc;
+}
+
 ReportOptions options_with_bench(const fs::path& out, std::vector<fs::path> bench) {
   ReportOptions o;
-  o.results = testing::sample_path();
   o.out_dir = out;
   o.study_data = testing::study_dir();
   o.figures = false;
@@ -176,10 +184,10 @@ ReportOptions options_with_bench(const fs::path& out, std::vector<fs::path> benc
 
 TEST(BenchSection, InTheReportOnlyWithABenchFile) {
   TempDir tmp;
-  write_report(options_with_bench(tmp.path() / "plain", {}));
+  write_report(results(), options_with_bench(tmp.path() / "plain", {}));
   const std::string plain = read_text(tmp.path() / "plain" / "report.md");
   EXPECT_EQ(plain.find("Benchmarks"), std::string::npos);
-  write_report(options_with_bench(tmp.path() / "bench", {bench_path()}));
+  write_report(results(), options_with_bench(tmp.path() / "bench", {bench_path()}));
   const std::string md = read_text(tmp.path() / "bench" / "report.md");
   EXPECT_NE(md.find("[Benchmarks](#8-benchmarks)"), std::string::npos);
   EXPECT_NE(md.find("\n## 8. Benchmarks\n"), std::string::npos);
@@ -192,13 +200,15 @@ TEST(BenchSection, ABadBenchFileLeavesTheOutputDirectoryUntouched) {
   fs::create_directories(out);
   write_text(out / "report.md", "the user's previous report\n");
   write_text(tmp.path() / "bad.json", R"({"benchmarks": [)");
-  EXPECT_THROW(write_report(options_with_bench(out, {bench_path(), tmp.path() / "bad.json"})),
-               ReportError);
+  EXPECT_THROW(
+      write_report(results(), options_with_bench(out, {bench_path(), tmp.path() / "bad.json"})),
+      ReportError);
   EXPECT_EQ(read_text(out / "report.md"), "the user's previous report\n");
   EXPECT_EQ(std::distance(fs::directory_iterator(out), fs::directory_iterator()), 1);
   // A directory that did not exist is not created.
-  EXPECT_THROW(write_report(options_with_bench(tmp.path() / "new", {tmp.path() / "nope.json"})),
-               ReportError);
+  EXPECT_THROW(
+      write_report(results(), options_with_bench(tmp.path() / "new", {tmp.path() / "nope.json"})),
+      ReportError);
   EXPECT_FALSE(fs::exists(tmp.path() / "new"));
 }
 

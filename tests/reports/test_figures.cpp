@@ -6,9 +6,10 @@
 #include <gtest/gtest.h>
 
 #include "report_test_support.hpp"
-#include "reports/figures.hpp"
-#include "reports/gnuplot.hpp"
-#include "reports/observed_order.hpp"
+#include "reports/figures/figures.hpp"
+#include "reports/figures/gnuplot.hpp"
+#include "reports/figures/observed_order.hpp"
+#include "reports/figures/plain_label.hpp"
 #include "support/tolerance.hpp"
 
 namespace cs::reports {
@@ -40,15 +41,18 @@ TEST(Figures, ObservedOrdersOfTheSample) {
   const auto orders = observed_orders(data.index);
   bool found = false;
   for (const auto& o : orders) {
-    if (o.problem == "F_p" && o.element == "Q4" && o.option_label == "AL (ss)") {
+    if (o.problem == schema::ProblemId::F_p && o.element == schema::Element::Q4 &&
+        o.option_label == "AL (ss)") {
       found = true;
+      EXPECT_TRUE(o.singular);
       ASSERT_TRUE(o.order.has_value());
       EXPECT_LT(*o.order, -0.4);  // 2.13, 3.02, 4.27 on h, h/2, h/4: grows about as h^-1/2
       EXPECT_GT(*o.order, -0.6);
     }
-    if (o.problem == "P_p" && o.option_label == "AL (ss)") {
-      EXPECT_FALSE(o.order.has_value());
-    }  // exact
+    if (o.problem == schema::ProblemId::P_p && o.option_label == "AL (ss)") {
+      EXPECT_FALSE(o.order.has_value());  // exact
+      EXPECT_FALSE(o.singular);
+    }
   }
   EXPECT_TRUE(found);
 }
@@ -80,6 +84,16 @@ TEST(Figures, DrawsNonEmptyPngFiles) {
   const std::string md = figures_section(set);
   EXPECT_NE(md.find("![H_p sigma_c](figures/profile_H_p_Q4.png)"), std::string::npos);
   EXPECT_NE(md.find("Q4 AL (ss): slope −"), std::string::npos);
+}
+
+// Requirement: figure titles name problems and quantities in plain text, from the vocabulary's
+// Markdown labels.
+TEST(Figures, PlainTextOfTheVocabularysLabels) {
+  EXPECT_EQ(plain_label(schema::label(schema::ProblemId::Pprime_p)), "P'_p");
+  EXPECT_EQ(plain_label(schema::label(schema::ProblemId::S_1_3)), "S(1/3)");
+  EXPECT_EQ(plain_label(schema::label(schema::ProblemId::H_a)), "H_a");
+  EXPECT_EQ(plain_label("σ̄<sub>c</sub><sup>*</sup>"), "σ̄_c^*");
+  EXPECT_EQ(plain_label("a <b>bold</b> word"), "a bold word");
 }
 
 TEST(Figures, WithoutGnuplotTheReportSaysSo) {

@@ -8,13 +8,18 @@
 #include <gtest/gtest.h>
 
 #include "report_test_support.hpp"
-#include "reports/findings.hpp"
-#include "reports/recovery_section.hpp"
+#include "reports/findings/findings.hpp"
+#include "reports/findings/recovery_section.hpp"
 #include "reports/report_writer.hpp"
 
 namespace cs::reports {
 namespace {
 
+using schema::Algorithm;
+using schema::ContactKind;
+using schema::Element;
+using schema::ProblemId;
+using schema::Quantity;
 using testing::Loaded;
 using testing::sample_json;
 
@@ -22,15 +27,17 @@ using testing::sample_json;
 TEST(RecoverySection, ExtrapolatedRowsAreTwinsNotVariants) {
   const Loaded data(sample_json());
   EXPECT_TRUE(data.index.has_extrapolated_twins());
-  const RowRecord* base = data.index.row("H_p", "sigma_c", "Q4", {"LMP", "ss"});
+  const schema::RowVerdict* base = data.index.row(ProblemId::H_p, Quantity::sigma_c, Element::Q4,
+                                                  {Algorithm::LMP, ContactKind::ss});
   ASSERT_NE(base, nullptr);
-  const RowRecord* twin = data.index.extrapolated_twin(*base);
+  const schema::RowVerdict* twin = data.index.extrapolated_twin(*base);
   ASSERT_NE(twin, nullptr);
-  EXPECT_EQ(twin->recovery, "extrapolated");
-  EXPECT_EQ(data.index.extrapolated_twin(*data.index.row("H_p", "sigma_c", "Q4", {"AL", "ss"})),
+  EXPECT_EQ(twin->spec.recovery, schema::Recovery::extrapolated);
+  EXPECT_EQ(data.index.extrapolated_twin(*data.index.row(
+                ProblemId::H_p, Quantity::sigma_c, Element::Q4, {Algorithm::AL, ContactKind::ss})),
             nullptr);
-  for (const RowRecord* v : data.index.variant_rows())
-    EXPECT_NE(v->recovery, "extrapolated") << v->id;
+  for (const schema::RowVerdict* v : data.index.variant_rows())
+    EXPECT_NE(v->spec.recovery, schema::Recovery::extrapolated) << v->id;
   EXPECT_EQ(variants_section(data.index).find("extrapolated"), std::string::npos);
 }
 
@@ -59,7 +66,7 @@ TEST(RecoverySection, ComparesWithTheContactPressureAsWitness) {
   const auto comparisons = compare_recoveries(data.index);
   ASSERT_EQ(comparisons.size(), 1u);
   const RecoveryComparison& c = comparisons[0];
-  EXPECT_EQ(c.element, "Q4");
+  EXPECT_EQ(c.element, Element::Q4);
   EXPECT_EQ(c.compared, 2);
   EXPECT_EQ(c.better, 1);
   EXPECT_EQ(c.worse, 1);

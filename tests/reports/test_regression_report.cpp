@@ -4,7 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "report_test_support.hpp"
-#include "reports/regression_report.hpp"
+#include "reports/findings/regression_report.hpp"
 #include "support/tolerance.hpp"
 
 namespace cs::reports {
@@ -13,7 +13,7 @@ namespace {
 using testing::sample_json;
 
 struct Pair {
-  ResultsFile old_file, new_file;
+  schema::ResultsDocument old_file, new_file;
 };
 
 Pair drifted_pair() {
@@ -39,7 +39,8 @@ Pair drifted_pair() {
   extra["id"] = "P_p/C/Q4/PLM/ss";
   extra["algorithm"] = "PLM";
   cases.push_back(extra);
-  return {parse_results_document(old_doc, "old.json"), parse_results_document(new_doc, "new.json")};
+  return {schema::results_from_json(old_doc, "old.json"),
+          schema::results_from_json(new_doc, "new.json")};
 }
 
 TEST(RegressionReport, DetectsDriftAndWorseGrades) {
@@ -49,9 +50,9 @@ TEST(RegressionReport, DetectsDriftAndWorseGrades) {
   const QuantityDrift* lmp = nullptr;
   int drifted = 0;
   for (const auto& q : r.quantities) {
-    if (q.case_id == "H_p/F/Q4/AL/ss" && q.quantity == "sigma_c")
+    if (q.case_id == "H_p/F/Q4/AL/ss" && q.quantity == schema::Quantity::sigma_c)
       al = &q;
-    if (q.case_id == "H_p/F/Q4/LMP/ss" && q.quantity == "sigma_c")
+    if (q.case_id == "H_p/F/Q4/LMP/ss" && q.quantity == schema::Quantity::sigma_c)
       lmp = &q;
     if (q.relative && *q.relative != 0.0)
       ++drifted;
@@ -63,8 +64,8 @@ TEST(RegressionReport, DetectsDriftAndWorseGrades) {
       cs::testing::Near(*al->relative, 0.005, {1e-12, 0}));  // relative drift, exact arithmetic
   EXPECT_FALSE(al->grade_worse());
   ASSERT_NE(lmp, nullptr);
-  EXPECT_EQ(lmp->old_grade, "e");
-  EXPECT_EQ(lmp->new_grade, "s");
+  EXPECT_EQ(lmp->old_grade, schema::Grade::e);
+  EXPECT_EQ(lmp->new_grade, schema::Grade::s);
   EXPECT_TRUE(lmp->grade_worse());
   EXPECT_EQ(r.grades_worse, 1);
   EXPECT_EQ(r.grades_better, 0);
@@ -93,7 +94,7 @@ TEST(RegressionReport, MarkdownListsTheChanges) {
 TEST(RegressionReport, IdenticalFilesHaveNoChanges) {
   const auto doc = sample_json();
   const Regression r =
-      compare_results(parse_results_document(doc, "a"), parse_results_document(doc, "b"));
+      compare_results(schema::results_from_json(doc, "a"), schema::results_from_json(doc, "b"));
   EXPECT_EQ(r.grades_worse + r.grades_better + r.status_changes, 0);
   EXPECT_TRUE(r.row_changes.empty());
   EXPECT_TRUE(r.only_in_new.empty() && r.only_in_old.empty());

@@ -1,4 +1,5 @@
-// The whole report: files written, bad input rejected with one line, and the output directory
+// The whole report: files written from a results document in memory, bad input rejected with
+// one line (a results file by the one reader of results, schema/), and the output directory
 // untouched on failure (nothing half-written, nothing the user had lost).
 
 #include <sys/wait.h>
@@ -14,6 +15,7 @@
 #include "report_test_support.hpp"
 #include "reports/report_error.hpp"
 #include "reports/report_writer.hpp"
+#include "schema/schema_error.hpp"
 
 namespace cs::reports {
 namespace {
@@ -24,13 +26,22 @@ using testing::sample_path;
 using testing::TempDir;
 using testing::write_text;
 
-ReportOptions options_for(const fs::path& results, const fs::path& out) {
+ReportOptions options_for(const fs::path& out) {
   ReportOptions o;
-  o.results = results;
   o.out_dir = out;
   o.study_data = testing::study_dir();
   o.figures = false;  // figures have their own test
   return o;
+}
+
+const schema::ResultsDocument& sample() {
+  static const schema::ResultsDocument doc = schema::read_results_file(sample_path());
+  return doc;
+}
+
+/// What `report --results FILE` does: the file through the one reader, then the report.
+ReportOutcome report_from_file(const fs::path& results, const ReportOptions& options) {
+  return write_report(schema::read_results_file(results), options);
 }
 
 /// A directory with the user's files in it, to check that a failed report leaves it alone.
@@ -58,9 +69,9 @@ struct UserDir {
 
 TEST(ReportWriter, WritesReportCsvAndRegression) {
   TempDir tmp;
-  auto o = options_for(sample_path(), tmp.path() / "new" / "dir");
+  auto o = options_for(tmp.path() / "new" / "dir");
   o.baseline = sample_path();
-  const auto outcome = write_report(o);
+  const auto outcome = write_report(sample(), o);
   EXPECT_EQ(outcome.n_cases, 59);
   EXPECT_EQ(outcome.files, (std::vector<std::string>{"regression.md", "report.md", "results.csv"}));
   const std::string md = read_text(o.out_dir / "report.md");
@@ -71,6 +82,7 @@ TEST(ReportWriter, WritesReportCsvAndRegression) {
   EXPECT_NE(md.find("57 converged, 1 did not converge, 1 failed"), std::string::npos);
   EXPECT_NE(md.find("| solver.factorization | CHOLMOD supernodal |"), std::string::npos);
   EXPECT_NE(md.find("[regression.md](regression.md)"), std::string::npos);
+  EXPECT_NE(md.find("Results file: `" + sample_path().string() + "`."), std::string::npos);
   for (const auto& e : fs::directory_iterator(o.out_dir))
     EXPECT_EQ(e.path().filename().string().rfind(".tmp-", 0), std::string::npos);
 }
@@ -78,10 +90,30 @@ TEST(ReportWriter, WritesReportCsvAndRegression) {
 TEST(ReportWriter, ReplacesItsOwnFilesAndKeepsTheUsers) {
   TempDir tmp;
   UserDir user(tmp.path());
-  write_report(options_for(sample_path(), user.path));
+  write_report(sample(), options_for(user.path));
   EXPECT_NE(read_text(user.path / "report.md").find("## 1. Summary"), std::string::npos);
   EXPECT_EQ(read_text(user.path / "notes.txt"), "the user's own notes\n");
   EXPECT_TRUE(fs::exists(user.path / "results.csv"));
+}
+
+// Requirement: a document built in memory (not read from a file) is reported the same way,
+// without naming a results file.
+TEST(ReportWriter, ReportsADocumentInMemory) {
+  TempDir tmp;
+  schema::ResultsDocument doc = sample();
+  doc.source.clear();
+  const auto outcome = write_report(doc, options_for(tmp.path() / "out"));
+  EXPECT_EQ(outcome.n_cases, 59);
+  const std::string md = read_text(tmp.path() / "out" / "report.md");
+  EXPECT_EQ(md.find("Results file:"), std::string::npos);
+  const std::string from_file_md = [&] {
+    write_report(sample(), options_for(tmp.path() / "file"));
+    return read_text(tmp.path() / "file" / "report.md");
+  }();
+  const std::string named = " Results file: `" + sample_path().string() + "`.";
+  std::string expected = from_file_md;
+  expected.erase(expected.find(named), named.size());
+  EXPECT_EQ(md, expected);
 }
 
 struct BadInput {
@@ -100,16 +132,16 @@ TEST_P(ReportWriterBadInput, OneLineErrorAndTheDirectoryUntouched) {
   if (bad.content != "<none>")
     write_text(results, bad.content);
   try {
-    write_report(options_for(results, user.path));
+    report_from_file(results, options_for(user.path));
     FAIL() << "no error for " << bad.name;
-  } catch (const std::invalid_argument& e) {  // ReportError: exit code 2 in main()
+  } catch (const schema::SchemaError& e) {  // exit code 2 in main()
     const std::string what = e.what();
     EXPECT_NE(what.find(bad.message), std::string::npos) << what;
     EXPECT_EQ(what.find('\n'), std::string::npos) << what;
   }
   user.expect_untouched();
   // A directory that did not exist is not created either.
-  EXPECT_THROW(write_report(options_for(results, tmp.path() / "fresh")), ReportError);
+  EXPECT_THROW(report_from_file(results, options_for(tmp.path() / "fresh")), schema::SchemaError);
   EXPECT_FALSE(fs::exists(tmp.path() / "fresh"));
 }
 
@@ -130,19 +162,28 @@ std::string sample_with_bad_case() {
   return doc.dump();
 }
 
+std::string sample_with_unknown_algorithm() {
+  auto doc = testing::sample_json();
+  doc["rows"][1]["algorithm"] = "IMCX";
+  return doc.dump();
+}
+
 INSTANTIATE_TEST_SUITE_P(
     Inputs, ReportWriterBadInput,
     ::testing::Values(BadInput{"missing", "<none>", "does not exist"},
-                      BadInput{"empty", "", "is empty"},
+                      BadInput{"empty", "", "is not valid JSON"},
                       BadInput{"not JSON", "results, but in prose", "is not valid JSON"},
                       BadInput{"truncated", truncated_sample(), "is not valid JSON (truncated?)"},
                       BadInput{"other schema", sample_with("schema", "someone/else"),
                                "not a contact-suite results file"},
-                      BadInput{"newer version", sample_with("schema_version", 3),
-                               "schema version 3 is not supported"},
-                      BadInput{"no cases", sample_with("cases", 7), "'cases'"},
-                      BadInput{"bad case", sample_with_bad_case(),
-                               "case #3 (P_p/C/Q4/LMP/ss): 'mesh' is \"X\""}),
+                      BadInput{"older version", sample_with("schema_version", 2),
+                               "schema_version: 2 is not supported (this build reads 3)"},
+                      BadInput{"no cases", sample_with("cases", 7), ".cases: is not an array"},
+                      BadInput{
+                          "bad case", sample_with_bad_case(),
+                          "cases[3].mesh: unknown mesh level \"X\" (expected one of: C, M, F)"},
+                      BadInput{"unknown algorithm", sample_with_unknown_algorithm(),
+                               "rows[1].algorithm: unknown algorithm \"IMCX\""}),
     [](const auto& info) {
       std::string name = info.param.name;
       for (char& c : name)
@@ -153,20 +194,20 @@ INSTANTIATE_TEST_SUITE_P(
 TEST(ReportWriter, BadBaselineOrStudyDataLeavesTheDirectoryUntouched) {
   TempDir tmp;
   UserDir user(tmp.path());
-  auto o = options_for(sample_path(), user.path);
+  auto o = options_for(user.path);
   o.baseline = tmp.path() / "no-such-baseline.json";
-  EXPECT_THROW(write_report(o), ReportError);
+  EXPECT_THROW(write_report(sample(), o), schema::SchemaError);
   user.expect_untouched();
-  o = options_for(sample_path(), user.path);
+  o = options_for(user.path);
   o.study_data = tmp.path();
-  EXPECT_THROW(write_report(o), ReportError);
+  EXPECT_THROW(write_report(sample(), o), ReportError);
   user.expect_untouched();
 }
 
 TEST(ReportWriter, OutputThatIsAFileIsAnError) {
   TempDir tmp;
   write_text(tmp.path() / "file", "x");
-  EXPECT_THROW(write_report(options_for(sample_path(), tmp.path() / "file")), ReportError);
+  EXPECT_THROW(write_report(sample(), options_for(tmp.path() / "file")), ReportError);
   EXPECT_EQ(read_text(tmp.path() / "file"), "x");
 }
 
@@ -181,15 +222,19 @@ std::string run_command(std::vector<std::string> args) {
     argv.push_back(a.data());
   try {
     app.parse(static_cast<int>(argv.size()), argv.data());
+  } catch (const schema::SchemaError& e) {
+    return std::string("bad input: ") + e.what();
   } catch (const std::invalid_argument& e) {
-    return std::string("invalid_argument: ") + e.what();
+    return std::string("bad input: ") + e.what();
   } catch (const CLI::ParseError& e) {
     return std::string("parse error: ") + e.what();
   }
   return "ok";
 }
 
-TEST(ReportCommand, ParsesOptionsAndReportsBadInputAsInvalidArgument) {
+// Requirement: `report --results FILE` reads FILE through the one reader of results: a file it
+// rejects is bad input (schema::SchemaError, exit code 2), named in one line.
+TEST(ReportCommand, ParsesOptionsAndReportsBadInputAsSuch) {
   TempDir tmp;
   const std::string study = testing::study_dir().string();
   const std::string out = (tmp.path() / "out").string();
@@ -199,7 +244,7 @@ TEST(ReportCommand, ParsesOptionsAndReportsBadInputAsInvalidArgument) {
   EXPECT_TRUE(fs::exists(tmp.path() / "out" / "regression.md"));
   const std::string bad = run_command(
       {"--results", (tmp.path() / "nope.json").string(), "--out", out, "--study-data", study});
-  EXPECT_EQ(bad.rfind("invalid_argument: results file", 0), 0u) << bad;
+  EXPECT_EQ(bad.rfind("bad input: results file", 0), 0u) << bad;
   EXPECT_EQ(run_command({"--out", out}).rfind("parse error", 0), 0u);
 }
 

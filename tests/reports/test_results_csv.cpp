@@ -5,7 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "report_test_support.hpp"
-#include "reports/results_csv.hpp"
+#include "reports/results/results_csv.hpp"
 
 namespace cs::reports {
 namespace {
