@@ -12,14 +12,17 @@
 
 #include <cmath>
 #include <cstdio>
+#include <fstream>
 #include <numbers>
 
 #include <gtest/gtest.h>
 
 #include "adapters/calculix/calculix_error.hpp"
 #include "adapters/calculix/frd_reader.hpp"
+#include "adapters/calculix/input_deck.hpp"
 #include "adapters/calculix/runner.hpp"
 #include "calculix_test_support.hpp"
+#include "platform/child_process.hpp"
 #include "solver/contact/contact_surface.hpp"
 #include "solver/mesh/mesh_sets.hpp"
 #include "support/temp_dir.hpp"
@@ -240,6 +243,28 @@ TEST(CalculixRuns, AxisOnTheAxisDoesNotConverge) {
   EXPECT_EQ(r.status, CalculixStatus::NotConverged);
   EXPECT_NE(r.reason.find("cutbacks"), std::string::npos) << r.reason;
   EXPECT_GT(r.iterations, 0);
+}
+
+TEST(CalculixRuns, Ccx220RejectsMortarOn2dElements) {
+  // Why mortar is "not supported": the deck with TYPE=MORTAR, run by hand. If a future ccx
+  // accepts it, this test fails and the mapping should be revisited.
+  test::PatchSpec s;
+  std::string deck = input_deck(test::patch_model(s), test::patch_pair(),
+                                test::penalty_options(s, CcxContactType::SurfaceToSurface, 1000));
+  deck.replace(deck.find("TYPE=SURFACE TO SURFACE"), 23, "TYPE=MORTAR");
+  cs::testing::TempDir dir;
+  { std::ofstream(dir.path() / "job.inp") << deck; }
+  platform::ChildOptions child;
+  child.argv = {"ccx", "-i", "job"};
+  child.working_directory = dir.path();
+  child.stdout_path = dir.path() / "job.log";
+  child.time_limit_seconds = 60;
+  const platform::ChildResult ran = platform::run_child(child);
+  const RunOutcome outcome = classify_run(ran, read_text_file(dir.path() / "job.log"));
+  std::printf("[ ccx      ] mortar: %s, %s (%.3f s)\n", to_string(outcome.status),
+              outcome.reason.c_str(), ran.wall_seconds);
+  EXPECT_EQ(outcome.status, CalculixStatus::Failed);
+  EXPECT_NE(outcome.reason.find("catsmpcslavno"), std::string::npos) << outcome.reason;
 }
 
 TEST(CalculixRuns, TimeLimitGivesTimeout) {
