@@ -52,7 +52,7 @@ TEST_F(Interrupts, SigintIsForwardedToTheChild) {
   EXPECT_TRUE(r.interrupted);
   EXPECT_FALSE(r.timed_out);
   EXPECT_EQ(r.signal, SIGINT);  // the forwarded signal killed sleep, not our SIGKILL
-  EXPECT_LT(seconds, 1.0);      // polling interval + reaping; sleep wanted 30 s
+  EXPECT_LT(seconds, 2.0);      // polling interval + reaping (+ load); sleep wanted 30 s
 }
 
 TEST_F(Interrupts, SigtermIsForwardedToTheChild) {
@@ -61,7 +61,7 @@ TEST_F(Interrupts, SigtermIsForwardedToTheChild) {
   EXPECT_EQ(interrupted_signal(), SIGTERM);
   EXPECT_TRUE(r.interrupted);
   EXPECT_EQ(r.signal, SIGTERM);
-  EXPECT_LT(seconds, 1.0);
+  EXPECT_LT(seconds, 2.0);  // idem
 }
 
 TEST_F(Interrupts, FirstSignalWinsAndResetClearsIt) {
