@@ -67,7 +67,7 @@ TEST(Gate, DriftBeyondToleranceFailsWithinPasses) {
 
 TEST(Gate, PerQuantityToleranceFromTheBaselineIsUsed) {
   Baseline loose = good_baseline();
-  loose.tolerances["sigma_c"] = 1e-2;
+  loose.tolerances.per_quantity[Quantity::sigma_c] = 1e-2;
   auto results = good_results();
   results[1].quantities[0].value *= 1.001;
   EXPECT_TRUE(run_gate(loose, results).passed());
@@ -75,7 +75,7 @@ TEST(Gate, PerQuantityToleranceFromTheBaselineIsUsed) {
 
 TEST(Gate, WorsenedGradeAndLostConvergenceFail) {
   Baseline loose = good_baseline();
-  loose.tolerances["sigma_c"] = 1.0;  // isolate the analytic-reference checks
+  loose.tolerances.per_quantity[Quantity::sigma_c] = 1.0;  // isolate the analytic-reference checks
   auto results = good_results();
   const double exact = 4.0 / M_PI;
   results[2] = hertz_case(MeshLevel::F, exact * 1.07);  // 7 %: grade s, and not converging

@@ -49,9 +49,10 @@ TEST(Parameters, OutOfRangeValuesAreRejected) {
 TEST(ProblemCatalog, EveryProblemHasAQuantityAndTheCommonParameters) {
   for (auto id : values<ProblemId>()) {
     const auto& info = problem_descriptor(id);
-    EXPECT_EQ(info.id, id);
-    EXPECT_FALSE(info.quantities.empty());
-    EXPECT_EQ(info.axisymmetric, is_axisymmetric(id));
+    EXPECT_EQ(info.record.id, id);
+    EXPECT_FALSE(info.record.quantities.empty());
+    EXPECT_EQ(info.record.axisymmetric, is_axisymmetric(id));
+    EXPECT_NE(info.build, nullptr);
     const Parameters p(info.parameters, {}, to_string(id));
     EXPECT_EQ(p.get("fkn"), 1.0);
     EXPECT_EQ(p.get("ftoln"), 0.1);
