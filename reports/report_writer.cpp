@@ -35,7 +35,11 @@ std::string variants_section(const ResultsIndex& index) {
   const auto& rows = index.variant_rows();
   if (rows.empty())
     return {};
-  MarkdownTable table({"Row", "Variant", "C", "M", "F", "Grade"});
+  std::vector<std::string> header{"Row", "Variant"};
+  for (const auto mesh : kMeshes)
+    header.emplace_back(schema::to_string(mesh));
+  header.emplace_back("Grade");
+  MarkdownTable table(header);
   for (const schema::RowVerdict* r : rows) {
     std::array<std::string, 3> cells;
     for (std::size_t m = 0; m < kMeshes.size(); ++m) {

@@ -276,12 +276,13 @@ std::string model_table(const BenchModel& model,
 std::string models_section(const BenchResults& bench) {
   if (bench.contact.empty())
     return {};
-  std::string out =
+  std::string out = fmt::format(
       "### Time per model and option\n\n"
       "Each cell: the time of the contact analysis, its ratio to the model's reference (one "
-      "assembly + factorization + solve) and the active-set iterations (for AL, + the "
+      "assembly + factorization + solve) and the active-set iterations (for {}, + the "
       "augmentations); ✗ marks a case that did not converge or stopped with an error, named "
-      "below its table.\n\n";
+      "below its table.\n\n",
+      name(BenchMethod::AL));
   for (const auto& [model, cases] : by_model(bench))
     out += model_table(model, cases);
   return out;

@@ -58,8 +58,11 @@ std::string divergence_section(const ResultsIndex& index, const StudyReference& 
   const auto rows = build_divergence_rows(index, study);
   if (rows.empty())
     return {};
-  MarkdownTable table({"Problem", "Element", "Option", "C", "M", "F", "|C − M|", "|M − F|",
-                       "Eq. 47 (ours)", "ANSYS C / M / F", "Eq. 47 (ANSYS)"});
+  const std::string c(schema::to_string(kMeshes[0])), m(schema::to_string(kMeshes[1])),
+      f(schema::to_string(kMeshes[2]));
+  MarkdownTable table({"Problem", "Element", "Option", c, m, f, fmt::format("|{} − {}|", c, m),
+                       fmt::format("|{} − {}|", m, f), "Eq. 47 (ours)",
+                       fmt::format("ANSYS {} / {} / {}", c, m, f), "Eq. 47 (ANSYS)"});
   int ours_fail = 0, ours_pass = 0, undecided = 0;
   for (const auto& r : rows) {
     std::string study_cells = kMissing;
