@@ -1,5 +1,7 @@
 #include "apps/case_command.hpp"
 
+#include <unistd.h>
+
 #include <chrono>
 #include <cmath>
 #include <filesystem>
@@ -8,9 +10,10 @@
 #include <fmt/core.h>
 
 #include "apps/usage_error.hpp"
+#include "platform/output_transaction.hpp"
+#include "schema/results_file.hpp"
 #include "suites/problem_catalog.hpp"
 #include "suites/problem_executor.hpp"
-#include "schema/results_file.hpp"
 #include "suites/suite_error.hpp"
 
 namespace cs::apps {
@@ -27,6 +30,7 @@ struct CaseArgs {
   std::vector<std::string> sets;
   bool json = false;
   std::string vtu;
+  bool vtu_given = false;
 };
 
 suites::CaseSpec make_spec(const CaseArgs& args) {
@@ -38,19 +42,27 @@ suites::CaseSpec make_spec(const CaseArgs& args) {
   spec.contact = schema::parse<schema::ContactKind>(args.contact);
   spec.target = schema::parse<schema::TargetKind>(args.target);
   spec.recovery = schema::parse<schema::Recovery>(args.recovery);
-  for (const auto& text : args.sets)
-    spec.overrides.insert(suites::parse_override(text));
+  spec.overrides = suites::parse_overrides(args.sets);
   // Validate the parameters now: a bad --set is bad input, not a failed case.
   suites::Parameters(suites::problem_descriptor(spec.problem).parameters, spec.overrides,
                      suites::to_string(spec.problem));
   return spec;
 }
 
-void check_writable_parent(const std::string& path) {
-  const auto parent = std::filesystem::absolute(path).parent_path();
-  if (!std::filesystem::is_directory(parent)) {
+/// An unwritable --vtu is found before the analysis runs, not after.
+void check_vtu_path(const std::string& path) {
+  namespace fs = std::filesystem;
+  if (path.empty())
+    throw UsageError("--vtu: empty file name");
+  platform::require_printable_path(path, "--vtu");
+  std::error_code ec;
+  if (fs::is_directory(path, ec))
+    throw UsageError(fmt::format("--vtu {}: is a directory, expected a file name", path));
+  const auto parent = fs::absolute(path).parent_path();
+  if (!fs::is_directory(parent, ec))
     throw UsageError(fmt::format("--vtu {}: directory {} does not exist", path, parent.string()));
-  }
+  if (::access(parent.c_str(), W_OK) != 0)
+    throw UsageError(fmt::format("--vtu {}: directory {} is not writable", path, parent.string()));
 }
 
 void print_text(const suites::CaseResult& r) {
@@ -78,8 +90,8 @@ void print_text(const suites::CaseResult& r) {
 
 int run_case(const CaseArgs& args) {
   const suites::CaseSpec spec = make_spec(args);
-  if (!args.vtu.empty())
-    check_writable_parent(args.vtu);
+  if (args.vtu_given)
+    check_vtu_path(args.vtu);
   const auto start = std::chrono::steady_clock::now();
   suites::CaseResult result;
   std::unique_ptr<suites::ProblemExecutor> executor;
@@ -96,7 +108,7 @@ int run_case(const CaseArgs& args) {
   result.wall_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   result.peak_rss_mb = suites::peak_rss_mb();
-  if (!args.vtu.empty() && executor && executor->last_displacement().size() > 0) {
+  if (args.vtu_given && executor && executor->last_displacement().size() > 0) {
     executor->write_vtu(args.vtu);
   }
   if (args.json) {
@@ -128,8 +140,12 @@ void add_case_command(CLI::App& app, int& exit_code) {
       ->capture_default_str();
   cmd->add_option("--set", args->sets, "Override a parameter: name=value (see `list`)");
   cmd->add_flag("--json", args->json, "Print one JSON object (the fields of results.json)");
-  cmd->add_option("--vtu", args->vtu, "Write the mesh, displacement and stresses to a .vtu file");
-  cmd->callback([args, &exit_code] { exit_code = run_case(*args); });
+  auto* vtu = cmd->add_option("--vtu", args->vtu,
+                              "Write the mesh, displacement and stresses to a .vtu file");
+  cmd->callback([args, vtu, &exit_code] {
+    args->vtu_given = vtu->count() > 0;
+    exit_code = run_case(*args);
+  });
 }
 
 }  // namespace cs::apps

@@ -6,10 +6,10 @@
 #include <fmt/core.h>
 
 #include "apps/usage_error.hpp"
-#include "suites/gate.hpp"
 #include "schema/baseline_file.hpp"
 #include "schema/json_file.hpp"
 #include "schema/results_file.hpp"
+#include "suites/gate.hpp"
 
 namespace cs::apps {
 namespace {

@@ -78,7 +78,8 @@ void print_text() {
       "  --algorithm  {}   (IMC accepted for MPC; LMP and PLM are the same method "
       "without friction)\n",
       joined<schema::Algorithm>());
-  fmt::print("  --contact    {}   (the study's ss and ns, and mortar)\n", joined<schema::ContactKind>());
+  fmt::print("  --contact    {}   (the study's ss and ns, and mortar)\n",
+             joined<schema::ContactKind>());
   fmt::print(
       "  --target     discretized rigid   (stiff meshed indenter, E ratio 1e6; or a rigid "
       "analytic profile)\n");

@@ -12,10 +12,12 @@
 #include "apps/gate_command.hpp"
 #include "apps/invocation.hpp"
 #include "apps/list_command.hpp"
+#include "apps/merge_command.hpp"
 #include "apps/oracle_command.hpp"
 #include "apps/report_command.hpp"
 #include "apps/run_command.hpp"
 #include "apps/usage_error.hpp"
+#include "platform/interrupts.hpp"
 #include "schema/schema_error.hpp"
 
 namespace {
@@ -47,7 +49,11 @@ int main(int argc, char** argv) {
   cs::apps::add_run_command(app, exit_code);
   cs::apps::add_report_command(app);
   cs::apps::add_gate_command(app, exit_code);
+  cs::apps::add_merge_command(app, exit_code);
 
+  // Ctrl-C and SIGTERM stop us and every child (gnuplot, ccx) together; commands poll
+  // interrupted_signal() between units of work and exit 128 + signal without committing output.
+  cs::platform::install_interrupt_forwarding();
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -72,5 +78,7 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "contact-suite: internal error: %s\n", one_line(e.what()).c_str());
     return 3;
   }
+  if (const int sig = cs::platform::interrupted_signal(); sig != 0 && exit_code == 0)
+    return 128 + sig;
   return exit_code;
 }

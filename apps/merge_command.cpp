@@ -28,7 +28,8 @@ int run_merge(const MergeArgs& args) {
     parts.push_back(schema::read_results_file(path));
   const auto merged =
       suites::merge_results(parts, invocation().empty() ? "contact-suite merge" : invocation());
-  write_run_output(merged, args.out, !args.no_report);
+  platform::OutputTransaction output(args.out);  // after every check: bad input touches nothing
+  write_run_output(merged, output, !args.no_report);
   fmt::print("merge: {} cases from {} files -> {}/results.json\n", merged.cases.size(),
              parts.size(), args.out);
   for (const auto& c : merged.cases) {

@@ -7,7 +7,9 @@
 
 #include <fmt/core.h>
 
+#include "platform/output_transaction.hpp"
 #include "reports/report_writer.hpp"
+#include "schema/results_file.hpp"
 
 namespace cs::apps {
 namespace {
@@ -22,16 +24,18 @@ struct ReportArgs {
 };
 
 void run_report(const ReportArgs& args) {
+  const schema::ResultsDocument results = schema::read_results_file(args.results);
+  platform::OutputTransaction output(args.out_dir);
   reports::ReportOptions options;
-  options.results = args.results;
-  options.out_dir = args.out_dir;
+  options.out_dir = output.staging();
   if (!args.baseline.empty())
     options.baseline = args.baseline;
   if (!args.study_data.empty())
     options.study_data = args.study_data;
   options.bench.assign(args.bench.begin(), args.bench.end());
   options.figures = !args.no_figures;
-  const auto outcome = reports::write_report(options);
+  const auto outcome = reports::write_report(results, options);
+  output.commit();
   std::printf("%s\n", fmt::format("contact-suite report: {} cases -> {}/report.md ({} files, {} "
                                   "figures{})",
                                   outcome.n_cases, args.out_dir, outcome.files.size(),

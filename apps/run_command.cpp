@@ -11,13 +11,14 @@
 
 #include "apps/invocation.hpp"
 #include "apps/usage_error.hpp"
-#include "reports/atomic_output.hpp"
-#include "reports/report_writer.hpp"
+#include "apps/write_run_output.hpp"
+#include "platform/interrupts.hpp"
+#include "platform/output_transaction.hpp"
+#include "schema/results_file.hpp"
 #include "suites/case_matrix.hpp"
 #include "suites/problem_catalog.hpp"
 #include "suites/problem_executor.hpp"
 #include "suites/progress.hpp"
-#include "schema/results_file.hpp"
 #include "suites/row_verdict.hpp"
 #include "suites/run_environment.hpp"
 #include "suites/shard.hpp"
@@ -46,6 +47,13 @@ std::vector<E> parse_all(const std::vector<std::string>& names) {
 
 suites::CaseSelection make_selection(const RunArgs& args) {
   suites::CaseSelection sel;
+  for (const auto& [option, items] : {std::pair{"--problems", &args.problems},
+                                      {"--meshes", &args.meshes},
+                                      {"--elements", &args.elements},
+                                      {"--algorithms", &args.algorithms},
+                                      {"--contacts", &args.contacts},
+                                      {"--recovery", &args.recoveries}})
+    suites::require_no_empty_items(*items, option);
   sel.problems = parse_all<schema::ProblemId>(args.problems);
   sel.meshes = parse_all<schema::MeshLevel>(args.meshes);
   sel.elements = parse_all<schema::Element>(args.elements);
@@ -53,8 +61,7 @@ suites::CaseSelection make_selection(const RunArgs& args) {
   sel.contacts = parse_all<schema::ContactKind>(args.contacts);
   sel.target = schema::parse<schema::TargetKind>(args.target);
   sel.recoveries = parse_all<schema::Recovery>(args.recoveries);
-  for (const auto& text : args.sets)
-    sel.overrides.insert(suites::parse_override(text));
+  sel.overrides = suites::parse_overrides(args.sets);
   return sel;
 }
 
@@ -89,8 +96,9 @@ int run(const RunArgs& args) {
                               suites::run_key(all_cases, suites::contact_suite_version(), s.count),
                               static_cast<long long>(all_cases.size())};
   }
-  // Stage the output directory before running: an unwritable one fails now, not at the end.
-  reports::AtomicOutput output(args.out);
+  // Take the output directory before running: an unwritable or busy one fails now, not at the
+  // end, and no other process writes into it while this run holds it.
+  platform::OutputTransaction output(args.out);
 
   const int jobs =
       args.jobs > 0 ? args.jobs : static_cast<int>(std::thread::hardware_concurrency());
@@ -102,6 +110,7 @@ int run(const RunArgs& args) {
   options.jobs = jobs;
   options.on_case_done = [&progress](const suites::CaseResult& r) { progress.case_done(r); };
   options.group_cost = group_cost;
+  options.should_stop = [] { return platform::interrupted_signal() != 0; };
 
   schema::RunInfo info;
   info.started_utc = suites::utc_now_iso8601();
@@ -115,24 +124,20 @@ int run(const RunArgs& args) {
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   info.peak_rss_mb = suites::peak_rss_mb();
   progress.finish();
+  if (const int sig = platform::interrupted_signal(); sig != 0) {
+    std::fprintf(stderr, "contact-suite: interrupted by signal %d; %s left as it was\n", sig,
+                 args.out.c_str());
+    return 128 + sig;  // the output transaction is not committed: the old set stays
+  }
 
   const schema::ResultsDocument doc{.source = {},
                                     .run = info,
                                     .problems = suites::problem_records(results),
                                     .cases = results,
                                     .rows = suites::make_row_verdicts(results)};
-  output.write_text("results.json", schema::to_json(doc).dump(1) + "\n");
-  const auto written = output.commit();
-  const auto results_path = std::filesystem::path(args.out) / "results.json";
-  fmt::print("wrote {}\n", results_path.string());
-  if (!args.no_report) {
-    reports::ReportOptions report;
-    report.results = results_path;
-    report.out_dir = args.out;
-    const auto outcome = reports::write_report(report);
-    fmt::print("wrote {} report files in {} ({} figures)\n", outcome.files.size(), args.out,
-               outcome.figures_drawn);
-  }
+  const int figures = write_run_output(doc, output, !args.no_report);
+  fmt::print("wrote {}{}\n", (std::filesystem::path(args.out) / "results.json").string(),
+             args.no_report ? "" : fmt::format(" and its report ({} figures)", figures));
   for (const auto& r : results) {
     if (r.status != suites::CaseStatus::converged)
       return kCasesFailed;
@@ -159,7 +164,8 @@ void add_run_command(CLI::App& app, int& exit_code) {
                   "commercial codes print)")
       ->delimiter(',');
   cmd->add_option("--set", args->sets, "Override a parameter of every case: name=value");
-  cmd->add_option("--jobs", args->jobs, "Parallel workers (default: the number of cores)");
+  cmd->add_option("--jobs", args->jobs, "Parallel workers, 1 to 256 (default: the number of cores)")
+      ->check(CLI::Range(1, 256));
   cmd->add_option("--out", args->out, "Output directory")->capture_default_str();
   cmd->add_flag("--no-report", args->no_report, "Write results.json only");
   cmd->add_option("--shard", args->shard,

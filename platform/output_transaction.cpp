@@ -73,23 +73,31 @@ OutputTransaction::OutputTransaction(fs::path dir, bool wait) {
     throw PlatformError("output directory " + quoted(dir) + " exists and is not a directory");
   const std::string name = dir_.filename().string();
   const fs::path lock_path = parent / ("." + name + ".lock");
-  lock_fd_ = ::open(lock_path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+  lock_fd_ = ::open(lock_path.c_str(), O_RDWR | O_CREAT | O_EXCL | O_CLOEXEC, 0644);
+  if (lock_fd_ >= 0)
+    created_lock_ = lock_path;
+  else if (errno == EEXIST)
+    lock_fd_ = ::open(lock_path.c_str(), O_RDWR | O_CLOEXEC);
   if (lock_fd_ < 0)
     throw PlatformError("output directory " + quoted(dir) + ": cannot create its lock file " +
                         quoted(lock_path) + ": " + std::strerror(errno));
   if (::flock(lock_fd_, LOCK_EX | (wait ? 0 : LOCK_NB)) != 0) {
     ::close(lock_fd_);
     lock_fd_ = -1;
-    throw PlatformError("another contact-suite process is writing to " + quoted(dir) +
-                        " (lock " + quoted(lock_path) + "); wait for it or choose another --out");
+    created_lock_.clear();
+    throw PlatformError("another contact-suite process is writing to " + quoted(dir) + " (lock " +
+                        quoted(lock_path) + "); wait for it or choose another --out");
   }
   const std::string prefix = "." + name + ".staging-";
   remove_stale_staging(parent, prefix);
   staging_ = parent / (prefix + std::to_string(::getpid()));
   if (!fs::create_directory(staging_, ec) || ec) {
     ::close(lock_fd_);
-    throw PlatformError("output directory " + quoted(dir) + ": cannot create " +
-                        quoted(staging_) + ": " + (ec ? ec.message() : "it exists"));
+    lock_fd_ = -1;
+    if (!created_lock_.empty())
+      fs::remove(created_lock_, ec);
+    throw PlatformError("output directory " + quoted(dir) + ": cannot create " + quoted(staging_) +
+                        ": " + (ec ? ec.message() : "it exists"));
   }
 }
 
@@ -97,6 +105,10 @@ OutputTransaction::~OutputTransaction() {
   std::error_code ec;
   if (!staging_.empty())
     fs::remove_all(staging_, ec);
+  // A lock file this transaction created for a directory it never wrote is removed again, so
+  // that a refused run leaves nothing behind; an existing lock file is kept.
+  if (!committed_ && !created_lock_.empty())
+    fs::remove(created_lock_, ec);
   if (lock_fd_ >= 0)
     ::close(lock_fd_);  // releases the flock
 }

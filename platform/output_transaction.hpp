@@ -42,6 +42,7 @@ class OutputTransaction {
  private:
   std::filesystem::path dir_;
   std::filesystem::path staging_;
+  std::filesystem::path created_lock_;  ///< the lock file, when this transaction created it
   int lock_fd_ = -1;
   bool committed_ = false;
 };

@@ -289,6 +289,23 @@ json to_json(const RowVerdict& row) {
   j["graded_mesh"] = row.graded_mesh ? json(to_string(*row.graded_mesh)) : json(nullptr);
   j["converging"] = row.converging ? json(*row.converging) : json(nullptr);
   j["diverging"] = row.diverging ? json(*row.diverging) : json(nullptr);
+  j["observed_order"] = {{"C_M", number_or_null(row.pair_orders[0])},
+                         {"M_F", number_or_null(row.pair_orders[1])}};
+  if (row.estimate) {
+    const auto& e = *row.estimate;
+    j["estimate"] = {{"asymptotic", e.asymptotic},
+                     {"observed_order", number_or_null(e.observed_order)},
+                     {"richardson", number_or_null(e.richardson)},
+                     {"gci_percent", number_or_null(e.gci_percent)},
+                     {"note", e.note}};
+  }
+  if (row.divergence) {
+    const auto& d = *row.divergence;
+    j["divergence"] = {{"eq47", d.eq47},
+                       {"monotone", d.monotone},
+                       {"exponent", number_or_null(d.exponent)},
+                       {"diverges", d.diverges}};
+  }
   return j;
 }
 
@@ -315,6 +332,21 @@ RowVerdict row_from_json(const json& j, const std::string& path) {
   row.graded_mesh = r.optional_name<MeshLevel>("graded_mesh");
   row.converging = r.optional_boolean("converging");
   row.diverging = r.optional_boolean("diverging");
+  if (r.has("observed_order")) {
+    const JsonFields o = r.object("observed_order");
+    row.pair_orders = {o.optional_number("C_M"), o.optional_number("M_F")};
+  }
+  if (r.has("estimate") && !r.at("estimate").is_null()) {
+    const JsonFields e = r.object("estimate");
+    row.estimate = ErrorEstimate{e.boolean("asymptotic"), e.optional_number("observed_order"),
+                                 e.optional_number("richardson"), e.optional_number("gci_percent"),
+                                 e.optional_string("note")};
+  }
+  if (r.has("divergence") && !r.at("divergence").is_null()) {
+    const JsonFields d = r.object("divergence");
+    row.divergence = DivergenceVerdict{d.boolean("eq47"), d.boolean("monotone"),
+                                       d.optional_number("exponent"), d.boolean("diverges")};
+  }
   return row;
 }
 

@@ -21,9 +21,9 @@ inline constexpr int kResultsSchemaVersion = 3;
 
 /// Which slice of a sharded run a results file holds (`run --shard K/N`).
 struct ShardInfo {
-  int index = 1;            ///< K, 1-based
-  int count = 1;            ///< N
-  std::string run_key;      ///< shared by the slices of one run (suites/shard.hpp)
+  int index = 1;              ///< K, 1-based
+  int count = 1;              ///< N
+  std::string run_key;        ///< shared by the slices of one run (suites/shard.hpp)
   long long total_cases = 0;  ///< cases of the whole run, over all slices
 
   friend bool operator==(const ShardInfo&, const ShardInfo&) = default;

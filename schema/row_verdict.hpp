@@ -7,12 +7,44 @@
 #include <array>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "schema/case_spec.hpp"
 #include "schema/grade.hpp"
 #include "schema/quantity.hpp"
 
 namespace cs::schema {
+
+/// Errors below this (percent) are round-off: no order is fitted to them.
+inline constexpr double kErrorNoiseFloorPercent = 1e-6;
+
+/// Error estimate of a nonsingular row from its three meshes (refinement ratio 2): the
+/// observed order p = log2(|f_C - f_M| / |f_M - f_F|), the Richardson limit
+/// f_F + (f_F - f_M)/(2^p - 1) and Roache's grid convergence index of the fine value,
+/// GCI = 1.25 |(f_F - f_M)/f_F| / (2^p - 1) (percent). `asymptotic` is false, and the estimate
+/// left out, when the sequence is oscillatory or diverging or its differences are at round-off.
+struct ErrorEstimate {
+  bool asymptotic = false;
+  std::optional<double> observed_order;
+  std::optional<double> richardson;
+  std::optional<double> gci_percent;
+  std::string note;  ///< why there is no estimate ("oscillatory", "at round-off", ...)
+};
+
+/// The divergence verdicts of a singular row (flat punch), two of them:
+///   eq47: the study's Eq. 47, |s_C - s_M| < |s_M - s_F|;
+///   monotone: the magnitudes grow strictly, |s_C| < |s_M| < |s_F|, with one sign;
+///   exponent: the mean observed growth exponent alpha of |s| ~ h^-alpha from the two ratios
+///     (a square-root singularity gives alpha = 1/2);
+///   diverges: monotone and alpha in [kDivergenceExponentMin, kDivergenceExponentMax].
+struct DivergenceVerdict {
+  bool eq47 = false;
+  bool monotone = false;
+  std::optional<double> exponent;
+  bool diverges = false;
+};
+inline constexpr double kDivergenceExponentMin = 0.25;
+inline constexpr double kDivergenceExponentMax = 0.75;
 
 /// One row: the cases of an option set that differ only in mesh level, for one quantity.
 struct RowVerdict {
@@ -24,7 +56,12 @@ struct RowVerdict {
   std::optional<Grade> grade;                   ///< of the finest mesh present
   std::optional<MeshLevel> graded_mesh;         ///< which mesh the grade is of
   std::optional<bool> converging;               ///< nonsingular, all three meshes present
-  std::optional<bool> diverging;                ///< singular, all three meshes present
+  std::optional<bool> diverging;                ///< singular, all three meshes present (Eq. 47)
+  /// Observed orders of the error per mesh pair (C->M, M->F): log2(|e_coarse| / |e_fine|);
+  /// empty where an error is at round-off (below kErrorNoiseFloorPercent) or missing.
+  std::array<std::optional<double>, 2> pair_orders;
+  std::optional<ErrorEstimate> estimate;        ///< nonsingular rows with three meshes
+  std::optional<DivergenceVerdict> divergence;  ///< singular rows with three meshes
 
   /// True for the study's option sets (see CaseResult::is_baseline).
   bool is_baseline() const;

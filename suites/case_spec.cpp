@@ -1,5 +1,6 @@
 #include "suites/case_spec.hpp"
 
+#include <cerrno>
 #include <cmath>
 #include <cstdlib>
 
@@ -12,11 +13,18 @@ namespace {
 
 double parse_number(const std::string& name, const std::string& text) {
   char* end = nullptr;
+  errno = 0;
   const double value = std::strtod(text.c_str(), &end);
   if (text.empty() || end != text.c_str() + text.size() || !std::isfinite(value)) {
     throw SuiteInputError(fmt::format("--set {}: '{}' is not a finite number", name, text));
   }
-  return value;
+  if (errno == ERANGE && value != 0.0 && std::abs(value) < 1.0)
+    errno = 0;  // a subnormal result is still the number written
+  if (errno == ERANGE) {
+    throw SuiteInputError(fmt::format(
+        "--set {}: '{}' is out of the range of a double (it would read as {})", name, text, value));
+  }
+  return value == 0.0 ? 0.0 : value;  // -0 is 0: one case id
 }
 
 }  // namespace
@@ -43,6 +51,23 @@ std::pair<std::string, double> parse_override(std::string_view text) {
     throw SuiteInputError(fmt::format("--set {}: '{}' is not a finite number", name, value_text));
   }
   return {name, value};
+}
+
+std::map<std::string, double> parse_overrides(const std::vector<std::string>& texts) {
+  std::map<std::string, double> out;
+  for (const auto& text : texts) {
+    const auto [name, value] = parse_override(text);
+    if (!out.emplace(name, value).second)
+      throw SuiteInputError(fmt::format("--set {} is given twice", name));
+  }
+  return out;
+}
+
+void require_no_empty_items(const std::vector<std::string>& items, std::string_view option) {
+  for (const auto& item : items) {
+    if (item.empty())
+      throw SuiteInputError(fmt::format("{}: empty item in the list (two commas?)", option));
+  }
 }
 
 }  // namespace cs::suites

@@ -4,6 +4,7 @@
 // cs::suites and adds what only the suites need: the element as the solver's type, the study's
 // discretizations and the `--set` parser.
 
+#include <map>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -15,16 +16,16 @@
 namespace cs::suites {
 
 using schema::Algorithm;
+using schema::case_id;
 using schema::CaseSpec;
 using schema::ContactKind;
 using schema::Element;
 using schema::MeshLevel;
+using schema::parse;
 using schema::ProblemId;
 using schema::Recovery;
 using schema::SolverKind;
 using schema::TargetKind;
-using schema::case_id;
-using schema::parse;
 using schema::to_string;
 using schema::values;
 using solver::ElementType;
@@ -37,7 +38,15 @@ constexpr ElementType to_solver(Element e) {
 /// ss and ns: the study's discretizations (mortar is a further option).
 const std::vector<ContactKind>& study_contacts();
 
-/// Parses one `--set name=value` argument; throws SuiteInputError on a malformed one.
+/// Parses one `--set name=value` argument; throws SuiteInputError on a malformed one (no '=',
+/// an empty name, a value that is not a finite double or under/overflows it).
 std::pair<std::string, double> parse_override(std::string_view text);
+
+/// Parses every `--set` argument into one map; a key given twice is an error (the first value
+/// would silently win otherwise).
+std::map<std::string, double> parse_overrides(const std::vector<std::string>& texts);
+
+/// Throws SuiteInputError if a comma-separated option list (`--problems`, ...) has an empty item.
+void require_no_empty_items(const std::vector<std::string>& items, std::string_view option);
 
 }  // namespace cs::suites

@@ -4,6 +4,7 @@
 #include <map>
 
 #include "suites/problem_catalog.hpp"
+#include "suites/row_estimates.hpp"
 
 namespace cs::suites {
 namespace {
@@ -13,6 +14,7 @@ std::string row_key(const CaseSpec& spec, Quantity quantity) {
 }
 
 void apply_verdicts(RowVerdict& row) {
+  row.pair_orders = pair_orders(row.errors);
   for (int level = 2; level >= 0; --level) {
     if (row.errors[level]) {
       row.grade = grade_from_error(*row.errors[level]);
@@ -25,10 +27,12 @@ void apply_verdicts(RowVerdict& row) {
     return;
   if (is_singular(row.spec.problem)) {
     row.diverging = is_diverging(*row.values[0], *row.values[1], *row.values[2]);
+    row.divergence = divergence_verdict(*row.values[0], *row.values[1], *row.values[2]);
     row.grade.reset();  // no finite exact value to grade against
     row.graded_mesh.reset();
   } else {
     row.converging = is_converging(*row.errors[0], *row.errors[1], *row.errors[2]);
+    row.estimate = error_estimate(*row.values[0], *row.values[1], *row.values[2]);
   }
 }
 

@@ -117,6 +117,8 @@ std::vector<CaseResult> run_cases(const std::vector<CaseSpec>& cases,
   std::atomic<std::size_t> next{0};
   auto worker = [&] {
     for (std::size_t g = next++; g < groups.size(); g = next++) {
+      if (options.should_stop && options.should_stop())
+        return;
       run_group(*groups[g], cases, make_executor, results, done);
     }
   };

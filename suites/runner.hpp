@@ -37,6 +37,9 @@ struct RunnerOptions {
   CaseCallback on_case_done;  ///< progress reporting; may be empty
   /// Relative cost of a group, to schedule the largest first; empty: all equal.
   std::function<double(const CaseSpec&)> group_cost;
+  /// Polled before each group: when it returns true no further group starts (an interrupt);
+  /// the cases not run keep a default (failed) result. Empty: never stop.
+  std::function<bool()> should_stop;
 };
 
 /// The key of the model a case runs on: the case id less algorithm, contact and the

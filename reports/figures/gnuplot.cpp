@@ -1,28 +1,38 @@
 #include "reports/figures/gnuplot.hpp"
 
+#include <algorithm>
 #include <cstdlib>
 #include <fstream>
 #include <stdexcept>
 #include <system_error>
+#include <vector>
 
 #include <fmt/format.h>
-#include <sys/wait.h>
+
+#include "platform/child_process.hpp"
+#include "reports/report_error.hpp"
 
 namespace cs::reports {
 namespace {
 
-int exit_status(int system_result) {
-  if (system_result == -1)
-    return -1;
-  if (WIFEXITED(system_result))
-    return WEXITSTATUS(system_result);
-  return -1;
+/// gnuplot runs as a child with an argument vector, never through a shell; SIGINT/SIGTERM to us
+/// reach it too (platform/interrupts.hpp).
+platform::ChildResult run(std::vector<std::string> argv, const std::filesystem::path& log) {
+  platform::ChildOptions options;
+  options.argv = std::move(argv);
+  options.stdout_path = log;
+  options.stderr_path = log.empty() ? std::filesystem::path() : log;
+  options.time_limit_seconds = 120;
+  return platform::run_child(options);
 }
 
 bool offers_terminal(const std::string& program, const std::string& terminal) {
-  const std::string command = fmt::format("{} -e {} >/dev/null 2>&1", shell_quote(program),
-                                          shell_quote("set terminal " + terminal));
-  return exit_status(std::system(command.c_str())) == 0;
+  return run({program, "-e", "set terminal " + terminal}, {}).succeeded();
+}
+
+bool has_control_character(const std::string& text) {
+  return std::any_of(text.begin(), text.end(),
+                     [](unsigned char c) { return c < 0x20 || c == 0x7f; });
 }
 
 }  // namespace
@@ -37,11 +47,12 @@ std::optional<Gnuplot> find_gnuplot(const std::string& program) {
 
 std::string run_gnuplot(const Gnuplot& gnuplot, const std::filesystem::path& script,
                         const std::filesystem::path& log) {
-  const std::string command = fmt::format("{} {} >{} 2>&1", shell_quote(gnuplot.program),
-                                          shell_quote(script.string()), shell_quote(log.string()));
-  const int status = exit_status(std::system(command.c_str()));
-  if (status == 0)
+  const platform::ChildResult result = run({gnuplot.program, script.string()}, log);
+  if (result.succeeded())
     return {};
+  if (result.exit_code < 0)
+    return "gnuplot " + result.describe();
+  const int status = result.exit_code;
   std::ifstream in(log);
   std::string line, first_error;
   while (std::getline(in, line)) {
@@ -55,7 +66,11 @@ std::string run_gnuplot(const Gnuplot& gnuplot, const std::filesystem::path& scr
 }
 
 ScratchDir::ScratchDir() {
-  std::string pattern = (std::filesystem::temp_directory_path() / "cs-report-XXXXXX").string();
+  // Scripts name files in this directory: a TMPDIR with a control character is not used.
+  std::filesystem::path base = std::filesystem::temp_directory_path();
+  if (has_control_character(base.string()))
+    base = "/tmp";
+  std::string pattern = (base / "cs-report-XXXXXX").string();
   if (mkdtemp(pattern.data()) == nullptr)
     throw std::runtime_error("cannot create a temporary directory");
   path_ = pattern;
@@ -67,21 +82,13 @@ ScratchDir::~ScratchDir() {
 }
 
 std::string gnuplot_quote(const std::string& text) {
+  // A newline would end the gnuplot command and start another: such text is refused.
+  if (has_control_character(text))
+    throw ReportError("figure: a path or label holds a control character; not written to a script");
   std::string out = "'";
   for (char c : text) {
     if (c == '\'')
       out += "''";
-    else
-      out += c;
-  }
-  return out + "'";
-}
-
-std::string shell_quote(const std::string& text) {
-  std::string out = "'";
-  for (char c : text) {
-    if (c == '\'')
-      out += "'\\''";
     else
       out += c;
   }

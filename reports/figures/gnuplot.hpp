@@ -42,7 +42,4 @@ class ScratchDir {
 /// `text` as a gnuplot single-quoted string literal ('' stands for a quote inside).
 std::string gnuplot_quote(const std::string& text);
 
-/// `text` as a POSIX shell single-quoted word.
-std::string shell_quote(const std::string& text);
-
 }  // namespace cs::reports

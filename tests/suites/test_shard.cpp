@@ -97,8 +97,7 @@ TEST(Merge, RefusesMissingOverlappingAndForeignSlices) {
                  "slices of different runs");
   auto other_build = slice(all, 2, 3, "k");
   other_build.run.environment["contact_suite_version"] = "2";
-  expect_refused({slice(all, 1, 3, "k"), other_build, slice(all, 3, 3, "k")},
-                 "different builds");
+  expect_refused({slice(all, 1, 3, "k"), other_build, slice(all, 3, 3, "k")}, "different builds");
   auto unsharded = slice(all, 1, 1, "u");
   unsharded.run.shard.reset();
   expect_refused({slice(all, 1, 3, "k"), unsharded}, "mix a slice with unsharded results");

@@ -1,0 +1,28 @@
+#include "apps/write_run_output.hpp"
+
+#include <cstdio>
+
+#include <fmt/core.h>
+
+#include "reports/report_writer.hpp"
+#include "schema/json_file.hpp"
+
+namespace cs::apps {
+
+int write_run_output(const schema::ResultsDocument& doc, platform::OutputTransaction& out,
+                     bool with_report) {
+  schema::write_results_file(out.staging() / "results.json", doc);
+  int figures = 0;
+  if (with_report) {
+    reports::ReportOptions report;
+    report.out_dir = out.staging();
+    const auto outcome = reports::write_report(doc, report);
+    figures = outcome.figures_drawn;
+    if (!outcome.figures_unavailable.empty())
+      std::fprintf(stderr, "contact-suite: warning: %s\n", outcome.figures_unavailable.c_str());
+  }
+  out.commit();
+  return figures;
+}
+
+}  // namespace cs::apps

@@ -1,0 +1,221 @@
+// Requirement (issue 16): every subcommand answers bad input with a one-line error and exit 2 —
+// never exit 3 (reserved for real bugs), a signal, a NaN printed as a result, or a file left
+// behind. The probe set: names, numbers, lists, paths with control characters, malformed and
+// mistyped results/baseline files, shard specifications, merges that must be refused.
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "apps/cli_support.hpp"
+#include "platform/child_process.hpp"
+
+namespace cs::apps::testing {
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+using Args = std::vector<std::string>;
+
+struct Probe {
+  Args args;
+};
+
+/// Runs the executable without a shell in `dir`; returns how it ended and what it printed.
+platform::ChildResult run_in(const fs::path& dir, const Args& args, std::string& out,
+                             std::string& err) {
+  platform::ChildOptions o;
+  o.argv = {CONTACT_SUITE_EXE};
+  o.argv.insert(o.argv.end(), args.begin(), args.end());
+  o.working_directory = dir;
+  o.stdout_path = dir / ".probe.out";
+  o.stderr_path = dir / ".probe.err";
+  o.time_limit_seconds = 60;
+  const auto r = platform::run_child(o);
+  out = read_text(o.stdout_path);
+  err = read_text(o.stderr_path);
+  fs::remove(o.stdout_path);
+  fs::remove(o.stderr_path);
+  return r;
+}
+
+std::set<std::string> listing(const fs::path& dir) {
+  std::set<std::string> names;
+  for (const auto& e : fs::recursive_directory_iterator(dir))
+    names.insert(fs::relative(e.path(), dir).string());
+  return names;
+}
+
+class BadInputProbe : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    dir_ = new TempDir();
+    std::string out, err;
+    const auto r =
+        run_in(dir_->path(),
+               {"run", "--problems", "P_p", "--meshes", "C", "--elements", "Q4", "--algorithms",
+                "AL", "--contacts", "ss", "--out", "good", "--jobs", "1", "--no-report"},
+               out, err);
+    ASSERT_EQ(r.exit_code, 0) << err;
+    good_ = json::parse(read_text(dir_->path() / "good" / "results.json"));
+    write("b.json", R"({"schema": "contact-suite/baseline", "schema_version": 3})");
+  }
+  static void TearDownTestSuite() { delete dir_; }
+
+  static void write(const std::string& name, const std::string& text) {
+    std::ofstream(dir_->path() / name) << text;
+  }
+  /// A copy of the good results file with one change, written as `name`.
+  static std::string mutated(const std::string& name, const std::function<void(json&)>& change) {
+    json j = good_;
+    change(j);
+    write(name, j.dump());
+    return name;
+  }
+
+  static TempDir* dir_;
+  static json good_;
+};
+TempDir* BadInputProbe::dir_ = nullptr;
+json BadInputProbe::good_;
+
+std::vector<Probe> name_probes() {
+  std::vector<Probe> p;
+  for (const char* bad : {"H_x", "h_p", "", "P_p ", "S_1/3", "F", "P'", "all", "-", "\n"})
+    p.push_back({{"case", bad}});
+  for (const auto& [opt, bad] :
+       std::vector<std::pair<std::string, std::string>>{{"--mesh", "VF"},
+                                                        {"--mesh", "c"},
+                                                        {"--mesh", ""},
+                                                        {"--element", "Q9"},
+                                                        {"--element", "q4"},
+                                                        {"--algorithm", "LM"},
+                                                        {"--algorithm", "al"},
+                                                        {"--algorithm", ""},
+                                                        {"--contact", "SS"},
+                                                        {"--contact", "nts"},
+                                                        {"--target", "soft"},
+                                                        {"--recovery", "smoothed"},
+                                                        {"--recovery", ""}})
+    p.push_back({{"case", "H_p", opt, bad}});
+  return p;
+}
+
+std::vector<Probe> set_probes() {
+  std::vector<Probe> p;
+  for (const char* bad :
+       {"nu",          "nu=",         "=1",        "nu=abc", "nu=1/0",  "nu=nan",    "nu=inf",
+        "nu=-inf",     "nu=1e999",    "nu=1e-400", "nu=0.5", "nu=0.6",  "nu=-0.1",   "p_over_E=0",
+        "p_over_E=1",  "E_ratio=0.5", "fkn=0",     "fkn=-1", "ftoln=0", "pinball=0", "pinball=-1",
+        "re_over_b=1", "unknown=1",   "nu=0x",     "nu=1,2", "nu==1",   "nu=0.3 "})
+    p.push_back({{"case", "H_p", "--set", bad}});
+  p.push_back({{"case", "H_p", "--set", "nu=0.2", "--set", "nu=0.3"}});
+  p.push_back({{"run", "--problems", "H_p", "--set", "nu=0.2", "--set", "nu=0.2"}});
+  return p;
+}
+
+std::vector<Probe> run_probes() {
+  std::vector<Probe> p;
+  for (const char* jobs : {"0", "-1", "", "99999", "abc", "1.5"})
+    p.push_back({{"run", "--problems", "P_p", "--meshes", "C", "--jobs", jobs, "--out", "o"}});
+  for (const char* list : {"H_p,,S_1", ",", "H_p,", ",H_p", "H_p,XYZ"})
+    p.push_back({{"run", "--problems", list, "--meshes", "C", "--out", "o"}});
+  for (const char* list : {"C,,M", ","})
+    p.push_back({{"run", "--problems", "P_p", "--meshes", list, "--out", "o"}});
+  for (const char* shard : {"0/3", "4/3", "a/b", "3", "", "1/0", "-1/3", "1/3/5", "2/1", "1/99999"})
+    p.push_back({{"run", "--problems", "P_p", "--meshes", "C", "--shard", shard, "--out", "o"}});
+  for (const char* out : {"bad\nname", "tab\tname", "x/y/z", "b.json", "esc\x1b"})
+    p.push_back({{"run", "--problems", "P_p", "--meshes", "C", "--elements", "Q4", "--out", out}});
+  for (const char* vtu : {"", ".", "/nonexistent/dir/x.vtu", "new\nline.vtu"})
+    p.push_back({{"case", "P_p", "--vtu", vtu}});
+  p.push_back({{"run", "--target", "soft"}});
+  p.push_back({{"run", "--recovery", "spr,,extrapolated"}});
+  return p;
+}
+
+std::vector<Probe> oracle_probes() {
+  std::vector<Probe> p;
+  for (const Args& a : std::vector<Args>{{"oracle", "hertz-plane", "--R", "-1"},
+                                         {"oracle", "hertz-plane", "--R", "nan"},
+                                         {"oracle", "hertz-axi", "--nu", "0.5"},
+                                         {"oracle", "steuermann", "--b", "0"},
+                                         {"oracle", "steuermann", "--re", "-1"},
+                                         {"oracle", "sadowsky", "--a", "0"},
+                                         {"oracle", "harding-sneddon", "--a", "-1"},
+                                         {"oracle", "mcewen", "--at", "x"},
+                                         {"oracle", "boussinesq", "--at", "0,0"},
+                                         {"oracle", "nonsense"}})
+    p.push_back({a});
+  return p;
+}
+
+TEST_F(BadInputProbe, EveryProbeExitsTwoWithOneLineAndLeavesNoFile) {
+  std::vector<Probe> probes;
+  for (auto&& list : {name_probes(), set_probes(), run_probes(), oracle_probes()})
+    probes.insert(probes.end(), list.begin(), list.end());
+  // Results files that must be refused by report, gate and merge.
+  const std::vector<std::function<void(json&)>> mutations{
+      [](json& j) { j["schema_version"] = "3"; },
+      [](json& j) { j["schema_version"] = 4294967298ULL; },
+      [](json& j) { j["schema_version"] = 2; },
+      [](json& j) { j["schema"] = "x"; },
+      [](json& j) { j["cases"][0]["overrides"] = "fkn"; },
+      [](json& j) { j["cases"][0]["reason"] = 1; },
+      [](json& j) { j["cases"][0]["iterations"] = "many"; },
+      [](json& j) { j["cases"][0]["algorithm"] = "ALM"; },
+      [](json& j) { j["cases"][0]["problem"] = 7; },
+      [](json& j) { j["cases"].push_back(j["cases"][0]); },
+      [](json& j) { j["cases"][0]["quantities"]["sigma_z_max"]["value"] = "1"; },
+      [](json& j) { j["cases"][0]["quantities"]["sigma_z_max"]["study_exact"] = "1"; },
+      [](json& j) { j["rows"][0]["grade"] = "z"; },
+      [](json& j) { j.erase("cases"); },
+      [](json& j) { j["problems"] = json::array(); },
+      [](json& j) { j["run"]["jobs"] = -2; },
+  };
+  for (std::size_t i = 0; i < mutations.size(); ++i) {
+    const std::string f = mutated("m" + std::to_string(i) + ".json", mutations[i]);
+    probes.push_back({{"report", "--results", f, "--out", "rep", "--no-figures"}});
+    probes.push_back({{"gate", "--baseline", "good/results.json", "--results", f}});
+    probes.push_back({{"merge", "mrg", f, "--no-report"}});
+  }
+  write("notjson.json", "{\"schema\": ");
+  write("huge.json", R"({"schema": "contact-suite/results", "schema_version": 1e999})");
+  for (const char* f : {"missing.json", ".", "notjson.json", "huge.json"}) {
+    probes.push_back({{"report", "--results", f, "--out", "rep"}});
+    probes.push_back({{"gate", "--baseline", f, "--results", "good/results.json"}});
+  }
+  probes.push_back({{"gate", "--baseline", "b.json", "--results", "good/results.json"}});
+  probes.push_back({{"merge", "mrg", "good/results.json", "good/results.json"}});
+  probes.push_back({{"merge", "mrg"}});
+  probes.push_back({{"report", "--results", "good/results.json", "--out", "bad\nout"}});
+  probes.push_back({{"report", "--results", "good/results.json", "--out", "r2", "--bench",
+                     "notjson.json", "--no-figures"}});
+
+  ASSERT_GE(probes.size(), 150u);
+  const auto before = listing(dir_->path());
+  int failures = 0;
+  for (const auto& probe : probes) {
+    std::string out, err, what;
+    for (const auto& a : probe.args)
+      what += " [" + a + "]";
+    const auto r = run_in(dir_->path(), probe.args, out, err);
+    EXPECT_EQ(r.signal, 0) << what;
+    EXPECT_EQ(r.exit_code, 2) << what << "\n" << err;
+    EXPECT_NE(err.find("contact-suite: error: "), std::string::npos) << what << "\n" << err;
+    EXPECT_EQ(err.find('\n'), err.size() - 1) << "one line:" << what << "\n" << err;
+    EXPECT_EQ(out.find("nan"), std::string::npos) << what;
+    const auto after = listing(dir_->path());
+    EXPECT_EQ(after, before) << "stray files after" << what;
+    failures += r.exit_code != 2;
+  }
+  EXPECT_EQ(failures, 0) << "of " << probes.size() << " probes";
+}
+
+}  // namespace
+}  // namespace cs::apps::testing
