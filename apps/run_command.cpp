@@ -102,8 +102,9 @@ int run(const RunArgs& args) {
 
   const int jobs =
       args.jobs > 0 ? args.jobs : static_cast<int>(std::thread::hardware_concurrency());
-  if (jobs > 1)
-    suites::set_blas_threads(1);  // one BLAS thread per worker
+  // One BLAS thread per worker, whatever --jobs is: a threaded BLAS sums in an order that
+  // depends on its thread count, and results must be bit-identical for every --jobs.
+  suites::set_blas_threads(1);
   const bool interactive = isatty(fileno(stderr)) != 0;
   suites::ProgressReporter progress(cases.size(), stderr, interactive);
   suites::RunnerOptions options;
