@@ -8,6 +8,7 @@
 
 #include "solver/io/vtu_writer.hpp"
 #include "solver/mesh/mesh_sets.hpp"
+#include "suites/friction_cases.hpp"
 #include "suites/problem_catalog.hpp"
 #include "suites/suite_error.hpp"
 
@@ -46,7 +47,15 @@ ContactDiscretization to_solver(ContactKind c) {
 
 /// -sigma/p of one stress component.
 double normalized(const solver::Stress& s, StressComponent c, double p) {
-  return -(c == StressComponent::SigmaZ ? s.sigma_z : s.sigma_x) / p;
+  switch (c) {
+    case StressComponent::SigmaZ:
+      return -s.sigma_z / p;
+    case StressComponent::SigmaX:
+      return -s.sigma_x / p;
+    case StressComponent::TauXZ:
+      return -s.tau_xz / p;
+  }
+  return std::nan("");
 }
 
 /// The index of the sample of `positions` that a rule reads, or -1 when there is none.
@@ -161,14 +170,15 @@ void mark_missing(const ProblemSetup& setup, CaseResult& result) {
 }  // namespace
 
 solver::ContactSettings contact_settings(const CaseSpec& spec) {
-  const Parameters params(problem_descriptor(spec.problem).parameters, spec.overrides,
-                          to_string(spec.problem));
+  const auto& specs = problem_descriptor(spec.problem).parameters;
+  const Parameters params(specs, spec.overrides, to_string(spec.problem));
   solver::ContactSettings s;
   s.algorithm = to_solver(spec.algorithm);
   s.discretization = to_solver(spec.contact);
   s.fkn = params.get("fkn");
   s.ftoln = params.get("ftoln");
   s.pinball = params.get("pinball");
+  apply_friction(spec, specs, params, s);
   return s;
 }
 
@@ -256,7 +266,9 @@ const solver::ContactResult& ProblemExecutor::contact_solution(const CaseSpec& s
   } else {
     if (!contact_)
       contact_ = std::make_unique<solver::ContactAnalysis>(*elastic_, setup_->pair);
-    contact = contact_->solve(settings);
+    contact = setup_->load_steps.empty()
+                  ? contact_->solve(settings)
+                  : solve_load_steps(*contact_, settings, setup_->load_steps);
   }
   last_contact_.emplace(key, std::move(contact));
   return last_contact_->second;
