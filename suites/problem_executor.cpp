@@ -9,6 +9,7 @@
 #include "solver/io/vtu_writer.hpp"
 #include "solver/mesh/mesh_sets.hpp"
 #include "suites/friction_cases.hpp"
+#include "suites/friction_sampling.hpp"
 #include "suites/problem_catalog.hpp"
 #include "suites/suite_error.hpp"
 
@@ -78,6 +79,8 @@ int sample_index(const std::vector<double>& x, const std::vector<double>& values
         if (std::abs(x[i] - a) < std::abs(x[best] - a))
           best = i;
         break;
+      case SamplePoint::StickZoneEdge:  // read off the contact states (friction_sampling.hpp)
+        return -1;
     }
   }
   return best;
@@ -95,6 +98,10 @@ void grade_case(const ProblemSetup& setup, const std::vector<solver::SurfaceStre
     pressure.push_back(n.pressure / p);
   }
   for (const QuantityRule& rule : setup.quantities) {
+    if (rule.where == SamplePoint::StickZoneEdge) {
+      result.quantities.push_back(stick_zone_quantity(rule, contact, a));
+      continue;
+    }
     std::vector<double> values;
     for (const auto& s : surface)
       values.push_back(normalized(s.stress, rule.component, p));
@@ -108,6 +115,8 @@ void grade_case(const ProblemSetup& setup, const std::vector<solver::SurfaceStre
       q.error_percent = error_percent(q.value, rule.exact);
       q.grade = grade_from_error(q.error_percent);
     }
+    if (rule.component == StressComponent::TauXZ)  // the contact's own peak shear
+      q.contact_pressure = contact.peak_shear / p;
     if (rule.component == StressComponent::SigmaZ) {
       const int j = sample_index(x_contact, pressure, rule.where, a);
       if (j >= 0 && std::isfinite(pressure[j]))

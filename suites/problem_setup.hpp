@@ -25,6 +25,8 @@ enum class SamplePoint {
   MaxOnSurface,  ///< the largest value over the surface nodes (P: sigma_z_max; S: sigma_c)
   AtAxis,        ///< the node at x = 0 (H: sigma_c, sigma_h)
   AtEdge,        ///< the node at x = a, the contact edge (F: sigma_c_star)
+  StickZoneEdge,  ///< from the contact's friction states, not the stresses (CM: c/a; see
+                  ///< suites/friction_sampling.hpp)
 };
 
 /// Which stress a quantity normalizes: -sigma_z/p, -sigma_x/p or -tau_xz/p (the shear traction

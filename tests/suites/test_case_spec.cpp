@@ -21,7 +21,7 @@ TEST(CaseSpec, EveryNameRoundTrips) {
     EXPECT_EQ(parse<Algorithm>(to_string(a)), a);
   for (auto c : values<ContactKind>())
     EXPECT_EQ(parse<ContactKind>(to_string(c)), c);
-  EXPECT_EQ(values<ProblemId>().size(), 12u);  // the study's 11 and FP_p
+  EXPECT_EQ(values<ProblemId>().size(), 13u);  // the study's 11, FP_p and CM_p
   EXPECT_EQ(study_problems().size(), 11u);
   // 11 problems x 3 meshes x 2 elements x 5 algorithms x 2 discretizations: the study's 660.
   EXPECT_EQ(study_problems().size() * values<MeshLevel>().size() * values<Element>().size() *

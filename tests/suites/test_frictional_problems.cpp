@@ -150,6 +150,68 @@ TEST(FrictionalPatchProblem, BadInputIsOneLineNamingTheCause) {
       SuiteInputError);
 }
 
+CaseSpec cm_case(MeshLevel m, Element e, Algorithm a, ContactKind c,
+                 std::map<std::string, double> overrides = {}) {
+  CaseSpec spec = fp_case(m, e, a, c, std::move(overrides));
+  spec.problem = ProblemId::CM_p;
+  return spec;
+}
+
+/// Runs a CM_p case and prints its graded values; returns the result.
+CaseResult run_mindlin(const CaseSpec& spec) {
+  const auto t0 = Clock::now();
+  ProblemExecutor executor(spec);
+  CaseResult r = executor.run(spec);
+  const double seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+  std::printf("[ info     ] %s: %s", case_id(spec).c_str(), to_string(r.status).data());
+  for (const QuantityResult& q : r.quantities) {
+    std::printf(", %s %.4f (exact %.4f, %+.2f %%", to_string(q.quantity).data(), q.value, q.exact,
+                q.error_percent);
+    if (q.contact_pressure)
+      std::printf("; contact %.4f", *q.contact_pressure);
+    std::printf(")");
+  }
+  std::printf(", h/a %.4f, %d iterations, %.2f s\n", r.element_size_h, r.iterations, seconds);
+  return r;
+}
+
+TEST(CattaneoMindlinProblem, FineMeshLagrangeSurfaceToSurfaceQ4) {
+  for (Algorithm a : {Algorithm::PLM, Algorithm::LMP}) {
+    const CaseSpec spec = cm_case(MeshLevel::F, Element::Q4, a, ContactKind::ss);
+    const CaseResult r = run_mindlin(spec);
+    ASSERT_EQ(r.status, CaseStatus::converged) << case_id(spec) << ": " << r.reason;
+    const QuantityResult* c = r.quantity(schema::Quantity::c_over_a);
+    const QuantityResult* tau = r.quantity(schema::Quantity::tau_max);
+    ASSERT_NE(c, nullptr);
+    ASSERT_NE(tau, nullptr);
+    EXPECT_NEAR(c->exact, std::sqrt(0.5), 1e-12);  // Q = 0.5 mu P
+    // The stick-slip boundary lies between two nodes: one element is the resolution.
+    EXPECT_LE(std::abs(c->value - c->exact), r.element_size_h) << case_id(spec);
+    EXPECT_LE(std::abs(tau->error_percent), 5.0) << case_id(spec);  // the requirement
+  }
+}
+
+TEST(CattaneoMindlinProblem, CoarseMeshEveryMethodConverges) {
+  for (Algorithm a : {Algorithm::AL, Algorithm::PM, Algorithm::LMP, Algorithm::PLM}) {
+    for (ContactKind k : {ContactKind::ss, ContactKind::ns, ContactKind::mortar}) {
+      const CaseSpec spec = cm_case(MeshLevel::C, Element::Q4, a, k);
+      const CaseResult r = run_mindlin(spec);
+      EXPECT_EQ(r.status, CaseStatus::converged) << case_id(spec) << ": " << r.reason;
+    }
+  }
+}
+
+TEST(CattaneoMindlinProblem, BadInputIsOneLineNamingTheCause) {
+  const auto plm = [](std::map<std::string, double> o) {
+    return cm_case(MeshLevel::C, Element::Q4, Algorithm::PLM, ContactKind::ss, std::move(o));
+  };
+  EXPECT_NE(input_error(plm({{"Q_over_mu_P", 1.0}})).find("Q >= mu P"), std::string::npos);
+  EXPECT_NE(input_error(plm({{"mu", 0.0}})).find("out of range"), std::string::npos);
+  EXPECT_NE(input_error(cm_case(MeshLevel::C, Element::Q4, Algorithm::MPC, ContactKind::ss))
+                .find("MPC is not defined with friction"),
+            std::string::npos);
+}
+
 TEST(Friction, MuZeroLeavesEveryStudyProblemBitIdentical) {
   for (ProblemId p : study_problems()) {
     if (p == ProblemId::S_1_3 || p == ProblemId::S_1_7)
