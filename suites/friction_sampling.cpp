@@ -45,13 +45,18 @@ double stick_half_width(const std::vector<solver::ContactNodeResult>& nodes) {
   return r ? *r : (l ? *l : 0.0);
 }
 
-QuantityResult stick_zone_quantity(const QuantityRule& rule, const solver::ContactResult& contact,
-                                   double a) {
+bool sampled_from_contact(SamplePoint where) {
+  return where == SamplePoint::StickZoneEdge || where == SamplePoint::ContactPeakShear;
+}
+
+QuantityResult contact_quantity(const QuantityRule& rule, const solver::ContactResult& contact,
+                                double a, double p) {
   QuantityResult q;
   q.quantity = rule.quantity;
   q.exact = rule.exact;
   q.study_exact = rule.study_exact;
-  q.value = stick_half_width(contact.nodes) / a;
+  q.value = rule.where == SamplePoint::StickZoneEdge ? stick_half_width(contact.nodes) / a
+                                                     : contact.peak_shear / p;
   q.error_percent = error_percent(q.value, rule.exact);
   q.grade = grade_from_error(q.error_percent);
   return q;

@@ -15,8 +15,12 @@ namespace cs::suites {
 /// the largest |x| of a closed node; none: 0. Open nodes are skipped.
 double stick_half_width(const std::vector<solver::ContactNodeResult>& nodes);
 
-/// The graded result of a SamplePoint::StickZoneEdge rule: c / a of the contact solution.
-QuantityResult stick_zone_quantity(const QuantityRule& rule, const solver::ContactResult& contact,
-                                   double a);
+/// Whether a rule is read off the contact solution (StickZoneEdge, ContactPeakShear).
+bool sampled_from_contact(SamplePoint where);
+
+/// The graded result of a rule read off the contact solution: StickZoneEdge, c / a;
+/// ContactPeakShear, the largest |shear| over the contact nodes / p.
+QuantityResult contact_quantity(const QuantityRule& rule, const solver::ContactResult& contact,
+                                double a, double p);
 
 }  // namespace cs::suites

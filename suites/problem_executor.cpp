@@ -79,7 +79,8 @@ int sample_index(const std::vector<double>& x, const std::vector<double>& values
         if (std::abs(x[i] - a) < std::abs(x[best] - a))
           best = i;
         break;
-      case SamplePoint::StickZoneEdge:  // read off the contact states (friction_sampling.hpp)
+      case SamplePoint::StickZoneEdge:  // read off the contact (friction_sampling.hpp)
+      case SamplePoint::ContactPeakShear:
         return -1;
     }
   }
@@ -98,8 +99,8 @@ void grade_case(const ProblemSetup& setup, const std::vector<solver::SurfaceStre
     pressure.push_back(n.pressure / p);
   }
   for (const QuantityRule& rule : setup.quantities) {
-    if (rule.where == SamplePoint::StickZoneEdge) {
-      result.quantities.push_back(stick_zone_quantity(rule, contact, a));
+    if (sampled_from_contact(rule.where)) {
+      result.quantities.push_back(contact_quantity(rule, contact, a, p));
       continue;
     }
     std::vector<double> values;

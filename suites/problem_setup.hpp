@@ -22,11 +22,12 @@ namespace cs::suites {
 
 /// Where on the indented body's contact surface a quantity is read.
 enum class SamplePoint {
-  MaxOnSurface,  ///< the largest value over the surface nodes (P: sigma_z_max; S: sigma_c)
-  AtAxis,        ///< the node at x = 0 (H: sigma_c, sigma_h)
-  AtEdge,        ///< the node at x = a, the contact edge (F: sigma_c_star)
-  StickZoneEdge,  ///< from the contact's friction states, not the stresses (CM: c/a; see
-                  ///< suites/friction_sampling.hpp)
+  MaxOnSurface,      ///< the largest value over the surface nodes (P: sigma_z_max; S: sigma_c)
+  AtAxis,            ///< the node at x = 0 (H: sigma_c, sigma_h)
+  AtEdge,            ///< the node at x = a, the contact edge (F: sigma_c_star)
+  StickZoneEdge,     ///< c/a from the contact's stick/slip states (CM), not the stresses
+  ContactPeakShear,  ///< the contact solution's largest |shear| (CM: the traction has a cusp
+                     ///< at c that nodal stress recovery smooths); see friction_sampling.hpp
 };
 
 /// Which stress a quantity normalizes: -sigma_z/p, -sigma_x/p or -tau_xz/p (the shear traction

@@ -17,11 +17,12 @@
 // removes the rigid-body modes only. Load steps: P alone, then Q in `q_increments` equal steps,
 // each with the exact field of its own Q (monotonic loading: the same as Q at once).
 // Oracle: oracles/cattaneo_mindlin.hpp (c = a (1 - Q/(mu P))^(1/2); Q >= mu P is refused).
-// Sampled: tau_max = the largest -tau_xz/p over the block's contact-surface nodes (exact
-// q_peak / p = (4/pi)(mu Q / P)^(1/2)); c_over_a from the contact's stick/slip states (midway
-// between the last sticking and the first slipping node on each side, averaged); sigma_c =
-// -sigma_z(0, 0)/p = 4/pi as H_p.
-// Run: contact-suite case CM_p --mesh F --element Q4 --algorithm PLM --contact ss
+// Sampled: tau_max = the largest shear traction of the contact solution over p (exact q_peak / p =
+// (4/pi)(mu Q / P)^(1/2)): the traction has a cusp at x = c that nodal stress recovery smooths
+// (F, Q4, PLM ss: nodal -tau_xz peak -18 %, the contact's +3 %); c_over_a from the contact's
+// stick/slip states (midway between the last sticking and the first slipping node on each side,
+// averaged); sigma_c = -sigma_z(0, 0)/p = 4/pi as H_p. Run: contact-suite case CM_p --mesh F
+// --element Q4 --algorithm PLM --contact ss
 
 #include <cmath>
 #include <memory>
@@ -187,8 +188,8 @@ ProblemSetup build_cattaneo_mindlin(const CaseSpec& spec, const Parameters& para
     return oracles::cattaneo_mindlin_pressure(exact, x) / exact.p_mean;
   };
   using schema::Quantity;
-  setup.quantities.push_back({Quantity::tau_max, SamplePoint::MaxOnSurface, StressComponent::TauXZ,
-                              exact.q_peak_over_p_mean, std::nullopt});
+  setup.quantities.push_back({Quantity::tau_max, SamplePoint::ContactPeakShear,
+                              StressComponent::TauXZ, exact.q_peak_over_p_mean, std::nullopt});
   setup.quantities.push_back({Quantity::c_over_a, SamplePoint::StickZoneEdge,
                               StressComponent::TauXZ, exact.c_over_a, std::nullopt});
   setup.quantities.push_back({Quantity::sigma_c, SamplePoint::AtAxis, StressComponent::SigmaZ,
