@@ -15,7 +15,8 @@
 namespace cs::schema {
 
 /// The battery's problems (the study's eleven first, names as the study prints them, primes
-/// spelled out). Each has one descriptor in suites/problems/.
+/// spelled out; then the problems beyond the study: FP_p, the frictional patch test, and CM_p,
+/// Cattaneo-Mindlin partial slip). Each has one descriptor in suites/problems/.
 enum class ProblemId : std::uint8_t {
   P_p,
   P_a,
@@ -28,6 +29,8 @@ enum class ProblemId : std::uint8_t {
   S_1_7,
   F_p,
   F_a,
+  FP_p,
+  CM_p,
 };
 constexpr std::string_view axis_name(ProblemId) {
   return "problem";
@@ -56,6 +59,10 @@ constexpr AxisEntry entry(ProblemId v) {
       return {"F_p", "", "F<sub>p</sub>"};
     case ProblemId::F_a:
       return {"F_a", "", "F<sub>a</sub>"};
+    case ProblemId::FP_p:
+      return {"FP_p", "", "FP<sub>p</sub>"};
+    case ProblemId::CM_p:
+      return {"CM_p", "", "CM<sub>p</sub>"};
   }
   return {};
 }

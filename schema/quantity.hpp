@@ -15,6 +15,8 @@ enum class Quantity : std::uint8_t {
   sigma_c,       ///< -sigma_z/p at the contact centre (H) or its peak on z = 0 (S)
   sigma_h,       ///< -sigma_x(0,0)/p: the horizontal stress at the contact centre (H_p)
   sigma_c_star,  ///< -sigma_z(a,0)/p: the contact stress at a flat punch's edge (singular)
+  tau_max,       ///< -tau_xz^max/p: the peak shear traction on the contact (friction problems)
+  c_over_a,      ///< c/a: the stick zone's half-width over the contact's (Cattaneo-Mindlin)
 };
 constexpr std::string_view axis_name(Quantity) {
   return "quantity";
@@ -29,6 +31,10 @@ constexpr AxisEntry entry(Quantity v) {
       return {"sigma_h", "", "σ̄<sub>h</sub>"};
     case Quantity::sigma_c_star:
       return {"sigma_c_star", "", "σ̄<sub>c</sub><sup>*</sup>"};
+    case Quantity::tau_max:
+      return {"tau_max", "", "τ̄<sub>max</sub>"};
+    case Quantity::c_over_a:
+      return {"c_over_a", "", "c/a"};
   }
   return {};
 }
@@ -44,6 +50,10 @@ constexpr std::string_view description(Quantity v) {
       return "horizontal stress";
     case Quantity::sigma_c_star:
       return "contact stress at the punch edge";
+    case Quantity::tau_max:
+      return "peak shear traction";
+    case Quantity::c_over_a:
+      return "stick half-width";
   }
   return {};
 }

@@ -11,7 +11,8 @@
 namespace cs::suites {
 
 /// Which values of each axis to run. Empty lists mean "all the study's values" (for contacts:
-/// ss and ns; mortar only when asked for).
+/// ss and ns; mortar only when asked for; for problems: the study's eleven, the problems beyond
+/// it only when named; for algorithms: all five, but no MPC for a friction problem).
 struct CaseSelection {
   std::vector<ProblemId> problems;
   std::vector<MeshLevel> meshes;

@@ -27,6 +27,23 @@ bool is_axisymmetric(ProblemId id) {
   return problem_descriptor(id).record.axisymmetric;
 }
 
+std::vector<ProblemId> study_problems() {
+  std::vector<ProblemId> out;
+  for (ProblemId id : values<ProblemId>()) {
+    if (!problem_descriptor(id).record.study_tables.empty())
+      out.push_back(id);
+  }
+  return out;
+}
+
+bool is_frictional(ProblemId id) {
+  for (const auto& s : problem_descriptor(id).parameters) {
+    if (s.name == "mu")
+      return true;
+  }
+  return false;
+}
+
 bool is_singular(ProblemId id) {
   return problem_descriptor(id).record.singular;
 }

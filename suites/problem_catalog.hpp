@@ -18,6 +18,13 @@ bool is_axisymmetric(ProblemId id);
 /// True for the singular problems (flat punches): graded for divergence, not accuracy.
 bool is_singular(ProblemId id);
 
+/// The study's problems (those with a study table), in battery order: the default of the case
+/// matrix. The problems beyond the study (e.g. FP_p) run when asked for by name.
+std::vector<ProblemId> study_problems();
+
+/// True for the problems with Coulomb friction (they declare the parameter `mu`).
+bool is_frictional(ProblemId id);
+
 /// The schema records of the problems that have a case in `cases`, in battery order.
 std::vector<schema::ProblemRecord> problem_records(const std::vector<CaseResult>& cases);
 

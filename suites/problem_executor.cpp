@@ -8,6 +8,8 @@
 
 #include "solver/io/vtu_writer.hpp"
 #include "solver/mesh/mesh_sets.hpp"
+#include "suites/friction_cases.hpp"
+#include "suites/friction_sampling.hpp"
 #include "suites/problem_catalog.hpp"
 #include "suites/suite_error.hpp"
 
@@ -46,7 +48,15 @@ ContactDiscretization to_solver(ContactKind c) {
 
 /// -sigma/p of one stress component.
 double normalized(const solver::Stress& s, StressComponent c, double p) {
-  return -(c == StressComponent::SigmaZ ? s.sigma_z : s.sigma_x) / p;
+  switch (c) {
+    case StressComponent::SigmaZ:
+      return -s.sigma_z / p;
+    case StressComponent::SigmaX:
+      return -s.sigma_x / p;
+    case StressComponent::TauXZ:
+      return -s.tau_xz / p;
+  }
+  return std::nan("");
 }
 
 /// The index of the sample of `positions` that a rule reads, or -1 when there is none.
@@ -69,6 +79,9 @@ int sample_index(const std::vector<double>& x, const std::vector<double>& values
         if (std::abs(x[i] - a) < std::abs(x[best] - a))
           best = i;
         break;
+      case SamplePoint::StickZoneEdge:  // read off the contact (friction_sampling.hpp)
+      case SamplePoint::ContactPeakShear:
+        return -1;
     }
   }
   return best;
@@ -86,6 +99,10 @@ void grade_case(const ProblemSetup& setup, const std::vector<solver::SurfaceStre
     pressure.push_back(n.pressure / p);
   }
   for (const QuantityRule& rule : setup.quantities) {
+    if (sampled_from_contact(rule.where)) {
+      result.quantities.push_back(contact_quantity(rule, contact, a, p));
+      continue;
+    }
     std::vector<double> values;
     for (const auto& s : surface)
       values.push_back(normalized(s.stress, rule.component, p));
@@ -99,6 +116,8 @@ void grade_case(const ProblemSetup& setup, const std::vector<solver::SurfaceStre
       q.error_percent = error_percent(q.value, rule.exact);
       q.grade = grade_from_error(q.error_percent);
     }
+    if (rule.component == StressComponent::TauXZ)  // the contact's own peak shear
+      q.contact_pressure = contact.peak_shear / p;
     if (rule.component == StressComponent::SigmaZ) {
       const int j = sample_index(x_contact, pressure, rule.where, a);
       if (j >= 0 && std::isfinite(pressure[j]))
@@ -161,14 +180,15 @@ void mark_missing(const ProblemSetup& setup, CaseResult& result) {
 }  // namespace
 
 solver::ContactSettings contact_settings(const CaseSpec& spec) {
-  const Parameters params(problem_descriptor(spec.problem).parameters, spec.overrides,
-                          to_string(spec.problem));
+  const auto& specs = problem_descriptor(spec.problem).parameters;
+  const Parameters params(specs, spec.overrides, to_string(spec.problem));
   solver::ContactSettings s;
   s.algorithm = to_solver(spec.algorithm);
   s.discretization = to_solver(spec.contact);
   s.fkn = params.get("fkn");
   s.ftoln = params.get("ftoln");
   s.pinball = params.get("pinball");
+  apply_friction(spec, specs, params, s);
   return s;
 }
 
@@ -256,7 +276,9 @@ const solver::ContactResult& ProblemExecutor::contact_solution(const CaseSpec& s
   } else {
     if (!contact_)
       contact_ = std::make_unique<solver::ContactAnalysis>(*elastic_, setup_->pair);
-    contact = contact_->solve(settings);
+    contact = setup_->load_steps.empty()
+                  ? contact_->solve(settings)
+                  : solve_load_steps(*contact_, settings, setup_->load_steps);
   }
   last_contact_.emplace(key, std::move(contact));
   return last_contact_->second;

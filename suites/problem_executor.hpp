@@ -19,8 +19,10 @@
 namespace cs::suites {
 
 /// The solver settings a case selects: the study's algorithm and discretization names mapped
-/// to the solver's (LMP and PLM both to the Lagrange multiplier method), with FKN, FTOLN and
-/// the pinball from the case's parameters.
+/// to the solver's (LMP and PLM both to the Lagrange multiplier method, PLM with tangential
+/// multipliers and LMP with a tangential penalty: they differ only with friction), with FKN,
+/// FTOLN and the pinball from the case's parameters, and mu, FKT, FTOLT for a friction problem
+/// (suites/friction_cases.hpp). Throws SuiteInputError for MPC with friction.
 solver::ContactSettings contact_settings(const CaseSpec& spec);
 
 /// The nodal stress recovery a case selects (the Q8 extrapolation rule keeps its default).

@@ -1,5 +1,6 @@
 #include "suites/problem_setup.hpp"
 
+#include "suites/friction_cases.hpp"
 #include "suites/problem_catalog.hpp"
 #include "suites/problems/problem_builders.hpp"
 
@@ -9,6 +10,13 @@ ProblemSetup build_problem(const CaseSpec& spec) {
   const ProblemDescriptor& d = problem_descriptor(spec.problem);
   const Parameters params(d.parameters, spec.overrides, to_string(spec.problem));
   return d.build(spec, params);
+}
+
+void validate_case(const CaseSpec& spec) {
+  const ProblemDescriptor& d = problem_descriptor(spec.problem);
+  const Parameters params(d.parameters, spec.overrides, to_string(spec.problem));
+  if (declares(d.parameters, "mu"))
+    require_frictional_algorithm(spec, params.get("mu"));
 }
 
 namespace problems {

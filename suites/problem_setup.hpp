@@ -22,13 +22,17 @@ namespace cs::suites {
 
 /// Where on the indented body's contact surface a quantity is read.
 enum class SamplePoint {
-  MaxOnSurface,  ///< the largest value over the surface nodes (P: sigma_z_max; S: sigma_c)
-  AtAxis,        ///< the node at x = 0 (H: sigma_c, sigma_h)
-  AtEdge,        ///< the node at x = a, the contact edge (F: sigma_c_star)
+  MaxOnSurface,      ///< the largest value over the surface nodes (P: sigma_z_max; S: sigma_c)
+  AtAxis,            ///< the node at x = 0 (H: sigma_c, sigma_h)
+  AtEdge,            ///< the node at x = a, the contact edge (F: sigma_c_star)
+  StickZoneEdge,     ///< c/a from the contact's stick/slip states (CM), not the stresses
+  ContactPeakShear,  ///< the contact solution's largest |shear| (CM: the traction has a cusp
+                     ///< at c that nodal stress recovery smooths); see friction_sampling.hpp
 };
 
-/// Which stress a quantity normalizes: -sigma_z/p or -sigma_x/p.
-enum class StressComponent { SigmaZ, SigmaX };
+/// Which stress a quantity normalizes: -sigma_z/p, -sigma_x/p or -tau_xz/p (the shear traction
+/// the target exerts on the indented body along +x, friction problems).
+enum class StressComponent { SigmaZ, SigmaX, TauXZ };
 
 /// One graded quantity of a problem.
 struct QuantityRule {
@@ -64,11 +68,18 @@ struct ProblemSetup {
   /// The exact contact pressure over p at x on z = 0 (zero outside contact; inf at a
   /// singular edge), for the exact curve of the profile figures.
   std::function<double(double x)> exact_pressure_over_p;
+  /// Friction problems (path dependent): the load steps every case runs, in order, from the
+  /// unloaded state (suites/friction_cases.hpp); empty: one solve under the model's loads.
+  std::vector<solver::LoadStep> load_steps;
 };
 
 /// Builds the setup of a case (one switch over the problems, in problem_setup.cpp).
 /// Throws SuiteInputError for bad parameters, and lets solver errors through.
 ProblemSetup build_problem(const CaseSpec& spec);
+
+/// Validates a case before anything runs: its --set keys and values (Parameters) and, for a
+/// friction problem, its algorithm (MPC is refused). Throws SuiteInputError with one line.
+void validate_case(const CaseSpec& spec);
 
 /// The edge set of the indented body where contact happens and quantities are sampled.
 inline constexpr const char* kSampledSurface = study_sets::kBlockContact;

@@ -388,6 +388,8 @@ int table1_elements(ProblemId problem, MeshLevel level) {
     case ProblemId::F_a:
       coarse = 1024;
       break;
+    default:  // problems beyond the study: no Table 1 count
+      return 0;
   }
   const int f = level_factor(level);
   return coarse * f * f;
