@@ -14,6 +14,7 @@
 #include "schema/results_file.hpp"
 #include "suites/problem_catalog.hpp"
 #include "suites/problem_executor.hpp"
+#include "suites/problem_setup.hpp"
 #include "suites/suite_error.hpp"
 
 namespace cs::apps {
@@ -46,6 +47,7 @@ suites::CaseSpec make_spec(const CaseArgs& args) {
   // Validate the parameters now: a bad --set is bad input, not a failed case.
   suites::Parameters(suites::problem_descriptor(spec.problem).parameters, spec.overrides,
                      suites::to_string(spec.problem));
+  suites::validate_case(spec);
   return spec;
 }
 

@@ -18,6 +18,7 @@
 #include "suites/case_matrix.hpp"
 #include "suites/problem_catalog.hpp"
 #include "suites/problem_executor.hpp"
+#include "suites/problem_setup.hpp"
 #include "suites/progress.hpp"
 #include "suites/row_verdict.hpp"
 #include "suites/run_environment.hpp"
@@ -70,6 +71,7 @@ void validate_overrides(const std::vector<suites::CaseSpec>& cases) {
   for (const auto& spec : cases) {
     suites::Parameters(suites::problem_descriptor(spec.problem).parameters, spec.overrides,
                        suites::to_string(spec.problem));
+    suites::validate_case(spec);  // e.g. MPC with friction: bad input before anything runs
   }
 }
 
