@@ -6,6 +6,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -16,6 +17,7 @@
 #include <nlohmann/json.hpp>
 
 #include "solver/load_vector.hpp"
+#include "solver/mesh/mesh_sets.hpp"
 #include "suites/calculix_executor.hpp"
 #include "suites/executor_factory.hpp"
 #include "suites/problem_executor.hpp"
@@ -66,6 +68,7 @@ struct EngineRun {
   double applied = 0.0;
   double contact = 0.0;
   double ccx_seconds = 0.0;
+  double support = 0.0;  ///< CalculiX's z reaction on the indenter's held back face
 };
 
 EngineRun run_with_calculix(const CaseSpec& spec, ExecutorOptions options = {}) {
@@ -73,8 +76,12 @@ EngineRun run_with_calculix(const CaseSpec& spec, ExecutorOptions options = {}) 
   EngineRun out;
   out.result = executor.run(spec);
   out.applied = std::abs(applied_z_load(executor.setup()));  // the loads push towards -z
-  if (executor.last_result())
-    out.ccx_seconds = executor.last_result()->wall_seconds;
+  if (const auto& ccx = executor.last_result()) {
+    out.ccx_seconds = ccx->wall_seconds;
+    if (!ccx->reaction.empty())
+      for (int node : solver::node_set(executor.setup().model.mesh, study_sets::kIndenterLoad))
+        out.support += ccx->reaction.at(static_cast<std::size_t>(node)).y();
+  }
   out.contact = contact_force(out.result, executor.setup());
   const auto* q = out.result.quantities.empty() ? nullptr : &out.result.quantities.front();
   std::printf("  %-28s %-13s value %.6f exact %.6f (%+.3f %%) p %.6f  F %.6f / %.6f  %s\n",
@@ -82,13 +89,16 @@ EngineRun run_with_calculix(const CaseSpec& spec, ExecutorOptions options = {}) 
               q ? q->value : NAN, q ? q->exact : NAN, q ? q->error_percent : NAN,
               q && q->contact_pressure ? *q->contact_pressure : NAN, out.contact, out.applied,
               out.result.reason.c_str());
+  if (std::getenv("CS_PRINT_PROFILE"))
+    for (std::size_t i = 0; i < out.result.profile.x_over_a.size(); ++i)
+      std::printf("    x/a %.6f  -sz/p %.6f  p/p %.6f\n", out.result.profile.x_over_a[i],
+                  out.result.profile.sigma_z_over_p[i], out.result.profile.pressure_over_p[i]);
   return out;
 }
 
 // P_p: the patch test. The exact field is uniform (sigma_z = -p), which Q4 represents
 // exactly: CalculiX's nodal sigma_z is off only by its Newton residual tolerance and the 6
 // digits of the .frd (the adapter's patch tests: 4e-5 for Q4 plane strain), hence 1e-3.
-// The contact pressure integrates to the applied load p a: the patch is fully in contact.
 TEST(CalculixEngine, PatchTestSurfaceToSurfacePenalty) {
   const EngineRun run = run_with_calculix(
       calculix_case(ProblemId::P_p, MeshLevel::C, Algorithm::PM, ContactKind::ss));
@@ -101,14 +111,32 @@ TEST(CalculixEngine, PatchTestSurfaceToSurfacePenalty) {
   EXPECT_NEAR(q.value, q.exact, 1e-3);
   EXPECT_EQ(q.grade, Grade::e);
   ASSERT_TRUE(q.contact_pressure.has_value());
-  EXPECT_NEAR(*q.contact_pressure, 1.0, 1e-3);
-  // Independent reading: the applied load (consistent nodal forces of p on the far face) is p a
-  // = 1, and CalculiX's CPRESS integrated over the contact surface carries it.
-  EXPECT_NEAR(run.applied, 1.0, 1e-12);
-  EXPECT_NEAR(run.contact, run.applied, 1e-3 * run.applied);
+  EXPECT_NEAR(*q.contact_pressure, 1.0, 1e-3);  // the largest nodal CPRESS
   EXPECT_FALSE(r.profile.empty());
   EXPECT_FALSE(r.exact_profile.empty());
   EXPECT_GT(r.peak_rss_mb, 0.0);  // ccx's own
+  // Independent readings. The applied load (consistent nodal forces of p on the far face) is
+  // p a = 1; CalculiX's support reaction on the indenter's back face carries it (equilibrium
+  // of CalculiX's solution, to its residual tolerance).
+  EXPECT_NEAR(run.applied, 1.0, 1e-12);
+  EXPECT_NEAR(std::abs(run.support), run.applied, 1e-3 * run.applied);
+  // ss CPRESS at the slave nodes is not a consistent pressure field in ccx 2.20: on this
+  // uniform patch it is 1, 0.75 or 0.5 p node by node (measured: 1, 1, .75, 1, 1, .75, .5, 1,
+  // .5 at x/a = 0, 1/8, ..., 1) while sigma_z is exact; summed with the trapezoidal weights it
+  // carries 0.844 of the load. Pinned as CalculiX's behaviour (docs/calculix.md): a change in
+  // ccx shows here.
+  EXPECT_NEAR(run.contact / run.applied, 0.84375, 5e-3);
+}
+
+// The same patch with node-to-surface: CPRESS is the spring force over the node's tributary
+// length, so its trapezoidal sum is the total spring force, equal to the applied load to
+// ccx's residual tolerance (0.5 %).
+TEST(CalculixEngine, PatchTestNodeToSurfacePressureCarriesTheLoad) {
+  const EngineRun run = run_with_calculix(
+      calculix_case(ProblemId::P_p, MeshLevel::C, Algorithm::PM, ContactKind::ns));
+  ASSERT_EQ(run.result.status, CaseStatus::converged) << run.result.reason;
+  EXPECT_NEAR(run.result.quantities.front().value, 1.0, 1e-3);
+  EXPECT_NEAR(run.contact, run.applied, 5e-3 * run.applied);
 }
 
 // H_p: Hertz. sigma_c is -sigma_z/p at the axis node, exact 4/pi. On the C mesh (h = a/4...)
