@@ -94,17 +94,29 @@ std::string with_kept_directory(std::string reason, const std::filesystem::path&
          " (CalculiX files kept in " + dir.string() + ")";
 }
 
-}  // namespace
-
-const std::filesystem::path& calculix_run_directory() {
-  static const std::filesystem::path dir = [] {
+/// The process's run directory, removed at exit when it is empty (every case converged).
+struct RunDirectory {
+  std::filesystem::path path;
+  RunDirectory() {
     std::string pattern = (std::filesystem::temp_directory_path() / "contact-suite-ccx.XXXXXX");
     if (mkdtemp(pattern.data()) == nullptr)
       throw std::system_error(errno, std::generic_category(),
                               "cannot create a CalculiX run directory from " + pattern);
-    return std::filesystem::path(pattern);
-  }();
-  return dir;
+    path = pattern;
+  }
+  ~RunDirectory() {
+    std::error_code ignored;
+    std::filesystem::remove(path, ignored);  // fails, harmlessly, while failed cases are kept
+  }
+  RunDirectory(const RunDirectory&) = delete;
+  RunDirectory& operator=(const RunDirectory&) = delete;
+};
+
+}  // namespace
+
+const std::filesystem::path& calculix_run_directory() {
+  static const RunDirectory dir;
+  return dir.path;
 }
 
 std::string calculix_case_directory_name(const CaseSpec& spec) {

@@ -50,7 +50,8 @@ class CalculixExecutor final : public GroupExecutor {
 };
 
 /// The directory this process's CalculiX cases run under: created on first use as
-/// <temp>/contact-suite-ccx.XXXXXX (mkdtemp), the same for every later call.
+/// <temp>/contact-suite-ccx.XXXXXX (mkdtemp), the same for every later call; removed at exit
+/// if it is empty (the directories of failed cases are kept).
 const std::filesystem::path& calculix_run_directory();
 
 /// The case's own directory name: its id with every character outside [A-Za-z0-9._=@-] as '_'.
