@@ -12,6 +12,7 @@
 #include "suites/friction_sampling.hpp"
 #include "suites/problem_catalog.hpp"
 #include "suites/suite_error.hpp"
+#include "suites/surface_sampling.hpp"
 
 namespace cs::suites {
 namespace {
@@ -46,136 +47,6 @@ ContactDiscretization to_solver(ContactKind c) {
   throw SuiteInputError("unknown contact discretization");
 }
 
-/// -sigma/p of one stress component.
-double normalized(const solver::Stress& s, StressComponent c, double p) {
-  switch (c) {
-    case StressComponent::SigmaZ:
-      return -s.sigma_z / p;
-    case StressComponent::SigmaX:
-      return -s.sigma_x / p;
-    case StressComponent::TauXZ:
-      return -s.tau_xz / p;
-  }
-  return std::nan("");
-}
-
-/// The index of the sample of `positions` that a rule reads, or -1 when there is none.
-int sample_index(const std::vector<double>& x, const std::vector<double>& values, SamplePoint where,
-                 double a) {
-  if (x.empty())
-    return -1;
-  int best = 0;
-  for (int i = 1; i < static_cast<int>(x.size()); ++i) {
-    switch (where) {
-      case SamplePoint::MaxOnSurface:
-        if (values[i] > values[best])
-          best = i;
-        break;
-      case SamplePoint::AtAxis:
-        if (std::abs(x[i]) < std::abs(x[best]))
-          best = i;
-        break;
-      case SamplePoint::AtEdge:
-        if (std::abs(x[i] - a) < std::abs(x[best] - a))
-          best = i;
-        break;
-      case SamplePoint::StickZoneEdge:  // read off the contact (friction_sampling.hpp)
-      case SamplePoint::ContactPeakShear:
-        return -1;
-    }
-  }
-  return best;
-}
-
-/// Fills value, error and grade of each quantity, the contact-pressure version, and the profile.
-void grade_case(const ProblemSetup& setup, const std::vector<solver::SurfaceStressSample>& surface,
-                const solver::ContactResult& contact, CaseResult& result) {
-  const double p = setup.p, a = setup.contact_half_width_a;
-  std::vector<double> x_nodal, x_contact, pressure;
-  for (const auto& s : surface)
-    x_nodal.push_back(s.position.x());
-  for (const auto& n : contact.nodes) {
-    x_contact.push_back(n.position.x());
-    pressure.push_back(n.pressure / p);
-  }
-  for (const QuantityRule& rule : setup.quantities) {
-    if (sampled_from_contact(rule.where)) {
-      result.quantities.push_back(contact_quantity(rule, contact, a, p));
-      continue;
-    }
-    std::vector<double> values;
-    for (const auto& s : surface)
-      values.push_back(normalized(s.stress, rule.component, p));
-    QuantityResult q;
-    q.quantity = rule.quantity;
-    q.exact = rule.exact;
-    q.study_exact = rule.study_exact;
-    const int i = sample_index(x_nodal, values, rule.where, a);
-    q.value = i >= 0 ? values[i] : std::nan("");
-    if (std::isfinite(rule.exact)) {
-      q.error_percent = error_percent(q.value, rule.exact);
-      q.grade = grade_from_error(q.error_percent);
-    }
-    if (rule.component == StressComponent::TauXZ)  // the contact's own peak shear
-      q.contact_pressure = contact.peak_shear / p;
-    if (rule.component == StressComponent::SigmaZ) {
-      const int j = sample_index(x_contact, pressure, rule.where, a);
-      if (j >= 0 && std::isfinite(pressure[j]))
-        q.contact_pressure = pressure[j];
-    }
-    result.quantities.push_back(q);
-  }
-  // The profile of the study's Figure 4: nodal -sigma_z/p and the contact pressure, by x / a.
-  for (const auto& s : surface) {
-    result.profile.x_over_a.push_back(s.position.x() / a);
-    result.profile.sigma_z_over_p.push_back(-s.stress.sigma_z / p);
-    double nearest = std::nan("");
-    double distance = std::numeric_limits<double>::infinity();
-    for (std::size_t k = 0; k < x_contact.size(); ++k) {
-      const double d = std::abs(x_contact[k] - s.position.x());
-      if (d < distance)
-        distance = d, nearest = pressure[k];
-    }
-    result.profile.pressure_over_p.push_back(distance < 1e-9 * a ? nearest : std::nan(""));
-  }
-}
-
-/// The exact -sigma_z/p on z = 0 at 301 points of 0 <= x <= 1.5 a (within the block).
-ExactProfile exact_profile(const ProblemSetup& setup) {
-  ExactProfile out;
-  if (!setup.exact_pressure_over_p)
-    return out;
-  const double a = setup.contact_half_width_a;
-  const double x_max = std::min(1.5 * a, setup.mesh_info.block_width);
-  constexpr int kPoints = 301;
-  for (int i = 0; i < kPoints; ++i) {
-    const double x = x_max * i / (kPoints - 1);
-    double value = std::nan("");
-    try {
-      value = setup.exact_pressure_over_p(x);
-    } catch (const std::invalid_argument&) {
-      continue;  // the singular edge of a flat punch
-    }
-    if (!std::isfinite(value))
-      continue;
-    out.x_over_a.push_back(x / a);
-    out.sigma_z_over_p.push_back(value);
-  }
-  return out;
-}
-
-/// Every quantity of the problem with no value: a failed case still names what it lacks.
-void mark_missing(const ProblemSetup& setup, CaseResult& result) {
-  for (const QuantityRule& rule : setup.quantities) {
-    QuantityResult q;
-    q.quantity = rule.quantity;
-    q.exact = rule.exact;
-    q.study_exact = rule.study_exact;
-    q.value = std::nan("");
-    q.error_percent = std::nan("");
-    result.quantities.push_back(q);
-  }
-}
 
 }  // namespace
 
@@ -309,7 +180,11 @@ CaseResult ProblemExecutor::run(const CaseSpec& spec) {
   last_u_ = contact.displacement;
   last_stresses_ = solver::recover_stresses(setup_->model, last_u_, recovery_options(spec));
   const auto surface = solver::surface_stresses(setup_->model, *last_stresses_, kSampledSurface);
-  grade_case(*setup_, surface, contact, result);
+  std::vector<ContactPressureSample> pressures;
+  pressures.reserve(contact.nodes.size());
+  for (const auto& n : contact.nodes)
+    pressures.push_back({n.position.x(), n.pressure});
+  sample_quantities(*setup_, surface, pressures, result);
   result.exact_profile = exact_profile(*setup_);
   return result;
 }

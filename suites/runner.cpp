@@ -67,7 +67,8 @@ void run_group(const Group& group, const std::vector<CaseSpec>& cases,
     result.wall_seconds =
         std::chrono::duration<double>(Clock::now() - start).count() + build_seconds;
     build_seconds = 0.0;
-    result.peak_rss_mb = peak_rss_mb();
+    // An external solver reports its own child process's peak; keep the larger.
+    result.peak_rss_mb = std::max(result.peak_rss_mb, peak_rss_mb());
     results[index] = std::move(result);
     done(results[index]);
   }

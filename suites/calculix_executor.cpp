@@ -1,0 +1,183 @@
+#include "suites/calculix_executor.hpp"
+
+#include <stdlib.h>
+
+#include <cmath>
+#include <exception>
+#include <string>
+#include <system_error>
+#include <utility>
+#include <vector>
+
+#include "adapters/calculix/calculix_error.hpp"
+#include "adapters/calculix/calculix_options.hpp"
+#include "suites/problem_executor.hpp"
+#include "suites/suite_error.hpp"
+#include "suites/surface_sampling.hpp"
+
+namespace cs::suites {
+namespace {
+
+namespace ccx = adapters::calculix;
+
+CaseStatus to_case_status(ccx::CalculixStatus status) {
+  switch (status) {
+    case ccx::CalculixStatus::Converged:
+      return CaseStatus::converged;
+    case ccx::CalculixStatus::NotConverged:
+      return CaseStatus::not_converged;
+    case ccx::CalculixStatus::Failed:
+      return CaseStatus::failed;
+    case ccx::CalculixStatus::Timeout:
+      return CaseStatus::timeout;
+  }
+  return CaseStatus::failed;
+}
+
+/// "not supported by CalculiX: <the adapter's message less its "CalculiX: " prefix>".
+std::string unsupported_reason(const std::string& message) {
+  constexpr std::string_view kPrefix = "CalculiX: ";
+  std::string_view m = message;
+  if (m.starts_with(kPrefix))
+    m.remove_prefix(kPrefix.size());
+  return "not supported by CalculiX: " + std::string(m);
+}
+
+/// The CalculiX options of `spec` on `setup` (throws UnsupportedByCalculix for its gaps).
+ccx::CalculixOptions calculix_options(const CaseSpec& spec, const ProblemSetup& setup,
+                                      const ExecutorOptions& options) {
+  if (spec.target == TargetKind::Rigid || setup.load_control)
+    throw ccx::UnsupportedByCalculix(
+        "a rigid target (the adapter writes meshed surfaces only: use --target discretized)");
+  ccx::CalculixOptions out = ccx::map_contact_settings(
+      contact_settings(spec), ccx::penalty_scale(setup.model, setup.pair, setup.p));
+  out.time_limit_seconds = options.calculix_time_limit_seconds;
+  out.executable = options.ccx_executable;
+  return out;
+}
+
+/// CalculiX's nodal stresses as a nodal field (one value per node, in the body of its
+/// elements), for solver::surface_stresses to order along the sampled surface.
+solver::StressField nodal_field(const solver::Mesh& mesh,
+                                const std::vector<solver::Stress>& stress) {
+  solver::StressField field;
+  field.method = solver::StressRecoveryMethod::ExtrapolatedAveraged;
+  const std::size_t n_bodies = mesh.body_names.size();
+  const auto n = static_cast<std::size_t>(mesh.n_nodes());
+  field.nodal.assign(n_bodies, std::vector<solver::Stress>(n));
+  field.nodal_count.assign(n_bodies, std::vector<int>(n, 0));
+  for (int e = 0; e < mesh.n_elements(); ++e) {
+    const auto body = static_cast<std::size_t>(mesh.element_body[e]);
+    for (int k = 0; k < mesh.n_element_nodes(); ++k) {
+      const auto node = static_cast<std::size_t>(mesh.elements[e][k]);
+      field.nodal[body][node] = stress.at(node);
+      field.nodal_count[body][node] = 1;
+    }
+  }
+  return field;
+}
+
+/// Fills the values of a converged run: quantities, profiles.
+void fill_values(const ProblemSetup& setup, const ccx::CalculixResult& run, CaseResult& result) {
+  const solver::StressField field = nodal_field(setup.model.mesh, run.nodal_stress);
+  const auto surface = solver::surface_stresses(setup.model, field, kSampledSurface);
+  std::vector<ContactPressureSample> pressures;
+  pressures.reserve(run.contact.size());
+  for (const auto& n : run.contact)
+    pressures.push_back({n.position.x(), n.pressure});
+  sample_quantities(setup, surface, pressures, result);
+  result.exact_profile = exact_profile(setup);
+}
+
+std::string with_kept_directory(std::string reason, const std::filesystem::path& dir) {
+  return (reason.empty() ? std::string("CalculiX failed") : std::move(reason)) +
+         " (CalculiX files kept in " + dir.string() + ")";
+}
+
+/// The process's run directory, removed at exit when it is empty (every case converged).
+struct RunDirectory {
+  std::filesystem::path path;
+  RunDirectory() {
+    std::string pattern = (std::filesystem::temp_directory_path() / "contact-suite-ccx.XXXXXX");
+    if (mkdtemp(pattern.data()) == nullptr)
+      throw std::system_error(errno, std::generic_category(),
+                              "cannot create a CalculiX run directory from " + pattern);
+    path = pattern;
+  }
+  ~RunDirectory() {
+    std::error_code ignored;
+    std::filesystem::remove(path, ignored);  // fails, harmlessly, while failed cases are kept
+  }
+  RunDirectory(const RunDirectory&) = delete;
+  RunDirectory& operator=(const RunDirectory&) = delete;
+};
+
+}  // namespace
+
+const std::filesystem::path& calculix_run_directory() {
+  static const RunDirectory dir;
+  return dir.path;
+}
+
+std::string calculix_case_directory_name(const CaseSpec& spec) {
+  std::string name = case_id(spec);
+  for (char& c : name) {
+    const bool plain = (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') ||
+                       c == '.' || c == '=' || c == '@' || c == '-';
+    if (!plain)
+      c = '_';
+  }
+  return name;
+}
+
+CalculixExecutor::CalculixExecutor(const CaseSpec& representative, const ExecutorOptions& options)
+    : setup_(std::make_unique<ProblemSetup>(build_problem(representative))), options_(options) {
+  if (!(options_.calculix_time_limit_seconds > 0.0) ||
+      !std::isfinite(options_.calculix_time_limit_seconds))
+    throw SuiteInputError("the CalculiX time limit must be a positive number of seconds");
+}
+
+CalculixExecutor::~CalculixExecutor() = default;
+
+CaseResult CalculixExecutor::run(const CaseSpec& spec) {
+  CaseResult result;
+  result.spec = spec;
+  result.spec.solver = SolverKind::calculix;
+  result.n_elements = setup_->mesh_info.n_block_elements;
+  result.element_size_h = setup_->mesh_info.h_contact / setup_->length_unit;
+  result.status = CaseStatus::failed;
+  last_.reset();
+
+  ccx::CalculixOptions options;
+  try {
+    options = calculix_options(spec, *setup_, options_);
+  } catch (const ccx::UnsupportedByCalculix& e) {
+    result.reason = unsupported_reason(e.what());
+    mark_missing(*setup_, result);
+    return result;
+  }
+  const std::filesystem::path root =
+      options_.calculix_work_root.empty() ? calculix_run_directory() : options_.calculix_work_root;
+  const std::filesystem::path dir = root / calculix_case_directory_name(spec);
+  try {
+    last_ = ccx::run_calculix(setup_->model, setup_->pair, options, dir);
+  } catch (const std::exception& e) {  // ccx missing, a deck it cannot take: this case only
+    result.reason = with_kept_directory(e.what(), dir);
+    mark_missing(*setup_, result);
+    return result;
+  }
+  result.status = to_case_status(last_->status);
+  result.iterations = std::max(last_->iterations, 0);
+  result.peak_rss_mb = last_->peak_rss_mb;
+  if (!last_->converged()) {
+    result.reason = with_kept_directory(last_->reason, dir);
+    mark_missing(*setup_, result);
+    return result;
+  }
+  fill_values(*setup_, *last_, result);
+  std::error_code ignored;
+  std::filesystem::remove_all(dir, ignored);
+  return result;
+}
+
+}  // namespace cs::suites
