@@ -12,6 +12,7 @@
 #include "apps/usage_error.hpp"
 #include "platform/output_transaction.hpp"
 #include "schema/results_file.hpp"
+#include "suites/executor_factory.hpp"
 #include "suites/problem_catalog.hpp"
 #include "suites/problem_executor.hpp"
 #include "suites/problem_setup.hpp"
@@ -28,6 +29,7 @@ struct CaseArgs {
   std::string contact{schema::to_string(schema::ContactKind::ss)};
   std::string target{schema::to_string(schema::TargetKind::Discretized)};
   std::string recovery{schema::to_string(schema::Recovery::spr)};
+  std::string solver{schema::to_string(schema::SolverKind::builtin)};
   std::vector<std::string> sets;
   bool json = false;
   std::string vtu;
@@ -43,6 +45,9 @@ suites::CaseSpec make_spec(const CaseArgs& args) {
   spec.contact = schema::parse<schema::ContactKind>(args.contact);
   spec.target = schema::parse<schema::TargetKind>(args.target);
   spec.recovery = schema::parse<schema::Recovery>(args.recovery);
+  spec.solver = schema::parse<schema::SolverKind>(args.solver);
+  if (spec.solver == schema::SolverKind::imported)
+    throw UsageError("--solver imported: imported results are graded by `grade`, not run");
   spec.overrides = suites::parse_overrides(args.sets);
   // Validate the parameters now: a bad --set is bad input, not a failed case.
   suites::Parameters(suites::problem_descriptor(spec.problem).parameters, spec.overrides,
@@ -92,13 +97,16 @@ void print_text(const suites::CaseResult& r) {
 
 int run_case(const CaseArgs& args) {
   const suites::CaseSpec spec = make_spec(args);
+  if (args.vtu_given && spec.solver != schema::SolverKind::builtin)
+    throw UsageError("--vtu: only the built-in solver's fields can be written");
   if (args.vtu_given)
     check_vtu_path(args.vtu);
+  suites::require_solvers({spec});  // e.g. ccx missing: exit 2 before anything runs
   const auto start = std::chrono::steady_clock::now();
   suites::CaseResult result;
-  std::unique_ptr<suites::ProblemExecutor> executor;
+  std::unique_ptr<suites::GroupExecutor> executor;
   try {
-    executor = std::make_unique<suites::ProblemExecutor>(spec);
+    executor = suites::make_executor_for(spec);
     result = executor->run(spec);
   } catch (const suites::SuiteInputError&) {
     throw;  // bad input: exit 2
@@ -110,9 +118,9 @@ int run_case(const CaseArgs& args) {
   result.wall_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   result.peak_rss_mb = suites::peak_rss_mb();
-  if (args.vtu_given && executor && executor->last_displacement().size() > 0) {
-    executor->write_vtu(args.vtu);
-  }
+  const auto* builtin = dynamic_cast<const suites::ProblemExecutor*>(executor.get());
+  if (args.vtu_given && builtin && builtin->last_displacement().size() > 0)
+    builtin->write_vtu(args.vtu);
   if (args.json) {
     fmt::print("{}\n", schema::to_json(result).dump(2));
   } else {
@@ -141,6 +149,8 @@ void add_case_command(CLI::App& app, int& exit_code) {
                   "Nodal stresses: spr (patch recovery) or extrapolated (as commercial codes)")
       ->capture_default_str();
   cmd->add_option("--set", args->sets, "Override a parameter: name=value (see `list`)");
+  cmd->add_option("--solver", args->solver, "Who solves it: builtin or calculix")
+      ->capture_default_str();
   cmd->add_flag("--json", args->json, "Print one JSON object (the fields of results.json)");
   auto* vtu = cmd->add_option("--vtu", args->vtu,
                               "Write the mesh, displacement and stresses to a .vtu file");

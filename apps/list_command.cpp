@@ -5,6 +5,7 @@
 #include <fmt/core.h>
 #include <nlohmann/json.hpp>
 
+#include "adapters/calculix/calculix_options.hpp"
 #include "suites/case_spec.hpp"
 #include "suites/problem_catalog.hpp"
 #include "suites/problems/problem_builders.hpp"
@@ -27,6 +28,17 @@ nlohmann::json names() {
   nlohmann::json a = nlohmann::json::array();
   for (const auto& v : schema::values<E>())
     a.push_back(std::string(schema::to_string(v)));
+  return a;
+}
+
+nlohmann::json calculix_mapping() {
+  nlohmann::json a = nlohmann::json::array();
+  for (const auto& m : adapters::calculix::calculix_option_mapping()) {
+    a.push_back({{"option", m.study_option},
+                 {"calculix", m.calculix},
+                 {"fidelity", m.fidelity},
+                 {"note", m.note}});
+  }
   return a;
 }
 
@@ -87,6 +99,13 @@ void print_text() {
       "  --recovery   {}   (nodal stresses: superconvergent patch recovery; or "
       "extrapolated and averaged, as commercial codes print)\n",
       joined<schema::Recovery>());
+  fmt::print("  --solver     {}   (ours; CalculiX through its adapter)\n",
+             joined<schema::SolverKind>());
+  fmt::print("\nHow the options map to CalculiX (--solver calculix):\n");
+  for (const auto& m : adapters::calculix::calculix_option_mapping()) {
+    fmt::print("  {:<7} -> {:<52} {}{}\n", m.study_option, m.calculix, m.fidelity,
+               m.note.empty() ? "" : " (" + m.note + ")");
+  }
 }
 
 void print_json() {
@@ -114,7 +133,8 @@ void print_json() {
                            {"contacts", names<schema::ContactKind>()},
                            {"targets", names<schema::TargetKind>()},
                            {"recoveries", names<schema::Recovery>()},
-                           {"solvers", names<schema::SolverKind>()}};
+                           {"solvers", names<schema::SolverKind>()},
+                           {"calculix_mapping", calculix_mapping()}};
   fmt::print("{}\n", out.dump(2));
 }
 

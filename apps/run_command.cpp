@@ -16,6 +16,7 @@
 #include "platform/output_transaction.hpp"
 #include "schema/results_file.hpp"
 #include "suites/case_matrix.hpp"
+#include "suites/executor_factory.hpp"
 #include "suites/problem_catalog.hpp"
 #include "suites/problem_executor.hpp"
 #include "suites/problem_setup.hpp"
@@ -31,15 +32,32 @@ struct RunArgs {
   std::vector<std::string> problems, meshes, elements, algorithms, contacts, sets;
   std::string target{schema::to_string(schema::TargetKind::Discretized)};
   std::vector<std::string> recoveries;
+  std::string solver{schema::to_string(schema::SolverKind::builtin)};
+  double ccx_time_limit = 600.0;
   int jobs = 0;
   std::string out = "out";
   std::string shard;
+  bool shard_given = false;
   bool no_report = false;
   std::string command_line;
 };
 
+/// The names of a comma-separated list option (repeatable), split here rather than by CLI11,
+/// which drops empty items: "H_p,,S_1" is refused, not read as "H_p,S_1".
 template <class E>
-std::vector<E> parse_all(const std::vector<std::string>& names) {
+std::vector<E> parse_all(const std::vector<std::string>& raw, const char* option) {
+  std::vector<std::string> names;
+  for (const auto& text : raw) {
+    std::size_t start = 0;
+    while (true) {
+      const auto comma = text.find(',', start);
+      names.push_back(text.substr(start, comma == std::string::npos ? comma : comma - start));
+      if (comma == std::string::npos)
+        break;
+      start = comma + 1;
+    }
+  }
+  suites::require_no_empty_items(names, option);
   std::vector<E> out;
   for (const auto& n : names)
     out.push_back(schema::parse<E>(n));
@@ -48,20 +66,16 @@ std::vector<E> parse_all(const std::vector<std::string>& names) {
 
 suites::CaseSelection make_selection(const RunArgs& args) {
   suites::CaseSelection sel;
-  for (const auto& [option, items] : {std::pair{"--problems", &args.problems},
-                                      {"--meshes", &args.meshes},
-                                      {"--elements", &args.elements},
-                                      {"--algorithms", &args.algorithms},
-                                      {"--contacts", &args.contacts},
-                                      {"--recovery", &args.recoveries}})
-    suites::require_no_empty_items(*items, option);
-  sel.problems = parse_all<schema::ProblemId>(args.problems);
-  sel.meshes = parse_all<schema::MeshLevel>(args.meshes);
-  sel.elements = parse_all<schema::Element>(args.elements);
-  sel.algorithms = parse_all<schema::Algorithm>(args.algorithms);
-  sel.contacts = parse_all<schema::ContactKind>(args.contacts);
+  sel.problems = parse_all<schema::ProblemId>(args.problems, "--problems");
+  sel.meshes = parse_all<schema::MeshLevel>(args.meshes, "--meshes");
+  sel.elements = parse_all<schema::Element>(args.elements, "--elements");
+  sel.algorithms = parse_all<schema::Algorithm>(args.algorithms, "--algorithms");
+  sel.contacts = parse_all<schema::ContactKind>(args.contacts, "--contacts");
   sel.target = schema::parse<schema::TargetKind>(args.target);
-  sel.recoveries = parse_all<schema::Recovery>(args.recoveries);
+  sel.recoveries = parse_all<schema::Recovery>(args.recoveries, "--recovery");
+  sel.solver = schema::parse<schema::SolverKind>(args.solver);
+  if (sel.solver == schema::SolverKind::imported)
+    throw UsageError("--solver imported: imported results are graded by `grade`, not run");
   sel.overrides = suites::parse_overrides(args.sets);
   return sel;
 }
@@ -89,9 +103,12 @@ double group_cost(const suites::CaseSpec& spec) {
 int run(const RunArgs& args) {
   const auto all_cases = suites::make_case_matrix(make_selection(args));
   validate_overrides(all_cases);
+  suites::ExecutorOptions exec;
+  exec.calculix_time_limit_seconds = args.ccx_time_limit;
+  suites::require_solvers(all_cases, exec);  // e.g. ccx missing: exit 2 before anything runs
   std::optional<schema::ShardInfo> shard;
   auto cases = all_cases;
-  if (!args.shard.empty()) {
+  if (args.shard_given) {
     const auto s = suites::parse_shard(args.shard);
     cases = suites::shard_cases(all_cases, s, group_cost);
     shard = schema::ShardInfo{s.index, s.count,
@@ -122,7 +139,7 @@ int run(const RunArgs& args) {
   info.environment = suites::run_environment();
   info.shard = shard;
   const auto start = std::chrono::steady_clock::now();
-  const auto results = suites::run_cases(cases, suites::make_problem_executor, options);
+  const auto results = suites::run_cases(cases, suites::executor_factory(exec), options);
   info.wall_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   info.peak_rss_mb = suites::peak_rss_mb();
@@ -153,28 +170,35 @@ int run(const RunArgs& args) {
 void add_run_command(CLI::App& app, int& exit_code) {
   auto args = std::make_shared<RunArgs>();
   auto* cmd = app.add_subcommand("run", "Run the study's case matrix (or a subset) and report");
-  cmd->add_option("--problems", args->problems, "Problems (default: all 11)")->delimiter(',');
-  cmd->add_option("--meshes", args->meshes, "Mesh levels C M F (default: all)")->delimiter(',');
-  cmd->add_option("--elements", args->elements, "Elements Q4 Q8 (default: both)")->delimiter(',');
-  cmd->add_option("--algorithms", args->algorithms, "Algorithms AL PM LMP PLM MPC (default: all)")
-      ->delimiter(',');
-  cmd->add_option("--contacts", args->contacts, "Discretizations ss ns mortar (default: ss ns)")
-      ->delimiter(',');
+  cmd->add_option("--problems", args->problems, "Problems (default: all 11)");
+  cmd->add_option("--meshes", args->meshes, "Mesh levels C M F (default: all)");
+  cmd->add_option("--elements", args->elements, "Elements Q4 Q8 (default: both)");
+  cmd->add_option("--algorithms", args->algorithms, "Algorithms AL PM LMP PLM MPC (default: all)");
+  cmd->add_option("--contacts", args->contacts, "Discretizations ss ns mortar (default: ss ns)");
   cmd->add_option("--target", args->target, "Indenter: discretized or rigid")
+      ->capture_default_str();
+  cmd->add_option("--solver", args->solver,
+                  "Who solves the cases: builtin (ours) or calculix (ccx through its adapter; "
+                  "see docs/calculix.md for how the options map)")
+      ->capture_default_str();
+  cmd->add_option("--ccx-time-limit", args->ccx_time_limit,
+                  "Seconds one CalculiX case may take before it is `timeout`")
+      ->check(CLI::Range(1.0, 86400.0))
       ->capture_default_str();
   cmd->add_option("--recovery", args->recoveries,
                   "Nodal stresses: spr (patch recovery; the default) and/or extrapolated (as "
-                  "commercial codes print)")
-      ->delimiter(',');
+                  "commercial codes print)");
   cmd->add_option("--set", args->sets, "Override a parameter of every case: name=value");
   cmd->add_option("--jobs", args->jobs, "Parallel workers, 1 to 256 (default: the number of cores)")
       ->check(CLI::Range(1, 256));
   cmd->add_option("--out", args->out, "Output directory")->capture_default_str();
   cmd->add_flag("--no-report", args->no_report, "Write results.json only");
-  cmd->add_option("--shard", args->shard,
-                  "Run slice K of N (K/N, 1-based) of the selected cases; slices keep the cases "
-                  "of one model together and are balanced by cost; combine them with `merge`");
-  cmd->callback([args, &exit_code] {
+  auto* shard = cmd->add_option(
+      "--shard", args->shard,
+      "Run slice K of N (K/N, 1-based) of the selected cases; slices keep the cases "
+      "of one model together and are balanced by cost; combine them with `merge`");
+  cmd->callback([args, shard, &exit_code] {
+    args->shard_given = shard->count() > 0;
     args->command_line = invocation().empty() ? "contact-suite run" : invocation();
     exit_code = run(*args);
   });

@@ -1,6 +1,8 @@
 #include "apps/write_run_output.hpp"
 
 #include <cstdio>
+#include <filesystem>
+#include <system_error>
 
 #include <fmt/core.h>
 
@@ -16,7 +18,11 @@ int write_run_output(const schema::ResultsDocument& doc, platform::OutputTransac
   if (with_report) {
     reports::ReportOptions report;
     report.out_dir = out.staging();
-    const auto outcome = reports::write_report(doc, report);
+    schema::ResultsDocument named = doc;  // the report names the file it describes
+    std::error_code ec;
+    const auto shown = std::filesystem::relative(out.directory(), ec);
+    named.source = ((ec || shown.empty() ? out.directory() : shown) / "results.json").string();
+    const auto outcome = reports::write_report(named, report);
     figures = outcome.figures_drawn;
     if (!outcome.figures_unavailable.empty())
       std::fprintf(stderr, "contact-suite: warning: %s\n", outcome.figures_unavailable.c_str());

@@ -32,7 +32,15 @@ std::vector<CaseSpec> make_case_matrix(const CaseSelection& sel) {
             continue;
           for (ContactKind c : or_all(sel.contacts, study_contacts())) {
             for (Recovery r : or_all(sel.recoveries, std::vector<Recovery>{Recovery::spr}))
-              cases.push_back(CaseSpec{.problem = p, .mesh = m, .element = e, .algorithm = a, .contact = c, .target = sel.target, .recovery = r, .overrides = sel.overrides});
+              cases.push_back(CaseSpec{.problem = p,
+                                       .mesh = m,
+                                       .element = e,
+                                       .algorithm = a,
+                                       .contact = c,
+                                       .target = sel.target,
+                                       .recovery = r,
+                                       .solver = sel.solver,
+                                       .overrides = sel.overrides});
           }
         }
       }

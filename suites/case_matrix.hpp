@@ -20,6 +20,7 @@ struct CaseSelection {
   std::vector<Algorithm> algorithms;
   std::vector<ContactKind> contacts;
   TargetKind target = TargetKind::Discretized;
+  SolverKind solver = SolverKind::builtin;  ///< who solves every case (imported: see `grade`)
   /// Nodal stress recoveries: each case once per recovery (empty: spr only). They share the
   /// model and its factorization.
   std::vector<Recovery> recoveries;

@@ -47,7 +47,6 @@ ContactDiscretization to_solver(ContactKind c) {
   throw SuiteInputError("unknown contact discretization");
 }
 
-
 }  // namespace
 
 solver::ContactSettings contact_settings(const CaseSpec& spec) {
@@ -184,7 +183,7 @@ CaseResult ProblemExecutor::run(const CaseSpec& spec) {
   pressures.reserve(contact.nodes.size());
   for (const auto& n : contact.nodes)
     pressures.push_back({n.position.x(), n.pressure});
-  sample_quantities(*setup_, surface, pressures, result);
+  sample_quantities(*setup_, surface, pressures, result, &contact);
   result.exact_profile = exact_profile(*setup_);
   return result;
 }

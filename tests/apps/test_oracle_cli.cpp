@@ -212,7 +212,7 @@ TEST(OracleCli, BadInputExitsTwoWithOneLineOnStderrAndNothingOnStdout) {
       {"oracle", "mcewen", "--a", "1", "--p", "1", "--at", "0"},
       {"oracle", "mcewen", "--a", "1", "--p", "1", "--at", "0,1,2"},
       {"oracle", "mcewen", "--a", "1", "--p", "1", "--at", "a,b"},
-      {"oracle", "mcewen", "--a", "1", "--p", "1e308", "--at", "0,1e-300"},  // overflows
+      {"oracle", "mcewen", "--a", "1", "--p", "1.7e308", "--at", "0,1e-300"},  // 4p/pi overflows
       {"oracle", "strip", "--a", "1", "--p", "1", "--at", "0.5,-1e-9"},
       {"oracle", "strip", "--a", "-1", "--p", "1", "--at", "0,1"},
       {"oracle", "strip", "--a", "1", "--p", "1", "--at", "1,0"},  // the strip's edge
