@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "adapters/calculix/calculix_error.hpp"
+#include "schema/case_axes.hpp"
 #include "solver/contact/contact_surface.hpp"
 
 namespace cs::adapters::calculix {
@@ -75,26 +76,36 @@ void validate(const CalculixOptions& options) {
                         "' must be 1-64 characters of [A-Za-z0-9_-]");
 }
 
+namespace {
+
+std::string name(auto option) {
+  return std::string(schema::to_string(option));
+}
+
+}  // namespace
+
 std::vector<OptionMapping> calculix_option_mapping() {
   return {
-      {"ns", "*CONTACT PAIR, TYPE=NODE TO SURFACE, SMALL SLIDING", "same",
+      {name(schema::ContactKind::ns), "*CONTACT PAIR, TYPE=NODE TO SURFACE, SMALL SLIDING", "same",
        "penalty springs at the slave nodes, paired once per increment (small sliding, like "
        "ours); springs for clearances up to c0 = 0.1 (x sqrt of the spring area)"},
-      {"ss", "*CONTACT PAIR, TYPE=SURFACE TO SURFACE", "same",
+      {name(schema::ContactKind::ss), "*CONTACT PAIR, TYPE=SURFACE TO SURFACE", "same",
        "face-to-face penalty at integration points of the cut slave/master faces (not Gauss "
        "points of the slave side alone)"},
-      {"mortar", "TYPE=MORTAR", "not supported",
+      {name(schema::ContactKind::mortar), "TYPE=MORTAR", "not supported",
        "ccx 2.20 rejects mortar on 2D elements (the expanded elements are tied by MPCs)"},
-      {"PM", "*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=LINEAR, K = FKN E / h", "same",
+      {name(schema::Algorithm::PM), "*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=LINEAR, K = FKN E / h",
+       "same",
        "our penalty law p = FKN E / h x penetration with one h (the finest of the surface); "
        "ns adds CalculiX's tension sigma_inf = 0.25 % p at large clearance"},
-      {"AL", "PRESSURE-OVERCLOSURE=LINEAR, K = FKN E / h", "approximated",
+      {name(schema::Algorithm::AL), "PRESSURE-OVERCLOSURE=LINEAR, K = FKN E / h", "approximated",
        "CalculiX has no augmented Lagrangian: the penalty alone, without augmentation"},
-      {"LMP", "PRESSURE-OVERCLOSURE=HARD", "approximated",
+      {name(schema::Algorithm::LMP), "PRESSURE-OVERCLOSURE=HARD", "approximated",
        "for node/surface-to-surface pairs ccx reduces HARD to a penalty with K = 50 E (its "
        "default); its Lagrange-multiplier contact is mortar (not supported in 2D)"},
-      {"PLM", "PRESSURE-OVERCLOSURE=HARD", "approximated", "as LMP (no friction: they coincide)"},
-      {"MPC", "-", "not supported",
+      {name(schema::Algorithm::PLM), "PRESSURE-OVERCLOSURE=HARD", "approximated",
+       "as LMP (no friction: they coincide)"},
+      {name(schema::Algorithm::MPC), "-", "not supported",
        "*TIE and PRESSURE-OVERCLOSURE=TIED tie tangentially too (TIED needs friction data); "
        "no frictionless bonded contact"},
   };
