@@ -71,7 +71,8 @@ void check_row(const RowVerdict& old_row, const RowVerdict& new_row, GateReport&
 
 }  // namespace
 
-Baseline make_baseline(const std::vector<CaseResult>& cases, const schema::GateTolerances& tolerances) {
+Baseline make_baseline(const std::vector<CaseResult>& cases,
+                       const schema::GateTolerances& tolerances) {
   Baseline b;
   b.tolerances = tolerances;
   for (const auto& c : cases) {

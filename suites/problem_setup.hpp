@@ -11,9 +11,9 @@
 #include <string>
 #include <vector>
 
+#include "schema/quantity.hpp"
 #include "solver/contact/contact_analysis.hpp"
 #include "solver/model.hpp"
-#include "schema/quantity.hpp"
 #include "suites/case_spec.hpp"
 #include "suites/parameters.hpp"
 #include "suites/study_meshes.hpp"

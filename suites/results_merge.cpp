@@ -63,8 +63,8 @@ void check_slices(const std::vector<schema::ResultsDocument>& parts) {
 
 auto order_key(const schema::CaseResult& c) {
   const auto& s = c.spec;
-  return std::make_tuple(s.problem, s.mesh, s.element, s.algorithm, s.contact, s.recovery,
-                         s.target, s.solver, s.solver_name, s.overrides);
+  return std::make_tuple(s.problem, s.mesh, s.element, s.algorithm, s.contact, s.recovery, s.target,
+                         s.solver, s.solver_name, s.overrides);
 }
 
 }  // namespace

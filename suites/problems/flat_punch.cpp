@@ -27,8 +27,11 @@ ProblemSetup build_flat_punch(const CaseSpec& spec, const Parameters& params) {
   using Eigen::Vector2d;
   const double a = 1.0;
   const bool axi = spec.problem == ProblemId::F_a;
-  StudyMeshSpec mesh{
-      .problem = spec.problem, .level = spec.mesh, .element = to_solver(spec.element), .a = a, .options = {}};
+  StudyMeshSpec mesh{.problem = spec.problem,
+                     .level = spec.mesh,
+                     .element = to_solver(spec.element),
+                     .a = a,
+                     .options = {}};
   const solver::RigidProfile rigid = solver::SharpFlatPunch{{0.0, 0.0}, {0.0, 1.0}, a};
   ProblemSetup setup = start_setup(spec, params, mesh, rigid);
   setup.length_unit = setup.contact_half_width_a = a;
@@ -73,8 +76,9 @@ ProblemSetup build_flat_punch(const CaseSpec& spec, const Parameters& params) {
     setup.model.fix(solver::NodeSelection::node_set(study_sets::kIndenterLoad),
                     solver::Component::Z);
   }
-  setup.quantities.push_back({schema::Quantity::sigma_c_star, SamplePoint::AtEdge, StressComponent::SigmaZ,
-                              std::numeric_limits<double>::infinity(), std::nullopt});
+  setup.quantities.push_back({schema::Quantity::sigma_c_star, SamplePoint::AtEdge,
+                              StressComponent::SigmaZ, std::numeric_limits<double>::infinity(),
+                              std::nullopt});
   return setup;
 }
 

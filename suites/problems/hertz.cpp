@@ -67,9 +67,11 @@ ProblemSetup build_hertz_plane(const CaseSpec& spec, const Parameters& params) {
   };
   const auto surface = oracles::mcewen_stress(field, {0.0, 0.0});
   const double sigma_c = oracles::hertz_plane_pressure(contact, 0.0) / contact.p_mean;
-  setup.quantities.push_back({schema::Quantity::sigma_c, SamplePoint::AtAxis, StressComponent::SigmaZ, sigma_c, std::nullopt});
-  setup.quantities.push_back({schema::Quantity::sigma_h, SamplePoint::AtAxis, StressComponent::SigmaX,
-                              -surface.sigma_x / contact.p_mean, std::nullopt});
+  setup.quantities.push_back({schema::Quantity::sigma_c, SamplePoint::AtAxis,
+                              StressComponent::SigmaZ, sigma_c, std::nullopt});
+  setup.quantities.push_back({schema::Quantity::sigma_h, SamplePoint::AtAxis,
+                              StressComponent::SigmaX, -surface.sigma_x / contact.p_mean,
+                              std::nullopt});
   return setup;
 }
 
@@ -105,9 +107,9 @@ ProblemSetup build_hertz_axi(const CaseSpec& spec, const Parameters& params) {
   setup.exact_pressure_over_p = [contact](double r) {
     return oracles::hertz_axi_pressure(contact, r) / contact.p_mean;
   };
-  setup.quantities.push_back({schema::Quantity::sigma_c, SamplePoint::AtAxis, StressComponent::SigmaZ,
-                              oracles::hertz_axi_pressure(contact, 0.0) / contact.p_mean,
-                              std::nullopt});
+  setup.quantities.push_back(
+      {schema::Quantity::sigma_c, SamplePoint::AtAxis, StressComponent::SigmaZ,
+       oracles::hertz_axi_pressure(contact, 0.0) / contact.p_mean, std::nullopt});
   return setup;
 }
 

@@ -38,7 +38,8 @@ ProblemSetup build_patch_test(const CaseSpec& spec, const Parameters& params) {
                            ? -oracles::patch_test_axi_stress(load, {0.0, 0.0}).sigma_z / setup.p
                            : -oracles::patch_test_plane_stress(load, {0.0, 0.0}).sigma_z / setup.p;
   setup.exact_pressure_over_p = [a = mesh.a, exact](double x) { return x <= a ? exact : 0.0; };
-  setup.quantities.push_back({schema::Quantity::sigma_z_max, SamplePoint::MaxOnSurface, StressComponent::SigmaZ, exact, std::nullopt});
+  setup.quantities.push_back({schema::Quantity::sigma_z_max, SamplePoint::MaxOnSurface,
+                              StressComponent::SigmaZ, exact, std::nullopt});
   return setup;
 }
 

@@ -84,8 +84,8 @@ ProblemSetup build_steuermann(const CaseSpec& spec, const Parameters& params) {
   setup.exact_pressure_over_p = [contact = exact.contact, p = exact.p](double x) {
     return oracles::steuermann_pressure(contact, x) / p;
   };
-  setup.quantities.push_back({schema::Quantity::sigma_c, SamplePoint::MaxOnSurface, StressComponent::SigmaZ,
-                              exact.peak_over_p, study.peak_over_p});
+  setup.quantities.push_back({schema::Quantity::sigma_c, SamplePoint::MaxOnSurface,
+                              StressComponent::SigmaZ, exact.peak_over_p, study.peak_over_p});
   return setup;
 }
 

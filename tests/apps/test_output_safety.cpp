@@ -28,15 +28,14 @@ platform::ChildResult run_args(const fs::path& dir, std::vector<std::string> arg
 
 TEST(OutputSafety, ANewlineInTheOutputPathCannotInjectCommands) {
   TempDir tmp;
-  ASSERT_EQ(run_args(tmp.path(), {"run", "--problems", "P_p", "--meshes", "C", "--elements", "Q4",
-                                  "--algorithms", "AL", "--contacts", "ss", "--out", "r",
-                                  "--no-report"})
-                .exit_code,
-            0);
+  ASSERT_EQ(
+      run_args(tmp.path(), {"run", "--problems", "P_p", "--meshes", "C", "--elements", "Q4",
+                            "--algorithms", "AL", "--contacts", "ss", "--out", "r", "--no-report"})
+          .exit_code,
+      0);
   const std::string evil = "inj\nsystem \"touch PWNED\"\n#";
-  EXPECT_EQ(run_args(tmp.path(), {"report", "--results", "r/results.json", "--out", evil})
-                .exit_code,
-            2);
+  EXPECT_EQ(
+      run_args(tmp.path(), {"report", "--results", "r/results.json", "--out", evil}).exit_code, 2);
   EXPECT_EQ(run_args(tmp.path(), {"run", "--problems", "P_p", "--meshes", "C", "--elements", "Q4",
                                   "--algorithms", "AL", "--contacts", "ss", "--out", evil})
                 .exit_code,
