@@ -16,7 +16,10 @@ namespace fs = std::filesystem;
 namespace {
 
 std::string quoted(const fs::path& p) {
-  return "'" + p.string() + "'";
+  std::string out(1, '\'');
+  out += p.string();
+  out += '\'';
+  return out;
 }
 
 /// Hard-links `from` (a file, or recursively a directory) to `to`; copies where linking fails.

@@ -1,35 +1,78 @@
 #include "reports/report_writer.hpp"
 
+#include <cctype>
+
 #include <fmt/format.h>
 
 #include "reports/atomic_output.hpp"
 #include "reports/bench/bench_results.hpp"
 #include "reports/bench/bench_section.hpp"
 #include "reports/figures/bench_figure.hpp"
+#include "reports/findings/anomalies_section.hpp"
 #include "reports/findings/findings.hpp"
+#include "reports/findings/recommendation_section.hpp"
 #include "reports/findings/recovery_section.hpp"
 #include "reports/findings/regression_report.hpp"
+#include "reports/findings/study_conclusions.hpp"
 #include "reports/findings/summary_section.hpp"
 #include "reports/results/results_csv.hpp"
 #include "reports/tables/appendix_tables.hpp"
+#include "reports/tables/beyond_study_section.hpp"
 #include "reports/tables/divergence_table.hpp"
 #include "reports/tables/grade_tables.hpp"
+#include "reports/tables/interface_table.hpp"
 #include "reports/tables/markdown_table.hpp"
+#include "reports/tables/mesh_table.hpp"
 
 namespace cs::reports {
 namespace {
 
-std::string contents(const std::vector<std::pair<std::string, std::string>>& sections) {
-  std::string out = "**Contents:**";
-  bool first = true;
-  for (const auto& [title, anchor] : sections) {
-    out += fmt::format("{} [{}](#{})", first ? "" : " ·", title, anchor);
-    first = false;
+/// GitHub's heading anchor: lower case, spaces as '-', ASCII punctuation other than '-' and
+/// '_' dropped, other characters kept.
+std::string heading_anchor(const std::string& heading) {
+  std::string out;
+  for (const char c : heading) {
+    const auto u = static_cast<unsigned char>(c);
+    if (u >= 0x80 || std::isalnum(u) || c == '-' || c == '_')
+      out += static_cast<char>(u < 0x80 ? std::tolower(u) : u);
+    else if (c == ' ')
+      out += '-';
   }
-  return out + "\n\n";
+  return out;
 }
 
 }  // namespace
+
+NumberedSections number_sections(const std::vector<std::string>& sections,
+                                 const std::vector<std::string>& appendices) {
+  NumberedSections out;
+  std::string contents = "**Contents:**";
+  const auto add = [&](const std::string& section, const std::string& number) {
+    if (section.empty())
+      return;
+    const std::size_t end = section.find('\n');
+    std::string title = section.substr(3, end == std::string::npos ? end : end - 3);
+    const std::string heading = number + ". " + title;
+    const std::size_t colon = title.find(':');
+    contents += fmt::format("{} [{}](#{})", out.toc_entries == 0 ? "" : " ·",
+                            colon == std::string::npos ? title : title.substr(0, colon),
+                            heading_anchor(heading));
+    ++out.toc_entries;
+    out.body += "## " + heading + (end == std::string::npos ? "\n" : section.substr(end));
+  };
+  int n = 0;
+  for (const auto& s : sections) {
+    if (!s.empty())
+      add(s, std::to_string(++n));
+  }
+  char letter = 'A';
+  for (const auto& s : appendices) {
+    if (!s.empty())
+      add(s, std::string("Appendix ") + letter++);
+  }
+  out.contents = contents + "\n\n";
+  return out;
+}
 
 std::string variants_section(const ResultsIndex& index) {
   const auto& rows = index.variant_rows();
@@ -56,7 +99,7 @@ std::string variants_section(const ResultsIndex& index) {
                                schema::to_string(s.algorithm), schema::to_string(s.contact)),
                    variant_of(s), cells[0], cells[1], cells[2], grade});
   }
-  return "## 6. Other option sets (rigid target, parameter overrides)\n\n"
+  return "## Other option sets (rigid target, parameter overrides)\n\n"
          "Not in the study, so not in Tables 2 or the appendix tables: our value (our % error) "
          "per mesh and the grade of the finest mesh.\n\n" +
          table.render() + "\n";
@@ -73,23 +116,12 @@ std::string report_markdown(const ResultsIndex& index, const StudyReference& stu
   const std::string variants = variants_section(index);
   const std::string recovery = recovery_section(index);
 
-  std::vector<std::pair<std::string, std::string>> toc{{"Summary", "1-summary"}};
-  if (!grades.empty())
-    toc.emplace_back("Tables 2a, 2b", "2-accuracy-and-convergence-tables-2a-and-2b");
-  if (!appendix.empty())
-    toc.emplace_back("Appendix tables",
-                     "3-appendix-tables-our-values-beside-the-studys-ansys-values");
-  if (!figs.empty())
-    toc.emplace_back("Figures", "4-figures");
-  if (!divergence.empty())
-    toc.emplace_back("Flat-punch divergence", "5-flat-punch-divergence-eq-47");
-  if (!variants.empty())
-    toc.emplace_back("Other option sets", "6-other-option-sets-rigid-target-parameter-overrides");
-  if (!recovery.empty())
-    toc.emplace_back("Nodal stress recovery",
-                     "7-nodal-stress-recovery-patch-recovery-beside-extrapolation");
-  if (!bench_md.empty())
-    toc.emplace_back("Benchmarks", "8-benchmarks");
+  const NumberedSections numbered =
+      number_sections({recommendation_section(index), study_conclusions_section(index),
+                       summary_section(index, findings), mesh_table_section(index, study), grades,
+                       appendix, figs, divergence, interface_section(index),
+                       anomalies_section(index), beyond_study_section(index), variants, recovery},
+                      {bench_md});
 
   std::string out =
       "# contact-suite report: our contact elements beside the study's ANSYS results\n\n"
@@ -99,12 +131,11 @@ std::string report_markdown(const ResultsIndex& index, const StudyReference& stu
       "fine mesh, with its convergence flag c and, for the singular flat punch, its divergence "
       "test Eq. 47. Every table is built from the results file; the study's values come from "
       "data/study (transcribed from its appendix and Table 2).\n\n";
-  out += contents(toc);
+  out += numbered.contents;
   if (has_regression)
     out += "A regression report against the baseline is in [regression.md](regression.md).\n\n";
   out += "Per-case data for spreadsheets: [results.csv](results.csv).\n\n";
-  out += summary_section(index, findings);
-  out += grades + appendix + figs + divergence + variants + recovery + bench_md;
+  out += numbered.body;
   return out;
 }
 

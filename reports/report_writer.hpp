@@ -33,8 +33,8 @@ struct ReportOptions {
   std::optional<std::filesystem::path> baseline;
   /// data/study with the study's CSVs; default: default_study_data_dir().
   std::optional<std::filesystem::path> study_data;
-  /// Google Benchmark JSON files of bench_contact_algorithms: section 8, "Benchmarks" (none:
-  /// no such section). A case measured in several files is shown from the last.
+  /// Google Benchmark JSON files of bench_contact_algorithms: the appendix "Benchmarks"
+  /// (none: no such appendix). A case measured in several files is shown from the last.
   std::vector<std::filesystem::path> bench;
   bool figures = true;  ///< draw figures with gnuplot
   FigureOptions figure_options;
@@ -53,10 +53,24 @@ struct ReportOutcome {
 /// directory, schema::SchemaError for a bad baseline.
 ReportOutcome write_report(const schema::ResultsDocument& results, const ReportOptions& options);
 
-/// The whole report.md text from its parts (no I/O); `bench_md` is section 8 (empty: none).
+/// The whole report.md text from its parts (no I/O); `bench_md` is the benchmarks appendix (empty:
+/// none).
 std::string report_markdown(const ResultsIndex& index, const StudyReference& study,
                             const FigureSet& figures, bool has_regression,
                             const std::string& bench_md = {});
+
+/// Sections numbered in order, without gaps, and their table of contents.
+struct NumberedSections {
+  std::string contents;  ///< "**Contents:** [Summary](#1-summary) · ..."
+  std::string body;      ///< the sections with "## 1. Title", ..., "## Appendix A. Title"
+  int toc_entries = 0;
+};
+
+/// Numbers `sections` 1, 2, ... and `appendices` A, B, ... in order; empty ones are left out
+/// and take no number. Each section starts with "## Title"; a title's part before ':' names it
+/// in the contents.
+NumberedSections number_sections(const std::vector<std::string>& sections,
+                                 const std::vector<std::string>& appendices);
 
 /// The section listing rows with a rigid target or parameter overrides (empty if none).
 std::string variants_section(const ResultsIndex& index);

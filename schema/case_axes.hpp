@@ -15,8 +15,10 @@
 namespace cs::schema {
 
 /// The battery's problems (the study's eleven first, names as the study prints them, primes
-/// spelled out; then the problems beyond the study: FP_p, the frictional patch test, and CM_p,
-/// Cattaneo-Mindlin partial slip). Each has one descriptor in suites/problems/.
+/// spelled out; then the problems beyond the study: Pprime_p_E1 and Pprime_a_E1, the
+/// mismatched-node patch tests with an indenter of the block's modulus; FP_p, the frictional
+/// patch test, and CM_p, Cattaneo-Mindlin partial slip). Each has one descriptor in
+/// suites/problems/.
 enum class ProblemId : std::uint8_t {
   P_p,
   P_a,
@@ -29,6 +31,8 @@ enum class ProblemId : std::uint8_t {
   S_1_7,
   F_p,
   F_a,
+  Pprime_p_E1,
+  Pprime_a_E1,
   FP_p,
   CM_p,
 };
@@ -59,6 +63,10 @@ constexpr AxisEntry entry(ProblemId v) {
       return {"F_p", "", "F<sub>p</sub>"};
     case ProblemId::F_a:
       return {"F_a", "", "F<sub>a</sub>"};
+    case ProblemId::Pprime_p_E1:
+      return {"Pprime_p_E1", "P'_p_E1", "P′<sub>p</sub>(E<sub>1</sub>)"};
+    case ProblemId::Pprime_a_E1:
+      return {"Pprime_a_E1", "P'_a_E1", "P′<sub>a</sub>(E<sub>1</sub>)"};
     case ProblemId::FP_p:
       return {"FP_p", "", "FP<sub>p</sub>"};
     case ProblemId::CM_p:

@@ -9,6 +9,7 @@
 
 #include "schema/case_spec.hpp"
 #include "schema/grade.hpp"
+#include "schema/interface_checks.hpp"
 #include "schema/quantity.hpp"
 
 namespace cs::schema {
@@ -57,6 +58,8 @@ struct CaseResult {
   std::vector<QuantityResult> quantities;
   SurfaceProfile profile;
   ExactProfile exact_profile;
+  /// The interface checks (none: the case has no values or the solver gave no contact forces).
+  std::optional<InterfaceChecks> interface;
 
   /// The record of `q`, or nullptr.
   const QuantityResult* quantity(Quantity q) const;

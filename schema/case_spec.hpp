@@ -20,7 +20,7 @@ struct CaseSpec {
   Recovery recovery = Recovery::spr;
   SolverKind solver = SolverKind::builtin;
   /// The name of the code for imported results (e.g. "abaqus-2024"); empty otherwise.
-  std::string solver_name;
+  std::string solver_name{};
   std::map<std::string, double> overrides;
 
   friend bool operator==(const CaseSpec&, const CaseSpec&) = default;

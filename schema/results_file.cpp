@@ -230,6 +230,13 @@ json to_json(const CaseResult& r) {
     j["exact_profile"] = {{"x_over_a", numbers_or_null(r.exact_profile.x_over_a)},
                           {"sigma_z_over_p", numbers_or_null(r.exact_profile.sigma_z_over_p)}};
   }
+  if (r.interface) {
+    j["interface"] = {
+        {"force_balance", number_or_null(r.interface->force_balance)},
+        {"max_tensile_over_p", number_or_null(r.interface->max_tensile_over_p)},
+        {"max_outside_over_p", number_or_null(r.interface->max_outside_over_p)},
+        {"max_penetration_over_h", number_or_null(r.interface->max_penetration_over_h)}};
+  }
   return j;
 }
 
@@ -269,6 +276,16 @@ CaseResult case_from_json(const json& j, const std::string& path) {
     c.exact_profile = {numbers_from(p, "x_over_a"), numbers_from(p, "sigma_z_over_p")};
     if (c.exact_profile.sigma_z_over_p.size() != c.exact_profile.x_over_a.size())
       p.fail("its arrays differ in length");
+  }
+  if (r.has("interface")) {
+    const JsonFields f = r.object("interface");
+    c.interface = InterfaceChecks{
+        f.optional_number("force_balance"), f.optional_number("max_tensile_over_p"),
+        f.optional_number("max_outside_over_p"), f.optional_number("max_penetration_over_h")};
+    for (const char* key : {"max_tensile_over_p", "max_outside_over_p", "max_penetration_over_h"}) {
+      if (const auto v = f.optional_number(key); v && *v < 0)
+        f.fail_field(key, "is negative");
+    }
   }
   return c;
 }

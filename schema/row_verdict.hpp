@@ -46,6 +46,12 @@ struct DivergenceVerdict {
 inline constexpr double kDivergenceExponentMin = 0.25;
 inline constexpr double kDivergenceExponentMax = 0.75;
 
+/// Both verdicts from the values of a singular quantity on C, M, F (h halving per level):
+///   eq47 = |s_C - s_M| < |s_M - s_F|;
+///   alpha = (log2(s_M/s_C) + log2(s_F/s_M)) / 2 when the three have one sign;
+///   diverges = (|s_C| < |s_M| < |s_F|, one sign) and alpha in [0.25, 0.75].
+DivergenceVerdict divergence_verdict(double s_c, double s_m, double s_f);
+
 /// One row: the cases of an option set that differ only in mesh level, for one quantity.
 struct RowVerdict {
   std::string id;  ///< case_key(spec) + "/" + quantity, e.g. "H_p/Q4/LMP/ss/sigma_c"

@@ -10,6 +10,7 @@
 #include "solver/mesh/mesh_sets.hpp"
 #include "suites/friction_cases.hpp"
 #include "suites/friction_sampling.hpp"
+#include "suites/interface_checks.hpp"
 #include "suites/problem_catalog.hpp"
 #include "suites/suite_error.hpp"
 #include "suites/surface_sampling.hpp"
@@ -185,7 +186,27 @@ CaseResult ProblemExecutor::run(const CaseSpec& spec) {
     pressures.push_back({n.position.x(), n.pressure});
   sample_quantities(*setup_, surface, pressures, result, &contact);
   result.exact_profile = exact_profile(*setup_);
+  result.interface = check_interface(*setup_, contact, applied_load());
   return result;
+}
+
+double ProblemExecutor::applied_load() {
+  if (!applied_load_) {
+    if (setup_->load_control) {
+      applied_load_ = setup_->load_control->target_load;
+    } else if (!setup_->load_steps.empty()) {
+      applied_load_ = std::nan("");  // loaded in steps: no single load to balance
+    } else {
+      // One body carries the loads and the contact alone holds it in z (the other body is
+      // supported): the interface carries the z resultant of the external loads.
+      const Eigen::VectorXd f = elastic_->external_load(setup_->model.loads);
+      double z = 0.0;
+      for (Eigen::Index i = 1; i < f.size(); i += 2)
+        z += f[i];
+      applied_load_ = std::abs(z);
+    }
+  }
+  return *applied_load_;
 }
 
 void ProblemExecutor::write_vtu(const std::string& path) const {

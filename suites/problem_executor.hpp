@@ -52,6 +52,8 @@ class ProblemExecutor final : public GroupExecutor {
   const solver::ContactResult& contact_solution(const CaseSpec& spec);
   solver::ContactResult solve_with_load_control(const solver::ContactSettings& settings);
   double support_reaction(const Eigen::VectorXd& u) const;
+  /// The load the interface must carry (check_interface), computed once.
+  double applied_load();
 
   std::unique_ptr<ProblemSetup> setup_;  // stable address: the analyses keep references to it
   std::unique_ptr<solver::LinearStaticAnalysis> elastic_;
@@ -59,6 +61,7 @@ class ProblemExecutor final : public GroupExecutor {
   Eigen::VectorXd last_u_;
   std::optional<solver::StressField> last_stresses_;
   std::optional<std::pair<std::string, solver::ContactResult>> last_contact_;
+  std::optional<double> applied_load_;
 };
 
 /// The factory the runner uses.

@@ -1,5 +1,9 @@
 #include "suites/problem_setup.hpp"
 
+#include <stdexcept>
+
+#include <fmt/format.h>
+
 #include "suites/friction_cases.hpp"
 #include "suites/problem_catalog.hpp"
 #include "suites/problems/problem_builders.hpp"
@@ -25,6 +29,17 @@ std::vector<ParameterSpec> study_parameters(std::vector<ParameterSpec> extra) {
   auto params = common_parameters(kStudyPOverE);
   params.insert(params.end(), extra.begin(), extra.end());
   return params;
+}
+
+std::vector<ParameterSpec> with_default(std::vector<ParameterSpec> params, std::string_view name,
+                                        double value) {
+  for (auto& p : params) {
+    if (p.name == name) {
+      p.default_value = value;
+      return params;
+    }
+  }
+  throw std::logic_error(fmt::format("with_default: no parameter '{}'", name));
 }
 
 ProblemSetup start_setup(const CaseSpec& spec, const Parameters& params,

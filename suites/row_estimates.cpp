@@ -53,16 +53,4 @@ schema::ErrorEstimate error_estimate(double f_c, double f_m, double f_f) {
   return out;
 }
 
-schema::DivergenceVerdict divergence_verdict(double s_c, double s_m, double s_f) {
-  schema::DivergenceVerdict d;
-  d.eq47 = is_diverging(s_c, s_m, s_f);
-  const bool one_sign = (s_c > 0 && s_m > 0 && s_f > 0) || (s_c < 0 && s_m < 0 && s_f < 0);
-  d.monotone = one_sign && std::abs(s_c) < std::abs(s_m) && std::abs(s_m) < std::abs(s_f);
-  if (one_sign)
-    d.exponent = 0.5 * (std::log2(s_m / s_c) + std::log2(s_f / s_m));
-  d.diverges = d.monotone && d.exponent && *d.exponent >= schema::kDivergenceExponentMin &&
-               *d.exponent <= schema::kDivergenceExponentMax;
-  return d;
-}
-
 }  // namespace cs::suites

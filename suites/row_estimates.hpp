@@ -20,8 +20,8 @@ std::array<std::optional<double>, 2> pair_orders(const std::array<std::optional<
 /// round-off (below 1e-12 of the values).
 schema::ErrorEstimate error_estimate(double f_c, double f_m, double f_f);
 
-/// Eq. 47 and the strict verdict (monotone growth with an exponent near 1/2) from the values of
-/// a singular quantity on C, M, F.
-schema::DivergenceVerdict divergence_verdict(double s_c, double s_m, double s_f);
+/// The divergence verdicts are schema::divergence_verdict (the report applies them to the
+/// study's values too).
+using schema::divergence_verdict;
 
 }  // namespace cs::suites

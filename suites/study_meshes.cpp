@@ -26,12 +26,12 @@ void require_positive(double value, const char* name, ProblemId problem) {
   }
 }
 
-bool is_patch(ProblemId p) {
-  return p == ProblemId::P_p || p == ProblemId::P_a || p == ProblemId::Pprime_p ||
-         p == ProblemId::Pprime_a;
-}
 bool is_pprime(ProblemId p) {
-  return p == ProblemId::Pprime_p || p == ProblemId::Pprime_a;
+  return p == ProblemId::Pprime_p || p == ProblemId::Pprime_a || p == ProblemId::Pprime_p_E1 ||
+         p == ProblemId::Pprime_a_E1;
+}
+bool is_patch(ProblemId p) {
+  return p == ProblemId::P_p || p == ProblemId::P_a || is_pprime(p);
 }
 bool is_hertz(ProblemId p) {
   return p == ProblemId::H_p || p == ProblemId::H_a;
@@ -100,6 +100,8 @@ UniformLayout uniform_layout(const StudyMeshSpec& spec) {
       return {a, spec.options.patch_height_over_a * a, 8 * f};
     case ProblemId::Pprime_p:
     case ProblemId::Pprime_a:
+    case ProblemId::Pprime_p_E1:
+    case ProblemId::Pprime_a_E1:
       return {a, spec.options.patch_height_over_a * a, 10 * f};
     case ProblemId::H_p:
       return {4 * a, 4 * a, 16 * f};

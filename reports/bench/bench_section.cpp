@@ -376,7 +376,7 @@ std::string machine_line(const BenchSource& source) {
 
 std::string bench_section(const BenchResults& bench, const FigureSet& figures,
                           const BenchTarget& target) {
-  return "## 8. Benchmarks\n\n" + intro(bench) + target_section(bench, target) +
+  return "## Benchmarks\n\n" + intro(bench) + target_section(bench, target) +
          figure_section(figures) + all_options_section(bench) + models_section(bench);
 }
 

@@ -51,6 +51,7 @@ struct Panel {
   bool loglog = false;
   std::optional<std::pair<double, double>> xrange;
   std::vector<Series> series;
+  std::optional<std::pair<double, double>> yrange{};  ///< none: autoscaled
 };
 
 std::string file_stem(const std::string& text) {
@@ -136,7 +137,13 @@ std::string panel_script(const Panel& panel, const fs::path& dir, const std::str
   } else {
     s += "set autoscale x\n";
   }
-  s += panel.loglog ? "set autoscale y\n" : "set yrange [0:*]\n";  // log: narrowed below
+  // Linear panels: autoscaled both ways so that a tensile (negative) value shows; 0 is kept in
+  // range unless the panel sets its own (a zoom). Log panels are narrowed below.
+  if (panel.yrange) {
+    s += fmt::format("set yrange [{}:{}]\n", panel.yrange->first, panel.yrange->second);
+  } else {
+    s += panel.loglog ? "set autoscale y\n" : "set autoscale y\nset autoscale yfixmin\n";
+  }
   if (panel.loglog) {
     // 1-2-5 ticks on y: a log axis over less than a decade would show one label or none.
     double lo = INFINITY, hi = 0;
@@ -229,10 +236,13 @@ void draw(const Gnuplot& gnuplot, const fs::path& work, const fs::path& out_root
     figure.error = "gnuplot wrote no image";
 }
 
-/// The points of one row: (h, |error|) or, for singular rows, (h, value).
+/// The points of one row: (h, |error|) or, for singular rows, (h, value). Errors below
+/// schema::kErrorNoiseFloorPercent are round-off, not discretization error: they are left out
+/// (no order is fitted to them) and `round_off` says so.
 struct RowPoints {
   std::vector<SizePoint> points;
   bool relative_h = false;
+  bool round_off = false;
 };
 
 RowPoints row_points(const ResultsIndex& index, const schema::RowVerdict& row, bool singular) {
@@ -253,20 +263,58 @@ RowPoints row_points(const ResultsIndex& index, const schema::RowVerdict& row, b
     const auto& y = singular ? row.values[m] : row.errors[m];
     if (!y)
       continue;
+    if (!singular && std::abs(*y) < schema::kErrorNoiseFloorPercent) {
+      out.round_off = true;
+      continue;
+    }
     const double size = out.relative_h ? std::ldexp(1.0, -static_cast<int>(m)) : *h[m];
     out.points.push_back({size, std::abs(*y)});
   }
   return out;
 }
 
-/// "order 1.02", "slope -0.48" (ASCII for gnuplot; `markdown` writes the minus sign as −).
-std::string order_text(const std::optional<double>& order, bool singular, bool markdown = false) {
+/// "order 1.02", "slope -0.48" (ASCII for gnuplot; `markdown` writes the minus sign as −);
+/// "at round-off" when the errors are below the noise floor and too few remain to fit.
+std::string order_text(const std::optional<double>& order, bool singular, bool round_off,
+                       bool markdown = false) {
+  if (!order && round_off)
+    return "at round-off";
   if (!order)
     return singular ? "slope n/a" : "order n/a";
   std::string number = fmt::format("{:.2f}", std::abs(*order) < 0.005 ? 0.0 : *order);
   if (markdown && number[0] == '-')
     number = "−" + number.substr(1);
   return fmt::format("{} {}", singular ? "slope" : "order", number);
+}
+
+/// Grey reference lines through the panel's data at its coarsest size: slopes 1 and 2 for an
+/// error, slope -1/2 (a square-root singularity's growth) for a singular value.
+void add_reference_slopes(Panel& panel, bool singular) {
+  double x_lo = INFINITY, x_hi = 0.0;
+  std::vector<double> at_coarsest;
+  for (const auto& s : panel.series) {
+    for (const auto& [x, y] : s.xy) {
+      x_lo = std::min(x_lo, x);
+      x_hi = std::max(x_hi, x);
+    }
+  }
+  if (!(x_hi > x_lo) || !(x_lo > 0))
+    return;
+  for (const auto& s : panel.series) {
+    for (const auto& [x, y] : s.xy) {
+      if (x >= x_hi * (1 - 1e-9))
+        at_coarsest.push_back(y);
+    }
+  }
+  std::sort(at_coarsest.begin(), at_coarsest.end());
+  const double y0 = at_coarsest[at_coarsest.size() / 2];  // the median curve's start
+  const std::vector<double> slopes = singular ? std::vector<double>{-0.5} : std::vector{1.0, 2.0};
+  for (const double slope : slopes) {
+    Series ref{fmt::format("reference slope {:g}", slope), "#999999", 3, 0, 1.0, {}};
+    for (const double x : {x_hi, x_lo})
+      ref.xy.emplace_back(x, y0 * std::pow(x / x_hi, slope));
+    panel.series.push_back(std::move(ref));
+  }
 }
 
 /// One panel of a convergence figure: a curve per option class of one element.
@@ -285,10 +333,11 @@ Panel convergence_panel(const ResultsIndex& index, const schema::ProblemRecord& 
     const schema::RowVerdict* row = class_row(index, cls, slot);
     const RowPoints pts = row_points(index, *row, p.singular);
     const auto order = observed_order(pts.points);
-    orders.push_back({p.id, q.quantity, element, cls.label(), order, p.singular, pts.relative_h});
+    orders.push_back(
+        {p.id, q.quantity, element, cls.label(), order, p.singular, pts.relative_h, pts.round_off});
     relative = relative || pts.relative_h;
     const Option& first = cls.members.front();
-    Series s{fmt::format("{}: {}", cls.label(), order_text(order, p.singular)),
+    Series s{fmt::format("{}: {}", cls.label(), order_text(order, p.singular, pts.round_off)),
              std::string(schema::traits(first.algorithm).colour),
              schema::traits(first.contact).dash,
              schema::traits(first.contact).point,
@@ -304,6 +353,7 @@ Panel convergence_panel(const ResultsIndex& index, const schema::ProblemRecord& 
       s.title += " (error 0 on every mesh: not drawn)";
     panel.series.push_back(std::move(s));
   }
+  add_reference_slopes(panel, p.singular);
   panel.xrange = log_range(panel.series);
   return panel;
 }
@@ -391,6 +441,53 @@ Panel profile_panel(const ResultsIndex& index, const OptionClass& cls, const Slo
   return panel;
 }
 
+/// The exact curve's peak (x, y), if a panel has an exact curve.
+std::optional<std::pair<double, double>> exact_peak(const std::vector<Panel>& panels) {
+  for (const auto& panel : panels) {
+    for (const auto& s : panel.series) {
+      if (s.title != "exact" || s.xy.empty())
+        continue;
+      return *std::max_element(s.xy.begin(), s.xy.end(),
+                               [](const auto& a, const auto& b) { return a.second < b.second; });
+    }
+  }
+  return std::nullopt;
+}
+
+/// The Steuermann peak sits in a narrow band near the contact edge, too small to judge at the
+/// scale of the whole profile: a panel of the fine-mesh curves of every option set around the
+/// exact peak (x within 0.15 of it, y from 80 % to 110 % of it).
+std::optional<Panel> peak_zoom_panel(const std::vector<Panel>& panels) {
+  const auto peak = exact_peak(panels);
+  if (!peak || !(peak->second > 0))
+    return std::nullopt;
+  static constexpr std::array<const char*, 6> kColours{"#1b9e77", "#d95f02", "#7570b3",
+                                                       "#e7298a", "#66a61e", "#e6ab02"};
+  Panel zoom{"zoom at the peak (F mesh)",
+             "x / b",
+             "-sigma_z / p",
+             false,
+             std::pair(peak->first - 0.15, peak->first + 0.15),
+             {},
+             std::pair(0.8 * peak->second, 1.1 * peak->second)};
+  std::size_t k = 0;
+  for (const auto& panel : panels) {
+    for (const auto& s : panel.series) {
+      if (s.title != std::string(schema::to_string(kFinestMesh)))
+        continue;
+      Series copy = s;
+      copy.title = panel.title;
+      copy.color = kColours[k++ % kColours.size()];
+      zoom.series.push_back(std::move(copy));
+    }
+  }
+  for (const auto& s : panels.front().series) {
+    if (s.title == "exact")
+      zoom.series.push_back(s);
+  }
+  return zoom;
+}
+
 Figure profile_figure(const ResultsIndex& index, const Gnuplot* gnuplot, const fs::path& work,
                       const fs::path& out_root, const StudyFigure4& study_panel,
                       schema::Element element) {
@@ -415,11 +512,21 @@ Figure profile_figure(const ResultsIndex& index, const Gnuplot* gnuplot, const f
       continue;
     any_exact = any_exact || has_exact;
     any_missing_exact = any_missing_exact || !has_exact;
-    panel.xrange = profile_range(panel.series);
     panels.push_back(std::move(panel));
   }
   if (panels.empty())
     return fig;
+  // One x-range for every panel, so that the panels compare at a glance.
+  std::vector<Series> every;
+  for (const auto& panel : panels)
+    every.insert(every.end(), panel.series.begin(), panel.series.end());
+  const auto shared = profile_range(every);
+  for (auto& panel : panels)
+    panel.xrange = shared;
+  if (over_punch_width(id)) {
+    if (auto zoom = peak_zoom_panel(panels))
+      panels.push_back(std::move(*zoom));
+  }
   fig.caption_md = fmt::format(
       "The study's Figure 4{} for {} elements: −σ<sub>z</sub>/p along z = 0 on the C, M and F "
       "meshes{}, one panel per option set ({}).",
@@ -451,7 +558,7 @@ std::vector<ObservedOrderEntry> observed_orders(const ResultsIndex& index) {
         for (const auto& cls : coincidence_classes(index, all_options(), {slot})) {
           const RowPoints pts = row_points(index, *class_row(index, cls, slot), p->singular);
           orders.push_back({p->id, q.quantity, element, cls.label(), observed_order(pts.points),
-                            p->singular, pts.relative_h});
+                            p->singular, pts.relative_h, pts.round_off});
         }
       }
     }
@@ -497,7 +604,7 @@ FigureSet render_figures(const ResultsIndex& index, const fs::path& out_root,
 std::string figures_section(const FigureSet& set) {
   if (set.figures.empty())
     return {};
-  std::string out = "## 4. Figures\n\n";
+  std::string out = "## Figures\n\n";
   if (!set.unavailable.empty())
     out += fmt::format("**No figures:** {}.\n\n", set.unavailable);
   std::optional<FigureKind> kind;
@@ -525,7 +632,7 @@ std::string figures_section(const FigureSet& set) {
         if (o.problem != f.problem || o.quantity != f.quantity)
           continue;
         list += fmt::format("{}{} {}: {}", list.empty() ? "" : "; ", schema::to_string(o.element),
-                            o.option_label, order_text(o.order, o.singular, true));
+                            o.option_label, order_text(o.order, o.singular, o.round_off, true));
       }
       if (!list.empty())
         out += fmt::format("Observed: {}.\n", list);

@@ -47,6 +47,7 @@ struct ObservedOrderEntry {
   std::optional<double> order;
   bool singular = false;    ///< a slope of the value itself (the flat punch), not an order
   bool relative_h = false;  ///< element_size_h missing: h taken as 1, 1/2, 1/4
+  bool round_off = false;   ///< errors at round-off (schema::kErrorNoiseFloorPercent): no order
 };
 
 /// The figures of a report and the observed orders shown in them.

@@ -182,38 +182,37 @@ std::vector<Finding> divergence(const ResultsIndex& index, const StudyReference&
                          "is not assessed.",
                          join_names(punches, ", "))}};
   }
-  std::vector<std::string> failing;
-  int passing = 0, undecided = 0, study_failing = 0;
+  std::vector<std::string> failing, strict_failing;
+  int passing = 0, undecided = 0, study_failing = 0, strict_passing = 0, study_strict_failing = 0;
   for (const auto& r : rows) {
+    const std::string name = fmt::format("{} {} {}", schema::label(r.problem),
+                                         schema::to_string(r.element), r.option.label());
     if (!r.diverging) {
       ++undecided;
     } else if (*r.diverging) {
       ++passing;
     } else {
-      failing.push_back(fmt::format("{} {} {}", schema::label(r.problem),
-                                    schema::to_string(r.element), r.option.label()));
+      failing.push_back(name);
     }
-    if (r.study_diverging && !*r.study_diverging)
-      ++study_failing;
+    if (r.divergence && r.divergence->diverges) {
+      ++strict_passing;
+    } else if (r.divergence) {
+      strict_failing.push_back(
+          fmt::format("{} ({})", name, strict_failure_reason(r.values, *r.divergence)));
+    }
+    study_failing += r.study_diverging && !*r.study_diverging;
+    study_strict_failing += r.study_divergence && !r.study_divergence->diverges;
   }
-  const std::string study_part =
-      study_failing == 0 ? "the study found every ANSYS option diverges"
-                         : fmt::format(
-                               "on the study's values Eq. 47 fails for {} of the mapped "
-                               "options",
-                               study_failing);
-  std::string sentence;
-  if (failing.empty()) {
-    sentence = fmt::format(
-        "On the flat punch all {} option set(s) with C, M and F diverge "
-        "(Eq. 47); {}.",
-        passing, study_part);
-  } else {
-    sentence = fmt::format(
-        "On the flat punch {} of {} option set(s) fail to diverge (Eq. 47): {}; "
-        "{}.",
-        failing.size(), failing.size() + passing, join_names(failing, " and "), study_part);
-  }
+  const int decided = passing + static_cast<int>(failing.size());
+  std::string sentence = fmt::format(
+      "On the flat punch, by the study's Eq. 47 {} of {} option set(s) diverge{}{}. By the strict "
+      "verdict (one sign, monotone growth at a rate near the singularity's h<sup>−1/2</sup>) {} "
+      "of {} diverge{}{}. On the study's own values Eq. 47 fails for {} and the strict verdict "
+      "for {} of the mapped options.",
+      passing, decided, failing.empty() ? "" : "; not: ", join_names(failing, ", "), strict_passing,
+      strict_passing + static_cast<int>(strict_failing.size()),
+      strict_failing.empty() ? "" : "; not: ", join_names(strict_failing, "; ", "; "),
+      study_failing, study_strict_failing);
   if (undecided > 0) {
     sentence += fmt::format(" {} more have no verdict (not all of C, M, F).", undecided);
   }

@@ -152,7 +152,7 @@ std::string recovery_section(const ResultsIndex& index) {
     return {};
   const auto pairs = graded_pairs(index);
   std::string out =
-      "## 7. Nodal stress recovery: patch recovery beside extrapolation\n\n"
+      "## Nodal stress recovery: patch recovery beside extrapolation\n\n"
       "Every graded value above is a nodal stress recovered by superconvergent patch recovery "
       "(our default). This run also recovered each analysis's stresses the way commercial codes "
       "print them, and the study graded them: extrapolated from the Gauss points and averaged. "

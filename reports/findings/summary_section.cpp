@@ -177,7 +177,7 @@ std::vector<std::pair<std::string, std::string>> flatten_environment(const nlohm
 
 std::string summary_section(const ResultsIndex& index, const std::vector<Finding>& findings) {
   const schema::ResultsDocument& r = index.results();
-  std::string out = "## 1. Summary\n\n";
+  std::string out = "## Summary\n\n";
   out += run_paragraph(r) + cases_paragraph(index) + outcome_paragraph(r);
   out += "**Findings** (generated from the data):\n\n";
   if (findings.empty())

@@ -197,6 +197,31 @@ std::vector<StudyGrade> read_grades(const fs::path& file) {
   return grades;
 }
 
+/// table1_elements.csv (the study's Table 1), when the directory has it.
+std::map<std::pair<schema::ProblemId, schema::MeshLevel>, int> read_table1(const fs::path& file) {
+  std::map<std::pair<schema::ProblemId, schema::MeshLevel>, int> out;
+  std::error_code ec;
+  if (!fs::is_regular_file(file, ec))
+    return out;
+  const CsvFile csv(file, {"column", "problem", "mesh", "elements"});
+  for (std::size_t i = 0; i < csv.size(); ++i) {
+    const std::string text = csv.get(i, "elements");
+    std::size_t used = 0;
+    int n = 0;
+    try {
+      n = std::stoi(text, &used);
+    } catch (const std::exception&) {
+      used = 0;
+    }
+    if (used != text.size() || n <= 0) {
+      throw ReportError(fmt::format("{}: row {}: elements '{}' is not a positive integer",
+                                    file.string(), i + 2, text));
+    }
+    out[{csv.name<schema::ProblemId>(i, "problem"), csv.name<schema::MeshLevel>(i, "mesh")}] = n;
+  }
+  return out;
+}
+
 bool holds_study_data(const fs::path& dir) {
   std::error_code ec;
   return fs::is_regular_file(dir / "ansys_results.csv", ec) &&
@@ -214,8 +239,16 @@ std::string StudyGrade::column_label() const {
          (contact ? fmt::format(" {}", schema::to_string(*contact)) : std::string());
 }
 
-StudyReference::StudyReference(std::vector<StudyValue> values, std::vector<StudyGrade> grades)
-    : values_(std::move(values)), grades_(std::move(grades)) {}
+StudyReference::StudyReference(
+    std::vector<StudyValue> values, std::vector<StudyGrade> grades,
+    std::map<std::pair<schema::ProblemId, schema::MeshLevel>, int> table1)
+    : values_(std::move(values)), grades_(std::move(grades)), table1_(std::move(table1)) {}
+
+std::optional<int> StudyReference::table1_elements(schema::ProblemId problem,
+                                                   schema::MeshLevel mesh) const {
+  const auto it = table1_.find({problem, mesh});
+  return it == table1_.end() ? std::nullopt : std::optional<int>(it->second);
+}
 
 const StudyValue* StudyReference::find_exact_key(schema::ProblemId problem,
                                                  schema::Quantity quantity, schema::Element element,
@@ -314,7 +347,8 @@ StudyReference load_study_reference(const fs::path& dir) {
         dir.string()));
   }
   return StudyReference(read_values(dir / "ansys_results.csv"),
-                        read_grades(dir / "ansys_grades.csv"));
+                        read_grades(dir / "ansys_grades.csv"),
+                        read_table1(dir / "table1_elements.csv"));
 }
 
 fs::path default_study_data_dir() {

@@ -18,6 +18,7 @@
 //              study column, for either contact type: the study does not separate them).
 
 #include <filesystem>
+#include <map>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -74,7 +75,12 @@ struct StudyMatch {
 class StudyReference {
  public:
   StudyReference() = default;
-  StudyReference(std::vector<StudyValue> values, std::vector<StudyGrade> grades);
+  StudyReference(std::vector<StudyValue> values, std::vector<StudyGrade> grades,
+                 std::map<std::pair<schema::ProblemId, schema::MeshLevel>, int> table1 = {});
+
+  /// The study's Table 1: elements of the indented body of a problem on a mesh level
+  /// (table1_elements.csv; the axisymmetric problems share their plane column), if printed.
+  std::optional<int> table1_elements(schema::ProblemId problem, schema::MeshLevel mesh) const;
 
   /// The study's value for our option set on one mesh; `value == nullptr` when the study
   /// printed none (e.g. mortar, or a table it omitted).
@@ -112,6 +118,7 @@ class StudyReference {
                                    schema::MeshLevel mesh) const;
   std::vector<StudyValue> values_;
   std::vector<StudyGrade> grades_;
+  std::map<std::pair<schema::ProblemId, schema::MeshLevel>, int> table1_;
 };
 
 /// Reads ansys_results.csv and ansys_grades.csv from `dir`; throws ReportError naming the

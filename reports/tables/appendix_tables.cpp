@@ -1,6 +1,8 @@
 #include "reports/tables/appendix_tables.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <cstdlib>
 #include <set>
 
 #include <fmt/format.h>
@@ -198,7 +200,7 @@ std::string appendix_intro(const StudyReference& study) {
       in_study.emplace_back(schema::to_string(c));
   }
   return fmt::format(
-      "## 3. Appendix tables: our values beside the study's ANSYS values\n\n"
+      "## Appendix tables: our values beside the study's ANSYS values\n\n"
       "Layout of the study's Tables 3–14: per problem, quantity, element and contact type, rows "
       "C, M, F (h = element size at the contact over a, or b for S); per algorithm our value "
       "(our % error) and the study's ANSYS value as printed. {}; the study's {} columns marked "
@@ -252,6 +254,21 @@ std::vector<AppendixTable> build_appendix_tables(const ResultsIndex& index,
   return out;
 }
 
+namespace {
+
+/// The study's printed exact value as a number (empty text or not a number: none).
+std::optional<double> parse_printed(const std::string& printed) {
+  if (printed.empty())
+    return std::nullopt;
+  char* end = nullptr;
+  const double v = std::strtod(printed.c_str(), &end);
+  if (end == printed.c_str() || *end != '\0' || !std::isfinite(v))
+    return std::nullopt;
+  return v;
+}
+
+}  // namespace
+
 std::string exact_value_line(const ResultsIndex& index, const StudyReference& study,
                              schema::ProblemId problem, schema::Quantity quantity) {
   const schema::ProblemRecord* p = index.problem(problem);
@@ -278,13 +295,21 @@ std::string exact_value_line(const ResultsIndex& index, const StudyReference& st
   std::string line = fmt::format("{} = {} (exact, from the study's {}; our errors are against it)",
                                  head, exact ? format_value(*exact) : std::string(kMissing),
                                  p != nullptr ? p->exact_source : "");
-  if (study_exact) {
+  const std::optional<double> printed_value = parse_printed(printed);
+  if (printed_value && exact && *exact != 0.0) {
     line += fmt::format(
-        "; the study printed {} and graded its ANSYS values against that, so compare its "
-        "columns with its own exact value",
-        format_value(*study_exact));
-  } else if (!printed.empty()) {
-    line += fmt::format("; the study printed {}", printed);
+        "; the study printed {} and graded its ANSYS values against that, {} from ours, so "
+        "its grades rest on a different exact value (compare its columns with its own)",
+        printed, format_percent(100.0 * (*printed_value - *exact) / *exact));
+    if (study_exact && format_value(*study_exact) != printed) {
+      line += fmt::format(
+          "; the study's convention elsewhere (docs/conventions.md) gives {} here, so its "
+          "printed value follows from neither convention",
+          format_value(*study_exact));
+    }
+  } else if (study_exact) {
+    line += fmt::format("; under the study's convention (docs/conventions.md) it is {}",
+                        format_value(*study_exact));
   }
   return line + ".";
 }

@@ -1,8 +1,9 @@
 #pragma once
-// The flat-punch divergence table (the study's Eq. 47): for F_p and F_a, per element and
-// option set, the edge stress on C, M, F, the two differences and whether
-// |s_C - s_M| < |s_M - s_F| (the stress grows without bound, as it should at a singularity),
-// beside the study's ANSYS values and the same test applied to them.
+// The flat-punch divergence table: for F_p and F_a, per element and option set, the edge
+// stress on C, M, F with two verdicts (schema::divergence_verdict): the study's Eq. 47,
+// |s_C - s_M| < |s_M - s_F|, and the strict one, monotone growth of one sign at a rate alpha
+// (|s| ~ h^-alpha) near the square-root singularity's 1/2; beside the study's ANSYS values
+// with both verdicts applied to them.
 
 #include <array>
 #include <optional>
@@ -19,11 +20,18 @@ struct DivergenceRow {
   schema::ProblemId problem = schema::ProblemId::F_p;
   schema::Element element = schema::Element::Q4;
   Option option;
-  std::array<std::optional<double>, 3> values;        ///< ours, C M F
-  std::optional<bool> diverging;                      ///< ours, from the results file's row verdict
-  std::array<std::optional<double>, 3> study_values;  ///< ANSYS, C M F
-  std::optional<bool> study_diverging;                ///< Eq. 47 on the ANSYS values
+  std::array<std::optional<double>, 3> values;  ///< ours, C M F
+  std::optional<bool> diverging;                ///< ours, from the results file's row verdict
+  std::optional<schema::DivergenceVerdict> divergence;        ///< ours, both verdicts
+  std::array<std::optional<double>, 3> study_values;          ///< ANSYS, C M F
+  std::optional<bool> study_diverging;                        ///< Eq. 47 on the ANSYS values
+  std::optional<schema::DivergenceVerdict> study_divergence;  ///< both verdicts on ANSYS's
 };
+
+/// Why a strict verdict fails, in words ("tensile", "shrinking", "not monotone",
+/// "grows too slowly (α 0.05)"); empty when it diverges.
+std::string strict_failure_reason(const std::array<std::optional<double>, 3>& values,
+                                  const schema::DivergenceVerdict& d);
 
 /// Eq. 47: |s_C - s_M| < |s_M - s_F|.
 bool satisfies_eq47(double c, double m, double f);

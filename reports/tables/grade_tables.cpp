@@ -343,7 +343,7 @@ std::string grade_tables_section(const ResultsIndex& index, const StudyReference
   }
   if (out.empty())
     return out;
-  return "## 2. Accuracy and convergence: Tables 2a and 2b\n\n" + out;
+  return "## Accuracy and convergence: Tables 2a and 2b\n\n" + out;
 }
 
 }  // namespace cs::reports

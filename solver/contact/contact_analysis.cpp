@@ -497,6 +497,7 @@ void ContactAnalysis::recover_results(const ContactSettings& settings,
     if (r.closed)
       result.contact_extent = std::max(result.contact_extent, r.position.x());
     result.peak_pressure = std::max(result.peak_pressure, r.pressure);
+    result.total_normal_force += r.force;
     result.peak_shear = std::max(result.peak_shear, std::abs(r.shear));
   }
 }

@@ -50,6 +50,7 @@ std::vector<ContactNodeResult> node_results(const ConstraintSet& set, const RowS
     r.position = n.position;
     r.gap = node_gap[i];
     r.penetration = std::max(0.0, -r.gap);
+    r.force = set.weighted ? rows.lambda[i] : force[i];
     if (set.weighted) {
       r.pressure = rows.lambda[i] / set.rows[i].weight_w;  // the coefficient p_a
     } else if (!n.degenerate()) {

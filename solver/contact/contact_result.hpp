@@ -101,8 +101,11 @@ struct ContactNodeResult {
   double gap = 0.0;          ///< normal gap, > 0 open, < 0 penetrating (mortar: weighted)
   double penetration = 0.0;  ///< max(0, -gap)
   double pressure = 0.0;     ///< contact pressure, > 0 compressive
-  bool closed = false;       ///< in contact (its constraint active / tied)
-  bool candidate = false;    ///< within the pinball at the start
+  /// The normal contact force the node carries (> 0 compressive; per unit thickness, or per
+  /// radian in axisymmetry): its multiplier (weighted rows) or its share of the rows'.
+  double force = 0.0;
+  bool closed = false;     ///< in contact (its constraint active / tied)
+  bool candidate = false;  ///< within the pinball at the start
   // Friction (mu > 0; zero / Open otherwise):
   double shear = 0.0;           ///< tangential traction transmitted along t (see the file comment)
   double slip = 0.0;            ///< relative tangential displacement s (mortar, ss LM: weighted)
@@ -147,6 +150,8 @@ struct ContactResult {
   double contact_extent = 0.0;
   /// The largest contact pressure over the nodes (0 if none).
   double peak_pressure = 0.0;
+  /// The sum of the nodes' normal contact forces: the load the interface transmits.
+  double total_normal_force = 0.0;
   /// Friction: the largest |shear| over the nodes (0 without friction).
   double peak_shear = 0.0;
   /// Friction: the tangential state of every row, the start of the next load step (empty

@@ -2,6 +2,9 @@
 // The builders of the study's problems, one file per family (patch test, Hertz, Steuermann,
 // flat punch), and the pieces they share.
 
+#include <string_view>
+#include <vector>
+
 #include "suites/problem_catalog.hpp"
 #include "suites/problem_setup.hpp"
 
@@ -14,6 +17,10 @@ inline constexpr double kStudyPOverE = 1e-3;
 
 /// The parameters every problem has (suites/parameters.hpp), then `extra`.
 std::vector<ParameterSpec> study_parameters(std::vector<ParameterSpec> extra);
+
+/// `params` with the default of parameter `name` set to `value` (which must lie in its range).
+std::vector<ParameterSpec> with_default(std::vector<ParameterSpec> params, std::string_view name,
+                                        double value);
 
 ProblemSetup build_patch_test(const CaseSpec& spec, const Parameters& params);
 ProblemSetup build_hertz(const CaseSpec& spec, const Parameters& params);

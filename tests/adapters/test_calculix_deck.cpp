@@ -249,8 +249,9 @@ TEST(CalculixDeck, ModelTextStaysInComments) {
   std::istringstream in(deck);
   std::string line;
   while (std::getline(in, line)) {
-    if (line.find("777777") != std::string::npos)
+    if (line.find("777777") != std::string::npos) {
       EXPECT_EQ(line.rfind("** ", 0), 0u) << line;
+    }
   }
   EXPECT_NE(deck.find("** body 0: block__BOUNDARY_1__1__2__777777"), std::string::npos);
 }

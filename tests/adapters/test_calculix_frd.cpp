@@ -66,8 +66,9 @@ TEST(FrdReader, MapsOntoOurNodes) {
               test::patch_pair(), result);
   // sigma_z = -p in the block to CalculiX's residual tolerance (see test_calculix_runs.cpp).
   for (int n = 0; n < model.mesh.n_nodes(); ++n) {
-    if (model.mesh.nodes[n].y() >= 0.0)
+    if (model.mesh.nodes[n].y() >= 0.0) {
       EXPECT_TRUE(Near(result.nodal_stress[n].sigma_z, -1.0, {2e-3, 0})) << n;
+    }
   }
   ASSERT_EQ(result.contact.size(), 3u);
   for (const auto& c : result.contact) {

@@ -142,8 +142,9 @@ TEST_P(CalculixPatch, UniformStateAndEquilibrium) {
     EXPECT_TRUE(Near(r.contact[k].pressure, s.p, {1e-3, 0})) << "surface node " << k;
     EXPECT_TRUE(Near(r.contact[k].penetration, s.p / options.penalty_K, {0.01, 0}));
   }
-  if (c.pressure == PressureRule::AllNodes)  // the contact force, from CalculiX's pressures
+  if (c.pressure == PressureRule::AllNodes) {  // the contact force, from CalculiX's pressures
     EXPECT_TRUE(Near(integrated_pressure(model, r), applied_load(s), {1e-3, 0}));
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(
@@ -364,8 +365,9 @@ TEST(CalculixHertz, NodeToSurfaceQ4) {
   EXPECT_TRUE(Near(axis.pressure / s.p, exact, {0.01, 0}));
   EXPECT_TRUE(Near(-r.nodal_stress[axis.node].sigma_z / s.p, exact, {0.08, 0}));
   for (const auto& c : r.contact) {
-    if (c.position.x() > 1.2 * s.a)  // outside the contact zone (a + 1.6 h)
+    if (c.position.x() > 1.2 * s.a) {  // outside the contact zone (a + 1.6 h)
       EXPECT_LT(std::abs(c.pressure), 0.01 * s.p) << "x = " << c.position.x();
+    }
   }
   std::printf("[ ccx      ] Hertz: -sigma_z/p = %.4f, p_axis/p = %.4f (exact %.4f)\n",
               -r.nodal_stress[axis.node].sigma_z / s.p, axis.pressure / s.p, exact);

@@ -55,8 +55,8 @@ TEST(ReportBenchCli, WritesTheBenchmarkSection) {
              tmp.path() / "err.txt");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const std::string md = read_text(out / "report.md");
-  EXPECT_NE(md.find("[Benchmarks](#8-benchmarks)"), std::string::npos);
-  EXPECT_NE(md.find("\n## 8. Benchmarks\n"), std::string::npos);
+  EXPECT_NE(md.find("[Benchmarks](#appendix-a-benchmarks)"), std::string::npos);
+  EXPECT_NE(md.find("\n## Appendix A. Benchmarks\n"), std::string::npos);
   EXPECT_NE(md.find("**Machine** (`" + (data_dir() / "small_bench.json").string() +
                     "`): host `bench-host`, 2 CPUs at 2800 MHz"),
             std::string::npos);

@@ -100,6 +100,7 @@ TEST(AppendixTables, ExactValueLineShowsOursAndTheStudysPrintedValue) {
   const std::string s = exact_value_line(data.index, study(), ProblemId::S_1_3, Quantity::sigma_c);
   EXPECT_NE(s.find("11.2424"), std::string::npos) << s;
   EXPECT_NE(s.find("the study printed 10.9571"), std::string::npos) << s;
+  EXPECT_NE(s.find("−2.54 % from ours"), std::string::npos) << s;  // (10.9571 - 11.2424) / 11.2424
   const std::string h = exact_value_line(data.index, study(), ProblemId::H_p, Quantity::sigma_c);
   EXPECT_NE(h.find("1.2732"), std::string::npos) << h;
   const std::string f =

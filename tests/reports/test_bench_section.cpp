@@ -83,7 +83,7 @@ TEST(BenchTarget, FollowsTheTargetItIsGiven) {
 
 TEST(BenchSection, ListsTheMissesWithTheirRatioAndNotTheCasesThatMeetTheTarget) {
   const std::string md = bench_section(sample(), {});
-  EXPECT_EQ(md.rfind("## 8. Benchmarks\n", 0), 0u);
+  EXPECT_EQ(md.rfind("## Benchmarks\n", 0), 0u);
   EXPECT_NE(md.find("### Target: ratio ≤ 1.5 for PM, AL and LM at mesh F"), std::string::npos);
   EXPECT_NE(md.find("**2 of 5 cases meet it; 3 miss it:**"), std::string::npos) << md;
   const std::string misses = between(md, "**2 of 5", "Meet it");
@@ -189,8 +189,8 @@ TEST(BenchSection, InTheReportOnlyWithABenchFile) {
   EXPECT_EQ(plain.find("Benchmarks"), std::string::npos);
   write_report(results(), options_with_bench(tmp.path() / "bench", {bench_path()}));
   const std::string md = read_text(tmp.path() / "bench" / "report.md");
-  EXPECT_NE(md.find("[Benchmarks](#8-benchmarks)"), std::string::npos);
-  EXPECT_NE(md.find("\n## 8. Benchmarks\n"), std::string::npos);
+  EXPECT_NE(md.find("[Benchmarks](#appendix-a-benchmarks)"), std::string::npos);
+  EXPECT_NE(md.find("\n## Appendix A. Benchmarks\n"), std::string::npos);
   EXPECT_NE(md.find("**2 of 5 cases meet it"), std::string::npos);
 }
 

@@ -56,18 +56,26 @@ TEST(Findings, LargestDifferenceFromTheStudy) {
 TEST(Findings, FlatPunchOptionsThatFailToDiverge) {
   auto doc = sample_json();
   std::string s = finding(doc, FindingTopic::divergence);
-  EXPECT_NE(s.find("1 of 2 option set(s) fail to diverge (Eq. 47): F<sub>p</sub> Q4 MPC ss"),
+  EXPECT_NE(s.find("by the study's Eq. 47 1 of 2 option set(s) diverge; not: F<sub>p</sub> Q4 "
+                   "MPC ss"),
             std::string::npos)
       << s;
-  EXPECT_NE(s.find("the study found every ANSYS option diverges"), std::string::npos) << s;
+  EXPECT_NE(s.find("On the study's own values Eq. 47 fails for 0"), std::string::npos) << s;
+  // With the strict verdicts recorded: the MPC row passes Eq. 47 but shrinks.
   for (auto& r : doc["rows"]) {
     if (r["id"] == "F_p/Q4/MPC/ss/sigma_c_star") {
-      r["values"]["F"] = 3.2;
+      r["values"] = {{"C", 3.0}, {"M", 2.9}, {"F", 2.5}};
       r["diverging"] = true;
+      r["divergence"] = {
+          {"eq47", true}, {"monotone", false}, {"exponent", -0.13}, {"diverges", false}};
     }
+    if (r["id"] == "F_p/Q4/AL/ss/sigma_c_star")
+      r["divergence"] = {{"eq47", true}, {"monotone", true}, {"exponent", 0.5}, {"diverges", true}};
   }
   s = finding(doc, FindingTopic::divergence);
-  EXPECT_NE(s.find("all 2 option set(s) with C, M and F diverge"), std::string::npos) << s;
+  EXPECT_NE(s.find("by the study's Eq. 47 2 of 2 option set(s) diverge."), std::string::npos) << s;
+  EXPECT_NE(s.find("1 of 2 diverge; not: F<sub>p</sub> Q4 MPC ss (shrinking)"), std::string::npos)
+      << s;
 }
 
 TEST(Findings, MortarOnTheMismatchedNodePatchTest) {

@@ -75,10 +75,25 @@ TEST(ReportWriter, WritesReportCsvAndRegression) {
   EXPECT_EQ(outcome.n_cases, 59);
   EXPECT_EQ(outcome.files, (std::vector<std::string>{"regression.md", "report.md", "results.csv"}));
   const std::string md = read_text(o.out_dir / "report.md");
-  for (const char* section : {"## 1. Summary", "## 2. Accuracy and convergence", "## 3. Appendix",
-                              "## 5. Flat punch: divergence", "## 6. Other option sets"}) {
-    EXPECT_NE(md.find(section), std::string::npos) << section;
+  // Numbered in order without gaps; the analyst's sections first.
+  std::vector<std::string> headings;
+  for (std::size_t at = md.find("\n## "); at != std::string::npos; at = md.find("\n## ", at + 1))
+    headings.push_back(md.substr(at + 4, md.find('\n', at + 1) - at - 4));
+  std::vector<std::string> expected_order{"Which contact option",
+                                          "The study's four conclusions",
+                                          "Summary",
+                                          "Meshes",
+                                          "Accuracy and convergence",
+                                          "Appendix tables",
+                                          "Flat punch: divergence",
+                                          "Other option sets"};
+  std::size_t next = 0;
+  for (std::size_t i = 0; i < headings.size(); ++i) {
+    EXPECT_EQ(headings[i].rfind(std::to_string(i + 1) + ". ", 0), 0u) << headings[i];
+    if (next < expected_order.size() && headings[i].find(expected_order[next]) != std::string::npos)
+      ++next;
   }
+  EXPECT_EQ(next, expected_order.size()) << "sections missing or out of order";
   EXPECT_NE(md.find("57 converged, 1 did not converge, 1 failed"), std::string::npos);
   EXPECT_NE(md.find("| solver.factorization | CHOLMOD supernodal |"), std::string::npos);
   EXPECT_NE(md.find("[regression.md](regression.md)"), std::string::npos);
@@ -91,7 +106,7 @@ TEST(ReportWriter, ReplacesItsOwnFilesAndKeepsTheUsers) {
   TempDir tmp;
   UserDir user(tmp.path());
   write_report(sample(), options_for(user.path));
-  EXPECT_NE(read_text(user.path / "report.md").find("## 1. Summary"), std::string::npos);
+  EXPECT_NE(read_text(user.path / "report.md").find(". Summary\n"), std::string::npos);
   EXPECT_EQ(read_text(user.path / "notes.txt"), "the user's own notes\n");
   EXPECT_TRUE(fs::exists(user.path / "results.csv"));
 }
@@ -268,6 +283,21 @@ TEST(ReportCommand, ExecutableExitsWith2OnBadInput) {
   EXPECT_EQ(std::count(err.begin(), err.end(), '\n'), 1) << err;
   EXPECT_NE(err.find("is not valid JSON"), std::string::npos) << err;
   user.expect_untouched();
+}
+
+// Requirement: sections are numbered 1, 2, ... in order with no gap where one is empty,
+// appendices A, B, ...; the contents link each by GitHub's anchor of its numbered heading.
+TEST(NumberSections, NumbersWithoutGapsAndLinksByAnchor) {
+  const NumberedSections n =
+      number_sections({"## Summary\n\nfirst\n", "", "## Flat punch: divergence (Eq. 47)\n\nx\n"},
+                      {"", "## Benchmarks\n\nb\n"});
+  EXPECT_EQ(n.body,
+            "## 1. Summary\n\nfirst\n## 2. Flat punch: divergence (Eq. 47)\n\nx\n"
+            "## Appendix A. Benchmarks\n\nb\n");
+  EXPECT_EQ(n.contents,
+            "**Contents:** [Summary](#1-summary) · [Flat punch](#2-flat-punch-divergence-eq-47) · "
+            "[Benchmarks](#appendix-a-benchmarks)\n\n");
+  EXPECT_EQ(n.toc_entries, 3);
 }
 
 }  // namespace

@@ -48,6 +48,7 @@ ResultsDocument small_document() {
   q.contact_pressure = 3.25;
   c.quantities.push_back(q);
   c.profile = {{0.0, 0.5}, {1.0, std::nan("")}, {1.1, 1.2}};
+  c.interface = InterfaceChecks{2e-15, 0.0, std::nullopt, 0.25};
   doc.cases.push_back(c);
   RowVerdict row;
   row.spec = c.spec;
@@ -83,6 +84,11 @@ TEST(SchemaResultsFile, RoundTripsEveryField) {
   EXPECT_TRUE(back.cases[0].quantities[0].singular());
   EXPECT_TRUE(std::isnan(back.cases[0].profile.sigma_z_over_p[1]));
   EXPECT_EQ(back.rows[0].diverging, std::optional<bool>(true));
+  ASSERT_TRUE(back.cases[0].interface);
+  EXPECT_EQ(back.cases[0].interface->force_balance, std::optional<double>(2e-15));
+  EXPECT_FALSE(back.cases[0].interface->max_outside_over_p);
+  // 0.25 h of penetration is beyond FTOLN = 0.1: the one failing check.
+  EXPECT_EQ(back.cases[0].interface->failures(), std::vector<std::string>{"penetration"});
 }
 
 TEST(SchemaResultsFile, RejectsWrongTypesWithTheFieldPath) {
@@ -100,6 +106,10 @@ TEST(SchemaResultsFile, RejectsWrongTypesWithTheFieldPath) {
   expect_rejected([](json& j) { j["cases"][0]["iterations"] = -1; }, "out of range");
   expect_rejected([](json& j) { j["cases"][0]["quantities"]["sigma_c_star"]["study_exact"] = "x"; },
                   "study_exact: is a string");
+  expect_rejected([](json& j) { j["cases"][0]["interface"] = "ok"; },
+                  "R.cases[0].interface: is a string, expected an object");
+  expect_rejected([](json& j) { j["cases"][0]["interface"]["max_tensile_over_p"] = -1.0; },
+                  "R.cases[0].interface.max_tensile_over_p: is negative");
   expect_rejected([](json& j) { j["run"]["jobs"] = 2.5; },
                   "R.run.jobs: is a number, expected an integer");
 }

@@ -2,9 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include "schema/schema_error.hpp"
 #include "suites/case_spec.hpp"
 #include "suites/problem_catalog.hpp"
-#include "schema/schema_error.hpp"
 #include "suites/suite_error.hpp"
 
 namespace cs::suites {
@@ -21,7 +21,8 @@ TEST(CaseSpec, EveryNameRoundTrips) {
     EXPECT_EQ(parse<Algorithm>(to_string(a)), a);
   for (auto c : values<ContactKind>())
     EXPECT_EQ(parse<ContactKind>(to_string(c)), c);
-  EXPECT_EQ(values<ProblemId>().size(), 13u);  // the study's 11, FP_p and CM_p
+  // the study's 11, the two equal-moduli patch tests, FP_p and CM_p
+  EXPECT_EQ(values<ProblemId>().size(), 15u);
   EXPECT_EQ(study_problems().size(), 11u);
   // 11 problems x 3 meshes x 2 elements x 5 algorithms x 2 discretizations: the study's 660.
   EXPECT_EQ(study_problems().size() * values<MeshLevel>().size() * values<Element>().size() *

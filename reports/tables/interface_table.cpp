@@ -1,0 +1,147 @@
+#include "reports/tables/interface_table.hpp"
+
+#include <array>
+#include <cmath>
+#include <functional>
+#include <map>
+
+#include <fmt/format.h>
+
+#include "reports/tables/markdown_table.hpp"
+
+namespace cs::reports {
+namespace {
+
+/// Largest number of failing option sets listed.
+constexpr std::size_t kListed = 40;
+
+struct CheckDefinition {
+  const char* name;  ///< as InterfaceChecks::failures() names it
+  const char* measure;
+  double tolerance;
+  std::function<std::optional<double>(const schema::InterfaceChecks&)> value;
+};
+
+const std::array<CheckDefinition, 4>& checks() {
+  static const std::array<CheckDefinition, 4> all{{
+      {"force balance", "|Σ nodal contact forces − load| / load", schema::kForceBalanceTolerance,
+       [](const schema::InterfaceChecks& c) -> std::optional<double> {
+         return c.force_balance ? std::optional(std::abs(*c.force_balance)) : std::nullopt;
+       }},
+      {"tensile pressure", "largest tensile contact pressure / p", schema::kTensileTolerance,
+       [](const schema::InterfaceChecks& c) { return c.max_tensile_over_p; }},
+      {"pressure outside the patch",
+       "largest contact pressure / p more than one element beyond the exact patch",
+       schema::kOutsideTolerance,
+       [](const schema::InterfaceChecks& c) { return c.max_outside_over_p; }},
+      {"penetration", "largest penetration / element size at the contact",
+       schema::kPenetrationTolerance,
+       [](const schema::InterfaceChecks& c) { return c.max_penetration_over_h; }},
+  }};
+  return all;
+}
+
+/// The cases the section covers: the study's option sets and the problems beyond it, once
+/// (extrapolated twins share the contact solution of their patch-recovered case).
+bool covered(const schema::CaseResult& c) {
+  return c.interface && c.spec.recovery == schema::Recovery::spr;
+}
+
+struct Failing {
+  std::string meshes;
+  double worst = 0.0;
+};
+
+std::string summary_table(const ResultsIndex& index) {
+  MarkdownTable table({"Check", "Measure", "Tolerance", "Cases checked", "Failing", "Worst case"});
+  for (const auto& check : checks()) {
+    int checked = 0, failing = 0;
+    const schema::CaseResult* worst = nullptr;
+    double worst_value = -1.0;
+    for (const auto& c : index.results().cases) {
+      if (!covered(c))
+        continue;
+      const auto v = check.value(*c.interface);
+      if (!v)
+        continue;
+      ++checked;
+      failing += *v > check.tolerance ? 1 : 0;
+      if (*v > worst_value) {
+        worst_value = *v;
+        worst = &c;
+      }
+    }
+    table.add_row({check.name, check.measure, fmt::format("{:g}", check.tolerance),
+                   std::to_string(checked), std::to_string(failing),
+                   worst != nullptr
+                       ? fmt::format("`{}`: {:.3g}", schema::case_id(worst->spec), worst_value)
+                       : std::string(kMissing)});
+  }
+  return table.render();
+}
+
+std::string failing_table(const ResultsIndex& index, std::size_t& n_failing) {
+  // (problem, element, option, check) -> meshes and worst value, in document order.
+  std::map<std::string, Failing> failing;
+  std::vector<std::string> order;
+  for (const auto& c : index.results().cases) {
+    if (!covered(c))
+      continue;
+    for (const auto& check : checks()) {
+      const auto v = check.value(*c.interface);
+      if (!v || *v <= check.tolerance)
+        continue;
+      const std::string variant = variant_of(c.spec);
+      const std::string key = fmt::format(
+          "{} | {} | {} {}{}{} | {}", schema::label(c.spec.problem),
+          schema::to_string(c.spec.element), schema::to_string(c.spec.algorithm),
+          schema::to_string(c.spec.contact), variant.empty() ? "" : " ", variant, check.name);
+      auto [it, inserted] = failing.try_emplace(key);
+      if (inserted)
+        order.push_back(key);
+      it->second.meshes += std::string(it->second.meshes.empty() ? "" : ", ") +
+                           std::string(schema::to_string(c.spec.mesh));
+      it->second.worst = std::max(it->second.worst, *v);
+    }
+  }
+  n_failing = order.size();
+  if (order.empty())
+    return {};
+  std::string out =
+      "| Problem | Element | Option | Check | Meshes | Worst |\n| :-- | :-: | :-: | :-- | :-: | "
+      ":-: |\n";
+  for (std::size_t i = 0; i < order.size() && i < kListed; ++i) {
+    const Failing& f = failing.at(order[i]);
+    out += fmt::format("| {} | {} | {:.3g} |\n", order[i], f.meshes, f.worst);
+  }
+  if (order.size() > kListed)
+    out += fmt::format("\n… and {} more (all in results.json, `interface` of each case).\n",
+                       order.size() - kListed);
+  return out;
+}
+
+}  // namespace
+
+std::string interface_section(const ResultsIndex& index) {
+  bool any = false;
+  for (const auto& c : index.results().cases)
+    any = any || covered(c);
+  if (!any)
+    return {};
+  std::size_t n_failing = 0;
+  const std::string failing = failing_table(index, n_failing);
+  std::string out =
+      "## Interface checks\n\n"
+      "Beside the graded peak, every case's contact interface is checked as a reviewer would "
+      "check any contact solution: the contact forces must carry the whole applied load; a "
+      "frictionless contact cannot pull; the pressure must vanish beyond the exact contact "
+      "patch (allowing one element for the discrete edge); and penetration must stay below the "
+      "study's default tolerance FTOLN = 0.1 of the element size. Values per case are in "
+      "results.json (`interface`).\n\n" +
+      summary_table(index) + "\n";
+  if (n_failing == 0)
+    return out + "No option set fails a check.\n\n";
+  return out + fmt::format("{} (option set, check) pairs fail:\n\n", n_failing) + failing + "\n";
+}
+
+}  // namespace cs::reports
