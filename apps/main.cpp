@@ -9,7 +9,9 @@
 #include <CLI/CLI.hpp>
 
 #include "apps/case_command.hpp"
+#include "apps/export_command.hpp"
 #include "apps/gate_command.hpp"
+#include "apps/grade_command.hpp"
 #include "apps/invocation.hpp"
 #include "apps/list_command.hpp"
 #include "apps/merge_command.hpp"
@@ -50,6 +52,8 @@ int main(int argc, char** argv) {
   cs::apps::add_report_command(app);
   cs::apps::add_gate_command(app, exit_code);
   cs::apps::add_merge_command(app, exit_code);
+  cs::apps::add_export_command(app, exit_code);
+  cs::apps::add_grade_command(app, exit_code);
 
   // Ctrl-C and SIGTERM stop us and every child (gnuplot, ccx) together; commands poll
   // interrupted_signal() between units of work and exit 128 + signal without committing output.

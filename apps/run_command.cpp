@@ -9,6 +9,7 @@
 
 #include <fmt/core.h>
 
+#include "apps/case_selection_options.hpp"
 #include "apps/invocation.hpp"
 #include "apps/usage_error.hpp"
 #include "apps/write_run_output.hpp"
@@ -17,6 +18,7 @@
 #include "schema/results_file.hpp"
 #include "suites/case_matrix.hpp"
 #include "suites/executor_factory.hpp"
+#include "suites/import_csv.hpp"
 #include "suites/problem_catalog.hpp"
 #include "suites/problem_executor.hpp"
 #include "suites/problem_setup.hpp"
@@ -29,9 +31,7 @@ namespace cs::apps {
 namespace {
 
 struct RunArgs {
-  std::vector<std::string> problems, meshes, elements, algorithms, contacts, sets;
-  std::string target{schema::to_string(schema::TargetKind::Discretized)};
-  std::vector<std::string> recoveries;
+  SelectionArgs selection;
   std::string solver{schema::to_string(schema::SolverKind::builtin)};
   double ccx_time_limit = 600.0;
   int jobs = 0;
@@ -39,54 +39,37 @@ struct RunArgs {
   std::string shard;
   bool shard_given = false;
   bool no_report = false;
+  bool surface_csv = false;
   std::string command_line;
 };
 
-/// The names of a comma-separated list option (repeatable), split here rather than by CLI11,
-/// which drops empty items: "H_p,,S_1" is refused, not read as "H_p,S_1".
-template <class E>
-std::vector<E> parse_all(const std::vector<std::string>& raw, const char* option) {
-  std::vector<std::string> names;
-  for (const auto& text : raw) {
-    std::size_t start = 0;
-    while (true) {
-      const auto comma = text.find(',', start);
-      names.push_back(text.substr(start, comma == std::string::npos ? comma : comma - start));
-      if (comma == std::string::npos)
-        break;
-      start = comma + 1;
-    }
-  }
-  suites::require_no_empty_items(names, option);
-  std::vector<E> out;
-  for (const auto& n : names)
-    out.push_back(schema::parse<E>(n));
-  return out;
-}
-
-suites::CaseSelection make_selection(const RunArgs& args) {
-  suites::CaseSelection sel;
-  sel.problems = parse_all<schema::ProblemId>(args.problems, "--problems");
-  sel.meshes = parse_all<schema::MeshLevel>(args.meshes, "--meshes");
-  sel.elements = parse_all<schema::Element>(args.elements, "--elements");
-  sel.algorithms = parse_all<schema::Algorithm>(args.algorithms, "--algorithms");
-  sel.contacts = parse_all<schema::ContactKind>(args.contacts, "--contacts");
-  sel.target = schema::parse<schema::TargetKind>(args.target);
-  sel.recoveries = parse_all<schema::Recovery>(args.recoveries, "--recovery");
+std::vector<suites::CaseSpec> selected_cases(const RunArgs& args) {
+  suites::CaseSelection sel = make_selection(args.selection);
   sel.solver = schema::parse<schema::SolverKind>(args.solver);
   if (sel.solver == schema::SolverKind::imported)
     throw UsageError("--solver imported: imported results are graded by `grade`, not run");
-  sel.overrides = suites::parse_overrides(args.sets);
-  return sel;
+  auto cases = suites::make_case_matrix(sel);
+  validate_cases(cases);
+  return cases;
 }
 
-/// Every case's --set keys must exist for its problem: checked before anything runs.
-void validate_overrides(const std::vector<suites::CaseSpec>& cases) {
-  for (const auto& spec : cases) {
-    suites::Parameters(suites::problem_descriptor(spec.problem).parameters, spec.overrides,
-                       suites::to_string(spec.problem));
-    suites::validate_case(spec);  // e.g. MPC with friction: bad input before anything runs
+/// DIR/surface.csv: every converged case's sampled-surface values in the import layout
+/// (suites/import_csv.hpp), under its case id without the solver suffix.
+void stage_surface_csv(const std::vector<suites::CaseResult>& results,
+                       const platform::OutputTransaction& output) {
+  std::vector<suites::ImportedCase> cases;
+  for (const auto& r : results) {
+    if (r.status != suites::CaseStatus::converged || r.surface_nodes.empty())
+      continue;
+    suites::CaseSpec spec = r.spec;
+    spec.solver = schema::SolverKind::builtin;
+    spec.solver_name.clear();
+    suites::ImportedCase c{suites::case_id(spec), 0, {}};
+    for (const auto& n : r.surface_nodes)
+      c.rows.push_back({n.x, n.sigma_z, n.sigma_x, n.contact_pressure, 0});
+    cases.push_back(std::move(c));
   }
+  stage_text_file(output, "surface.csv", suites::import_csv_text(cases));
 }
 
 /// A rough relative cost of a model, to start the largest first.
@@ -101,8 +84,7 @@ double group_cost(const suites::CaseSpec& spec) {
 }
 
 int run(const RunArgs& args) {
-  const auto all_cases = suites::make_case_matrix(make_selection(args));
-  validate_overrides(all_cases);
+  const auto all_cases = selected_cases(args);
   suites::ExecutorOptions exec;
   exec.calculix_time_limit_seconds = args.ccx_time_limit;
   suites::require_solvers(all_cases, exec);  // e.g. ccx missing: exit 2 before anything runs
@@ -155,6 +137,8 @@ int run(const RunArgs& args) {
                                     .problems = suites::problem_records(results),
                                     .cases = results,
                                     .rows = suites::make_row_verdicts(results)};
+  if (args.surface_csv)
+    stage_surface_csv(results, output);
   const int figures = write_run_output(doc, output, !args.no_report);
   fmt::print("wrote {}{}\n", (std::filesystem::path(args.out) / "results.json").string(),
              args.no_report ? "" : fmt::format(" and its report ({} figures)", figures));
@@ -170,13 +154,7 @@ int run(const RunArgs& args) {
 void add_run_command(CLI::App& app, int& exit_code) {
   auto args = std::make_shared<RunArgs>();
   auto* cmd = app.add_subcommand("run", "Run the study's case matrix (or a subset) and report");
-  cmd->add_option("--problems", args->problems, "Problems (default: all 11)");
-  cmd->add_option("--meshes", args->meshes, "Mesh levels C M F (default: all)");
-  cmd->add_option("--elements", args->elements, "Elements Q4 Q8 (default: both)");
-  cmd->add_option("--algorithms", args->algorithms, "Algorithms AL PM LMP PLM MPC (default: all)");
-  cmd->add_option("--contacts", args->contacts, "Discretizations ss ns mortar (default: ss ns)");
-  cmd->add_option("--target", args->target, "Indenter: discretized or rigid")
-      ->capture_default_str();
+  add_selection_options(*cmd, args->selection);
   cmd->add_option("--solver", args->solver,
                   "Who solves the cases: builtin (ours) or calculix (ccx through its adapter; "
                   "see docs/calculix.md for how the options map)")
@@ -185,14 +163,13 @@ void add_run_command(CLI::App& app, int& exit_code) {
                   "Seconds one CalculiX case may take before it is `timeout`")
       ->check(CLI::Range(1.0, 86400.0))
       ->capture_default_str();
-  cmd->add_option("--recovery", args->recoveries,
-                  "Nodal stresses: spr (patch recovery; the default) and/or extrapolated (as "
-                  "commercial codes print)");
-  cmd->add_option("--set", args->sets, "Override a parameter of every case: name=value");
   cmd->add_option("--jobs", args->jobs, "Parallel workers, 1 to 256 (default: the number of cores)")
       ->check(CLI::Range(1, 256));
   cmd->add_option("--out", args->out, "Output directory")->capture_default_str();
   cmd->add_flag("--no-report", args->no_report, "Write results.json only");
+  cmd->add_flag("--surface-csv", args->surface_csv,
+                "Also write surface.csv: each converged case's nodal stresses and contact "
+                "pressures on the sampled surface, in the layout `grade --import` reads");
   auto* shard = cmd->add_option(
       "--shard", args->shard,
       "Run slice K of N (K/N, 1-based) of the selected cases; slices keep the cases "

@@ -2,6 +2,8 @@
 
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
+#include <stdexcept>
 #include <system_error>
 
 #include <fmt/core.h>
@@ -10,6 +12,17 @@
 #include "schema/json_file.hpp"
 
 namespace cs::apps {
+
+void stage_text_file(const platform::OutputTransaction& out, const std::string& relative,
+                     std::string_view text) {
+  const std::filesystem::path path = out.staging() / relative;
+  std::filesystem::create_directories(path.parent_path());
+  std::ofstream file(path, std::ios::binary);
+  file.write(text.data(), static_cast<std::streamsize>(text.size()));
+  file.close();
+  if (!file)
+    throw std::runtime_error("cannot write " + path.string());
+}
 
 int write_run_output(const schema::ResultsDocument& doc, platform::OutputTransaction& out,
                      bool with_report) {

@@ -5,12 +5,19 @@
 // never a mix, and a second process writing to it is refused. The report is built from the
 // results in memory, not re-read from a file another process may have replaced.
 
+#include <string>
+#include <string_view>
 #include <vector>
 
 #include "platform/output_transaction.hpp"
 #include "schema/results_file.hpp"
 
 namespace cs::apps {
+
+/// Writes `text` as the file `relative` (its parent directories created) under out.staging();
+/// throws std::runtime_error if it cannot be written.
+void stage_text_file(const platform::OutputTransaction& out, const std::string& relative,
+                     std::string_view text);
 
 /// Stages results.json (and the report when `with_report`) and commits `out`. Returns the
 /// number of figures drawn (0 without a report).

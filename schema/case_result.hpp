@@ -44,6 +44,16 @@ struct ExactProfile {
   bool empty() const { return x_over_a.empty(); }
 };
 
+/// One node of the sampled surface as the solver reported it, unnormalized: what the import
+/// layout holds (docs/import-export.md; `run --surface-csv`). In memory only: results.json
+/// keeps the normalized profile.
+struct SurfaceNodeValues {
+  double x = 0.0;                          ///< reference coordinate x (r)
+  double sigma_z = 0.0;                    ///< nodal sigma_z, tension positive
+  double sigma_x = 0.0;                    ///< nodal sigma_x (sigma_r), tension positive
+  std::optional<double> contact_pressure;  ///< > 0 in compression; none: not reported there
+};
+
 /// Everything recorded about one analysis.
 struct CaseResult {
   CaseSpec spec;
@@ -60,6 +70,9 @@ struct CaseResult {
   ExactProfile exact_profile;
   /// The interface checks (none: the case has no values or the solver gave no contact forces).
   std::optional<InterfaceChecks> interface;
+  /// The sampled surface's nodal values, in surface order (nodal recoveries only; not written
+  /// to results.json).
+  std::vector<SurfaceNodeValues> surface_nodes;
 
   /// The record of `q`, or nullptr.
   const QuantityResult* quantity(Quantity q) const;

@@ -4,6 +4,7 @@
 
 #include <map>
 #include <string>
+#include <string_view>
 
 #include "schema/case_axes.hpp"
 
@@ -33,6 +34,15 @@ std::string solver_label(const CaseSpec& spec);
 /// A stable identifier of a case: "H_p/F/Q4/LMP/ss" (+ "/rigid", "/extrapolated", "/k=v"
 /// overrides, and "/@calculix" or "/@<name>" for a solver other than ours).
 std::string case_id(const CaseSpec& spec);
+
+/// The case a case id names: the inverse of case_id() on its canonical form. The five fields
+/// problem/mesh/element/algorithm/contact, then in case_id()'s order "rigid", a recovery other
+/// than spr, "name=value" overrides (sorted by name) and "@<solver>" ("@calculix", or any other
+/// name for imported results, recorded in solver_name). Throws SchemaError naming the id and its
+/// first bad field; an id that parses but is not written as case_id() writes it (an alias, a
+/// reordered or repeated field, "fkn=10.0" for "fkn=10") is refused with the canonical form, so
+/// that one case has one id. Parameters are not validated here (suites::validate_case does).
+CaseSpec parse_case_id(std::string_view id);
 
 /// True for the study's option sets: our solver, a discretized target, patch-recovered nodal
 /// stresses and no parameter overrides (the "baseline" rows of the report).

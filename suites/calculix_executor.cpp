@@ -56,31 +56,9 @@ ccx::CalculixOptions calculix_options(const CaseSpec& spec, const ProblemSetup& 
   return out;
 }
 
-/// CalculiX's nodal stresses as a nodal field (one value per node, in the body of its
-/// elements), for solver::surface_stresses to order along the sampled surface.
-solver::StressField nodal_field(const solver::Mesh& mesh,
-                                const std::vector<solver::Stress>& stress) {
-  solver::StressField field;
-  field.method = solver::StressRecoveryMethod::ExtrapolatedAveraged;
-  const std::size_t n_bodies = mesh.body_names.size();
-  const auto n = static_cast<std::size_t>(mesh.n_nodes());
-  field.nodal.assign(n_bodies, std::vector<solver::Stress>(n));
-  field.nodal_count.assign(n_bodies, std::vector<int>(n, 0));
-  for (int e = 0; e < mesh.n_elements(); ++e) {
-    const auto body = static_cast<std::size_t>(mesh.element_body[e]);
-    for (int k = 0; k < mesh.n_element_nodes(); ++k) {
-      const auto node = static_cast<std::size_t>(mesh.elements[e][k]);
-      field.nodal[body][node] = stress.at(node);
-      field.nodal_count[body][node] = 1;
-    }
-  }
-  return field;
-}
-
 /// Fills the values of a converged run: quantities, profiles.
 void fill_values(const ProblemSetup& setup, const ccx::CalculixResult& run, CaseResult& result) {
-  const solver::StressField field = nodal_field(setup.model.mesh, run.nodal_stress);
-  const auto surface = solver::surface_stresses(setup.model, field, kSampledSurface);
+  const auto surface = surface_of_nodal_stresses(setup, run.nodal_stress);
   std::vector<ContactPressureSample> pressures;
   pressures.reserve(run.contact.size());
   for (const auto& n : run.contact)
@@ -120,14 +98,7 @@ const std::filesystem::path& calculix_run_directory() {
 }
 
 std::string calculix_case_directory_name(const CaseSpec& spec) {
-  std::string name = case_id(spec);
-  for (char& c : name) {
-    const bool plain = (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') ||
-                       c == '.' || c == '=' || c == '@' || c == '-';
-    if (!plain)
-      c = '_';
-  }
-  return name;
+  return plain_file_name(case_id(spec));
 }
 
 CalculixExecutor::CalculixExecutor(const CaseSpec& representative, const ExecutorOptions& options)

@@ -63,6 +63,17 @@ std::map<std::string, double> parse_overrides(const std::vector<std::string>& te
   return out;
 }
 
+std::string plain_file_name(std::string_view text) {
+  std::string name(text);
+  for (char& c : name) {
+    const bool plain = (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') ||
+                       c == '.' || c == '=' || c == '@' || c == '-';
+    if (!plain)
+      c = '_';
+  }
+  return name;
+}
+
 void require_no_empty_items(const std::vector<std::string>& items, std::string_view option) {
   for (const auto& item : items) {
     if (item.empty())

@@ -46,6 +46,10 @@ std::pair<std::string, double> parse_override(std::string_view text);
 /// would silently win otherwise).
 std::map<std::string, double> parse_overrides(const std::vector<std::string>& texts);
 
+/// `text` as a file or directory name: every character outside [A-Za-z0-9._=@-] as '_'
+/// (case ids name CalculiX's case directories and export's model directories).
+std::string plain_file_name(std::string_view text);
+
 /// Throws SuiteInputError if a comma-separated option list (`--problems`, ...) has an empty item.
 void require_no_empty_items(const std::vector<std::string>& items, std::string_view option);
 

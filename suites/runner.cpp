@@ -85,6 +85,18 @@ std::string model_key(const CaseSpec& spec) {
   return case_id(s);
 }
 
+std::vector<std::vector<std::size_t>> group_by_model(const std::vector<CaseSpec>& cases) {
+  std::map<std::string, std::size_t> slot;
+  std::vector<std::vector<std::size_t>> groups;
+  for (std::size_t i = 0; i < cases.size(); ++i) {
+    const auto [it, fresh] = slot.try_emplace(model_key(cases[i]), groups.size());
+    if (fresh)
+      groups.emplace_back();
+    groups[it->second].push_back(i);
+  }
+  return groups;
+}
+
 std::vector<CaseResult> run_cases(const std::vector<CaseSpec>& cases,
                                   const ExecutorFactory& make_executor,
                                   const RunnerOptions& options) {

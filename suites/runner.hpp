@@ -46,6 +46,10 @@ struct RunnerOptions {
 /// contact-only parameters (fkn, ftoln, pinball).
 std::string model_key(const CaseSpec& spec);
 
+/// The cases grouped by model (model_key), as indices into `cases`: groups in the order of their
+/// first case, each group's cases in the order given.
+std::vector<std::vector<std::size_t>> group_by_model(const std::vector<CaseSpec>& cases);
+
 /// Runs `cases` and returns their results in the same order.
 std::vector<CaseResult> run_cases(const std::vector<CaseSpec>& cases,
                                   const ExecutorFactory& make_executor,

@@ -51,7 +51,53 @@ int sample_index(const std::vector<double>& x, const std::vector<double>& values
   return best;
 }
 
+/// The profile of the study's Figure 4 (nodal -sigma_z/p and the contact pressure over p, by
+/// x / a) and the surface's unnormalized nodal values (what the import layout holds). A contact
+/// pressure belongs to a surface node when it is reported within 1e-9 a of it.
+void fill_profile(const std::vector<solver::SurfaceStressSample>& surface,
+                  const std::vector<ContactPressureSample>& contact, double p, double a,
+                  CaseResult& result) {
+  for (const auto& s : surface) {
+    result.profile.x_over_a.push_back(s.position.x() / a);
+    result.profile.sigma_z_over_p.push_back(-s.stress.sigma_z / p);
+    const ContactPressureSample* nearest = nullptr;
+    double distance = std::numeric_limits<double>::infinity();
+    for (const auto& c : contact) {
+      const double d = std::abs(c.x - s.position.x());
+      if (d < distance)
+        distance = d, nearest = &c;
+    }
+    const bool at_node = nearest != nullptr && distance < 1e-9 * a;
+    result.profile.pressure_over_p.push_back(at_node ? nearest->pressure / p : std::nan(""));
+    if (s.node >= 0) {
+      result.surface_nodes.push_back(
+          {s.position.x(), s.stress.sigma_z, s.stress.sigma_x,
+           at_node ? std::optional<double>(nearest->pressure) : std::nullopt});
+    }
+  }
+}
+
 }  // namespace
+
+std::vector<solver::SurfaceStressSample> surface_of_nodal_stresses(
+    const ProblemSetup& setup, const std::vector<solver::Stress>& nodal_stress) {
+  const solver::Mesh& mesh = setup.model.mesh;
+  solver::StressField field;
+  field.method = solver::StressRecoveryMethod::ExtrapolatedAveraged;
+  const std::size_t n_bodies = mesh.body_names.size();
+  const auto n = static_cast<std::size_t>(mesh.n_nodes());
+  field.nodal.assign(n_bodies, std::vector<solver::Stress>(n));
+  field.nodal_count.assign(n_bodies, std::vector<int>(n, 0));
+  for (int e = 0; e < mesh.n_elements(); ++e) {
+    const auto body = static_cast<std::size_t>(mesh.element_body[e]);
+    for (int k = 0; k < mesh.n_element_nodes(); ++k) {
+      const auto node = static_cast<std::size_t>(mesh.elements[e][k]);
+      field.nodal[body][node] = nodal_stress.at(node);
+      field.nodal_count[body][node] = 1;
+    }
+  }
+  return solver::surface_stresses(setup.model, field, kSampledSurface);
+}
 
 /// Fills value, error and grade of each quantity, the contact-pressure version, and the profile.
 void sample_quantities(const ProblemSetup& setup,
@@ -101,19 +147,7 @@ void sample_quantities(const ProblemSetup& setup,
     }
     result.quantities.push_back(q);
   }
-  // The profile of the study's Figure 4: nodal -sigma_z/p and the contact pressure, by x / a.
-  for (const auto& s : surface) {
-    result.profile.x_over_a.push_back(s.position.x() / a);
-    result.profile.sigma_z_over_p.push_back(-s.stress.sigma_z / p);
-    double nearest = std::nan("");
-    double distance = std::numeric_limits<double>::infinity();
-    for (std::size_t k = 0; k < x_contact.size(); ++k) {
-      const double d = std::abs(x_contact[k] - s.position.x());
-      if (d < distance)
-        distance = d, nearest = pressure[k];
-    }
-    result.profile.pressure_over_p.push_back(distance < 1e-9 * a ? nearest : std::nan(""));
-  }
+  fill_profile(surface, contact, p, a, result);
 }
 
 /// The exact -sigma_z/p on z = 0 at 301 points of 0 <= x <= 1.5 a (within the block).

@@ -26,6 +26,13 @@ struct ContactPressureSample {
   double pressure = 0.0;  ///< > 0 in compression, not normalized
 };
 
+/// The sampled surface (kSampledSurface, in path order) of a solver that reports one nodal
+/// stress per node (CalculiX, imported results): `nodal_stress` is indexed by node (entries off
+/// the surface are not read). Each node's value is that of the body of its surface sides, as
+/// for the built-in solver's nodal recoveries.
+std::vector<solver::SurfaceStressSample> surface_of_nodal_stresses(
+    const ProblemSetup& setup, const std::vector<solver::Stress>& nodal_stress);
+
 /// Fills value, error and grade of each quantity of `setup`, the contact-pressure version and
 /// the surface profile (nodal -sigma_z/p and pressure/p by x/a) of `result`. Quantities read
 /// off the contact solution itself (friction: stick-zone edge, the contact's peak shear) need

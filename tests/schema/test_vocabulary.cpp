@@ -6,6 +6,8 @@
 
 #include <set>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "schema/case_axes.hpp"
 #include "schema/case_spec.hpp"
@@ -89,6 +91,58 @@ TEST(SchemaCaseSpec, CaseIdIsStableAndNamesEveryNonDefaultAxis) {
   s.solver_name = "abaqus";
   EXPECT_EQ(case_id(s), "H_p/F/Q4/LMP/ss/rigid/extrapolated/fkn=10/@abaqus");
   EXPECT_FALSE(is_baseline(s));
+}
+
+// Requirement (issue 13, import): a case id read back from a file names exactly the case that
+// wrote it, and any other spelling is refused with the canonical one.
+TEST(SchemaCaseSpec, CaseIdParsesBackToItsCase) {
+  CaseSpec s = parse_case_id("S_1_3/M/Q8/PM/ns");
+  EXPECT_EQ(case_id(s), "S_1_3/M/Q8/PM/ns");
+  EXPECT_EQ(s.element, Element::Q8);
+  EXPECT_EQ(s.contact, ContactKind::ns);
+  s.target = TargetKind::Rigid;
+  s.recovery = Recovery::extrapolated;
+  s.overrides = {{"fkn", 0.1}, {"nu", 1.0 / 3.0}, {"p_over_E", 1e-6}};
+  EXPECT_EQ(parse_case_id(case_id(s)), s) << case_id(s);
+  s.solver = SolverKind::calculix;
+  EXPECT_EQ(parse_case_id(case_id(s)), s);
+  s.solver = SolverKind::imported;
+  s.solver_name = "abaqus-2024.1";
+  EXPECT_EQ(parse_case_id(case_id(s)), s) << case_id(s);
+  for (const auto& cp : values<ProblemId>()) {  // every problem, mesh, element, ...
+    CaseSpec c;
+    c.problem = cp;
+    EXPECT_EQ(parse_case_id(case_id(c)), c);
+  }
+}
+
+TEST(SchemaCaseSpec, MalformedCaseIdsAreRefusedNamingTheField) {
+  const std::vector<std::pair<std::string, std::string>> bad{
+      {"", "expected problem/mesh"},
+      {"H_p/C/Q4/PM", "expected problem/mesh"},
+      {"H_x/C/Q4/PM/ss", "unknown problem 'H_x'"},
+      {"H_p/X/Q4/PM/ss", "unknown mesh level 'X'"},
+      {"H_p/C/Q4/PM/ss/", "unexpected field ''"},
+      {"H_p/C/Q4/PM/ss/fkn=abc", "'fkn=abc' is not a parameter"},
+      {"H_p/C/Q4/PM/ss/fkn=inf", "'fkn=inf' is not a parameter"},
+      {"H_p/C/Q4/PM/ss/fkn=1/fkn=2", "given twice"},
+      {"H_p/C/Q4/PM/ss/@", "not a solver suffix"},
+      {"H_p/C/Q4/PM/ss/@builtin", "not a solver suffix"},
+      {"H_p/C/Q4/PM/ss/@a/@b", "unexpected field '@b'"},
+      {"H_p/C/Q4/PM/ss/extrapolated/rigid", "unexpected field 'rigid'"},
+      {"H_p/C/Q4/PM/ss/fkn=10.0", "'H_p/C/Q4/PM/ss/fkn=10'"},
+      {"P'_p/C/Q4/PM/ss", "'Pprime_p/C/Q4/PM/ss'"},
+      {"H_p/C/Q4/IMC/ss", "'H_p/C/Q4/MPC/ss'"},
+      {"H_p/C/Q4/PM/ss/spr", "'H_p/C/Q4/PM/ss'"},
+  };
+  for (const auto& [id, expected] : bad) {
+    try {
+      parse_case_id(id);
+      ADD_FAILURE() << "accepted: " << id;
+    } catch (const SchemaError& e) {
+      EXPECT_NE(std::string(e.what()).find(expected), std::string::npos) << id << ": " << e.what();
+    }
+  }
 }
 
 }  // namespace

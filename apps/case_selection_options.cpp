@@ -1,0 +1,63 @@
+#include "apps/case_selection_options.hpp"
+
+#include "suites/problem_setup.hpp"
+
+namespace cs::apps {
+namespace {
+
+/// The names of a comma-separated list option (repeatable), split here rather than by CLI11,
+/// which drops empty items: "H_p,,S_1" is refused, not read as "H_p,S_1".
+template <class E>
+std::vector<E> parse_all(const std::vector<std::string>& raw, const char* option) {
+  std::vector<std::string> names;
+  for (const auto& text : raw) {
+    std::size_t start = 0;
+    while (true) {
+      const auto comma = text.find(',', start);
+      names.push_back(text.substr(start, comma == std::string::npos ? comma : comma - start));
+      if (comma == std::string::npos)
+        break;
+      start = comma + 1;
+    }
+  }
+  suites::require_no_empty_items(names, option);
+  std::vector<E> out;
+  for (const auto& n : names)
+    out.push_back(schema::parse<E>(n));
+  return out;
+}
+
+}  // namespace
+
+void add_selection_options(CLI::App& cmd, SelectionArgs& args) {
+  cmd.add_option("--problems", args.problems, "Problems (default: all 11)");
+  cmd.add_option("--meshes", args.meshes, "Mesh levels C M F (default: all)");
+  cmd.add_option("--elements", args.elements, "Elements Q4 Q8 (default: both)");
+  cmd.add_option("--algorithms", args.algorithms, "Algorithms AL PM LMP PLM MPC (default: all)");
+  cmd.add_option("--contacts", args.contacts, "Discretizations ss ns mortar (default: ss ns)");
+  cmd.add_option("--target", args.target, "Indenter: discretized or rigid")->capture_default_str();
+  cmd.add_option("--recovery", args.recoveries,
+                 "Nodal stresses: spr (patch recovery; the default) and/or extrapolated (as "
+                 "commercial codes print)");
+  cmd.add_option("--set", args.sets, "Override a parameter of every case: name=value");
+}
+
+suites::CaseSelection make_selection(const SelectionArgs& args) {
+  suites::CaseSelection sel;
+  sel.problems = parse_all<schema::ProblemId>(args.problems, "--problems");
+  sel.meshes = parse_all<schema::MeshLevel>(args.meshes, "--meshes");
+  sel.elements = parse_all<schema::Element>(args.elements, "--elements");
+  sel.algorithms = parse_all<schema::Algorithm>(args.algorithms, "--algorithms");
+  sel.contacts = parse_all<schema::ContactKind>(args.contacts, "--contacts");
+  sel.target = schema::parse<schema::TargetKind>(args.target);
+  sel.recoveries = parse_all<schema::Recovery>(args.recoveries, "--recovery");
+  sel.overrides = suites::parse_overrides(args.sets);
+  return sel;
+}
+
+void validate_cases(const std::vector<suites::CaseSpec>& cases) {
+  for (const auto& spec : cases)
+    suites::validate_case(spec);  // --set keys, values; e.g. MPC with friction is refused
+}
+
+}  // namespace cs::apps

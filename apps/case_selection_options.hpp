@@ -1,0 +1,33 @@
+#pragma once
+// The case-selection options that `run` and `export` share: --problems, --meshes, --elements,
+// --algorithms, --contacts, --target, --recovery and --set, registered, parsed and validated in
+// one place so that both commands select and refuse cases the same way.
+
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+#include "suites/case_matrix.hpp"
+
+namespace cs::apps {
+
+/// The raw values of the selection options (lists as typed; split and parsed by make_selection).
+struct SelectionArgs {
+  std::vector<std::string> problems, meshes, elements, algorithms, contacts, sets;
+  std::string target{schema::to_string(schema::TargetKind::Discretized)};
+  std::vector<std::string> recoveries;
+};
+
+/// Adds the selection options to `cmd`, writing into `args` (which must outlive the parse).
+void add_selection_options(CLI::App& cmd, SelectionArgs& args);
+
+/// The selection `args` name, solved by the built-in solver. Throws SchemaError for an unknown
+/// name, SuiteInputError for an empty list item or a malformed --set.
+suites::CaseSelection make_selection(const SelectionArgs& args);
+
+/// Checks every case before anything runs: its --set keys and values exist for its problem and
+/// its options combine (e.g. MPC with friction is refused). Throws SuiteInputError.
+void validate_cases(const std::vector<suites::CaseSpec>& cases);
+
+}  // namespace cs::apps

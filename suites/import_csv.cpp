@@ -1,0 +1,207 @@
+#include "suites/import_csv.hpp"
+
+#include <array>
+#include <charconv>
+#include <cmath>
+#include <map>
+#include <system_error>
+
+#include <fmt/format.h>
+
+namespace cs::suites {
+namespace {
+
+enum Column { kCaseId, kX, kSigmaZ, kSigmaX, kContactPressure, kColumns };
+constexpr std::array<std::string_view, kColumns> kNames{"case_id", "x", "sigma_z", "sigma_x",
+                                                        "contact_pressure"};
+
+/// Where an error is: the file, the line and (0: none) the 1-based column with its name.
+struct Place {
+  std::string_view source;
+  int line = 0;
+  int column = 0;
+  std::string_view name;
+};
+
+[[noreturn]] void fail(const Place& at, const std::string& what) {
+  if (at.column > 0)
+    throw ImportError(
+        fmt::format("{}:{}: column {} ({}): {}", at.source, at.line, at.column, at.name, what));
+  if (at.line > 0)
+    throw ImportError(fmt::format("{}:{}: {}", at.source, at.line, what));
+  throw ImportError(fmt::format("{}: {}", at.source, what));
+}
+
+/// A field as a message shows it: printable ASCII, at most 40 characters.
+std::string shown(std::string_view text) {
+  std::string out;
+  for (char c : text.substr(0, 40))
+    out += c >= 0x20 && c < 0x7f ? c : '?';
+  return text.size() > 40 ? out + "..." : out;
+}
+
+std::string_view trimmed(std::string_view s) {
+  const auto first = s.find_first_not_of(" \t");
+  return first == std::string_view::npos ? std::string_view{}
+                                         : s.substr(first, s.find_last_not_of(" \t") - first + 1);
+}
+
+/// The trimmed comma-separated fields of a line.
+std::vector<std::string_view> split_fields(std::string_view line) {
+  std::vector<std::string_view> fields;
+  while (true) {
+    const auto comma = line.find(',');
+    fields.push_back(trimmed(line.substr(0, comma)));
+    if (comma == std::string_view::npos)
+      return fields;
+    line.remove_prefix(comma + 1);
+  }
+}
+
+/// A finite double written in full (an optional leading '+').
+double parse_number(std::string_view text, const Place& at) {
+  if (text.empty())
+    fail(at, "empty value (expected a number)");
+  std::string_view digits = text;
+  if (digits.starts_with('+'))
+    digits.remove_prefix(1);
+  double value = 0.0;
+  const auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
+  if (ec == std::errc::result_out_of_range)
+    fail(at, fmt::format("'{}' is out of the range of a double", shown(text)));
+  if (ec != std::errc() || end != digits.data() + digits.size() || digits.empty() ||
+      digits.starts_with('-') != text.starts_with('-') || digits.starts_with('+'))
+    fail(at, fmt::format("'{}' is not a number", shown(text)));
+  if (!std::isfinite(value))
+    fail(at, fmt::format("'{}' is not a finite number", shown(text)));
+  return value == 0.0 ? 0.0 : value;  // -0 is 0: one node
+}
+
+/// The file position of each of the five columns, from the header line.
+std::array<int, kColumns> read_header(std::string_view line, const Place& at) {
+  std::array<int, kColumns> index;
+  index.fill(-1);
+  const auto fields = split_fields(line);
+  for (int k = 0; k < static_cast<int>(fields.size()); ++k) {
+    const Place here{at.source, at.line, k + 1, "header"};
+    int c = 0;
+    while (c < kColumns && kNames[c] != fields[k])
+      ++c;
+    if (c == kColumns)
+      fail(here, fmt::format("unknown column '{}' (expected {})", shown(fields[k]),
+                             std::string(kImportHeader)));
+    if (index[c] >= 0)
+      fail(here,
+           fmt::format("column '{}' is given twice (also column {})", kNames[c], index[c] + 1));
+    index[c] = k;
+  }
+  for (int c = 0; c < kColumns; ++c) {
+    if (index[c] < 0)
+      fail(at, fmt::format("missing column '{}' in the header (expected {})", kNames[c],
+                           std::string(kImportHeader)));
+  }
+  return index;
+}
+
+/// Collects the rows by case id and refuses a node given twice.
+class CaseCollector {
+ public:
+  explicit CaseCollector(std::string_view source) : source_(source) {}
+
+  void add(std::string_view id, const ImportRow& row) {
+    auto [it, inserted] = slot_.try_emplace(std::string(id), cases_.size());
+    if (inserted)
+      cases_.push_back({std::string(id), row.line, {}});
+    ImportedCase& c = cases_[it->second];
+    const auto [seen, fresh] = lines_[it->second].try_emplace(row.x, row.line);
+    if (!fresh)
+      fail({source_, row.line, 0, {}},
+           fmt::format("duplicate node: case '{}' already has x = {} on line {}", shown(id), row.x,
+                       seen->second));
+    c.rows.push_back(row);
+  }
+
+  std::vector<ImportedCase> take() { return std::move(cases_); }
+
+ private:
+  std::string_view source_;
+  std::vector<ImportedCase> cases_;
+  std::map<std::string, std::size_t> slot_;
+  std::map<std::size_t, std::map<double, int>> lines_;  ///< per case: x -> line
+};
+
+/// One data row into `collector`.
+void read_row(std::string_view line, const std::array<int, kColumns>& index, const Place& at,
+              CaseCollector& collector) {
+  const auto fields = split_fields(line);
+  if (fields.size() != kColumns)
+    fail(at, fmt::format("{} fields, the header has {}", fields.size(), kColumns));
+  auto place = [&](Column c) { return Place{at.source, at.line, index[c] + 1, kNames[c]}; };
+  const std::string_view id = fields[index[kCaseId]];
+  if (id.empty())
+    fail(place(kCaseId), "empty case id");
+  for (const auto& f : fields) {
+    if (f.find('"') != std::string_view::npos)
+      fail(at, "quoted fields are not supported (no field of the layout needs quotes)");
+  }
+  ImportRow row;
+  row.line = at.line;
+  row.x = parse_number(fields[index[kX]], place(kX));
+  row.sigma_z = parse_number(fields[index[kSigmaZ]], place(kSigmaZ));
+  row.sigma_x = parse_number(fields[index[kSigmaX]], place(kSigmaX));
+  if (const auto p = fields[index[kContactPressure]]; !p.empty())
+    row.contact_pressure = parse_number(p, place(kContactPressure));
+  collector.add(id, row);
+}
+
+}  // namespace
+
+std::vector<ImportedCase> parse_import_csv(std::string_view text, std::string_view source_name) {
+  if (text.starts_with("\xEF\xBB\xBF"))
+    text.remove_prefix(3);  // a UTF-8 byte-order mark, as spreadsheets write
+  std::optional<std::array<int, kColumns>> index;
+  int header_line = 0;
+  CaseCollector collector(source_name);
+  int line_number = 0;
+  bool any_row = false;
+  while (!text.empty()) {
+    const auto end = text.find('\n');
+    std::string_view line = text.substr(0, end);
+    text.remove_prefix(end == std::string_view::npos ? text.size() : end + 1);
+    ++line_number;
+    if (line.ends_with('\r'))
+      line.remove_suffix(1);
+    const std::string_view content = trimmed(line);
+    if (content.empty() || content.starts_with('#'))
+      continue;
+    const Place at{source_name, line_number, 0, {}};
+    if (!index) {
+      index = read_header(line, at);
+      header_line = line_number;
+      continue;
+    }
+    read_row(line, *index, at, collector);
+    any_row = true;
+  }
+  if (!index)
+    fail({source_name, 0, 0, {}},
+         fmt::format("empty file (expected the header {})", std::string(kImportHeader)));
+  if (!any_row)
+    fail({source_name, header_line, 0, {}}, "no data rows after the header");
+  return collector.take();
+}
+
+std::string import_csv_text(const std::vector<ImportedCase>& cases) {
+  std::string out = std::string(kImportHeader) + "\n";
+  for (const auto& c : cases) {
+    for (const auto& r : c.rows) {
+      out += fmt::format("{},{:.17g},{:.17g},{:.17g},", c.case_id, r.x, r.sigma_z, r.sigma_x);
+      if (r.contact_pressure)
+        out += fmt::format("{:.17g}", *r.contact_pressure);
+      out += '\n';
+    }
+  }
+  return out;
+}
+
+}  // namespace cs::suites

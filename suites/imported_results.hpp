@@ -1,0 +1,44 @@
+#pragma once
+// Grading another code's results (`contact-suite grade --import FILE --solver-name NAME`): each
+// case id of the import file (suites/import_csv.hpp) is rebuilt as the case it names
+// (build_problem, once per model), its rows are matched to the nodes of the sampled surface, and
+// the quantities are sampled by sample_quantities() exactly as for the built-in solver and
+// CalculiX, so a quantity means the same for every solver. The cases' solver is
+// SolverKind::imported with solver_name NAME (case ids end in "/@NAME").
+//
+// What is refused, as bad input naming the file and line (SuiteInputError): a solver name that
+// is empty, longer than 64 characters, outside [A-Za-z0-9._-] or a built-in solver's name; a
+// case id that does not name a case of the catalogue (unknown names, a solver suffix, a bad
+// parameter, friction, a rigid target); a row whose x is no node of the sampled surface (within
+// 1e-3 of the smallest node spacing), two rows on one node, and a surface node without a row.
+// Imported values carry no status, iterations or timings: every imported case is `converged`
+// with 0 iterations and 0 s.
+
+#include <string_view>
+#include <vector>
+
+#include "suites/case_result.hpp"
+#include "suites/import_csv.hpp"
+#include "suites/problem_setup.hpp"
+
+namespace cs::suites {
+
+/// Throws SuiteInputError unless `name` can name imported results (see the file comment).
+void require_imported_solver_name(std::string_view name);
+
+/// The case `imported.case_id` names, solved by `solver_name`; throws SuiteInputError
+/// "<source>:<line>: unknown case id '...': <why>" for an id outside the catalogue.
+CaseSpec imported_case_spec(const ImportedCase& imported, std::string_view solver_name,
+                            std::string_view source_name);
+
+/// Grades one imported case on its built setup. Throws SuiteInputError (naming the source and
+/// line) when the rows do not match the nodes of the sampled surface one to one.
+CaseResult grade_imported_case(const ProblemSetup& setup, const CaseSpec& spec,
+                               const ImportedCase& imported, std::string_view source_name);
+
+/// Grades every case of an import file (ids checked first, then each model built once), in the
+/// file's order of first appearance. Throws SuiteInputError as above.
+std::vector<CaseResult> grade_imported(const std::vector<ImportedCase>& cases,
+                                       std::string_view solver_name, std::string_view source_name);
+
+}  // namespace cs::suites
