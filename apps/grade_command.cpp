@@ -11,6 +11,7 @@
 #include "apps/invocation.hpp"
 #include "apps/usage_error.hpp"
 #include "apps/write_run_output.hpp"
+#include "platform/interrupts.hpp"
 #include "platform/output_transaction.hpp"
 #include "suites/import_csv.hpp"
 #include "suites/imported_results.hpp"
@@ -62,10 +63,14 @@ int run_grade(const GradeArgs& args) {
                                     .problems = suites::problem_records(results),
                                     .cases = results,
                                     .rows = suites::make_row_verdicts(results)};
-  const int figures = write_run_output(doc, output, !args.no_report);
+  const auto figures = write_run_output(doc, output, !args.no_report);
+  if (!figures) {
+    report_interrupted_write(args.out);
+    return 128 + platform::interrupted_signal();
+  }
   fmt::print("graded {} cases of {}: wrote {}{}\n", results.size(), args.solver_name,
              (std::filesystem::path(args.out) / "results.json").string(),
-             args.no_report ? "" : fmt::format(" and its report ({} figures)", figures));
+             args.no_report ? "" : fmt::format(" and its report ({} figures)", *figures));
   return kSuccess;
 }
 

@@ -10,6 +10,7 @@
 #include "apps/invocation.hpp"
 #include "apps/usage_error.hpp"
 #include "apps/write_run_output.hpp"
+#include "platform/interrupts.hpp"
 #include "schema/results_file.hpp"
 #include "suites/results_merge.hpp"
 
@@ -29,7 +30,10 @@ int run_merge(const MergeArgs& args) {
   const auto merged =
       suites::merge_results(parts, invocation().empty() ? "contact-suite merge" : invocation());
   platform::OutputTransaction output(args.out);  // after every check: bad input touches nothing
-  write_run_output(merged, output, !args.no_report);
+  if (!write_run_output(merged, output, !args.no_report)) {
+    report_interrupted_write(args.out);
+    return 128 + platform::interrupted_signal();
+  }
   fmt::print("merge: {} cases from {} files -> {}/results.json\n", merged.cases.size(),
              parts.size(), args.out);
   for (const auto& c : merged.cases) {

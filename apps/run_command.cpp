@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -112,6 +113,12 @@ int run(const RunArgs& args) {
   options.jobs = jobs;
   options.on_case_done = [&progress](const suites::CaseResult& r) { progress.case_done(r); };
   options.group_cost = group_cost;
+  // Memory in proportion to the cost estimate; a budget of 1.5 times the largest model keeps
+  // the two largest from running at once (the peak: two S F Q8 models together take about
+  // 7 GB) while smaller ones run beside them.
+  options.group_memory = group_cost;
+  for (const auto& c : cases)
+    options.memory_budget = std::max(options.memory_budget, 1.5 * group_cost(c));
   options.should_stop = [] { return platform::interrupted_signal() != 0; };
 
   schema::RunInfo info;
@@ -139,9 +146,13 @@ int run(const RunArgs& args) {
                                     .rows = suites::make_row_verdicts(results)};
   if (args.surface_csv)
     stage_surface_csv(results, output);
-  const int figures = write_run_output(doc, output, !args.no_report);
+  const auto figures = write_run_output(doc, output, !args.no_report);
+  if (!figures) {
+    report_interrupted_write(args.out);
+    return 128 + platform::interrupted_signal();
+  }
   fmt::print("wrote {}{}\n", (std::filesystem::path(args.out) / "results.json").string(),
-             args.no_report ? "" : fmt::format(" and its report ({} figures)", figures));
+             args.no_report ? "" : fmt::format(" and its report ({} figures)", *figures));
   for (const auto& r : results) {
     if (r.status != suites::CaseStatus::converged)
       return kCasesFailed;

@@ -8,6 +8,7 @@
 
 #include <fmt/core.h>
 
+#include "platform/interrupts.hpp"
 #include "reports/report_writer.hpp"
 #include "schema/json_file.hpp"
 
@@ -24,8 +25,8 @@ void stage_text_file(const platform::OutputTransaction& out, const std::string& 
     throw std::runtime_error("cannot write " + path.string());
 }
 
-int write_run_output(const schema::ResultsDocument& doc, platform::OutputTransaction& out,
-                     bool with_report) {
+std::optional<int> write_run_output(const schema::ResultsDocument& doc,
+                                    platform::OutputTransaction& out, bool with_report) {
   schema::write_results_file(out.staging() / "results.json", doc);
   int figures = 0;
   if (with_report) {
@@ -40,8 +41,16 @@ int write_run_output(const schema::ResultsDocument& doc, platform::OutputTransac
     if (!outcome.figures_unavailable.empty())
       std::fprintf(stderr, "contact-suite: warning: %s\n", outcome.figures_unavailable.c_str());
   }
+  // Interrupted while the report was built (gnuplot stopped with us, its figures missing):
+  // commit nothing, so the directory keeps its complete previous set.
+  if (platform::interrupted_signal() != 0)
+    return std::nullopt;
   out.commit();
   return figures;
+}
+
+void report_interrupted_write(const std::string& out_dir) {
+  std::fprintf(stderr, "contact-suite: interrupted: %s left as it was\n", out_dir.c_str());
 }
 
 }  // namespace cs::apps

@@ -27,6 +27,16 @@ constexpr AxisEntry entry(Grade v) {
   return {};
 }
 
+/// Eq. 46 of the study: the grade of a signed percentage error (NaN: u).
+constexpr Grade grade_of_error(double error_percent) {
+  const double e = error_percent < 0 ? -error_percent : error_percent;
+  if (!(e < 10.0))
+    return Grade::u;  // also catches NaN
+  if (e < 1.0)
+    return Grade::e;
+  return e < 5.0 ? Grade::g : Grade::s;
+}
+
 /// True when `grade` is worse than `reference`.
 constexpr bool is_worse(Grade grade, Grade reference) {
   return static_cast<int>(grade) > static_cast<int>(reference);

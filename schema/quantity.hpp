@@ -17,6 +17,7 @@ enum class Quantity : std::uint8_t {
   sigma_c_star,  ///< -sigma_z(a,0)/p: the contact stress at a flat punch's edge (singular)
   tau_max,       ///< -tau_xz^max/p: the peak shear traction on the contact (friction problems)
   c_over_a,      ///< c/a: the stick zone's half-width over the contact's (Cattaneo-Mindlin)
+  contact_half_width,  ///< the FE contact half-width over a (b for S), from the pressures
 };
 constexpr std::string_view axis_name(Quantity) {
   return "quantity";
@@ -35,6 +36,8 @@ constexpr AxisEntry entry(Quantity v) {
       return {"tau_max", "", "τ̄<sub>max</sub>"};
     case Quantity::c_over_a:
       return {"c_over_a", "", "c/a"};
+    case Quantity::contact_half_width:
+      return {"contact_half_width", "", "a<sub>FE</sub>"};
   }
   return {};
 }
@@ -54,6 +57,8 @@ constexpr std::string_view description(Quantity v) {
       return "peak shear traction";
     case Quantity::c_over_a:
       return "stick half-width";
+    case Quantity::contact_half_width:
+      return "contact half-width";
   }
   return {};
 }

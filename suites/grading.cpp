@@ -9,14 +9,7 @@ double error_percent(double value, double exact) {
 }
 
 Grade grade_from_error(double error_percent) {
-  const double e = std::abs(error_percent);
-  if (!(e < 10.0))
-    return Grade::u;  // also catches NaN
-  if (e < 1.0)
-    return Grade::e;
-  if (e < 5.0)
-    return Grade::g;
-  return Grade::s;
+  return schema::grade_of_error(error_percent);
 }
 
 bool is_converging(double error_c, double error_m, double error_f) {

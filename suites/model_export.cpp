@@ -149,6 +149,8 @@ std::string_view rule_name(SamplePoint where) {
       return "stick_zone_edge";
     case SamplePoint::ContactPeakShear:
       return "contact_peak_shear";
+    case SamplePoint::ContactEdge:
+      return "contact_edge";
   }
   return "";
 }

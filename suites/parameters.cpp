@@ -24,15 +24,24 @@ bool in_range(const ParameterSpec& s, double v) {
 std::vector<ParameterSpec> common_parameters(double default_p_over_E) {
   return {
       {"nu", 0.25, 0.0, 0.5, true, false, "Poisson's ratio of the indented body"},
-      {"p_over_E", default_p_over_E, 0.0, 0.1, false, true,
-       "applied pressure p over Young's modulus E of the indented body"},
+      // Below 1e-21 the indentation drowns in the round-off of the coordinates (H_p gives
+      // +22 % at 1e-22, -100 % at 1e-300); every graded value is the same from 1e-20 to 1e-3,
+      // so 1e-12 leaves a wide margin. Above 0.1 the small-strain model no longer holds.
+      {"p_over_E", default_p_over_E, 1e-12, 0.1, true, true,
+       "applied pressure p over Young's modulus E of the indented body (the answers are linear "
+       "in it; below 1e-12 round-off takes over)"},
       {"E_ratio", 1e6, 1.0, 1e12, true, true,
        "Young's modulus of the meshed indenter over that of the indented body"},
-      {"fkn", 1.0, 0.0, kInf, false, false,
-       "normal penalty stiffness factor FKN (PM, AL): multiplies the element stiffness scale"},
-      {"ftoln", 0.1, 0.0, kInf, false, false,
-       "penetration tolerance FTOLN (AL), as a fraction of the underlying element depth"},
-      {"pinball", 1.0, 0.0, kInf, false, false,
+      // From 1e5 up the penalty's condensed system is too ill-conditioned for the active set
+      // to settle (H_p C: cycling, reported as not converged, up to 1e200; at 1e300 it
+      // "converged" 31 % off). Below 1e-6 the penetration is the whole answer.
+      {"fkn", 1.0, 1e-6, 1e4, true, true,
+       "normal penalty stiffness factor FKN (PM, AL): multiplies the element stiffness scale; "
+       "above 1e4 the penalty system is too ill-conditioned to settle"},
+      {"ftoln", 0.1, 0.0, 1.0, false, true,
+       "penetration tolerance FTOLN (AL), as a fraction of the underlying element depth (more "
+       "than one element's depth is not a tolerance)"},
+      {"pinball", 1.0, 1e-3, 1e3, true, true,
        "pinball radius (candidate search, MPC ties), as a multiple of the underlying element "
        "depth"},
   };

@@ -28,6 +28,9 @@ enum class SamplePoint {
   StickZoneEdge,     ///< c/a from the contact's stick/slip states (CM), not the stresses
   ContactPeakShear,  ///< the contact solution's largest |shear| (CM: the traction has a cusp
                      ///< at c that nodal stress recovery smooths); see friction_sampling.hpp
+  ContactEdge,       ///< the contact half-width from the contact pressures (H, S): halfway
+                     ///< between the last node that carries pressure and the next one, over
+                     ///< the problem's length unit (a; b for S)
 };
 
 /// Which stress a quantity normalizes: -sigma_z/p, -sigma_x/p or -tau_xz/p (the shear traction

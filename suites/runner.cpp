@@ -3,11 +3,12 @@
 #include <sys/resource.h>
 
 #include <algorithm>
-#include <atomic>
 #include <chrono>
+#include <condition_variable>
 #include <exception>
 #include <map>
 #include <mutex>
+#include <optional>
 #include <thread>
 
 namespace cs::suites {
@@ -17,6 +18,58 @@ namespace {
 struct Group {
   std::vector<std::size_t> members;
   double cost = 1.0;
+  double memory = 0.0;  ///< estimated, for the memory-aware schedule
+};
+
+/// Hands out groups in order, holding back one whose estimated memory would take the running
+/// total beyond the budget (unless nothing runs): the next one that fits goes first.
+class GroupQueue {
+ public:
+  GroupQueue(const std::vector<const Group*>& groups, double budget)
+      : groups_(groups), started_(groups.size(), false), budget_(budget) {}
+
+  /// The next group to run, or nullopt when every group has started or `stop` says so.
+  std::optional<std::size_t> take(const std::function<bool()>& stop) {
+    std::unique_lock lock(mutex_);
+    for (;;) {
+      if (stop && stop())
+        return std::nullopt;
+      bool any_left = false;
+      for (std::size_t g = 0; g < groups_.size(); ++g) {
+        if (started_[g])
+          continue;
+        any_left = true;
+        const double need = groups_[g]->memory;
+        if (running_ == 0 || budget_ <= 0.0 || memory_ + need <= budget_) {
+          started_[g] = true;
+          ++running_;
+          memory_ += need;
+          return g;
+        }
+      }
+      if (!any_left)
+        return std::nullopt;
+      changed_.wait(lock);
+    }
+  }
+
+  void finished(std::size_t g) {
+    {
+      std::lock_guard lock(mutex_);
+      --running_;
+      memory_ -= groups_[g]->memory;
+    }
+    changed_.notify_all();
+  }
+
+ private:
+  const std::vector<const Group*>& groups_;
+  std::vector<bool> started_;
+  double budget_;
+  int running_ = 0;
+  double memory_ = 0.0;
+  std::mutex mutex_;
+  std::condition_variable changed_;
 };
 
 bool is_contact_only_parameter(const std::string& name) {
@@ -109,6 +162,8 @@ std::vector<CaseResult> run_cases(const std::vector<CaseSpec>& cases,
       order.push_back(key);
       if (options.group_cost)
         it->second.cost = options.group_cost(cases[i]);
+      if (options.group_memory)
+        it->second.memory = options.group_memory(cases[i]);
     }
     it->second.members.push_back(i);
   }
@@ -127,12 +182,11 @@ std::vector<CaseResult> run_cases(const std::vector<CaseSpec>& cases,
     std::lock_guard lock(done_mutex);
     options.on_case_done(r);
   };
-  std::atomic<std::size_t> next{0};
+  GroupQueue queue(groups, options.group_memory ? options.memory_budget : 0.0);
   auto worker = [&] {
-    for (std::size_t g = next++; g < groups.size(); g = next++) {
-      if (options.should_stop && options.should_stop())
-        return;
-      run_group(*groups[g], cases, make_executor, results, done);
+    while (const auto g = queue.take(options.should_stop)) {
+      run_group(*groups[*g], cases, make_executor, results, done);
+      queue.finished(*g);
     }
   };
   int jobs =

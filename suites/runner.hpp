@@ -37,6 +37,12 @@ struct RunnerOptions {
   CaseCallback on_case_done;  ///< progress reporting; may be empty
   /// Relative cost of a group, to schedule the largest first; empty: all equal.
   std::function<double(const CaseSpec&)> group_cost;
+  /// Memory-aware schedule: a group starts only while the estimated memory of the groups
+  /// running plus its own stays within `memory_budget` (same units as group_memory), or when
+  /// nothing else runs; otherwise the worker takes the next group (in cost order) that fits,
+  /// or waits. Empty or budget <= 0: no limit. Results do not depend on the schedule.
+  std::function<double(const CaseSpec&)> group_memory;
+  double memory_budget = 0.0;
   /// Polled before each group: when it returns true no further group starts (an interrupt);
   /// the cases not run keep a default (failed) result. Empty: never stop.
   std::function<bool()> should_stop;

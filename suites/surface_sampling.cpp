@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <stdexcept>
 
 #include "suites/friction_sampling.hpp"
@@ -45,10 +46,35 @@ int sample_index(const std::vector<double>& x, const std::vector<double>& values
         break;
       case SamplePoint::StickZoneEdge:  // read off the contact (friction_sampling.hpp)
       case SamplePoint::ContactPeakShear:
+      case SamplePoint::ContactEdge:  // from the pressures (contact_edge)
         return -1;
     }
   }
   return best;
+}
+
+/// The edge of contact from the pressures reported along the surface: halfway between the
+/// last sample (outwards from the axis) that carries pressure and the next one (the discrete
+/// edge lies somewhere between them: half an element is the resolution); the last sample's x
+/// when contact reaches the end of the surface; NaN when nothing is in contact. A pressure
+/// counts when it exceeds 1e-9 of the largest (a penalty's open nodes carry none).
+double contact_edge(const std::vector<ContactPressureSample>& contact) {
+  std::vector<ContactPressureSample> sorted(contact);
+  std::sort(sorted.begin(), sorted.end(),
+            [](const auto& u, const auto& v) { return std::abs(u.x) < std::abs(v.x); });
+  double peak = 0.0;
+  for (const auto& c : sorted)
+    peak = std::max(peak, c.pressure);
+  if (!(peak > 0.0))
+    return std::nan("");
+  std::optional<std::size_t> last;
+  for (std::size_t i = 0; i < sorted.size(); ++i) {
+    if (sorted[i].pressure > 1e-9 * peak)
+      last = i;
+  }
+  if (*last + 1 == sorted.size())
+    return std::abs(sorted[*last].x);
+  return 0.5 * (std::abs(sorted[*last].x) + std::abs(sorted[*last + 1].x));
 }
 
 /// The profile of the study's Figure 4 (nodal -sigma_z/p and the contact pressure over p, by
@@ -123,6 +149,16 @@ void sample_quantities(const ProblemSetup& setup,
         q.value = q.error_percent = std::nan("");
         result.quantities.push_back(q);
       }
+      continue;
+    }
+    if (rule.where == SamplePoint::ContactEdge) {
+      QuantityResult q;
+      q.quantity = rule.quantity;
+      q.exact = rule.exact;
+      q.value = contact_edge(contact) / setup.length_unit;
+      q.error_percent = error_percent(q.value, rule.exact);
+      q.grade = grade_from_error(q.error_percent);
+      result.quantities.push_back(q);
       continue;
     }
     std::vector<double> values;

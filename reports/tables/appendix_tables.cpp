@@ -240,6 +240,8 @@ std::vector<AppendixTable> build_appendix_tables(const ResultsIndex& index,
   std::vector<AppendixTable> out;
   for (const schema::ProblemRecord* p : index.problems()) {
     for (const auto& q : p->quantities) {
+      if (q.study_table.empty())
+        continue;  // not in the study's appendix: see beyond_study_section.hpp
       for (const auto element : schema::values<schema::Element>()) {
         const auto present = index.options_present(p->id, q.quantity, element);
         for (const auto contact : schema::values<ContactKind>()) {

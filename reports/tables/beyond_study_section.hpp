@@ -1,6 +1,7 @@
 #pragma once
 // The problems beyond the study (no table of its appendix: the equal-moduli patch tests, the
-// frictional problems, ...): one table per problem and quantity with our value and error per
+// frictional problems, ...) and the quantities it did not grade on its own problems (the
+// contact half-width of H and S): one table per problem and quantity with our value and error per
 // mesh, the grade of the finest mesh (Eq. 46) with its convergence flag, and the observed order
 // per mesh pair (none where the errors are at round-off). Graded by the same rules as
 // Tables 2a′ and 2b′.

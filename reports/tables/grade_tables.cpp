@@ -153,6 +153,25 @@ std::string joined(const std::vector<std::string>& names, const char* separator)
   return out;
 }
 
+/// Where the study graded against a printed exact value other than ours (the Steuermann rows:
+/// its 9.9773 against the physical 10.1956), ANSYS's fine-mesh value re-graded by Eq. 46
+/// against the physical value, e.g. " (phys. g)"; empty elsewhere.
+std::string ansys_physical_regrade(const ResultsIndex& index, const StudyReference& study,
+                                   const GradeTableRow& r, schema::Element element,
+                                   const Option& option, const schema::RowVerdict* row) {
+  if (row == nullptr || !r.quantity)
+    return {};
+  const auto exact = index.exact_of(*row);
+  const auto match = study.find_value(r.problem, *r.quantity, element, option.algorithm,
+                                      option.contact, kFinestMesh);
+  if (!exact || *exact == 0.0 || match.value == nullptr || !match.value->exact)
+    return {};
+  if (std::abs(*match.value->exact - *exact) <= 1e-4 * std::abs(*exact))
+    return {};  // the study's exact value is ours
+  const double error = 100.0 * (match.value->value - *exact) / *exact;
+  return fmt::format(" (phys. {})", schema::to_string(schema::grade_of_error(error)));
+}
+
 /// Our cell of one option class, beside the study's grade; counts the comparison.
 std::string table_cell(const ResultsIndex& index, const StudyReference& study,
                        const GradeTableRow& r, const OptionClass& cls, GradeTable& table,
@@ -165,6 +184,7 @@ std::string table_cell(const ResultsIndex& index, const StudyReference& study,
   const StudyGrade* g =
       study.find_grade(r.problem, r.study_row, table.element, first.algorithm, first.contact);
   text += fmt::format(" │ ANSYS {}", g != nullptr ? g->cell() : std::string(kMissing));
+  text += ansys_physical_regrade(index, study, r, table.element, first, row);
   in_study_any = in_study_any || g != nullptr;
   if (g != nullptr && row != nullptr && row->grade) {
     ++table.cells_compared;
@@ -190,6 +210,12 @@ void add_notes(const ResultsIndex& index, const StudyReference& study,
       "Markers: — not in this results file; (M) graded on the medium mesh because F is missing "
       "or failed; * not all of C, M, F present, so no convergence verdict; ! contact iterations "
       "did not converge on some mesh (its value is the last iterate).");
+  notes.push_back(
+      "Exact values: our grades use the physically consistent exact value of each row. Where "
+      "the study printed another (the Steuermann rows: Eq. 32 without the plane-strain factor "
+      "1 − ν²; the appendix tables give both values and the shift), its ANSYS grade is shown as "
+      "the study gave it, followed by \"(phys. …)\": ANSYS's fine-mesh value re-graded by "
+      "Eq. 46 against the physical value, so that both columns rest on the same reference.");
   if (table.cells_compared > 0) {
     notes.push_back(fmt::format(
         "Against the study: of {} cells graded by both, ours is the same in {}, better in {} and "

@@ -18,7 +18,10 @@ const ProblemDescriptor& problem_descriptor<ProblemId::H_a>() {
        /*singular=*/false,
        "9",
        "Eq. 22",
-       {{Quantity::sigma_c, "−σ<sub>z</sub>(0, 0)/p", "-sigma_z(0,0)/p", "9", "main"}}},
+       {{Quantity::sigma_c, "−σ<sub>z</sub>(0, 0)/p", "-sigma_z(0,0)/p", "9", "main"},
+        {Quantity::contact_half_width,
+         "a<sub>FE</sub>/a, halfway between the last node carrying pressure and the next", "a_FE/a",
+         "", ""}}},
       problems::study_parameters({}),
       problems::build_hertz};
   return d;

@@ -19,7 +19,10 @@ const ProblemDescriptor& problem_descriptor<ProblemId::H_p>() {
        "7, 8",
        "Eq. 15",
        {{Quantity::sigma_c, "−σ<sub>z</sub>(0, 0)/p", "-sigma_z(0,0)/p", "7", "contact"},
-        {Quantity::sigma_h, "−σ<sub>x</sub>(0, 0)/p", "-sigma_x(0,0)/p", "8", "horizontal"}}},
+        {Quantity::sigma_h, "−σ<sub>x</sub>(0, 0)/p", "-sigma_x(0,0)/p", "8", "horizontal"},
+        {Quantity::contact_half_width,
+         "a<sub>FE</sub>/a, halfway between the last node carrying pressure and the next", "a_FE/a",
+         "", ""}}},
       problems::study_parameters({}),
       problems::build_hertz};
   return d;

@@ -72,6 +72,8 @@ ProblemSetup build_hertz_plane(const CaseSpec& spec, const Parameters& params) {
   setup.quantities.push_back({schema::Quantity::sigma_h, SamplePoint::AtAxis,
                               StressComponent::SigmaX, -surface.sigma_x / contact.p_mean,
                               std::nullopt});
+  setup.quantities.push_back({schema::Quantity::contact_half_width, SamplePoint::ContactEdge,
+                              StressComponent::SigmaZ, 1.0, std::nullopt});
   return setup;
 }
 
@@ -110,6 +112,8 @@ ProblemSetup build_hertz_axi(const CaseSpec& spec, const Parameters& params) {
   setup.quantities.push_back(
       {schema::Quantity::sigma_c, SamplePoint::AtAxis, StressComponent::SigmaZ,
        oracles::hertz_axi_pressure(contact, 0.0) / contact.p_mean, std::nullopt});
+  setup.quantities.push_back({schema::Quantity::contact_half_width, SamplePoint::ContactEdge,
+                              StressComponent::SigmaZ, 1.0, std::nullopt});
   return setup;
 }
 

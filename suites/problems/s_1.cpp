@@ -18,7 +18,10 @@ const ProblemDescriptor& problem_descriptor<ProblemId::S_1>() {
        "10",
        "Eq. 31",
        {{Quantity::sigma_c, "max of −σ<sub>z</sub>/p on z = 0", "max -sigma_z/p on z = 0", "10",
-         "main"}}},
+         "main"},
+        {Quantity::contact_half_width,
+         "a<sub>FE</sub>/b, halfway between the last node carrying pressure and the next", "a_FE/b",
+         "", ""}}},
       problems::study_parameters(
           {{"re_over_b", 1.0, 0.0, 10.0, false, true,
             "edge radius r_e over the half-width b of the punch's flat face"}}),

@@ -86,6 +86,8 @@ ProblemSetup build_steuermann(const CaseSpec& spec, const Parameters& params) {
   };
   setup.quantities.push_back({schema::Quantity::sigma_c, SamplePoint::MaxOnSurface,
                               StressComponent::SigmaZ, exact.peak_over_p, study.peak_over_p});
+  setup.quantities.push_back({schema::Quantity::contact_half_width, SamplePoint::ContactEdge,
+                              StressComponent::SigmaZ, a / b, std::nullopt});
   return setup;
 }
 

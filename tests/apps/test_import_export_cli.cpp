@@ -39,8 +39,9 @@ TEST(ExportCli, WritesEveryFileOfEveryModel) {
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("wrote 16 cases on 4 models"), std::string::npos) << r.out;
   const std::string cases = read_text(out / "cases.csv");
-  // H_p grades sigma_c and sigma_h, P_p sigma_z_max: 8 cases x 2 + 8 x 1 rows + the header.
-  EXPECT_EQ(count_lines(cases), 8u * 2u + 8u * 1u + 1u) << cases;
+  // H_p grades sigma_c, sigma_h and contact_half_width, P_p sigma_z_max: 8 cases x 3 + 8 x 1
+  // rows + the header.
+  EXPECT_EQ(count_lines(cases), 8u * 3u + 8u * 1u + 1u) << cases;
   EXPECT_NE(cases.find("H_p/C/Q8/LMP/ns,models/H_p_C_Q8,H_p,C,Q8,LMP,ns,spr,,sigma_c,sigma_z,"
                        "at_axis,"),
             std::string::npos)

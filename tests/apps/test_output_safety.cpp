@@ -5,8 +5,16 @@
 
 #include <gtest/gtest.h>
 
+#include <fcntl.h>
+#include <signal.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
 #include <chrono>
+#include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <thread>
 
 #include "apps/cli_support.hpp"
@@ -64,6 +72,138 @@ TEST(OutputSafety, ASecondRunIntoABusyDirectoryIsRefusedAndTheFirstStaysWhole) {
   EXPECT_EQ(results.find("\"P_p\""), std::string::npos);
   EXPECT_NE(csv.find("H_p/C/Q4"), std::string::npos);
   EXPECT_EQ(csv.find("P_p/C/Q4"), std::string::npos);
+}
+
+extern "C" char** environ;
+
+/// A directory with a `gnuplot` that answers the terminal probe at once but, asked to draw,
+/// writes its pid to `marker` and waits 60 s before drawing with the real gnuplot: it holds
+/// the report phase open long enough to interrupt it there.
+fs::path slow_gnuplot_dir(const fs::path& root, const fs::path& marker) {
+  const fs::path dir = root / "slow-gnuplot";
+  fs::create_directories(dir);
+  std::ofstream(dir / "gnuplot") << "#!/bin/sh\n"
+                                    "if [ \"$1\" = -e ]; then exec /usr/bin/gnuplot \"$@\"; fi\n"
+                                    "echo $$ > '"
+                                 << marker.string()
+                                 << "'\n"
+                                    "sleep 60\n"
+                                    "exec /usr/bin/gnuplot \"$@\"\n";
+  fs::permissions(dir / "gnuplot", fs::perms::owner_all);
+  return dir;
+}
+
+/// Starts `contact-suite args...` in `dir` with PATH led by `path_head`; returns its pid.
+pid_t start(const fs::path& dir, const fs::path& path_head, std::vector<std::string> args) {
+  std::vector<std::string> argv{CONTACT_SUITE_EXE};
+  argv.insert(argv.end(), args.begin(), args.end());
+  std::vector<char*> c_argv;
+  for (auto& a : argv)
+    c_argv.push_back(a.data());
+  c_argv.push_back(nullptr);
+  std::vector<std::string> env{"PATH=" + path_head.string() + ":" + std::getenv("PATH")};
+  for (char** e = environ; *e != nullptr; ++e) {
+    if (std::string(*e).rfind("PATH=", 0) != 0)
+      env.emplace_back(*e);
+  }
+  std::vector<char*> c_env;
+  for (auto& e : env)
+    c_env.push_back(e.data());
+  c_env.push_back(nullptr);
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addchdir_np(&actions, dir.c_str());
+  posix_spawn_file_actions_addopen(&actions, 1, "/dev/null", O_WRONLY, 0);
+  posix_spawn_file_actions_addopen(&actions, 2, "/dev/null", O_WRONLY, 0);
+  pid_t pid = -1;
+  const int rc = posix_spawn(&pid, c_argv[0], &actions, nullptr, c_argv.data(), c_env.data());
+  posix_spawn_file_actions_destroy(&actions);
+  EXPECT_EQ(rc, 0);
+  return pid;
+}
+
+bool wait_for_file(const fs::path& file, int seconds) {
+  for (int i = 0; i < seconds * 100 && !fs::exists(file); ++i)
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  return fs::exists(file);
+}
+
+struct OutputSet {
+  std::string results, csv, report;
+  static OutputSet of(const fs::path& d) {
+    return {read_text(d / "results.json"), read_text(d / "results.csv"),
+            read_text(d / "report.md")};
+  }
+  bool operator==(const OutputSet&) const = default;
+};
+
+/// Runs P_p C Q4 AL ss into D normally (the old set), then starts an H_p run into D whose
+/// report phase the slow gnuplot holds open; returns its pid once it is there.
+pid_t run_into_report_phase(const fs::path& root, const fs::path& marker) {
+  const auto first =
+      run_args(root, {"run", "--problems", "P_p", "--meshes", "C", "--elements", "Q4",
+                      "--algorithms", "AL", "--contacts", "ss", "--out", "D", "--jobs", "1"});
+  EXPECT_EQ(first.exit_code, 0) << first.describe();
+  const pid_t pid = start(root, slow_gnuplot_dir(root, marker),
+                          {"run", "--problems", "H_p", "--meshes", "C", "--elements", "Q4",
+                           "--algorithms", "AL", "--contacts", "ss", "--out", "D", "--jobs", "1"});
+  EXPECT_TRUE(wait_for_file(marker, 120)) << "the report phase never started";
+  return pid;
+}
+
+bool alive(pid_t pid) {
+  return kill(pid, 0) == 0;
+}
+
+// Requirement (issue 16, item 3): SIGKILL while gnuplot draws leaves the previous run's
+// complete set (results.json, results.csv and report.md describe the same run), and the next
+// run removes the staging directory the killed one left.
+TEST(OutputSafety, SigkillDuringTheReportPhaseLeavesTheOldSetWhole) {
+  TempDir tmp;
+  const fs::path marker = tmp.path() / "gnuplot.pid";
+  const pid_t pid = run_into_report_phase(tmp.path(), marker);
+  const OutputSet before = OutputSet::of(tmp.path() / "D");  // not yet replaced
+  ASSERT_EQ(kill(pid, SIGKILL), 0);
+  int status = 0;
+  ASSERT_EQ(waitpid(pid, &status, 0), pid);
+  EXPECT_TRUE(WIFSIGNALED(status));
+  const OutputSet after = OutputSet::of(tmp.path() / "D");
+  EXPECT_EQ(after, before);
+  EXPECT_NE(after.results.find("\"P_p\""), std::string::npos);
+  EXPECT_EQ(after.results.find("\"H_p\""), std::string::npos);
+  EXPECT_EQ(after.csv.find("H_p/C/Q4"), std::string::npos);
+  // The orphaned stand-in would draw into the abandoned staging directory: stop it here.
+  const pid_t gnuplot = std::stoi(read_text(marker));
+  kill(gnuplot, SIGKILL);
+  const auto next =
+      run_args(tmp.path(), {"run", "--problems", "P_p", "--meshes", "C", "--elements", "Q4",
+                            "--algorithms", "AL", "--contacts", "ss", "--out", "D", "--jobs", "1"});
+  EXPECT_EQ(next.exit_code, 0) << next.describe();
+  for (const auto& e : fs::directory_iterator(tmp.path())) {
+    EXPECT_EQ(e.path().filename().string().find("staging"), std::string::npos) << e.path();
+  }
+}
+
+// Requirement (issue 16, item 3): Ctrl-C while gnuplot draws stops gnuplot with us, exits
+// 128 + SIGINT and leaves the previous set whole, with no staging directory left.
+TEST(OutputSafety, SigintDuringTheReportPhaseStopsGnuplotAndKeepsTheOldSet) {
+  TempDir tmp;
+  const fs::path marker = tmp.path() / "gnuplot.pid";
+  const pid_t pid = run_into_report_phase(tmp.path(), marker);
+  const OutputSet before = OutputSet::of(tmp.path() / "D");
+  const pid_t gnuplot = std::stoi(read_text(marker));
+  ASSERT_EQ(kill(pid, SIGINT), 0);
+  int status = 0;
+  ASSERT_EQ(waitpid(pid, &status, 0), pid);
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 128 + SIGINT);
+  EXPECT_EQ(OutputSet::of(tmp.path() / "D"), before);
+  for (int i = 0; i < 500 && alive(gnuplot); ++i)
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  EXPECT_FALSE(alive(gnuplot)) << "gnuplot outlived the interrupted run";
+  for (const auto& e : fs::directory_iterator(tmp.path())) {
+    EXPECT_EQ(e.path().filename().string().find("staging"), std::string::npos) << e.path();
+  }
 }
 
 }  // namespace

@@ -22,7 +22,9 @@ TEST(GradeTables, OurGradeBesideTheStudysTable2aGrade) {
   EXPECT_EQ(table->cell("P<sub>p</sub>", "AL = PM (ss)"), "e, c │ ANSYS e, c");
   EXPECT_EQ(table->cell("H<sub>p</sub> (contact)", "AL (ns)"), "g, c │ ANSYS u");
   EXPECT_EQ(table->cell("H<sub>p</sub> (horizontal)", "AL (ns)"), "s │ ANSYS u");
-  EXPECT_EQ(table->cell("S(1/3)", "AL = PM (ss)"), "u, c │ ANSYS u, c");
+  // The study graded S(1/3) against its printed 10.9571; ANSYS's F value 9.5320 re-graded
+  // against the physical 11.2424 (−15.2 %) is still u.
+  EXPECT_EQ(table->cell("S(1/3)", "AL = PM (ss)"), "u, c │ ANSYS u, c (phys. u)");
   // LMP ss on P_p: excellent but not converging, as the study's LMP, PLM "e".
   EXPECT_EQ(table->cell("P<sub>p</sub>", "LMP = PLM (ss)"), "e │ ANSYS e");
   // MPC's fine mesh did not converge: marked "!"; the study's IMC column is "u".

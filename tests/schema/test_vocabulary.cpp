@@ -40,7 +40,7 @@ TEST(SchemaVocabulary, EveryAxisRoundTrips) {
   expect_round_trip<TargetKind>(2);
   expect_round_trip<Recovery>(2);
   expect_round_trip<SolverKind>(3);
-  expect_round_trip<Quantity>(6);
+  expect_round_trip<Quantity>(7);
   expect_round_trip<Grade>(4);
   expect_round_trip<CaseStatus>(4);
 }

@@ -20,7 +20,8 @@ TEST(Parameters, DefaultsAreTheStudysValues) {
 }
 
 TEST(Parameters, OverridesReplaceDefaults) {
-  const Parameters p(problem_descriptor(ProblemId::S_1_3).parameters, {{"re_over_b", 0.25}}, "S_1_3");
+  const Parameters p(problem_descriptor(ProblemId::S_1_3).parameters, {{"re_over_b", 0.25}},
+                     "S_1_3");
   EXPECT_EQ(p.get("re_over_b"), 0.25);
   EXPECT_TRUE(p.overridden("re_over_b"));
 }
@@ -43,6 +44,15 @@ TEST(Parameters, OutOfRangeValuesAreRejected) {
   EXPECT_THROW(Parameters(params, {{"fkn", 0.0}}, "H_p"), SuiteInputError);  // fkn > 0
   EXPECT_THROW(Parameters(params, {{"p_over_E", 0.0}}, "H_p"), SuiteInputError);
   EXPECT_NO_THROW(Parameters(params, {{"nu", 0.0}}, "H_p"));
+  // The ranges the numerics deliver (suites/parameters.cpp): their edges are accepted, beyond
+  // is refused.
+  EXPECT_NO_THROW(Parameters(params, {{"fkn", 1e4}, {"p_over_E", 1e-12}}, "H_p"));
+  EXPECT_NO_THROW(Parameters(params, {{"fkn", 1e-6}, {"ftoln", 1.0}, {"pinball", 1e3}}, "H_p"));
+  EXPECT_THROW(Parameters(params, {{"fkn", 1.0001e4}}, "H_p"), SuiteInputError);
+  EXPECT_THROW(Parameters(params, {{"fkn", 1e300}}, "H_p"), SuiteInputError);
+  EXPECT_THROW(Parameters(params, {{"p_over_E", 1e-22}}, "H_p"), SuiteInputError);
+  EXPECT_THROW(Parameters(params, {{"ftoln", 1.5}}, "H_p"), SuiteInputError);
+  EXPECT_THROW(Parameters(params, {{"pinball", 1e4}}, "H_p"), SuiteInputError);
   EXPECT_THROW(Parameters(params, {}, "H_p").get("undeclared"), std::logic_error);
 }
 

@@ -1,8 +1,11 @@
 // The engine with a fake executor: order, sharing of a model within a group, failures kept
 // as results, the same results with one or two workers.
 
+#include <algorithm>
 #include <atomic>
+#include <chrono>
 #include <stdexcept>
+#include <thread>
 
 #include <gtest/gtest.h>
 
@@ -119,6 +122,54 @@ TEST(Runner, OneAndTwoWorkersGiveTheSameResults) {
     if (!a[i].quantities.empty()) {
       EXPECT_EQ(a[i].quantities[0].value, b[i].quantities[0].value);
     }
+  }
+}
+
+/// Counts how many "big" groups (mesh M) run at once; each case takes a few milliseconds so
+/// that groups overlap when the schedule lets them.
+class OverlapExecutor : public GroupExecutor {
+ public:
+  OverlapExecutor(const CaseSpec& representative, std::atomic<int>& running, std::atomic<int>& most)
+      : big_(representative.mesh == MeshLevel::M), running_(running), most_(most) {
+    if (big_)
+      most_ = std::max(most_.load(), ++running_);
+  }
+  ~OverlapExecutor() override {
+    if (big_)
+      --running_;
+  }
+  CaseResult run(const CaseSpec&) override {
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    CaseResult r;
+    r.status = CaseStatus::converged;
+    return r;
+  }
+
+ private:
+  bool big_;
+  std::atomic<int>& running_;
+  std::atomic<int>& most_;
+};
+
+// Requirement (issue 12): a memory-aware schedule never runs the two largest models at once,
+// yet runs small ones beside a large one; without a budget the large ones do overlap.
+TEST(Runner, MemoryBudgetKeepsTheLargestModelsApart) {
+  const auto cases = small_matrix();  // 8 models: 4 on M (memory 10), 4 on C (memory 1)
+  auto memory = [](const CaseSpec& s) { return s.mesh == MeshLevel::M ? 10.0 : 1.0; };
+  for (const double budget : {15.0, 0.0}) {
+    std::atomic<int> running{0}, most{0};
+    RunnerOptions options;
+    options.jobs = 2;
+    options.group_cost = memory;
+    options.group_memory = memory;
+    options.memory_budget = budget;
+    const auto results = run_cases(
+        cases,
+        [&](const CaseSpec& s) { return std::make_unique<OverlapExecutor>(s, running, most); },
+        options);
+    for (const auto& r : results)
+      EXPECT_EQ(r.status, CaseStatus::converged);
+    EXPECT_EQ(most.load(), budget > 0 ? 1 : 2) << "budget " << budget;
   }
 }
 
