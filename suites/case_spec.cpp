@@ -70,4 +70,21 @@ void require_no_empty_items(const std::vector<std::string>& items, std::string_v
   }
 }
 
+std::vector<std::string> split_list_option(const std::vector<std::string>& raw,
+                                           std::string_view option) {
+  std::vector<std::string> items;
+  for (const auto& text : raw) {
+    std::size_t start = 0;
+    while (true) {
+      const auto comma = text.find(',', start);
+      items.push_back(text.substr(start, comma == std::string::npos ? comma : comma - start));
+      if (comma == std::string::npos)
+        break;
+      start = comma + 1;
+    }
+  }
+  require_no_empty_items(items, option);
+  return items;
+}
+
 }  // namespace cs::suites

@@ -49,4 +49,10 @@ std::map<std::string, double> parse_overrides(const std::vector<std::string>& te
 /// Throws SuiteInputError if a comma-separated option list (`--problems`, ...) has an empty item.
 void require_no_empty_items(const std::vector<std::string>& items, std::string_view option);
 
+/// The items of a comma-separated list option given once or more (`--problems H_p,S_1
+/// --problems P_p`), in order; split here rather than by CLI11, which drops empty items:
+/// "H_p,,S_1" throws SuiteInputError (require_no_empty_items), it is not read as "H_p,S_1".
+std::vector<std::string> split_list_option(const std::vector<std::string>& raw,
+                                           std::string_view option);
+
 }  // namespace cs::suites
