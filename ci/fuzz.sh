@@ -7,7 +7,8 @@
 # grew and the crashes (any crash, sanitizer report, leak, timeout or out-of-memory), and exits 1
 # if there is one; the input that caused it is kept in build-fuzz/work/<target>/findings/.
 #   bash ci/fuzz.sh [SECONDS_PER_TARGET] [TARGET...]   (default: every target in fuzz/)
-# A finding reproduces with: build-fuzz/fuzz/<target> <input>
+# A finding reproduces with: build-fuzz/fuzz/<target> <input>. One instance at a time: the
+# targets run one after the other (each is single-threaded).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds=${1:-600}
@@ -54,8 +55,7 @@ for t in "${targets[@]}"; do
   if [ "$status" -ne 0 ] || [ "$crashes" -ne 0 ]; then
     failed=1
     echo "ci/fuzz.sh: $t FAILED (exit $status):"
-    grep -E 'ERROR: |runtime error|^SUMMARY|Test unit written' "$work/fuzz.log" | head -8 ||
-      tail -20 "$work/fuzz.log"
+    grep -E 'ERROR: |runtime error|^SUMMARY|Test unit written' "$work/fuzz.log" | head -8
   fi
   summary+=("$(printf '%-14s %6s s  %12s executions  corpus %5s files %9s bytes  %s crashes' \
     "$t" "$seconds" "${execs:-?}" "$files" "$bytes" "$crashes")")
