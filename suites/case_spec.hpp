@@ -38,8 +38,9 @@ constexpr ElementType to_solver(Element e) {
 /// ss and ns: the study's discretizations (mortar is a further option).
 const std::vector<ContactKind>& study_contacts();
 
-/// Parses one `--set name=value` argument; throws SuiteInputError on a malformed one (no '=',
-/// an empty name, a value that is not a finite double or under/overflows it).
+/// Parses one `--set name=value` argument, the value a number or a ratio of two (1/3); -0 is
+/// read as 0. Throws SuiteInputError on a malformed one (no '=', an empty name, a value that is
+/// not a finite double or under/overflows it, a ratio that does).
 std::pair<std::string, double> parse_override(std::string_view text);
 
 /// Parses every `--set` argument into one map; a key given twice is an error (the first value
