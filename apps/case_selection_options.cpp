@@ -9,20 +9,8 @@ namespace {
 /// which drops empty items: "H_p,,S_1" is refused, not read as "H_p,S_1".
 template <class E>
 std::vector<E> parse_all(const std::vector<std::string>& raw, const char* option) {
-  std::vector<std::string> names;
-  for (const auto& text : raw) {
-    std::size_t start = 0;
-    while (true) {
-      const auto comma = text.find(',', start);
-      names.push_back(text.substr(start, comma == std::string::npos ? comma : comma - start));
-      if (comma == std::string::npos)
-        break;
-      start = comma + 1;
-    }
-  }
-  suites::require_no_empty_items(names, option);
   std::vector<E> out;
-  for (const auto& n : names)
+  for (const auto& n : suites::split_list_option(raw, option))
     out.push_back(schema::parse<E>(n));
   return out;
 }

@@ -113,6 +113,10 @@ Baseline baseline_from_json(const json& doc, const std::string& source) {
   return b;
 }
 
+Baseline parse_baseline_text(std::string_view text, const std::string& source) {
+  return baseline_from_json(parse_json_text(text, "baseline", source), source);
+}
+
 Baseline read_baseline_file(const std::filesystem::path& path) {
   return baseline_from_json(read_json_file(path, "baseline"), path.string());
 }

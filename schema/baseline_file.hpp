@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <map>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -43,6 +44,11 @@ Baseline baseline_from_json(const nlohmann::json& doc, const std::string& source
 /// older baseline). Throws SchemaError as above.
 GateTolerances tolerances_from_json(const nlohmann::json& doc, const std::string& source);
 
+/// Parses and validates the text of a baseline file read from `source` (see
+/// baseline_from_json; text that is not JSON or is truncated is a SchemaError too).
+Baseline parse_baseline_text(std::string_view text, const std::string& source);
+/// Reads a baseline file (as parse_baseline_text; a missing or unreadable file is a
+/// SchemaError too).
 Baseline read_baseline_file(const std::filesystem::path& path);
 void write_baseline_file(const std::filesystem::path& path, const Baseline& baseline);
 

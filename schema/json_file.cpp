@@ -11,6 +11,16 @@
 
 namespace cs::schema {
 
+nlohmann::json parse_json_text(std::string_view text, const std::string& what,
+                               const std::string& source) {
+  try {
+    return nlohmann::json::parse(text);
+  } catch (const nlohmann::json::exception& e) {
+    throw SchemaError(
+        fmt::format("{} file '{}' is not valid JSON (truncated?): {}", what, source, e.what()));
+  }
+}
+
 nlohmann::json read_json_file(const std::filesystem::path& path, const std::string& what) {
   std::error_code ec;
   if (!std::filesystem::exists(path, ec))
@@ -22,12 +32,7 @@ nlohmann::json read_json_file(const std::filesystem::path& path, const std::stri
     throw SchemaError(fmt::format("{} file '{}' cannot be read", what, path.string()));
   std::stringstream text;
   text << in.rdbuf();
-  try {
-    return nlohmann::json::parse(text.str());
-  } catch (const nlohmann::json::exception& e) {
-    throw SchemaError(fmt::format("{} file '{}' is not valid JSON (truncated?): {}", what,
-                                  path.string(), e.what()));
-  }
+  return parse_json_text(text.str(), what, path.string());
 }
 
 void write_json_file_atomically(const std::filesystem::path& path, const nlohmann::json& doc) {

@@ -425,6 +425,10 @@ ResultsDocument results_from_json(const json& j, const std::string& source) {
   return doc;
 }
 
+ResultsDocument parse_results_text(std::string_view text, const std::string& source) {
+  return results_from_json(parse_json_text(text, "results", source), source);
+}
+
 ResultsDocument read_results_file(const std::filesystem::path& path) {
   return results_from_json(read_json_file(path, "results"), path.string());
 }

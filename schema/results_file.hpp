@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -67,8 +68,12 @@ RowVerdict row_from_json(const nlohmann::json& j, const std::string& path);
 /// one-line message that starts with `source`.
 ResultsDocument results_from_json(const nlohmann::json& doc, const std::string& source);
 
-/// Reads and validates a results file (see results_from_json; a missing, unreadable,
-/// non-JSON or truncated file is a SchemaError too).
+/// Parses and validates the text of a results file read from `source` (see results_from_json;
+/// text that is not JSON or is truncated is a SchemaError too).
+ResultsDocument parse_results_text(std::string_view text, const std::string& source);
+
+/// Reads and validates a results file (as parse_results_text; a missing or unreadable file is
+/// a SchemaError too).
 ResultsDocument read_results_file(const std::filesystem::path& path);
 
 /// Writes a results file atomically (see write_json_file_atomically).

@@ -43,14 +43,18 @@ std::pair<std::string, double> parse_override(std::string_view text) {
   const std::string value_text(text.substr(eq + 1));
   // A value is a number or a ratio of two numbers (re_over_b=1/3).
   const auto slash = value_text.find('/');
-  const double value = slash == std::string::npos
-                           ? parse_number(name, value_text)
-                           : parse_number(name, value_text.substr(0, slash)) /
-                                 parse_number(name, value_text.substr(slash + 1));
+  if (slash == std::string::npos)
+    return {name, parse_number(name, value_text)};
+  const double numerator = parse_number(name, value_text.substr(0, slash));
+  const double value = numerator / parse_number(name, value_text.substr(slash + 1));
   if (!std::isfinite(value)) {
     throw SuiteInputError(fmt::format("--set {}: '{}' is not a finite number", name, value_text));
   }
-  return {name, value};
+  if (value == 0.0 && numerator != 0.0) {
+    throw SuiteInputError(fmt::format(
+        "--set {}: '{}' is out of the range of a double (it would read as 0)", name, value_text));
+  }
+  return {name, value == 0.0 ? 0.0 : value};  // 0/-4 is 0, as -0 is: one case id
 }
 
 std::map<std::string, double> parse_overrides(const std::vector<std::string>& texts) {
@@ -79,6 +83,23 @@ void require_no_empty_items(const std::vector<std::string>& items, std::string_v
     if (item.empty())
       throw SuiteInputError(fmt::format("{}: empty item in the list (two commas?)", option));
   }
+}
+
+std::vector<std::string> split_list_option(const std::vector<std::string>& raw,
+                                           std::string_view option) {
+  std::vector<std::string> items;
+  for (const auto& text : raw) {
+    std::size_t start = 0;
+    while (true) {
+      const auto comma = text.find(',', start);
+      items.push_back(text.substr(start, comma == std::string::npos ? comma : comma - start));
+      if (comma == std::string::npos)
+        break;
+      start = comma + 1;
+    }
+  }
+  require_no_empty_items(items, option);
+  return items;
 }
 
 }  // namespace cs::suites

@@ -38,8 +38,9 @@ constexpr ElementType to_solver(Element e) {
 /// ss and ns: the study's discretizations (mortar is a further option).
 const std::vector<ContactKind>& study_contacts();
 
-/// Parses one `--set name=value` argument; throws SuiteInputError on a malformed one (no '=',
-/// an empty name, a value that is not a finite double or under/overflows it).
+/// Parses one `--set name=value` argument, the value a number or a ratio of two (1/3); -0 is
+/// read as 0. Throws SuiteInputError on a malformed one (no '=', an empty name, a value that is
+/// not a finite double or under/overflows it, a ratio that does).
 std::pair<std::string, double> parse_override(std::string_view text);
 
 /// Parses every `--set` argument into one map; a key given twice is an error (the first value
@@ -52,5 +53,11 @@ std::string plain_file_name(std::string_view text);
 
 /// Throws SuiteInputError if a comma-separated option list (`--problems`, ...) has an empty item.
 void require_no_empty_items(const std::vector<std::string>& items, std::string_view option);
+
+/// The items of a comma-separated list option given once or more (`--problems H_p,S_1
+/// --problems P_p`), in order; split here rather than by CLI11, which drops empty items:
+/// "H_p,,S_1" throws SuiteInputError (require_no_empty_items), it is not read as "H_p,S_1".
+std::vector<std::string> split_list_option(const std::vector<std::string>& raw,
+                                           std::string_view option);
 
 }  // namespace cs::suites

@@ -2,6 +2,7 @@
 
 #include <array>
 #include <charconv>
+#include <limits>
 #include <sstream>
 #include <vector>
 
@@ -48,6 +49,11 @@ bool to_int(std::string_view s, int& v) {
   return ec == std::errc() && end == s.data() + s.size();
 }
 
+/// A count of a .sta row (step, increment, attempt: from 1; iterations: from 0).
+bool to_count(std::string_view s, int min, int& v) {
+  return to_int(s, v) && v >= min;
+}
+
 bool mentions_non_convergence(std::string_view message) {
   for (std::string_view pattern : kNonConvergence) {
     if (message.find(pattern) != std::string_view::npos)
@@ -86,15 +92,17 @@ StaSummary parse_sta(std::string_view text) {
     std::istringstream words{std::string(line)};
     std::string step, inc, att, itrs;
     int s = 0, i = 0, n = 0;
-    if (!(words >> step >> inc >> att >> itrs) || !to_int(step, s) || !to_int(inc, i) ||
-        !to_int(itrs, n) || att.empty())
+    if (!(words >> step >> inc >> att >> itrs) || !to_count(step, 1, s) || !to_count(inc, 1, i) ||
+        !to_count(itrs, 0, n) || att.empty())
       continue;
     const bool unconverged = att.back() == 'U';
     int a = 0;
-    if (!to_int(unconverged ? std::string_view(att).substr(0, att.size() - 1) : att, a))
+    if (!to_count(unconverged ? std::string_view(att).substr(0, att.size() - 1) : att, 1, a))
       continue;
     ++sta.attempts;
-    sta.iterations += n;
+    sta.iterations = n > std::numeric_limits<int>::max() - sta.iterations
+                         ? std::numeric_limits<int>::max()
+                         : sta.iterations + n;
     if (!unconverged)
       ++sta.increments;
   }

@@ -32,7 +32,9 @@ struct StaSummary {
   int iterations = 0;  ///< Newton iterations of all attempts
 };
 
-/// Parses the rows of a .sta file; lines that are not rows are ignored.
+/// Parses the rows of a .sta file; lines that are not rows are ignored, and so is a row with a
+/// count out of range (step, increment or attempt below 1, iterations below 0). The iterations
+/// saturate at INT_MAX.
 StaSummary parse_sta(std::string_view text);
 
 /// ccx's first "*ERROR ..." message with its continuation lines joined into one line, runs of

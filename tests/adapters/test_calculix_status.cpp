@@ -106,6 +106,27 @@ TEST(CalculixStatus, StaRowsGiveIncrementsAndIterations) {
   EXPECT_EQ(parse_sta("garbage\n1 2\n\xff\n").attempts, 0);
 }
 
+// Found by fuzz/sta_reader: a row with a negative count was counted, and the iterations went
+// negative (the second line is the one of the fuzzer's input that did it). Seen while fixing it:
+// iterations near INT_MAX overflowed the sum (undefined behaviour).
+TEST(CalculixStatus, StaRowsWithCountsOutOfRangeAreNotRows) {
+  const StaSummary negative = parse_sta(
+      "     1          1     3U    7  0.0E+00\n"
+      "     1   -03     1   -03       1 ---\n"
+      "     1   -03          1     1  0.0E+00\n"
+      "     1          1     1    -5  0.0E+00\n"
+      "     0          1     1     5  0.0E+00\n"
+      "     1          1    -1U    5  0.0E+00\n");
+  EXPECT_EQ(negative.attempts, 1);
+  EXPECT_EQ(negative.increments, 0);
+  EXPECT_EQ(negative.iterations, 7);
+  const StaSummary huge = parse_sta(
+      "     1          1     1  2147483647  1.0\n"
+      "     1          2     1  2147483647  1.0\n");
+  EXPECT_EQ(huge.attempts, 2);
+  EXPECT_EQ(huge.iterations, 2147483647);
+}
+
 TEST(CalculixStatus, Names) {
   EXPECT_STREQ(to_string(CalculixStatus::Converged), "converged");
   EXPECT_STREQ(to_string(CalculixStatus::NotConverged), "not converged");
