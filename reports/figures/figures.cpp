@@ -456,7 +456,7 @@ std::optional<std::pair<double, double>> exact_peak(const std::vector<Panel>& pa
 
 /// The Steuermann peak sits in a narrow band near the contact edge, too small to judge at the
 /// scale of the whole profile: a panel of the fine-mesh curves of every option set around the
-/// exact peak (x within 0.15 of it, y from 80 % to 110 % of it).
+/// exact peak (x within 0.03 of it, y from 80 % to 110 % of it).
 std::optional<Panel> peak_zoom_panel(const std::vector<Panel>& panels) {
   const auto peak = exact_peak(panels);
   if (!peak || !(peak->second > 0))
@@ -467,7 +467,7 @@ std::optional<Panel> peak_zoom_panel(const std::vector<Panel>& panels) {
              "x / b",
              "-sigma_z / p",
              false,
-             std::pair(peak->first - 0.15, peak->first + 0.15),
+             std::pair(peak->first - 0.03, peak->first + 0.03),
              {},
              std::pair(0.8 * peak->second, 1.1 * peak->second)};
   std::size_t k = 0;

@@ -156,6 +156,10 @@ std::vector<OptionAssessment> assess_situation(const ResultsIndex& index, const 
         if (p == nullptr)
           continue;
         for (const auto& q : p->quantities) {
+          // The stresses an analyst checks against strength; the contact half-width is graded
+          // apart (its error is bounded by the mesh, half an element).
+          if (q.quantity == schema::Quantity::contact_half_width)
+            continue;
           if (const schema::RowVerdict* row = index.row(id, q.quantity, element, option))
             add_row(index, *row, s.singular, a);
         }

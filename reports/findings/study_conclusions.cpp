@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include "reports/tables/beyond_study_section.hpp"
 #include "reports/tables/markdown_table.hpp"
 
 namespace cs::reports {
@@ -26,6 +27,8 @@ std::vector<const RowVerdict*> study_rows(const ResultsIndex& index, Algorithm a
     if (p->study_tables.empty() || p->singular != singular)
       continue;
     for (const auto& q : p->quantities) {
+      if (q.study_row.empty())
+        continue;  // not a row of the study's Table 2 (e.g. the contact half-width)
       if (const RowVerdict* r = index.row(p->id, q.quantity, element, {algorithm, contact}))
         out.push_back(r);
     }
@@ -169,7 +172,7 @@ std::optional<ConclusionCheck> check_lm(const ResultsIndex& index) {
           index.row(id, p->quantities.front().quantity, Element::Q4, {Algorithm::LMP, contact});
       if (r != nullptr && r->errors[0])
         e1.push_back(fmt::format("{} LMP {} C {}", schema::label(id), schema::to_string(contact),
-                                 format_percent(*r->errors[0])));
+                                 format_error_resolved(*r->errors[0])));
     }
   }
   if (!e1.empty()) {
