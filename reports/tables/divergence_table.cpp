@@ -52,7 +52,9 @@ std::string strict_failure_reason(const std::array<std::optional<double>, 3>& v,
   }
   if (!d.monotone) {
     const bool shrinking = std::abs(*v[2]) < std::abs(*v[1]) && std::abs(*v[1]) < std::abs(*v[0]);
-    return shrinking ? "shrinking" : "not monotone";
+    // -sigma_z/p below 0 on every mesh: the "compressive" edge stress is a tension.
+    const bool tensile = *v[0] < 0 && *v[1] < 0 && *v[2] < 0;
+    return std::string(tensile ? "tensile, " : "") + (shrinking ? "shrinking" : "not monotone");
   }
   return fmt::format("grows at α {} per halving of h, outside [{}, {}]",
                      format_exponent(*d.exponent), schema::kDivergenceExponentMin,

@@ -131,13 +131,15 @@ std::string interface_section(const ResultsIndex& index) {
   std::size_t n_failing = 0;
   const std::string failing = failing_table(index, n_failing);
   std::string out =
-      "## Interface checks\n\n"
-      "Beside the graded peak, every case's contact interface is checked as a reviewer would "
-      "check any contact solution: the contact forces must carry the whole applied load; a "
-      "frictionless contact cannot pull; the pressure must vanish beyond the exact contact "
-      "patch (allowing one element for the discrete edge); and penetration must stay below the "
-      "study's default tolerance FTOLN = 0.1 of the element size. Values per case are in "
-      "results.json (`interface`).\n\n" +
+      fmt::format(
+          "## Interface checks\n\n"
+          "Beside the graded peak, every case's contact interface is checked as a reviewer "
+          "would check any contact solution: the contact forces must carry the whole applied "
+          "load; a frictionless contact cannot pull; the pressure must vanish beyond the exact "
+          "contact patch (allowing one element for the discrete edge); and penetration must "
+          "stay below {:g} of the element size (the study's default FTOLN). Values per case are "
+          "in results.json (`interface`).\n\n",
+          schema::kPenetrationTolerance) +
       summary_table(index) + "\n";
   if (n_failing == 0)
     return out + "No option set fails a check.\n\n";

@@ -2,6 +2,9 @@
 // conclusions checked, Table 1′, and the problems beyond the study. Each is checked against the
 // hand-made results file, whose errors are known (data/make_small_results.py).
 
+#include <array>
+#include <cmath>
+
 #include <gtest/gtest.h>
 
 #include "report_test_support.hpp"
@@ -9,6 +12,7 @@
 #include "reports/findings/recommendation_section.hpp"
 #include "reports/findings/study_conclusions.hpp"
 #include "reports/tables/beyond_study_section.hpp"
+#include "reports/tables/divergence_table.hpp"
 #include "reports/tables/markdown_table.hpp"
 #include "reports/tables/mesh_table.hpp"
 
@@ -148,6 +152,29 @@ TEST(Anomalies, ExplainsCrossingsAndAlEqualsPm) {
   EXPECT_NE(md.find("**Fine-mesh grades after errors above 100 %.** 1 row(s)"), std::string::npos)
       << md;
   EXPECT_NE(md.find("**AL = PM.** AL and PM coincide on 2 of the 4 rows"), std::string::npos) << md;
+}
+
+// Requirement (issue 12, item 3): the issue's three flat-punch sequences pass Eq. 47 but do not
+// diverge by the strict verdict, each for its stated reason; a growth of sqrt(2) per halving
+// (the square-root singularity) diverges.
+TEST(StrictDivergence, TheIssuesSequencesDoNotDiverge) {
+  struct Case {
+    std::array<double, 3> v;
+    const char* reason;
+  };
+  for (const Case& c :
+       {Case{{-11.97, -12.02, -10.71}, "tensile, not monotone"},
+        Case{{73.55, 73.30, 72.94}, "shrinking"}, Case{{3.156, 2.690, 3.164}, "not monotone"}}) {
+    const auto d = schema::divergence_verdict(c.v[0], c.v[1], c.v[2]);
+    EXPECT_TRUE(d.eq47) << c.reason;
+    EXPECT_FALSE(d.diverges) << c.reason;
+    EXPECT_EQ(strict_failure_reason({c.v[0], c.v[1], c.v[2]}, d), c.reason);
+  }
+  const double s = 1.5;
+  const auto sqrt_growth = schema::divergence_verdict(s, s * std::sqrt(2.0), 2.0 * s);
+  EXPECT_TRUE(sqrt_growth.diverges);
+  EXPECT_NEAR(*sqrt_growth.exponent, 0.5, 1e-12);
+  EXPECT_EQ(strict_failure_reason({s, s * std::sqrt(2.0), 2.0 * s}, sqrt_growth), "");
 }
 
 }  // namespace
