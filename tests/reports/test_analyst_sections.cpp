@@ -151,6 +151,7 @@ TEST(Anomalies, ExplainsCrossingsAndAlEqualsPm) {
   const std::string md = anomalies_section(data.index);
   EXPECT_NE(md.find("**Fine-mesh grades after errors above 100 %.** 1 row(s)"), std::string::npos)
       << md;
+  EXPECT_NE(md.find("0 of them converge by the study's rule"), std::string::npos) << md;
   EXPECT_NE(md.find("**AL = PM.** AL and PM coincide on 2 of the 4 rows"), std::string::npos) << md;
 }
 

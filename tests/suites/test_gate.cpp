@@ -103,7 +103,8 @@ TEST(Gate, LostDivergenceFails) {
   };
   const std::vector<CaseResult> diverging{punch(MeshLevel::C, 2.0), punch(MeshLevel::M, 2.4),
                                           punch(MeshLevel::F, 3.0)};
-  Baseline b = make_baseline(diverging, {schema::kDefaultGateTolerance, {{Quantity::sigma_c_star, 1.0}}});
+  Baseline b =
+      make_baseline(diverging, {schema::kDefaultGateTolerance, {{Quantity::sigma_c_star, 1.0}}});
   auto now = diverging;
   now[2].quantities[0].value = 2.5;  // increments shrink: no longer diverging
   EXPECT_TRUE(has_failure(run_gate(b, now), "F_p/Q4/AL/ss/sigma_c_star", "diverging"));

@@ -75,8 +75,8 @@ TEST(StudyMeshes, StructuredCountsEqualTable1AndElementsAreValid) {
     for (MeshLevel level : values<MeshLevel>()) {
       for (ElementType element : {ElementType::Q4, ElementType::Q8}) {
         const StudyMesh m = build_study_mesh(spec_for(p, level, element));
-        const std::string what =
-            fmt::format("{} {} {}", to_string(p), to_string(level), element == ElementType::Q8 ? "Q8" : "Q4");
+        const std::string what = fmt::format("{} {} {}", to_string(p), to_string(level),
+                                             element == ElementType::Q8 ? "Q8" : "Q4");
         EXPECT_EQ(m.info.n_block_elements, table1_elements(p, level)) << what;
         EXPECT_EQ(m.info.table1_block_elements, table1_elements(p, level)) << what;
         const int block =
