@@ -62,7 +62,8 @@ int run_grade(const GradeArgs& args) {
                                     .run = info,
                                     .problems = suites::problem_records(results),
                                     .cases = results,
-                                    .rows = suites::make_row_verdicts(results)};
+                                    .rows = suites::make_row_verdicts(results),
+                                    .added_runs = {}};
   const auto figures = write_run_output(doc, output, !args.no_report);
   if (!figures) {
     report_interrupted_write(args.out);

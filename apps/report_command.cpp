@@ -9,13 +9,14 @@
 
 #include "platform/output_transaction.hpp"
 #include "reports/report_writer.hpp"
+#include "schema/combined_results.hpp"
 #include "schema/results_file.hpp"
 
 namespace cs::apps {
 namespace {
 
 struct ReportArgs {
-  std::string results;
+  std::vector<std::string> results;
   std::string out_dir;
   std::string baseline;
   std::string study_data;
@@ -24,7 +25,10 @@ struct ReportArgs {
 };
 
 void run_report(const ReportArgs& args) {
-  const schema::ResultsDocument results = schema::read_results_file(args.results);
+  std::vector<schema::ResultsDocument> documents;
+  for (const auto& path : args.results)
+    documents.push_back(schema::read_results_file(path));
+  const schema::ResultsDocument results = schema::combine_results(std::move(documents));
   platform::OutputTransaction output(args.out_dir);
   reports::ReportOptions options;
   options.out_dir = output.staging();
@@ -58,7 +62,10 @@ void add_report_command(CLI::App& app) {
       "Write DIR/report.md (tables beside the study's, figures, findings), "
       "DIR/results.csv and, with --baseline, DIR/regression.md from a results file; with "
       "--bench, a benchmark section from bench_contact_algorithms' JSON");
-  cmd->add_option("--results", args->results, "results.json written by `contact-suite run`")
+  cmd->add_option("--results", args->results,
+                  "results.json written by `contact-suite run` (repeatable: the files are read "
+                  "as one; the first file's run is the report's run, and a case in two files is "
+                  "an error)")
       ->required();
   cmd->add_option("--out", args->out_dir, "output directory (created if needed)")->required();
   cmd->add_option("--baseline", args->baseline,

@@ -143,7 +143,8 @@ int run(const RunArgs& args) {
                                     .run = info,
                                     .problems = suites::problem_records(results),
                                     .cases = results,
-                                    .rows = suites::make_row_verdicts(results)};
+                                    .rows = suites::make_row_verdicts(results),
+                                    .added_runs = {}};
   if (args.surface_csv)
     stage_surface_csv(results, output);
   const auto figures = write_run_output(doc, output, !args.no_report);

@@ -9,6 +9,7 @@
 #include "reports/bench/bench_section.hpp"
 #include "reports/figures/bench_figure.hpp"
 #include "reports/findings/anomalies_section.hpp"
+#include "reports/findings/extent_section.hpp"
 #include "reports/findings/findings.hpp"
 #include "reports/findings/recommendation_section.hpp"
 #include "reports/findings/recovery_section.hpp"
@@ -75,7 +76,11 @@ NumberedSections number_sections(const std::vector<std::string>& sections,
 }
 
 std::string variants_section(const ResultsIndex& index) {
-  const auto& rows = index.variant_rows();
+  std::vector<const schema::RowVerdict*> rows;
+  for (const schema::RowVerdict* r : index.variant_rows()) {
+    if (!in_extent_study(r->spec))  // shown in the extent section
+      rows.push_back(r);
+  }
   if (rows.empty())
     return {};
   std::vector<std::string> header{"Row", "Variant"};
@@ -116,12 +121,12 @@ std::string report_markdown(const ResultsIndex& index, const StudyReference& stu
   const std::string variants = variants_section(index);
   const std::string recovery = recovery_section(index);
 
-  const NumberedSections numbered =
-      number_sections({recommendation_section(index), study_conclusions_section(index),
-                       summary_section(index, findings), mesh_table_section(index, study), grades,
-                       appendix, figs, divergence, interface_section(index),
-                       anomalies_section(index), beyond_study_section(index), variants, recovery},
-                      {bench_md});
+  const NumberedSections numbered = number_sections(
+      {recommendation_section(index), study_conclusions_section(index),
+       summary_section(index, findings), mesh_table_section(index, study), grades, appendix, figs,
+       divergence, interface_section(index), anomalies_section(index), beyond_study_section(index),
+       extent_section(index), variants, recovery},
+      {bench_md});
 
   std::string out =
       "# contact-suite report: our contact elements beside the study's ANSYS results\n\n"

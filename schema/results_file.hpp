@@ -7,6 +7,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -48,6 +49,9 @@ struct ResultsDocument {
   std::vector<ProblemRecord> problems;  ///< every problem that has a case, in battery order
   std::vector<CaseResult> cases;
   std::vector<RowVerdict> rows;
+  /// Runs combined into this document after the first (schema/combined_results.hpp), each with
+  /// its source; empty for a document read from one file. Not written to results.json.
+  std::vector<std::pair<std::string, RunInfo>> added_runs;
 
   /// The record of a problem, or nullptr.
   const ProblemRecord* problem(ProblemId id) const;

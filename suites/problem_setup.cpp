@@ -31,6 +31,19 @@ std::vector<ParameterSpec> study_parameters(std::vector<ParameterSpec> extra) {
   return params;
 }
 
+ParameterSpec extent_parameter() {
+  // Below 1 the block would cut into the refined mesh around the contact; 64 times the study's
+  // block already stands for a half-space to well under the discretization error.
+  return {"extent",
+          1.0,
+          1.0,
+          64.0,
+          true,
+          true,
+          "the block's width and depth as a multiple of the study's; the mesh within half the "
+          "study's extent is unchanged and the rest is stretched outwards"};
+}
+
 std::vector<ParameterSpec> with_default(std::vector<ParameterSpec> params, std::string_view name,
                                         double value) {
   for (auto& p : params) {

@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include "solver/mesh/far_field_stretch.hpp"
 #include "solver/mesh/indenter.hpp"
 #include "solver/mesh/mesh_merge.hpp"
 #include "solver/mesh/mesh_sets.hpp"
@@ -86,6 +87,22 @@ std::vector<double> indenter_surface_x(const std::vector<double>& block_x, doubl
   return xs;
 }
 
+/// Moves the faces of a square block of side `side` out to extent * side, keeping every node
+/// within side / 2 of the contact centre where it is.
+void extend_block(Mesh& block, double side, double extent) {
+  if (extent != 1.0)
+    solver::stretch_far_field(block, {0.5 * side, side, extent * side});
+}
+
+void require_extent(const StudyMeshSpec& spec) {
+  const bool allowed = !is_patch(spec.problem) || spec.extent == 1.0;
+  if (!(spec.extent >= 1.0) || !std::isfinite(spec.extent) || !allowed) {
+    throw SuiteInputError(fmt::format("study mesh {}: extent = {} (must be >= 1{})",
+                                      to_string(spec.problem), spec.extent,
+                                      is_patch(spec.problem) ? ", and 1 for a patch test" : ""));
+  }
+}
+
 struct UniformLayout {
   double width = 0, depth = 0;
   int n = 0;  // elements along each side at this level
@@ -161,12 +178,13 @@ StudyMesh build_uniform(const StudyMeshSpec& spec) {
   ind.n_rows = std::max(1, static_cast<int>(std::lround(ind.height / h)));
   Mesh indenter = solver::make_indenter(ind);
   name_indenter_sets_for_study(indenter);
+  extend_block(block, layout.width, spec.extent);  // H and F blocks are square
 
   StudyMesh out;
   out.info.n_block_elements = block.n_elements();
   out.info.n_indenter_elements = indenter.n_elements();
-  out.info.block_width = layout.width;
-  out.info.block_depth = layout.depth;
+  out.info.block_width = layout.width * spec.extent;
+  out.info.block_depth = layout.depth * spec.extent;
   out.info.indenter_half_width = ind.profile.half_width;
   out.info.indenter_height = ind.height;
   out.info.h_background = h;
@@ -318,12 +336,13 @@ StudyMesh build_steuermann(const StudyMeshSpec& spec) {
   }
   solver::wrap_onto_profile(indenter, solver::rounded_punch_profile(spec.b, spec.r_e), height);
   name_indenter_sets_for_study(indenter);
+  extend_block(block, 8.0 * spec.b, spec.extent);
 
   StudyMesh out;
   out.info.n_block_elements = block.n_elements();
   out.info.n_indenter_elements = indenter.n_elements();
-  out.info.block_width = 8.0 * spec.b;
-  out.info.block_depth = 8.0 * spec.b;
+  out.info.block_width = 8.0 * spec.b * spec.extent;
+  out.info.block_depth = 8.0 * spec.b * spec.extent;
   out.info.indenter_half_width = w;
   out.info.indenter_height = height;
   out.info.h_background = layout.block.cell_size / f;
@@ -426,6 +445,7 @@ int steuermann_target_elements(double re_over_b, MeshLevel level) {
 
 StudyMesh build_study_mesh(const StudyMeshSpec& spec) {
   require_positive(spec.a, "a", spec.problem);
+  require_extent(spec);
   StudyMesh out = is_steuermann(spec.problem) ? build_steuermann(spec) : build_uniform(spec);
   out.info.n_nodes = out.mesh.n_nodes();
   out.info.table1_block_elements =

@@ -82,6 +82,10 @@ struct StudyMeshSpec {
   double b = 0.0;    ///< S: half-width of the punch's flat face
   double r_e = 0.0;  ///< S: edge radius of the punch
   StudyMeshOptions options;
+  /// H, S, F: the block's width and depth over the study's (>= 1). Beyond half the study's
+  /// extent the block is stretched outwards (solver/mesh/far_field_stretch.hpp); nearer the
+  /// contact the mesh is the study's. P and P' take 1 only.
+  double extent = 1.0;
 };
 
 /// Description of a built study mesh.

@@ -32,6 +32,7 @@ ProblemSetup build_flat_punch(const CaseSpec& spec, const Parameters& params) {
                      .element = to_solver(spec.element),
                      .a = a,
                      .options = {}};
+  mesh.extent = params.get("extent");
   const solver::RigidProfile rigid = solver::SharpFlatPunch{{0.0, 0.0}, {0.0, 1.0}, a};
   ProblemSetup setup = start_setup(spec, params, mesh, rigid);
   setup.length_unit = setup.contact_half_width_a = a;

@@ -46,6 +46,7 @@ ProblemSetup build_hertz_plane(const CaseSpec& spec, const Parameters& params) {
                      .a = contact.contact_half_width_a,
                      .R = R,
                      .options = {}};
+  mesh.extent = params.get("extent");
   const solver::RigidProfile rigid = solver::RigidCircle{{0.0, -R}, R};
   ProblemSetup setup = start_setup(spec, params, mesh, rigid);
   setup.p = contact.p_mean;
@@ -89,6 +90,7 @@ ProblemSetup build_hertz_axi(const CaseSpec& spec, const Parameters& params) {
                      .a = contact.contact_radius_a,
                      .R = R,
                      .options = {}};
+  mesh.extent = params.get("extent");
   const solver::RigidProfile rigid = solver::RigidCircle{{0.0, -R}, R};
   ProblemSetup setup = start_setup(spec, params, mesh, rigid);
   setup.p = contact.p_mean;

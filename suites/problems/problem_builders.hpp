@@ -18,6 +18,10 @@ inline constexpr double kStudyPOverE = 1e-3;
 /// The parameters every problem has (suites/parameters.hpp), then `extra`.
 std::vector<ParameterSpec> study_parameters(std::vector<ParameterSpec> extra);
 
+/// `extent` (H, S, F): the block's width and depth as a multiple of the study's, in [1, 64];
+/// the mesh within half the study's extent is unchanged (StudyMeshSpec::extent).
+ParameterSpec extent_parameter();
+
 /// `params` with the default of parameter `name` set to `value` (which must lie in its range).
 std::vector<ParameterSpec> with_default(std::vector<ParameterSpec> params, std::string_view name,
                                         double value);

@@ -60,6 +60,7 @@ ProblemSetup build_steuermann(const CaseSpec& spec, const Parameters& params) {
                      .b = b,
                      .r_e = r_e,
                      .options = {}};
+  mesh.extent = params.get("extent");
   const solver::RoundedFlatPunch punch{{0.0, 0.0}, {0.0, 1.0}, b, r_e};
   ProblemSetup setup = start_setup(spec, params, mesh, punch);
   setup.p = exact.p;
@@ -78,7 +79,7 @@ ProblemSetup build_steuermann(const CaseSpec& spec, const Parameters& params) {
                           [delta = control.delta](const Eigen::Vector2d&) { return -*delta; });
     control.target_load = exact.p * (b + r_e);  // P / 2 on the half model
     control.reaction_set = study_sets::kBlockFarZ;
-    control.delta_guess = exact.p * 8.0 * b / E;  // a flat punch pressing p over depth 8b
+    control.delta_guess = exact.p * 8.0 * b * mesh.extent / E;  // p over the block's depth
     setup.load_control = control;
   }
   setup.exact_pressure_over_p = [contact = exact.contact, p = exact.p](double x) {

@@ -117,6 +117,12 @@ std::vector<Probe> set_probes() {
         // accepted before, though the numerics cannot deliver them (converged, wrong):
         "fkn=1e300", "fkn=1e5", "p_over_E=1e-22", "p_over_E=1e-300", "ftoln=2", "pinball=1e9"})
     p.push_back({{"case", "H_p", "--set", bad}});
+  // the block's extent (#12): below 1, absurdly large, not a number, or on a patch test
+  for (const char* bad : {"extent=0", "extent=-2", "extent=0.5", "extent=65", "extent=1e9",
+                          "extent=abc", "extent=nan"})
+    p.push_back({{"case", "S_1", "--set", bad}});
+  p.push_back({{"case", "P_p", "--set", "extent=2"}});
+  p.push_back({{"run", "--problems", "H_p,P_p", "--meshes", "C", "--set", "extent=2"}});
   p.push_back({{"case", "H_p", "--set", "nu=0.2", "--set", "nu=0.3"}});
   p.push_back({{"run", "--problems", "H_p", "--set", "nu=0.2", "--set", "nu=0.2"}});
   return p;

@@ -290,5 +290,58 @@ TEST(StudyMeshes, BadGeometryIsRejected) {
   EXPECT_THROW(build_study_mesh(spec), SuiteInputError);
 }
 
+TEST(StudyMeshes, ExtentMovesTheFacesAndKeepsTheMeshNearTheContact) {
+  // Requirement (#12): `extent` enlarges H, S and F blocks with the near-contact mesh unchanged.
+  const std::vector<ProblemId> problems = {ProblemId::H_p, ProblemId::H_a,   ProblemId::F_p,
+                                           ProblemId::S_1, ProblemId::S_1_3, ProblemId::S_1_7};
+  for (const ProblemId problem : problems) {
+    for (const ElementType element : {ElementType::Q4, ElementType::Q8}) {
+      SCOPED_TRACE(
+          fmt::format("{} {}", to_string(problem), element == ElementType::Q4 ? "Q4" : "Q8"));
+      const StudyMeshSpec study = spec_for(problem, MeshLevel::C, element);
+      StudyMeshSpec wide = study;
+      wide.extent = 4.0;
+      const StudyMesh a = build_study_mesh(study);
+      const StudyMesh b = build_study_mesh(wide);
+      ASSERT_EQ(a.mesh.n_nodes(), b.mesh.n_nodes());
+      ASSERT_EQ(a.mesh.elements, b.mesh.elements);
+      EXPECT_DOUBLE_EQ(b.info.block_width, 4.0 * a.info.block_width);
+      EXPECT_DOUBLE_EQ(b.info.block_depth, 4.0 * a.info.block_depth);
+      EXPECT_EQ(a.info.h_contact, b.info.h_contact);
+      EXPECT_NO_THROW(solver::check_mesh(b.mesh));
+      // Nodes within half the study's extent stay; a Q8 mid-side node of a side that crosses
+      // that square follows its corner, so look a little inside it.
+      const double inner = 0.45 * a.info.block_width;
+      int kept = 0, moved = 0;
+      for (int n = 0; n < a.mesh.n_nodes(); ++n) {
+        const auto& p = a.mesh.nodes[n];
+        if (std::max(std::abs(p.x()), std::abs(p.y())) <= inner) {
+          EXPECT_EQ(p, b.mesh.nodes[n]) << "node " << n;
+          ++kept;
+        } else {
+          moved += p != b.mesh.nodes[n];
+        }
+      }
+      EXPECT_GT(kept, 0);
+      EXPECT_GT(moved, 0);
+      double far_x = 0.0;
+      for (const int n : solver::node_set(b.mesh, sets::kBlockFarX))
+        far_x = std::max(far_x, b.mesh.nodes[n].x());
+      EXPECT_NEAR(far_x, b.info.block_width, 1e-9 * b.info.block_width);
+    }
+  }
+}
+
+TEST(StudyMeshes, ExtentBelowOneOrOnAPatchTestIsRejected) {
+  StudyMeshSpec spec = spec_for(ProblemId::H_p, MeshLevel::C, ElementType::Q4);
+  spec.extent = 0.5;
+  EXPECT_THROW(build_study_mesh(spec), SuiteInputError);
+  spec.extent = std::nan("");
+  EXPECT_THROW(build_study_mesh(spec), SuiteInputError);
+  spec = spec_for(ProblemId::P_p, MeshLevel::C, ElementType::Q4);
+  spec.extent = 2.0;
+  EXPECT_THROW(build_study_mesh(spec), SuiteInputError);
+}
+
 }  // namespace
 }  // namespace cs::suites

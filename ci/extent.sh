@@ -1,0 +1,30 @@
+#!/usr/bin/env bash
+# The domain-extent study (issue #12): how much of each error is the study's finite block and
+# how much the discretization, and the Steuermann grades at a block that stands for a
+# half-space ("S, half-space"). The block is enlarged with `--set extent=K` (width and depth K
+# times the study's; the mesh within half the study's extent is unchanged).
+#
+#   bash ci/extent.sh [OUT]      (default: out/extent)
+#
+# Writes OUT/lmp-extent-{2,4}/results.json (LMP ss, Q4 and Q8, C M F, on S_1, S_1_3, S_1_7, H_p
+# and F_p: a Richardson limit per extent), OUT/all-extent-8/results.json (every algorithm and
+# discretization of the Steuermann problems at extent 8) and OUT/lmp-extent-8/results.json (H_p
+# and F_p at extent 8). The extent-1 rows are the main job's (ci/main.sh); give all of them to
+# `contact-suite report --results ...` (ci/study-report.sh does) for the report's section.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+out=${1:-out/extent}
+case "$out" in -*) echo "ci/extent.sh: OUT must not start with '-'" >&2; exit 2 ;; esac
+bash ci/build.sh build
+exe=./build/contact-suite
+common=(--algorithms LMP --contacts ss --recovery spr --no-report)
+# exit 1 means some case did not converge: recorded in the results, not a failure of the study
+run() { "$exe" run "$@" || [ $? -le 1 ]; }
+for k in 2 4; do
+  run --problems S_1,S_1_3,S_1_7,H_p,F_p "${common[@]}" --set "extent=$k" \
+    --out "$out/lmp-extent-$k"
+done
+run --problems H_p,F_p "${common[@]}" --set extent=8 --out "$out/lmp-extent-8"
+run --problems S_1,S_1_3,S_1_7 --contacts ss,ns,mortar --recovery spr --no-report \
+  --set extent=8 --out "$out/all-extent-8"
+echo "ci/extent.sh: results in $out/*/results.json"

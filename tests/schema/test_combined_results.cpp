@@ -1,0 +1,83 @@
+// Requirement: a report can draw on several results files (the main job, sweeps, another
+// solver's battery) read as one document. Cases and rows are kept in order, problems united,
+// the first file's run is the run, and a case or row in two files is refused with one line
+// naming it and both files.
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "schema/combined_results.hpp"
+#include "schema/schema_error.hpp"
+
+namespace cs::schema {
+namespace {
+
+ResultsDocument one_case(const std::string& source, ProblemId problem, MeshLevel mesh,
+                         double wall_seconds) {
+  ResultsDocument doc;
+  doc.source = source;
+  doc.run.wall_seconds = wall_seconds;
+  ProblemRecord p;
+  p.id = problem;
+  p.title = std::string(to_string(problem));
+  doc.problems.push_back(p);
+  CaseResult c;
+  c.spec.problem = problem;
+  c.spec.mesh = mesh;
+  c.status = CaseStatus::converged;
+  doc.cases.push_back(c);
+  RowVerdict row;
+  row.spec = c.spec;
+  row.spec.mesh = MeshLevel::C;
+  row.id = case_key(row.spec) + "/sigma_c";
+  doc.rows.push_back(row);
+  return doc;
+}
+
+TEST(CombinedResults, KeepsEveryCaseAndTheFirstRun) {
+  const ResultsDocument all =
+      combine_results({one_case("main.json", ProblemId::H_p, MeshLevel::C, 10),
+                       one_case("sweep.json", ProblemId::F_p, MeshLevel::M, 3),
+                       one_case("more.json", ProblemId::P_p, MeshLevel::F, 4)});
+  ASSERT_EQ(all.cases.size(), 3u);
+  EXPECT_EQ(all.cases[0].spec.problem, ProblemId::H_p);
+  EXPECT_EQ(all.cases[2].spec.problem, ProblemId::P_p);
+  EXPECT_EQ(all.rows.size(), 3u);
+  EXPECT_DOUBLE_EQ(all.run.wall_seconds, 10.0);
+  ASSERT_EQ(all.added_runs.size(), 2u);
+  EXPECT_EQ(all.added_runs[0].first, "sweep.json");
+  EXPECT_DOUBLE_EQ(all.added_runs[1].second.wall_seconds, 4.0);
+  ASSERT_EQ(all.problems.size(), 3u);
+  EXPECT_EQ(all.problems[0].id, ProblemId::P_p);  // battery order, not file order
+  EXPECT_NE(all.problem(ProblemId::F_p), nullptr);
+}
+
+TEST(CombinedResults, OneProblemInTwoFilesIsOneRecord) {
+  ResultsDocument b = one_case("b.json", ProblemId::H_p, MeshLevel::M, 1);
+  b.cases[0].spec.algorithm = Algorithm::AL;
+  b.rows[0].spec.algorithm = Algorithm::AL;
+  b.rows[0].id = case_key(b.rows[0].spec) + "/sigma_c";
+  const ResultsDocument all =
+      combine_results({one_case("a.json", ProblemId::H_p, MeshLevel::C, 1), std::move(b)});
+  EXPECT_EQ(all.problems.size(), 1u);
+  EXPECT_EQ(all.cases.size(), 2u);
+}
+
+TEST(CombinedResults, ACaseInTwoFilesIsRefusedByName) {
+  try {
+    combine_results({one_case("a.json", ProblemId::H_p, MeshLevel::C, 1),
+                     one_case("b.json", ProblemId::H_p, MeshLevel::C, 1)});
+    ADD_FAILURE() << "accepted a duplicate case";
+  } catch (const SchemaError& e) {
+    const std::string m = e.what();
+    EXPECT_NE(m.find("H_p/C/"), std::string::npos) << m;
+    EXPECT_NE(m.find("a.json"), std::string::npos) << m;
+    EXPECT_NE(m.find("b.json"), std::string::npos) << m;
+    EXPECT_EQ(m.find('\n'), std::string::npos) << m;
+  }
+  EXPECT_THROW(combine_results({}), SchemaError);
+}
+
+}  // namespace
+}  // namespace cs::schema
