@@ -21,6 +21,7 @@ struct ReportArgs {
   std::string baseline;
   std::string study_data;
   std::vector<std::string> bench;
+  std::string mesh_export;
   bool no_figures = false;
 };
 
@@ -37,6 +38,8 @@ void run_report(const ReportArgs& args) {
   if (!args.study_data.empty())
     options.study_data = args.study_data;
   options.bench.assign(args.bench.begin(), args.bench.end());
+  if (!args.mesh_export.empty())
+    options.mesh_export = args.mesh_export;
   options.figures = !args.no_figures;
   const auto outcome = reports::write_report(results, options);
   output.commit();
@@ -77,6 +80,9 @@ void add_report_command(CLI::App& app) {
                   "Google Benchmark JSON written by bench_contact_algorithms "
                   "(--benchmark_out=FILE --benchmark_out_format=json): add section 8, "
                   "\"Benchmarks\" (repeatable; a case in several files is shown from the last)");
+  cmd->add_option("--mesh-pictures", args->mesh_export,
+                  "a directory written by `contact-suite export`: draw its models as the "
+                  "report's Figure 3");
   cmd->add_flag("--no-figures", args->no_figures, "do not run gnuplot");
   cmd->callback([args] { run_report(*args); });
 }

@@ -16,6 +16,7 @@ cd "$(dirname "$0")/.."
 out=${1:-out/extent}
 case "$out" in -*) echo "ci/extent.sh: OUT must not start with '-'" >&2; exit 2 ;; esac
 bash ci/build.sh build
+mkdir -p "$out"
 exe=./build/contact-suite
 common=(--algorithms LMP --contacts ss --recovery spr --no-report)
 # exit 1 means some case did not converge: recorded in the results, not a failure of the study

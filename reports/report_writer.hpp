@@ -36,6 +36,9 @@ struct ReportOptions {
   /// Google Benchmark JSON files of bench_contact_algorithms: the appendix "Benchmarks"
   /// (none: no such appendix). A case measured in several files is shown from the last.
   std::vector<std::filesystem::path> bench;
+  /// A `contact-suite export` directory whose models are drawn as Figure 3 (none: no mesh
+  /// pictures).
+  std::optional<std::filesystem::path> mesh_export;
   bool figures = true;  ///< draw figures with gnuplot
   FigureOptions figure_options;
 };
@@ -53,11 +56,11 @@ struct ReportOutcome {
 /// directory, schema::SchemaError for a bad baseline.
 ReportOutcome write_report(const schema::ResultsDocument& results, const ReportOptions& options);
 
-/// The whole report.md text from its parts (no I/O); `bench_md` is the benchmarks appendix (empty:
-/// none).
+/// The whole report.md text from its parts (no I/O); `mesh_figures` are Figure 3 (empty:
+/// none), `bench_md` is the benchmarks appendix (empty: none).
 std::string report_markdown(const ResultsIndex& index, const StudyReference& study,
-                            const FigureSet& figures, bool has_regression,
-                            const std::string& bench_md = {});
+                            const FigureSet& figures, const FigureSet& mesh_figures,
+                            bool has_regression, const std::string& bench_md = {});
 
 /// Sections numbered in order, without gaps, and their table of contents.
 struct NumberedSections {
