@@ -18,7 +18,9 @@
 #include "reports/results/results_csv.hpp"
 #include "reports/tables/appendix_tables.hpp"
 #include "reports/tables/beyond_study_section.hpp"
+#include "reports/tables/conformal_section.hpp"
 #include "reports/tables/divergence_table.hpp"
+#include "reports/tables/friction_section.hpp"
 #include "reports/tables/grade_tables.hpp"
 #include "reports/tables/interface_table.hpp"
 #include "reports/tables/markdown_table.hpp"
@@ -120,7 +122,8 @@ std::string report_markdown(const ResultsIndex& index, const StudyReference& stu
       number_sections({recommendation_section(index), study_conclusions_section(index),
                        summary_section(index, findings), mesh_table_section(index, study), grades,
                        appendix, figs, divergence, interface_section(index),
-                       anomalies_section(index), beyond_study_section(index), variants, recovery},
+                       anomalies_section(index), beyond_study_section(index), friction_section(index),
+                       conformal_section(index), variants, recovery},
                       {bench_md});
 
   std::string out =
