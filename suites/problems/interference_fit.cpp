@@ -47,6 +47,7 @@
 #include "solver/mesh/circular_sector.hpp"
 #include "solver/mesh/mesh_merge.hpp"
 #include "solver/mesh/mesh_sets.hpp"
+#include "suites/problems/interference_fit_parameters.hpp"
 #include "suites/problems/problem_builders.hpp"
 #include "suites/suite_error.hpp"
 
@@ -104,6 +105,13 @@ StudyMeshInfo fit_mesh_info(const solver::Mesh& mesh, int n_arc, double b, doubl
 
 }  // namespace
 
+void require_small_interference(const CaseSpec& spec, const Parameters& params) {
+  const double b = 1.0, nu = params.get("nu");
+  const oracles::InterferenceFit fit{
+      b, b / params.get("b_over_c"), params.get("delta_over_b") * b, {1.0, nu}, {1.0, nu}};
+  exact_pressure(fit, spec.problem == ProblemId::IF_a, spec.problem);
+}
+
 ProblemSetup build_interference_fit(const CaseSpec& spec, const Parameters& params) {
   const bool sphere = spec.problem == ProblemId::IF_a;
   if (spec.target == TargetKind::Rigid) {
@@ -112,6 +120,7 @@ ProblemSetup build_interference_fit(const CaseSpec& spec, const Parameters& para
                     "compliance (a rigid shaft is --set E_ratio=1e6)",
                     to_string(spec.problem)));
   }
+  require_small_interference(spec, params);
   const double b = 1.0, c = b / params.get("b_over_c"), delta = params.get("delta_over_b") * b;
   const double nu = params.get("nu"), E_ratio = params.get("E_ratio");
   oracles::InterferenceFit fit{b, c, delta, {E_ratio, nu}, {1.0, nu}};
