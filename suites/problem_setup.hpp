@@ -22,19 +22,19 @@ namespace cs::suites {
 
 /// Where on the indented body's contact surface a quantity is read.
 enum class SamplePoint {
-  MaxOnSurface,      ///< the largest value over the surface nodes (P: sigma_z_max; S: sigma_c)
-  AtAxis,            ///< the node at x = 0 (H: sigma_c, sigma_h)
-  AtEdge,            ///< the node at x = a, the contact edge (F: sigma_c_star)
-  StickZoneEdge,     ///< c/a from the contact's stick/slip states (CM), not the stresses
-  ContactPeakShear,  ///< the contact solution's largest |shear| (CM: the traction has a cusp
-                     ///< at c that nodal stress recovery smooths); see friction_sampling.hpp
+  MaxOnSurface,           ///< the largest value over the surface nodes (P: sigma_z_max; S: sigma_c)
+  AtAxis,                 ///< the node at x = 0 (H: sigma_c, sigma_h)
+  AtEdge,                 ///< the node at x = a, the contact edge (F: sigma_c_star)
+  StickZoneEdge,          ///< c/a from the contact's stick/slip states (CM), not the stresses
+  ContactPeakShear,       ///< the contact solution's largest |shear| (CM: the traction has a cusp
+                          ///< at c that nodal stress recovery smooths); see friction_sampling.hpp
   InterfaceMeanPressure,  ///< the contact's resultant normal force over the exact one (IF):
                           ///< the mean pressure over p; see arc_sampling.hpp
   ArcPressureExtreme,     ///< the nodal contact pressure over p farthest from the exact one
                           ///< along the contact surface (IF); see arc_sampling.hpp
-  ContactEdge,       ///< the contact half-width from the contact pressures (H, S): halfway
-                     ///< between the last node that carries pressure and the next one, over
-                     ///< the problem's length unit (a; b for S)
+  ContactEdge,            ///< the contact half-width from the contact pressures (H, S): halfway
+                          ///< between the last node that carries pressure and the next one, over
+                          ///< the problem's length unit (a; b for S)
 };
 
 /// Which stress a quantity normalizes: -sigma_z/p, -sigma_x/p or -tau_xz/p (the shear traction

@@ -47,7 +47,7 @@ int sample_index(const std::vector<double>& x, const std::vector<double>& values
         break;
       case SamplePoint::StickZoneEdge:  // read off the contact (friction_sampling.hpp)
       case SamplePoint::ContactPeakShear:
-      case SamplePoint::ContactEdge:  // from the pressures (contact_edge)
+      case SamplePoint::ContactEdge:            // from the pressures (contact_edge)
       case SamplePoint::InterfaceMeanPressure:  // from the contact (arc_sampling.hpp)
       case SamplePoint::ArcPressureExtreme:
         return -1;

@@ -49,6 +49,11 @@ std::string grades_table(const ResultsIndex& index, const schema::ProblemRecord&
   return table.n_rows() == 0 ? std::string() : table.render();
 }
 
+/// A difference below the printed resolution (5e-5) as 0, so that it does not print as -0.0000.
+double difference_cell(double d) {
+  return std::abs(d) < 5e-5 ? 0.0 : d;
+}
+
 std::string lmp_plm_table(const ResultsIndex& index, const schema::ProblemRecord& p) {
   MarkdownTable table({"Element", "Contact", "Quantity", "LMP (F)", "PLM (F)", "LMP − PLM"});
   for (const auto element : schema::values<schema::Element>()) {
@@ -65,7 +70,7 @@ std::string lmp_plm_table(const ResultsIndex& index, const schema::ProblemRecord
                                    format_error_resolved(lmp->errors[kF].value_or(NAN))),
                        fmt::format("{} ({})", format_value(*plm->values[kF]),
                                    format_error_resolved(plm->errors[kF].value_or(NAN))),
-                       format_value(*lmp->values[kF] - *plm->values[kF])});
+                       format_value(difference_cell(*lmp->values[kF] - *plm->values[kF]))});
       }
     }
   }
