@@ -97,8 +97,8 @@ std::string findings(const ResultsIndex& index, const schema::ProblemRecord& p) 
   std::string out;
   if (const auto lm = lm_mean_error(index, p.id)) {
     out += fmt::format(
-        "- Lagrange multipliers (LMP, PLM) with ss and mortar, F: the mean pressure is within "
-        "{} of the exact one at worst ({}).\n",
+        "- Lagrange multipliers (LMP, PLM) with ss and mortar, F: the largest error of the mean "
+        "pressure is {} ({}).\n",
         format_error_resolved(*lm), std::abs(*lm) < 1.0 ? "within 1 %" : "not within 1 %");
   }
   const auto worst = worst_arc_option(index, p.id), best = best_arc_option(index, p.id);
