@@ -20,7 +20,9 @@
 #include "reports/results/results_csv.hpp"
 #include "reports/tables/appendix_tables.hpp"
 #include "reports/tables/beyond_study_section.hpp"
+#include "reports/tables/conformal_section.hpp"
 #include "reports/tables/divergence_table.hpp"
+#include "reports/tables/friction_section.hpp"
 #include "reports/tables/grade_tables.hpp"
 #include "reports/tables/interface_table.hpp"
 #include "reports/tables/markdown_table.hpp"
@@ -127,7 +129,8 @@ std::string report_markdown(const ResultsIndex& index, const StudyReference& stu
                        summary_section(index, findings), mesh_table_section(index, study),
                        mesh_figures_section(mesh_figures), grades, appendix, figs, divergence,
                        interface_section(index), anomalies_section(index),
-                       beyond_study_section(index), extent_section(index), variants, recovery},
+                       beyond_study_section(index), extent_section(index), friction_section(index),
+                       conformal_section(index), variants, recovery},
                       {bench_md});
 
   std::string out =

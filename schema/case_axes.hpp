@@ -17,7 +17,8 @@ namespace cs::schema {
 /// The battery's problems (the study's eleven first, names as the study prints them, primes
 /// spelled out; then the problems beyond the study: Pprime_p_E1 and Pprime_a_E1, the
 /// mismatched-node patch tests with an indenter of the block's modulus; FP_p, the frictional
-/// patch test, and CM_p, Cattaneo-Mindlin partial slip). Each has one descriptor in
+/// patch test, and CM_p, Cattaneo-Mindlin partial slip; IF_p and IF_a, the interference fits of
+/// a shaft in a ring and a sphere in a shell, conformal contact). Each has one descriptor in
 /// suites/problems/.
 enum class ProblemId : std::uint8_t {
   P_p,
@@ -35,6 +36,8 @@ enum class ProblemId : std::uint8_t {
   Pprime_a_E1,
   FP_p,
   CM_p,
+  IF_p,
+  IF_a,
 };
 constexpr std::string_view axis_name(ProblemId) {
   return "problem";
@@ -71,6 +74,10 @@ constexpr AxisEntry entry(ProblemId v) {
       return {"FP_p", "", "FP<sub>p</sub>"};
     case ProblemId::CM_p:
       return {"CM_p", "", "CM<sub>p</sub>"};
+    case ProblemId::IF_p:
+      return {"IF_p", "", "IF<sub>p</sub>"};
+    case ProblemId::IF_a:
+      return {"IF_a", "", "IF<sub>a</sub>"};
   }
   return {};
 }

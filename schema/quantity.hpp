@@ -18,6 +18,8 @@ enum class Quantity : std::uint8_t {
   tau_max,       ///< -tau_xz^max/p: the peak shear traction on the contact (friction problems)
   c_over_a,      ///< c/a: the stick zone's half-width over the contact's (Cattaneo-Mindlin)
   contact_half_width,  ///< the FE contact half-width over a (b for S), from the pressures
+  p_mean,  ///< the mean contact pressure over the exact one (interference fits): resultant / exact
+  p_arc,   ///< the nodal contact pressure over the exact one where it deviates most along the arc
 };
 constexpr std::string_view axis_name(Quantity) {
   return "quantity";
@@ -38,6 +40,10 @@ constexpr AxisEntry entry(Quantity v) {
       return {"c_over_a", "", "c/a"};
     case Quantity::contact_half_width:
       return {"contact_half_width", "", "a<sub>FE</sub>"};
+    case Quantity::p_mean:
+      return {"p_mean", "", "p̄<sub>mean</sub>"};
+    case Quantity::p_arc:
+      return {"p_arc", "", "p̄<sub>arc</sub>"};
   }
   return {};
 }
@@ -59,6 +65,10 @@ constexpr std::string_view description(Quantity v) {
       return "stick half-width";
     case Quantity::contact_half_width:
       return "contact half-width";
+    case Quantity::p_mean:
+      return "mean contact pressure";
+    case Quantity::p_arc:
+      return "largest deviation of the contact pressure along the arc";
   }
   return {};
 }

@@ -151,6 +151,10 @@ std::string_view rule_name(SamplePoint where) {
       return "contact_peak_shear";
     case SamplePoint::ContactEdge:
       return "contact_edge";
+    case SamplePoint::InterfaceMeanPressure:
+      return "interface_mean_pressure";
+    case SamplePoint::ArcPressureExtreme:
+      return "arc_pressure_extreme";
   }
   return "";
 }
@@ -179,6 +183,11 @@ void require_exchangeable(const CaseSpec& spec) {
     throw SuiteInputError(fmt::format(
         "{}: {} has friction, which the import/export layout does not carry (no load path, "
         "shear stress or stick/slip states)",
+        case_id(spec), to_string(spec.problem)));
+  if (spec.problem == ProblemId::IF_p || spec.problem == ProblemId::IF_a)
+    throw SuiteInputError(fmt::format(
+        "{}: {} is graded from the contact's nodal forces along the arc, which the import/export "
+        "layout does not carry",
         case_id(spec), to_string(spec.problem)));
 }
 

@@ -6,6 +6,7 @@
 
 #include "suites/friction_cases.hpp"
 #include "suites/problem_catalog.hpp"
+#include "suites/problems/interference_fit_parameters.hpp"
 #include "suites/problems/problem_builders.hpp"
 
 namespace cs::suites {
@@ -21,6 +22,8 @@ void validate_case(const CaseSpec& spec) {
   const Parameters params(d.parameters, spec.overrides, to_string(spec.problem));
   if (declares(d.parameters, "mu"))
     require_frictional_algorithm(spec, params.get("mu"));
+  if (declares(d.parameters, "delta_over_b"))
+    problems::require_small_interference(spec, params);
 }
 
 namespace problems {

@@ -22,15 +22,19 @@ namespace cs::suites {
 
 /// Where on the indented body's contact surface a quantity is read.
 enum class SamplePoint {
-  MaxOnSurface,      ///< the largest value over the surface nodes (P: sigma_z_max; S: sigma_c)
-  AtAxis,            ///< the node at x = 0 (H: sigma_c, sigma_h)
-  AtEdge,            ///< the node at x = a, the contact edge (F: sigma_c_star)
-  StickZoneEdge,     ///< c/a from the contact's stick/slip states (CM), not the stresses
-  ContactPeakShear,  ///< the contact solution's largest |shear| (CM: the traction has a cusp
-                     ///< at c that nodal stress recovery smooths); see friction_sampling.hpp
-  ContactEdge,       ///< the contact half-width from the contact pressures (H, S): halfway
-                     ///< between the last node that carries pressure and the next one, over
-                     ///< the problem's length unit (a; b for S)
+  MaxOnSurface,           ///< the largest value over the surface nodes (P: sigma_z_max; S: sigma_c)
+  AtAxis,                 ///< the node at x = 0 (H: sigma_c, sigma_h)
+  AtEdge,                 ///< the node at x = a, the contact edge (F: sigma_c_star)
+  StickZoneEdge,          ///< c/a from the contact's stick/slip states (CM), not the stresses
+  ContactPeakShear,       ///< the contact solution's largest |shear| (CM: the traction has a cusp
+                          ///< at c that nodal stress recovery smooths); see friction_sampling.hpp
+  InterfaceMeanPressure,  ///< the contact's resultant normal force over the exact one (IF):
+                          ///< the mean pressure over p; see arc_sampling.hpp
+  ArcPressureExtreme,     ///< the nodal contact pressure over p farthest from the exact one
+                          ///< along the contact surface (IF); see arc_sampling.hpp
+  ContactEdge,            ///< the contact half-width from the contact pressures (H, S): halfway
+                          ///< between the last node that carries pressure and the next one, over
+                          ///< the problem's length unit (a; b for S)
 };
 
 /// Which stress a quantity normalizes: -sigma_z/p, -sigma_x/p or -tau_xz/p (the shear traction
@@ -74,6 +78,9 @@ struct ProblemSetup {
   /// Friction problems (path dependent): the load steps every case runs, in order, from the
   /// unloaded state (suites/friction_cases.hpp); empty: one solve under the model's loads.
   std::vector<solver::LoadStep> load_steps;
+  /// Conformal contact (IF): the exact resultant normal force of the contact over the modelled
+  /// surface (per unit thickness, per radian in axisymmetry); 0: not defined.
+  double exact_interface_force = 0.0;
 };
 
 /// Builds the setup of a case (one switch over the problems, in problem_setup.cpp).

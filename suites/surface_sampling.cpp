@@ -6,6 +6,7 @@
 #include <optional>
 #include <stdexcept>
 
+#include "suites/arc_sampling.hpp"
 #include "suites/friction_sampling.hpp"
 
 namespace cs::suites {
@@ -46,7 +47,9 @@ int sample_index(const std::vector<double>& x, const std::vector<double>& values
         break;
       case SamplePoint::StickZoneEdge:  // read off the contact (friction_sampling.hpp)
       case SamplePoint::ContactPeakShear:
-      case SamplePoint::ContactEdge:  // from the pressures (contact_edge)
+      case SamplePoint::ContactEdge:            // from the pressures (contact_edge)
+      case SamplePoint::InterfaceMeanPressure:  // from the contact (arc_sampling.hpp)
+      case SamplePoint::ArcPressureExtreme:
         return -1;
     }
   }
@@ -139,9 +142,11 @@ void sample_quantities(const ProblemSetup& setup,
     pressure.push_back(n.pressure / p);
   }
   for (const QuantityRule& rule : setup.quantities) {
-    if (sampled_from_contact(rule.where)) {
+    if (sampled_from_contact(rule.where) || sampled_along_arc(rule.where)) {
       if (solution != nullptr) {
-        result.quantities.push_back(contact_quantity(rule, *solution, a, p));
+        result.quantities.push_back(sampled_along_arc(rule.where)
+                                        ? arc_quantity(rule, *solution, setup)
+                                        : contact_quantity(rule, *solution, a, p));
       } else {  // a solver that reports no friction states: the quantity has no value
         QuantityResult q;
         q.quantity = rule.quantity;

@@ -77,6 +77,10 @@ std::string problem_tables(const ResultsIndex& index, const schema::ProblemRecor
           " Its resolution is half an element: the element size at the contact, over the same "
           "length, is {} on C / M / F.",
           sizes);
+    } else if (q.quantity == schema::Quantity::p_arc) {
+      resolution =
+          " Its error is the largest deviation of the nodal contact pressure from the exact one "
+          "along the arc, signed.";
     }
     out += fmt::format("### {} — {}: {}\n\n{} = {}, exact {} ({}).{}\n\n{}\n", schema::label(p.id),
                        p.description, schema::label(q.quantity), schema::label(q.quantity),

@@ -2,8 +2,12 @@
 // shear tau = tau_over_mu_p x mu p < mu p. The model is built by build_frictional_patch
 // (suites/problems/frictional_patch.cpp, whose header states the geometry, boundary conditions,
 // oracle and sampling). Beyond the study (no table of its own). MPC is refused (no slip).
-// There is no FP_a: a uniform tau_rz breaks axisymmetric equilibrium (d tau_rz/dr + tau_rz/r =
-// tau_rz/r != 0), so the frictional patch test has no uniform exact state in the r-z plane.
+// There is no FP_a, stick or sliding: a uniform tau_rz breaks axisymmetric equilibrium
+// (d tau_rz/dr + d sigma_z/dz + tau_rz/r = tau_rz/r != 0), so the frictional patch test has no
+// uniform exact state in the r-z plane; the sliding variant (|tau| = mu p everywhere with p
+// uniform) needs the same uniform |tau_rz| > 0, which also contradicts tau_rz(0, z) = 0 on the
+// axis. Computed in tests/solver/test_fe_axisymmetric_shear.cpp: the uniform shear field is
+// reproduced to round-off in plane strain and departs from itself in the r-z plane.
 // Run: contact-suite case FP_p --mesh F --element Q4 --algorithm PLM --contact ss --set mu=0.3
 
 #include "suites/friction_cases.hpp"

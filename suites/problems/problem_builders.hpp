@@ -32,6 +32,7 @@ ProblemSetup build_steuermann(const CaseSpec& spec, const Parameters& params);
 ProblemSetup build_flat_punch(const CaseSpec& spec, const Parameters& params);
 ProblemSetup build_frictional_patch(const CaseSpec& spec, const Parameters& params);
 ProblemSetup build_cattaneo_mindlin(const CaseSpec& spec, const Parameters& params);
+ProblemSetup build_interference_fit(const CaseSpec& spec, const Parameters& params);
 
 /// The common start of every problem: the study mesh, the analysis type, the two materials
 /// (block E = 1 / (p/E), indenter E_ratio times stiffer, both with nu), symmetry (u_x = 0) on

@@ -128,6 +128,28 @@ std::vector<Probe> set_probes() {
   return p;
 }
 
+/// Issue 15: friction (mu < 0, non-finite or absurd; a load at or past mu P where the oracle
+/// needs stick; friction with MPC) and the interference fits (an interference that is not small
+/// against the radii, beyond the oracle's delta/b <= 1e-2; radii out of range; a rigid shaft).
+std::vector<Probe> friction_and_fit_probes() {
+  std::vector<Probe> p;
+  for (const char* bad :
+       {"mu=-0.1", "mu=0", "mu=nan", "mu=inf", "mu=1e6", "tau_over_mu_p=1", "tau_over_mu_p=2"})
+    p.push_back({{"case", "FP_p", "--set", bad}});
+  for (const char* bad : {"mu=-1", "mu=1e300", "Q_over_mu_P=1", "Q_over_mu_P=1.5"})
+    p.push_back({{"case", "CM_p", "--set", bad}});
+  p.push_back({{"case", "FP_p", "--algorithm", "MPC"}});
+  p.push_back({{"case", "CM_p", "--algorithm", "MPC"}});
+  for (const char* problem : {"IF_p", "IF_a"}) {
+    for (const char* bad :
+         {"delta_over_b=0.02", "delta_over_b=0", "delta_over_b=-1e-3", "delta_over_b=nan",
+          "b_over_c=1", "b_over_c=0", "p_over_E=1e-3", "mu=0.3"})
+      p.push_back({{"case", problem, "--set", bad}});
+    p.push_back({{"case", problem, "--target", "rigid"}});
+  }
+  return p;
+}
+
 std::vector<Probe> run_probes() {
   std::vector<Probe> p;
   for (const char* jobs : {"0", "-1", "", "99999", "abc", "1.5"})
@@ -227,8 +249,8 @@ std::vector<Probe> oracle_probes() {
 
 TEST_F(BadInputProbe, EveryProbeExitsTwoWithOneLineAndLeavesNoFile) {
   std::vector<Probe> probes;
-  for (auto&& list : {name_probes(), set_probes(), run_probes(), oracle_probes(),
-                      import_export_probes(dir_->path())})
+  for (auto&& list : {name_probes(), set_probes(), friction_and_fit_probes(), run_probes(),
+                      oracle_probes(), import_export_probes(dir_->path())})
     probes.insert(probes.end(), list.begin(), list.end());
   // Results files that must be refused by report, gate and merge.
   const std::vector<std::function<void(json&)>> mutations{

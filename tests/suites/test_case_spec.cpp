@@ -23,8 +23,8 @@ TEST(CaseSpec, EveryNameRoundTrips) {
     EXPECT_EQ(parse<Algorithm>(to_string(a)), a);
   for (auto c : values<ContactKind>())
     EXPECT_EQ(parse<ContactKind>(to_string(c)), c);
-  // the study's 11, the two equal-moduli patch tests, FP_p and CM_p
-  EXPECT_EQ(values<ProblemId>().size(), 15u);
+  // the study's 11, the two equal-moduli patch tests, FP_p and CM_p, IF_p and IF_a
+  EXPECT_EQ(values<ProblemId>().size(), 17u);
   EXPECT_EQ(study_problems().size(), 11u);
   // 11 problems x 3 meshes x 2 elements x 5 algorithms x 2 discretizations: the study's 660.
   EXPECT_EQ(study_problems().size() * values<MeshLevel>().size() * values<Element>().size() *

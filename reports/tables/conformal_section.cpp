@@ -1,0 +1,151 @@
+#include "reports/tables/conformal_section.hpp"
+
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "reports/tables/beyond_study_section.hpp"
+#include "reports/tables/grade_tables.hpp"
+#include "reports/tables/markdown_table.hpp"
+
+namespace cs::reports {
+namespace {
+
+using schema::Quantity;
+
+constexpr std::size_t kF = mesh_index(kFinestMesh);
+
+bool is_conformal_problem(const schema::ProblemRecord& p) {
+  return p.definition(Quantity::p_mean) != nullptr;
+}
+
+/// The fine-mesh error of a row, or nullopt.
+std::optional<double> fine_error(const schema::RowVerdict* row) {
+  return row == nullptr ? std::nullopt : row->errors[kF];
+}
+
+/// "−0.12 % / +3.4 % (e / g)": mean pressure error / arc deviation and their grades.
+std::string option_cell(const ResultsIndex& index, schema::ProblemId id, schema::Element element,
+                        const Option& option) {
+  const auto* mean = index.row(id, Quantity::p_mean, element, option);
+  const auto* arc = index.row(id, Quantity::p_arc, element, option);
+  if (mean == nullptr && arc == nullptr)
+    return {};
+  auto err = [](const schema::RowVerdict* r) {
+    const auto e = fine_error(r);
+    return e ? format_error_resolved(*e) : std::string(kMissing);
+  };
+  return fmt::format("{} / {} ({} / {})", err(mean), err(arc), format_grade_cell(index, mean),
+                     format_grade_cell(index, arc));
+}
+
+std::string options_table(const ResultsIndex& index, const schema::ProblemRecord& p) {
+  std::vector<std::string> header{"Element", "Contact"};
+  for (const auto a : schema::values<schema::Algorithm>())
+    header.push_back(std::string(schema::to_string(a)));
+  MarkdownTable table(header);
+  for (const auto element : schema::values<schema::Element>()) {
+    for (const auto contact : schema::values<schema::ContactKind>()) {
+      std::vector<std::string> cells{std::string(schema::to_string(element)),
+                                     std::string(schema::to_string(contact))};
+      bool any = false;
+      for (const auto a : schema::values<schema::Algorithm>()) {
+        std::string cell = option_cell(index, p.id, element, {a, contact});
+        any = any || !cell.empty();
+        cells.push_back(cell.empty() ? std::string(kMissing) : cell);
+      }
+      if (any)
+        table.add_row(cells);
+    }
+  }
+  return table.n_rows() == 0 ? std::string() : table.render();
+}
+
+/// The option with the largest (worst) or smallest |p_arc error| on F.
+std::optional<ArcExtreme> arc_extreme(const ResultsIndex& index, schema::ProblemId id, bool worst) {
+  std::optional<ArcExtreme> out;
+  for (const auto element : schema::values<schema::Element>()) {
+    for (const Option& option : all_options()) {
+      const auto e = fine_error(index.row(id, Quantity::p_arc, element, option));
+      if (!e)
+        continue;
+      const bool better = !out || (worst ? std::abs(*e) > std::abs(out->deviation_percent)
+                                         : std::abs(*e) < std::abs(out->deviation_percent));
+      if (better)
+        out = ArcExtreme{*e, element, option};
+    }
+  }
+  return out;
+}
+
+/// The largest |p_mean error| on F over the LM options (LMP, PLM) with ss and mortar.
+std::optional<double> lm_mean_error(const ResultsIndex& index, schema::ProblemId id) {
+  std::optional<double> out;
+  for (const auto element : schema::values<schema::Element>()) {
+    for (const auto a : {schema::Algorithm::LMP, schema::Algorithm::PLM}) {
+      for (const auto c : {schema::ContactKind::ss, schema::ContactKind::mortar}) {
+        const auto e = fine_error(index.row(id, Quantity::p_mean, element, {a, c}));
+        if (e && (!out || std::abs(*e) > std::abs(*out)))
+          out = *e;
+      }
+    }
+  }
+  return out;
+}
+
+std::string findings(const ResultsIndex& index, const schema::ProblemRecord& p) {
+  std::string out;
+  if (const auto lm = lm_mean_error(index, p.id)) {
+    out += fmt::format(
+        "- Lagrange multipliers (LMP, PLM) with ss and mortar, F: the largest error of the mean "
+        "pressure is {} ({}).\n",
+        format_error_resolved(*lm), std::abs(*lm) < 1.0 ? "within 1 %" : "not within 1 %");
+  }
+  const auto worst = worst_arc_option(index, p.id), best = best_arc_option(index, p.id);
+  if (worst && best) {
+    out += fmt::format(
+        "- Along the arc, F: the largest deviation is {} ({} {}), the smallest {} ({} {}).\n",
+        format_error_resolved(worst->deviation_percent), schema::to_string(worst->element),
+        worst->option.label(), format_error_resolved(best->deviation_percent),
+        schema::to_string(best->element), best->option.label());
+  }
+  return out.empty() ? out : out + "\n";
+}
+
+}  // namespace
+
+std::optional<ArcExtreme> worst_arc_option(const ResultsIndex& index, schema::ProblemId problem) {
+  return arc_extreme(index, problem, true);
+}
+
+std::optional<ArcExtreme> best_arc_option(const ResultsIndex& index, schema::ProblemId problem) {
+  return arc_extreme(index, problem, false);
+}
+
+std::string conformal_section(const ResultsIndex& index) {
+  std::string body;
+  for (const schema::ProblemRecord* p : index.problems()) {
+    if (!is_conformal_problem(*p))
+      continue;
+    const std::string table = options_table(index, *p);
+    if (table.empty())
+      continue;
+    body += fmt::format(
+        "### {} — {}\n\nFine mesh, each cell: the mean pressure's error / the largest deviation "
+        "of the pressure along the arc (the error of p<sub>arc</sub>), then their grades (Eq. "
+        "46; \", c\" converging). Exact pressure from {}.\n\n{}\n{}",
+        schema::label(p->id), p->title, p->exact_source, table, findings(index, *p));
+  }
+  if (body.empty())
+    return {};
+  return "## Conformal contact\n\nInterference fits: the radial interference is an initial "
+         "overlap that the contact resolves along a whole quarter circle, where the exact "
+         "pressure is uniform. p<sub>mean</sub> is the interface's resultant over the exact one; "
+         "p<sub>arc</sub> is the nodal pressure farthest from the exact one, so its error is the "
+         "largest deviation along the arc (suites/arc_sampling.hpp). MPC ties the overlapping "
+         "points to a zero gap from the start; on a fit that stays closed it is the multiplier "
+         "solution.\n\n" +
+         body;
+}
+
+}  // namespace cs::reports

@@ -1,0 +1,30 @@
+// IF_a: interference fit of a sphere in a spherical shell (axisymmetric): conformal contact along a
+// quarter circle, the radial interference delta an initial overlap the contact resolves. The model
+// is built by build_interference_fit (suites/problems/interference_fit.cpp, whose header states the
+// geometry, boundary conditions, oracle and sampling). Beyond the study (no table of its own). Run:
+// contact-suite case IF_a --mesh F --element Q4 --algorithm PLM --contact mortar
+
+#include "suites/problems/interference_fit_parameters.hpp"
+#include "suites/problems/problem_builders.hpp"
+
+namespace cs::suites {
+
+template <>
+const ProblemDescriptor& problem_descriptor<ProblemId::IF_a>() {
+  using schema::Quantity;
+  static const ProblemDescriptor d{
+      {ProblemId::IF_a,
+       "interference fit of a sphere in a spherical shell (axisymmetric)",
+       "axisymmetric interference fit",
+       /*axisymmetric=*/true,
+       /*singular=*/false,
+       "",
+       "Lame, Timoshenko \& Goodier Sec. 137 (interference_fit.hpp)",
+       {{Quantity::p_mean, "p<sub>mean</sub>/p", "p_mean/p", "", ""},
+        {Quantity::p_arc, "p(θ<sub>max</sub>)/p", "p(theta_max)/p", "", ""}}},
+      problems::interference_fit_parameters(),
+      problems::build_interference_fit};
+  return d;
+}
+
+}  // namespace cs::suites

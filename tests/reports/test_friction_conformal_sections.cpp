@@ -1,0 +1,118 @@
+// The friction and conformal-contact sections, on results documents built in memory (rows only:
+// the sections read the rows' fine-mesh values, errors and grades), with known numbers.
+//
+// Requirements:
+//   - conformal: every option's fine-mesh mean-pressure error and arc deviation are shown; the
+//     worst and best options by |arc deviation| are found from the rows; the LM ss/mortar mean
+//     pressure is judged against 1 % from the rows;
+//   - friction: LMP beside PLM with their difference; the largest difference is found and
+//     worded, and equal pairs are counted as equal (below 0.01 percentage points);
+//   - a document without such problems gives no section (the hand-made study sample).
+
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "report_test_support.hpp"
+#include "reports/tables/conformal_section.hpp"
+#include "reports/tables/friction_section.hpp"
+#include "suites/problem_catalog.hpp"
+
+namespace cs::reports {
+namespace {
+
+using schema::Algorithm;
+using schema::ContactKind;
+using schema::Element;
+using schema::ProblemId;
+using schema::Quantity;
+
+/// A complete baseline row with values 1 + e/100 (exact 1) and the errors e on C, M, F.
+schema::RowVerdict row(ProblemId problem, Quantity q, Element element, Algorithm a, ContactKind c,
+                       std::array<double, 3> errors, double exact = 1.0) {
+  schema::RowVerdict r;
+  r.spec.problem = problem;
+  r.spec.element = element;
+  r.spec.algorithm = a;
+  r.spec.contact = c;
+  r.quantity = q;
+  r.id = schema::case_key(r.spec) + "/" + std::string(schema::to_string(q));
+  for (std::size_t m = 0; m < 3; ++m) {
+    r.errors[m] = errors[m];
+    r.values[m] = exact * (1.0 + errors[m] / 100.0);
+  }
+  r.grade = schema::grade_of_error(errors[2]);
+  r.graded_mesh = schema::MeshLevel::F;
+  r.converging = std::abs(errors[2]) < std::abs(errors[0]);
+  return r;
+}
+
+schema::ResultsDocument conformal_document() {
+  schema::ResultsDocument doc;
+  doc.problems.push_back(suites::problem_descriptor(ProblemId::IF_p).record);
+  const auto add = [&](Element e, Algorithm a, ContactKind c, double mean, double arc) {
+    doc.rows.push_back(row(ProblemId::IF_p, Quantity::p_mean, e, a, c, {4 * mean, 2 * mean, mean}));
+    doc.rows.push_back(row(ProblemId::IF_p, Quantity::p_arc, e, a, c, {4 * arc, 2 * arc, arc}));
+  };
+  add(Element::Q8, Algorithm::LMP, ContactKind::ns, -0.02, 35.0);
+  add(Element::Q8, Algorithm::LMP, ContactKind::ss, 0.3, -0.4);
+  add(Element::Q4, Algorithm::PLM, ContactKind::mortar, -0.6, 0.05);
+  add(Element::Q4, Algorithm::PM, ContactKind::ss, -3.0, -3.2);
+  return doc;
+}
+
+TEST(ConformalSection, FindsTheWorstAndBestArcOptionsAndJudgesTheLmMean) {
+  const schema::ResultsDocument doc = conformal_document();
+  const ResultsIndex index(doc);
+  const auto worst = worst_arc_option(index, ProblemId::IF_p);
+  const auto best = best_arc_option(index, ProblemId::IF_p);
+  ASSERT_TRUE(worst && best);
+  EXPECT_DOUBLE_EQ(worst->deviation_percent, 35.0);
+  EXPECT_EQ(worst->element, Element::Q8);
+  EXPECT_EQ(worst->option.label(), "LMP ns");
+  EXPECT_DOUBLE_EQ(best->deviation_percent, 0.05);
+  EXPECT_EQ(best->option.label(), "PLM mortar");
+  const std::string md = conformal_section(index);
+  EXPECT_NE(md.find("## Conformal contact"), std::string::npos);
+  EXPECT_NE(md.find("### IF<sub>p</sub>"), std::string::npos);
+  // LM ss/mortar worst mean: -0.6 % (Q4 PLM mortar), within 1 %; PM (-3 %) is not LM.
+  EXPECT_NE(md.find("the largest error of the mean pressure is −0.60 % (within 1 %)"),
+            std::string::npos)
+      << md;
+  EXPECT_NE(md.find("| Q8 | ns | — | — | −0.02 % / +35.0 % (e, c / u, c) | — | — |"),
+            std::string::npos)
+      << md;
+  EXPECT_EQ(friction_section(index), "");
+}
+
+TEST(FrictionSection, ComparesLmpWithPlm) {
+  schema::ResultsDocument doc;
+  doc.problems.push_back(suites::problem_descriptor(ProblemId::CM_p).record);
+  for (const auto c : {ContactKind::ss, ContactKind::mortar}) {
+    doc.rows.push_back(
+        row(ProblemId::CM_p, Quantity::c_over_a, Element::Q4, Algorithm::PLM, c, {8, 4, 2}));
+    doc.rows.push_back(row(ProblemId::CM_p, Quantity::c_over_a, Element::Q4, Algorithm::LMP, c,
+                           {8, 4, c == ContactKind::ss ? -3.5 : 2.005}));
+  }
+  const ResultsIndex index(doc);
+  const LmpPlmDifference d = lmp_plm_difference(index, ProblemId::CM_p);
+  EXPECT_EQ(d.n_pairs, 2);
+  EXPECT_EQ(d.n_equal, 1);  // 0.005 points apart: equal
+  EXPECT_DOUBLE_EQ(d.points, 5.5);
+  EXPECT_EQ(d.contact, ContactKind::ss);
+  const std::string md = friction_section(index);
+  EXPECT_NE(md.find("## Friction"), std::string::npos);
+  EXPECT_NE(md.find("on 1 of 2 pairs; the largest difference is 5.50 percentage points"),
+            std::string::npos)
+      << md;
+  EXPECT_EQ(conformal_section(index), "");
+}
+
+TEST(FrictionAndConformalSections, AbsentFromTheStudySample) {
+  const testing::Loaded data(testing::sample_json());
+  EXPECT_EQ(friction_section(data.index), "");
+  EXPECT_EQ(conformal_section(data.index), "");
+}
+
+}  // namespace
+}  // namespace cs::reports
