@@ -13,6 +13,15 @@ namespace {
 /// |x'| (degree 1 on a curved Q8 side) and close for other curved sides.
 constexpr int kWeightPoints = 5;
 
+/// The multiplier basis Phi_a of a segment's nodes from its side shape functions N (see
+/// constraint_set.hpp): N itself on a Q4 side; on a Q8 side the quadratic Bernstein basis,
+///   Phi_c = N_c + N_m / 4 (corners),   Phi_m = N_m / 2 (mid-side).
+std::array<double, 3> multiplier_basis(int n_nodes, const std::array<double, 3>& N) {
+  if (n_nodes != 3)
+    return N;
+  return {N[0] + 0.25 * N[2], N[1] + 0.25 * N[2], 0.5 * N[2]};
+}
+
 }  // namespace
 
 std::vector<ContactNode> contact_nodes(const ContactSurface& surface) {
@@ -143,9 +152,10 @@ ConstraintSet weighted_gap_constraints(const ContactSurface& surface, const Cont
         const TargetPoint tp = project(target, surface.point(k, t));
         const SideShapeValues sv = surface.shape(k, t);
         std::array<double, 3> N{sv.N[0], sv.N[1], sv.N[2]};
+        const std::array<double, 3> phi = multiplier_basis(seg.n_nodes, N);
         for (int a = 0; a < seg.n_nodes; ++a) {
           const int i = slave_index[a];
-          const double f = sv.N[a] * dm;
+          const double f = phi[a] * dm;
           gap_integral[i] += f * tp.gap;
           weight[i] += f;
           weight_abs[i] += std::abs(f);
@@ -169,7 +179,8 @@ ConstraintSet weighted_gap_constraints(const ContactSurface& surface, const Cont
     r.share_nodes[0] = i;
     r.shares[0] = 1.0;
     // Weighted rows are normalized by their own quadrature's weight, so that a uniform gap d
-    // gives g_a = d exactly; a degenerate node (Q8 axis corner) is normalized by int |N_a| r ds.
+    // gives g_a = d exactly (Phi_a >= 0, so w_a > 0 on any surface of positive measure; the
+    // int |Phi_a| r ds fallback only guards against a vanishing one).
     row_weight[i] = weight[i] > 0.25 * weight_abs[i] ? weight[i] : weight_abs[i];
     r.weight_w = row_weight[i];
     r.stiffness_per_area = n.stiffness_per_area;

@@ -123,10 +123,21 @@ void add_direction_triplets(int row, double scale, const Eigen::Vector2d& direct
 Eigen::SparseMatrix<double, Eigen::RowMajor> assemble_rows(
     int n_rows, int n_dofs, const std::vector<Eigen::Triplet<double>>& triplets);
 
-/// Weighted-gap rows: for every contact node a, g_a = (int N_a g (r) ds) / w_a, integrated over
-/// each segment cut at the parameters `cuts(k)` (sorted, inside (-1, 1)) with `points` Gauss
-/// points per piece. Mortar cuts at the target's nodes and kinks; surface-to-surface does not
-/// cut. The row's weight w_a is the node's consistent weight (its |N_a| weight if degenerate).
+/// Weighted-gap rows: for every contact node a, g_a = (int Phi_a g (r) ds) / w_a with
+/// w_a = int Phi_a (r) ds, integrated over each segment cut at the parameters `cuts(k)` (sorted,
+/// inside (-1, 1)) with `points` Gauss points per piece. Mortar cuts at the target's nodes and
+/// kinks; surface-to-surface does not cut.
+///
+/// MULTIPLIER BASIS Phi_a: the side shape functions N_a on a Q4 side; on a Q8 side the quadratic
+/// Bernstein basis (s in [0, 1] along the side from corner 0)
+///   Phi_0 = (1 - s)^2 = N_0 + N_m / 4,   Phi_m = 2 s (1 - s) = N_m / 2,   Phi_1 = s^2,
+/// which spans the same quadratics as N and sums to 1 (a uniform pressure and a uniform gap
+/// pass exactly, the patch test), but is >= 0. The Lagrange corner function N_c = (1 - s)(1 - 2 s)
+/// changes sign, so its weighted gap is no measure of penetration: it is < 0 where the gap grows
+/// fast enough over the far half of a side (an axisymmetric side beyond the end of a target,
+/// int N_c g r ds = -h^2 g'/60 for g = g' (r - r_c)), and on the axis of an axisymmetric surface
+/// int N_c r ds = 0, so its multiplier transmits no net force. With Phi_a >= 0, g >= 0 everywhere
+/// gives g_a >= 0 and every row carries a force lambda_a = int p_h Phi_a (r) ds >= 0 for p_h >= 0.
 ConstraintSet weighted_gap_constraints(const ContactSurface& surface, const ContactTarget& target,
                                        int n_dofs, int points,
                                        const std::function<std::vector<double>(int)>& cuts);

@@ -42,9 +42,11 @@ void check_pinball(const ConstraintSet& set, const RowState& rows, double pinbal
                    ContactResult& result);
 
 /// Per-node results, sorted by position. The pressure of a node is its multiplier coefficient
-/// lambda / w (weighted rows: mortar, ss with LM/MPC) or its nodal force over its consistent
-/// weight (ns; ss Gauss rows, whose forces are shared out with N_a); a node whose consistent
-/// weight vanishes reports its neighbour's.
+/// p_a = lambda_a / w_a (weighted rows: mortar, ss with LM/MPC; the value of p_h at a corner, and
+/// at a Q8 mid-side node its Bernstein coefficient, which is what the Coulomb law of a row
+/// bounds) or its nodal force over its consistent weight (ns; ss Gauss rows, whose forces are
+/// shared out with N_a); a node whose consistent weight vanishes reports its neighbour's. The
+/// force of a weighted row's node is lambda_a = int p_h Phi_a (r) ds.
 std::vector<ContactNodeResult> node_results(const ConstraintSet& set, const RowState& rows,
                                             const Eigen::VectorXd& node_gap);
 

@@ -6,10 +6,12 @@
 //   g   = g(x) + n . (u(x) - sum_i N_i u_i)   (the linearized gap at each point x),
 //
 // MULTIPLIER SPACE: standard Lagrange multipliers on the contact (non-mortar, deformable) side,
-// Phi_a = N_a, the trace of the contact side's displacement space (linear for Q4, quadratic for
-// Q8). The contact pressure is p_h = sum_a p_a Phi_a with p_a = lambda_a / w_a, the value
-// reported per node (for Q8 corners, whose N_a changes sign, w_a is the signed integral; on the
-// axis of an axisymmetric Q8 surface, where it vanishes, int |N_a| r ds).
+// spanning the trace of the contact side's displacement space (linear for Q4, quadratic for
+// Q8), in a basis Phi_a >= 0: the hat functions N_a on Q4 sides, the quadratic Bernstein basis on
+// Q8 sides (see weighted_gap_constraints in constraint_set.hpp: the Lagrange corner functions
+// change sign, which broke the inequality on axisymmetric Q8 surfaces). The contact pressure is
+// p_h = sum_a p_a Phi_a with p_a = lambda_a / w_a, the value reported per node (p_h itself at a
+// corner; at a Q8 mid-side node p_h = (p_0 + 2 p_m + p_1) / 4).
 //
 // Integration is exact for a flat interface: every contact segment is cut where a target node
 // (or a kink of a rigid profile) projects into it, and each piece is integrated with 5 Gauss

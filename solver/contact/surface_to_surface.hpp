@@ -8,8 +8,9 @@
 // each with its own penalty FKN (E / h) w_q and its own active flag.
 // Lagrange multiplier and MPC: Gauss-point multipliers would over-constrain the surface (more
 // rows than contact DOFs), so the same Gauss points integrate one weighted gap per node,
-//   g_a = sum_q N_a(t_q) w_q g_q / sum_q N_a(t_q) w_q,
-// with nodal multipliers (no segmentation at target nodes: that is what mortar adds).
+//   g_a = sum_q Phi_a(t_q) w_q g_q / sum_q Phi_a(t_q) w_q,
+// with nodal multipliers (no segmentation at target nodes: that is what mortar adds) and the
+// multiplier basis Phi_a >= 0 of mortar (N_a on Q4 sides, Bernstein on Q8 sides).
 
 #include "solver/contact/constraint_set.hpp"
 

@@ -137,6 +137,20 @@ TEST(Anomalies, AxisymmetricEdgeWeights) {
   EXPECT_NEAR(linear_edge_axisymmetric_weight(1, h), h * h / 3.0, 1e-14);
 }
 
+// Requirement: the integrals behind the Q8 multiplier-basis anomaly are right, against closed
+// forms at h = 2: int |N_c| r dr = h^2/16 on the axis edge; a Q8 corner function against a gap
+// growing linearly from it gives -h^3/60 with the r weight and 0 without; the Bernstein
+// functions (1-t)^2, t^2, 2t(1-t) integrate with r to h^2/12, h^2/4, h^2/6 (all > 0).
+TEST(Anomalies, MultiplierBasisIntegrals) {
+  const double h = 2.0;
+  EXPECT_NEAR(quadratic_edge_axisymmetric_abs_weight(0, h), h * h / 16.0, 1e-14);
+  EXPECT_NEAR(corner_weighted_linear_gap(true, h), -h * h * h / 60.0, 1e-14);
+  EXPECT_NEAR(corner_weighted_linear_gap(false, h), 0.0, 1e-14);
+  EXPECT_NEAR(bernstein_axisymmetric_weight(0, h), h * h / 12.0, 1e-14);
+  EXPECT_NEAR(bernstein_axisymmetric_weight(1, h), h * h / 4.0, 1e-14);
+  EXPECT_NEAR(bernstein_axisymmetric_weight(2, h), h * h / 6.0, 1e-14);
+}
+
 // Requirement: a fine-mesh e after a C or M error above 100 % is called a crossing; AL = PM is
 // explained when they coincide.
 TEST(Anomalies, ExplainsCrossingsAndAlEqualsPm) {
