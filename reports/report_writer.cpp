@@ -12,6 +12,7 @@
 #include "reports/findings/findings.hpp"
 #include "reports/findings/recommendation_section.hpp"
 #include "reports/findings/recovery_section.hpp"
+#include "reports/findings/refinement_section.hpp"
 #include "reports/findings/regression_report.hpp"
 #include "reports/findings/study_conclusions.hpp"
 #include "reports/findings/summary_section.hpp"
@@ -116,12 +117,12 @@ std::string report_markdown(const ResultsIndex& index, const StudyReference& stu
   const std::string variants = variants_section(index);
   const std::string recovery = recovery_section(index);
 
-  const NumberedSections numbered =
-      number_sections({recommendation_section(index), study_conclusions_section(index),
-                       summary_section(index, findings), mesh_table_section(index, study), grades,
-                       appendix, figs, divergence, interface_section(index),
-                       anomalies_section(index), beyond_study_section(index), variants, recovery},
-                      {bench_md});
+  const NumberedSections numbered = number_sections(
+      {recommendation_section(index), study_conclusions_section(index),
+       summary_section(index, findings), mesh_table_section(index, study), grades, appendix, figs,
+       divergence, interface_section(index), anomalies_section(index), beyond_study_section(index),
+       variants, recovery, refinement_section(index)},
+      {bench_md});
 
   std::string out =
       "# contact-suite report: our contact elements beside the study's ANSYS results\n\n"
