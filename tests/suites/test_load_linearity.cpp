@@ -1,6 +1,13 @@
-// The model is linear (small strains, linear elasticity, frictionless contact with a fixed
-// active set): normalized results do not depend on the load. p/E = 1e-3 (the default) and
-// 1e-4 give the same normalized values for every problem of the study on the C mesh.
+// Linearity in load (small strains, linear elasticity, frictionless contact): p/E = 1e-3 (the
+// default) and 1e-4 give the same normalized values, on the C mesh, for every problem whose
+// contact extent does not depend on the load.
+//  - P, P', F (flat surfaces, the active set fixed): identical to round-off.
+//  - H (the indenter's radius R is chosen from E/p so that the contact half-width is a): the
+//    normalized values depend on p/E only through a term of first order in p/E (the stiff
+//    indenter's geometry), so they converge as p/E -> 0 with the differences shrinking tenfold
+//    per decade of p/E.
+//  - S (a flat punch with rounded corners) is left out: its contact extent grows with the
+//    load, so its normalized peak is not linear in load (the study fixes p/E = 1e-3 for it).
 
 #include <cmath>
 #include <string>
@@ -8,7 +15,6 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
-#include "suites/problem_catalog.hpp"
 #include "suites/problem_executor.hpp"
 
 namespace cs::suites {
@@ -22,7 +28,10 @@ CaseResult run_at(ProblemId problem, Algorithm algorithm, double p_over_E) {
                       .contact = ContactKind::ss,
                       .overrides = {{"p_over_E", p_over_E}}};
   ProblemExecutor executor(spec);
-  return executor.run(spec);
+  CaseResult r = executor.run(spec);
+  EXPECT_EQ(r.status, CaseStatus::converged)
+      << to_string(problem) << " " << to_string(algorithm) << ": " << r.reason;
+  return r;
 }
 
 /// The largest relative difference of the normalized values of two runs of one case.
@@ -37,26 +46,37 @@ double largest_difference(const CaseResult& a, const CaseResult& b) {
   return worst;
 }
 
-// Requirement: for every study problem, with Lagrange multipliers (exact enforcement) and with
-// the penalty method (FKN relative to E/h, so the penalty scales with the load too), the
-// normalized values at p/E = 1e-3 and 1e-4 agree to 1e-4. What remains is geometric: the
-// curved profiles' gap is not exactly quadratic (relative O((a/R)^2) ~ (p/E)^2) and a node at
-// the contact edge may change state; a load-dependent error (a nonlinearity, a forgotten
-// normalization) would show at the size of the results' own errors, percents.
-TEST(LoadLinearity, NormalizedResultsDoNotDependOnPOverE) {
-  for (ProblemId problem : study_problems()) {
-    if (is_frictional(problem))
-      continue;
-    for (Algorithm algorithm : {Algorithm::LMP, Algorithm::PM}) {
-      const CaseResult a = run_at(problem, algorithm, 1e-3);
-      const CaseResult b = run_at(problem, algorithm, 1e-4);
+const Algorithm kAlgorithms[] = {Algorithm::LMP, Algorithm::PM};  // exact; penalty FKN E/h
+
+// Requirement: flat contacts give the same normalized values at p/E = 1e-3 and 1e-4 to 1e-11
+// (round-off of a 1e6 stiffness ratio; observed 5e-15 to 2e-13), with Lagrange multipliers and
+// with the penalty method, whose stiffness FKN E/h scales with the load.
+TEST(LoadLinearity, FlatContactsDoNotDependOnPOverE) {
+  for (ProblemId problem : {ProblemId::P_p, ProblemId::P_a, ProblemId::Pprime_p,
+                            ProblemId::Pprime_a, ProblemId::F_p, ProblemId::F_a}) {
+    for (Algorithm algorithm : kAlgorithms) {
+      const double d =
+          largest_difference(run_at(problem, algorithm, 1e-3), run_at(problem, algorithm, 1e-4));
+      EXPECT_LT(d, 1e-11) << to_string(problem) << " " << to_string(algorithm);
+    }
+  }
+}
+
+// Requirement: for Hertz the dependence on p/E is of first order: the difference between
+// p/E = 1e-4 and 1e-5 is 0.05 to 0.2 of that between 1e-3 and 1e-4 (a tenth for an exactly
+// linear term; observed H_p LMP sigma_h 2.3e-3 then 2.5e-4), and below 1e-2 at the default.
+TEST(LoadLinearity, HertzDependsOnPOverEAtFirstOrderOnly) {
+  for (ProblemId problem : {ProblemId::H_p, ProblemId::H_a}) {
+    for (Algorithm algorithm : kAlgorithms) {
+      const CaseResult a = run_at(problem, algorithm, 1e-3), b = run_at(problem, algorithm, 1e-4),
+                       c = run_at(problem, algorithm, 1e-5);
+      const double d1 = largest_difference(a, b), d2 = largest_difference(b, c);
       const std::string what = fmt::format("{} {}", to_string(problem), to_string(algorithm));
-      ASSERT_EQ(a.status, CaseStatus::converged) << what << ": " << a.reason;
-      ASSERT_EQ(b.status, CaseStatus::converged) << what << ": " << b.reason;
-      const double d = largest_difference(a, b);
-      std::printf("    %-12s p/E 1e-3 vs 1e-4: largest relative difference %.2e\n", what.c_str(),
-                  d);
-      EXPECT_LT(d, 1e-4) << what;
+      std::printf("    %-8s differences %.2e (1e-3 vs 1e-4), %.2e (1e-4 vs 1e-5)\n", what.c_str(),
+                  d1, d2);
+      EXPECT_LT(d1, 1e-2) << what;
+      EXPECT_GT(d2, 0.05 * d1) << what;
+      EXPECT_LT(d2, 0.2 * d1) << what;
     }
   }
 }
