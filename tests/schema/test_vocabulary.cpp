@@ -33,7 +33,7 @@ void expect_round_trip(std::size_t expected_count) {
 
 TEST(SchemaVocabulary, EveryAxisRoundTrips) {
   expect_round_trip<ProblemId>(15);
-  expect_round_trip<MeshLevel>(3);
+  expect_round_trip<MeshLevel>(4);  // C, M, F and VF
   expect_round_trip<Element>(2);
   expect_round_trip<Algorithm>(5);
   expect_round_trip<ContactKind>(3);
