@@ -9,8 +9,9 @@
 #   OUT/results.json, OUT/report.md   P, P', H, F: Q4 and Q8, every algorithm, ss and ns,
 #                                     the study's discretized (stiff) target
 #   OUT/steuermann/results.json, ...  S(1), S(1/3), S(1/7): Q4 with the rigid target (the
-#                                     discretized target's indenter mesh and Q8 at VF do not
-#                                     fit beside the block on a 2-core, ~20 GB machine)
+#                                     largest, S(1/7) VF Q4, has 2.15 million equations and
+#                                     peaks at 3.8 GB this way; Q8 at VF, three times the
+#                                     equations, is not run)
 #   OUT/time-*.txt                    /usr/bin/time -v of each run (wall time, peak memory)
 # Not part of ci/main.sh: the VF cases alone take far longer than its 5-minute budget.
 # Exit 0 on success, 1 if some analyses did not converge (a finding, in the report), else the
