@@ -83,7 +83,9 @@ void print_text() {
       print_parameter(p);
   }
   fmt::print("\nOptions:\n");
-  fmt::print("  --mesh       {}   (coarse h, medium h/2, fine h/4)\n", joined<schema::MeshLevel>());
+  fmt::print(
+      "  --mesh       {}   (coarse h, medium h/2, fine h/4; very fine h/8, only when asked)\n",
+      joined<schema::MeshLevel>());
   fmt::print("  --element    {}   (4-node bilinear, 8-node serendipity; 4Q/8Q accepted)\n",
              joined<schema::Element>());
   fmt::print(

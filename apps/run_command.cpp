@@ -27,6 +27,7 @@
 #include "suites/row_verdict.hpp"
 #include "suites/run_environment.hpp"
 #include "suites/shard.hpp"
+#include "suites/study_meshes.hpp"
 
 namespace cs::apps {
 namespace {
@@ -75,8 +76,8 @@ void stage_surface_csv(const std::vector<suites::CaseResult>& results,
 
 /// A rough relative cost of a model, to start the largest first.
 double group_cost(const suites::CaseSpec& spec) {
-  const double per_level[] = {1.0, 4.0, 16.0};
-  double cost = per_level[static_cast<int>(spec.mesh)];
+  const double f = suites::level_factor(spec.mesh);  // elements grow as f^2
+  double cost = f * f;
   if (spec.problem == suites::ProblemId::S_1 || spec.problem == suites::ProblemId::S_1_3 ||
       spec.problem == suites::ProblemId::S_1_7) {
     cost *= 30.0;

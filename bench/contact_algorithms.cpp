@@ -190,7 +190,7 @@ void BM_ContactAllOptions(benchmark::State& state, const suites::CaseSpec& spec)
 std::vector<suites::CaseSpec> models() {
   std::vector<suites::CaseSpec> out;
   for (const auto problem : kProblems) {
-    for (const auto mesh : schema::values<schema::MeshLevel>()) {
+    for (const auto mesh : schema::kStudyMeshes) {
       for (const auto element : schema::values<schema::Element>()) {
         suites::CaseSpec spec;
         spec.problem = problem;

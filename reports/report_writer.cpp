@@ -14,6 +14,7 @@
 #include "reports/findings/findings.hpp"
 #include "reports/findings/recommendation_section.hpp"
 #include "reports/findings/recovery_section.hpp"
+#include "reports/findings/refinement_section.hpp"
 #include "reports/findings/regression_report.hpp"
 #include "reports/findings/study_conclusions.hpp"
 #include "reports/findings/summary_section.hpp"
@@ -127,10 +128,10 @@ std::string report_markdown(const ResultsIndex& index, const StudyReference& stu
   const NumberedSections numbered =
       number_sections({recommendation_section(index), study_conclusions_section(index),
                        summary_section(index, findings), mesh_table_section(index, study),
-                       mesh_figures_section(mesh_figures), grades, appendix, figs, divergence,
-                       interface_section(index), anomalies_section(index),
-                       beyond_study_section(index), extent_section(index), friction_section(index),
-                       conformal_section(index), variants, recovery},
+                       mesh_figures_section(mesh_figures), grades, refinement_section(index),
+                       appendix, figs, divergence, interface_section(index),
+                       anomalies_section(index), beyond_study_section(index), extent_section(index),
+                       friction_section(index), conformal_section(index), variants, recovery},
                       {bench_md});
 
   std::string out =

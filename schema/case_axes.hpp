@@ -7,6 +7,7 @@
 // Adding an enumerator: add it to its enum and one `case` to its entry() (and, for an
 // algorithm or a contact, to its traits()). -Werror=switch names every switch that must learn it.
 
+#include <array>
 #include <cstdint>
 #include <string_view>
 
@@ -82,8 +83,12 @@ constexpr AxisEntry entry(ProblemId v) {
   return {};
 }
 
-/// The study's systematically refined meshes: coarse, medium (h/2), fine (h/4).
-enum class MeshLevel : std::uint8_t { C, M, F };
+/// The study's systematically refined meshes, coarse, medium (h/2) and fine (h/4), and one
+/// level beyond the study, very fine (h/8), run only when asked for (`--meshes ...,VF`).
+enum class MeshLevel : std::uint8_t { C, M, F, VF };
+/// The study's three meshes: the default of every run, the meshes a row is graded on (Table 2
+/// grades F) and whose C-M-F verdicts the report compares with the study's.
+inline constexpr std::array<MeshLevel, 3> kStudyMeshes{MeshLevel::C, MeshLevel::M, MeshLevel::F};
 constexpr std::string_view axis_name(MeshLevel) {
   return "mesh level";
 }
@@ -95,6 +100,8 @@ constexpr AxisEntry entry(MeshLevel v) {
       return {"M", "", ""};
     case MeshLevel::F:
       return {"F", "", ""};
+    case MeshLevel::VF:
+      return {"VF", "", ""};
   }
   return {};
 }

@@ -290,12 +290,70 @@ CaseResult case_from_json(const json& j, const std::string& path) {
   return c;
 }
 
+namespace {
+
+json to_json(const ErrorEstimate& e) {
+  return {{"asymptotic", e.asymptotic},
+          {"observed_order", number_or_null(e.observed_order)},
+          {"richardson", number_or_null(e.richardson)},
+          {"gci_percent", number_or_null(e.gci_percent)},
+          {"note", e.note}};
+}
+
+json to_json(const DivergenceVerdict& d) {
+  return {{"eq47", d.eq47},
+          {"monotone", d.monotone},
+          {"exponent", number_or_null(d.exponent)},
+          {"diverges", d.diverges}};
+}
+
+json to_json(const RefinementVerdict& v) {
+  json j{{"mesh", to_string(MeshLevel::VF)},
+         {"value", number_or_null(v.value)},
+         {"error_percent", number_or_null(v.error)},
+         {"observed_order_F_VF", number_or_null(v.pair_order)},
+         {"converging_M_F_VF", v.converging ? json(*v.converging) : json(nullptr)},
+         {"diverging_M_F_VF", v.diverging ? json(*v.diverging) : json(nullptr)}};
+  if (v.estimate)
+    j["estimate_M_F_VF"] = to_json(*v.estimate);
+  if (v.divergence)
+    j["divergence_M_F_VF"] = to_json(*v.divergence);
+  return j;
+}
+
+ErrorEstimate estimate_from_json(const JsonFields& e) {
+  return ErrorEstimate{e.boolean("asymptotic"), e.optional_number("observed_order"),
+                       e.optional_number("richardson"), e.optional_number("gci_percent"),
+                       e.optional_string("note")};
+}
+
+DivergenceVerdict divergence_from_json(const JsonFields& d) {
+  return DivergenceVerdict{d.boolean("eq47"), d.boolean("monotone"), d.optional_number("exponent"),
+                           d.boolean("diverges")};
+}
+
+RefinementVerdict refinement_from_json(const JsonFields& r) {
+  RefinementVerdict v;
+  v.value = r.optional_number("value");
+  v.error = r.optional_number("error_percent");
+  v.pair_order = r.optional_number("observed_order_F_VF");
+  v.converging = r.optional_boolean("converging_M_F_VF");
+  v.diverging = r.optional_boolean("diverging_M_F_VF");
+  if (r.has("estimate_M_F_VF") && !r.at("estimate_M_F_VF").is_null())
+    v.estimate = estimate_from_json(r.object("estimate_M_F_VF"));
+  if (r.has("divergence_M_F_VF") && !r.at("divergence_M_F_VF").is_null())
+    v.divergence = divergence_from_json(r.object("divergence_M_F_VF"));
+  return v;
+}
+
+}  // namespace
+
 json to_json(const RowVerdict& row) {
   json j{{"id", row.id}};
   spec_to_json(row.spec, j);
   j["quantity"] = to_string(row.quantity);
   json by_mesh = json::object(), errors = json::object();
-  for (MeshLevel level : values<MeshLevel>()) {
+  for (MeshLevel level : kStudyMeshes) {
     const auto i = static_cast<std::size_t>(level);
     by_mesh[std::string(to_string(level))] = number_or_null(row.values[i]);
     errors[std::string(to_string(level))] = number_or_null(row.errors[i]);
@@ -308,21 +366,12 @@ json to_json(const RowVerdict& row) {
   j["diverging"] = row.diverging ? json(*row.diverging) : json(nullptr);
   j["observed_order"] = {{"C_M", number_or_null(row.pair_orders[0])},
                          {"M_F", number_or_null(row.pair_orders[1])}};
-  if (row.estimate) {
-    const auto& e = *row.estimate;
-    j["estimate"] = {{"asymptotic", e.asymptotic},
-                     {"observed_order", number_or_null(e.observed_order)},
-                     {"richardson", number_or_null(e.richardson)},
-                     {"gci_percent", number_or_null(e.gci_percent)},
-                     {"note", e.note}};
-  }
-  if (row.divergence) {
-    const auto& d = *row.divergence;
-    j["divergence"] = {{"eq47", d.eq47},
-                       {"monotone", d.monotone},
-                       {"exponent", number_or_null(d.exponent)},
-                       {"diverges", d.diverges}};
-  }
+  if (row.estimate)
+    j["estimate"] = to_json(*row.estimate);
+  if (row.divergence)
+    j["divergence"] = to_json(*row.divergence);
+  if (row.refinement)
+    j["refinement"] = to_json(*row.refinement);
   return j;
 }
 
@@ -335,7 +384,7 @@ RowVerdict row_from_json(const json& j, const std::string& path) {
   check_id(r, row.id);
   const JsonFields by_mesh = r.object("values");
   const JsonFields errors = r.object("error_percent");
-  for (MeshLevel level : values<MeshLevel>()) {
+  for (MeshLevel level : kStudyMeshes) {
     const auto i = static_cast<std::size_t>(level);
     const std::string name(to_string(level));
     const double v = by_mesh.number(name.c_str(), true);
@@ -353,17 +402,12 @@ RowVerdict row_from_json(const json& j, const std::string& path) {
     const JsonFields o = r.object("observed_order");
     row.pair_orders = {o.optional_number("C_M"), o.optional_number("M_F")};
   }
-  if (r.has("estimate") && !r.at("estimate").is_null()) {
-    const JsonFields e = r.object("estimate");
-    row.estimate = ErrorEstimate{e.boolean("asymptotic"), e.optional_number("observed_order"),
-                                 e.optional_number("richardson"), e.optional_number("gci_percent"),
-                                 e.optional_string("note")};
-  }
-  if (r.has("divergence") && !r.at("divergence").is_null()) {
-    const JsonFields d = r.object("divergence");
-    row.divergence = DivergenceVerdict{d.boolean("eq47"), d.boolean("monotone"),
-                                       d.optional_number("exponent"), d.boolean("diverges")};
-  }
+  if (r.has("estimate") && !r.at("estimate").is_null())
+    row.estimate = estimate_from_json(r.object("estimate"));
+  if (r.has("divergence") && !r.at("divergence").is_null())
+    row.divergence = divergence_from_json(r.object("divergence"));
+  if (r.has("refinement") && !r.at("refinement").is_null())
+    row.refinement = refinement_from_json(r.object("refinement"));
   return row;
 }
 

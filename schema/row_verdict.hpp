@@ -52,7 +52,21 @@ inline constexpr double kDivergenceExponentMax = 0.75;
 ///   diverges = (|s_C| < |s_M| < |s_F|, one sign) and alpha in [0.25, 0.75].
 DivergenceVerdict divergence_verdict(double s_c, double s_m, double s_f);
 
-/// One row: the cases of an option set that differ only in mesh level, for one quantity.
+/// What the fourth mesh (VF, h/8, beyond the study) adds to a row: its value and error, the
+/// observed order of the error from F to VF, and the verdicts over M, F, VF, to set beside the
+/// row's C-M-F verdicts. The row's grade stays the F grade (Table 2's mesh).
+struct RefinementVerdict {
+  std::optional<double> value;       ///< on VF (empty: case failed)
+  std::optional<double> error;       ///< percent, on VF (nonsingular rows)
+  std::optional<double> pair_order;  ///< F->VF: log2(|e_F| / |e_VF|), as RowVerdict::pair_orders
+  std::optional<bool> converging;    ///< nonsingular: the converging verdict over M, F, VF
+  std::optional<bool> diverging;     ///< singular: Eq. 47 over M, F, VF
+  std::optional<ErrorEstimate> estimate;        ///< nonsingular: from M, F, VF
+  std::optional<DivergenceVerdict> divergence;  ///< singular: from M, F, VF
+};
+
+/// One row: the cases of an option set that differ only in mesh level, for one quantity. The
+/// study's meshes C, M, F are indexed 0..2 in `values` and `errors`; VF is in `refinement`.
 struct RowVerdict {
   std::string id;  ///< case_key(spec) + "/" + quantity, e.g. "H_p/Q4/LMP/ss/sigma_c"
   CaseSpec spec;   ///< the option set (spec.mesh is meaningless here and left at C)
@@ -68,6 +82,7 @@ struct RowVerdict {
   std::array<std::optional<double>, 2> pair_orders;
   std::optional<ErrorEstimate> estimate;        ///< nonsingular rows with three meshes
   std::optional<DivergenceVerdict> divergence;  ///< singular rows with three meshes
+  std::optional<RefinementVerdict> refinement;  ///< rows that have a VF case
 
   /// True for the study's option sets (see CaseResult::is_baseline).
   bool is_baseline() const;

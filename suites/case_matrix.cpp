@@ -24,7 +24,7 @@ std::vector<E> or_all(const std::vector<E>& chosen, const All& all) {
 std::vector<CaseSpec> make_case_matrix(const CaseSelection& sel) {
   std::vector<CaseSpec> cases;
   for (ProblemId p : or_all(sel.problems, study_problems())) {
-    for (MeshLevel m : or_all(sel.meshes, values<MeshLevel>())) {
+    for (MeshLevel m : or_all(sel.meshes, schema::kStudyMeshes)) {
       for (Element e : or_all(sel.elements, values<Element>())) {
         for (Algorithm a : or_all(sel.algorithms, values<Algorithm>())) {
           // MPC is not defined with friction: left out unless asked for (then refused).

@@ -13,6 +13,20 @@
 namespace cs::suites {
 namespace {
 
+/// Puts a case's quantities back in its problem's order (results.json keys them by name, so a
+/// file read back has them alphabetically): the rows then come out in the unsharded run's order.
+void order_quantities(CaseResult& c) {
+  const auto& defined = problem_descriptor(c.spec.problem).record.quantities;
+  auto rank = [&defined](const QuantityResult& q) {
+    const auto it = std::find_if(defined.begin(), defined.end(),
+                                 [&q](const auto& d) { return d.quantity == q.quantity; });
+    return it - defined.begin();
+  };
+  std::stable_sort(
+      c.quantities.begin(), c.quantities.end(),
+      [&rank](const QuantityResult& a, const QuantityResult& b) { return rank(a) < rank(b); });
+}
+
 std::string version_of(const schema::ResultsDocument& d) {
   const auto& env = d.run.environment;
   const auto it = env.find("contact_suite_version");
@@ -106,6 +120,8 @@ schema::ResultsDocument merge_results(const std::vector<schema::ResultsDocument>
                                       out.cases.size(), shard->total_cases));
   }
   sort_cases(out.cases);
+  for (auto& c : out.cases)
+    order_quantities(c);
   out.problems = problem_records(out.cases);
   out.rows = make_row_verdicts(out.cases);
   return out;

@@ -13,7 +13,25 @@ std::string row_key(const CaseSpec& spec, Quantity quantity) {
   return schema::case_key(spec) + "/" + std::string(to_string(quantity));
 }
 
+/// The verdicts over M, F, VF, beside the row's C-M-F ones (the row must have VF).
+void apply_refinement_verdicts(RowVerdict& row) {
+  schema::RefinementVerdict& vf = *row.refinement;
+  if (row.errors[2] && vf.error)
+    vf.pair_order = pair_orders({row.errors[1], row.errors[2], vf.error})[1];
+  if (!row.values[1] || !row.values[2] || !vf.value)
+    return;
+  if (is_singular(row.spec.problem)) {
+    vf.diverging = is_diverging(*row.values[1], *row.values[2], *vf.value);
+    vf.divergence = divergence_verdict(*row.values[1], *row.values[2], *vf.value);
+  } else if (row.errors[1] && row.errors[2] && vf.error) {
+    vf.converging = is_converging(*row.errors[1], *row.errors[2], *vf.error);
+    vf.estimate = error_estimate(*row.values[1], *row.values[2], *vf.value);
+  }
+}
+
 void apply_verdicts(RowVerdict& row) {
+  if (row.refinement)
+    apply_refinement_verdicts(row);
   row.pair_orders = pair_orders(row.errors);
   for (int level = 2; level >= 0; --level) {
     if (row.errors[level]) {
@@ -53,12 +71,21 @@ std::vector<RowVerdict> make_row_verdicts(const std::vector<CaseResult>& cases) 
         row.spec.mesh = MeshLevel::C;
         row.quantity = q.quantity;
       }
+      if (c.spec.mesh == MeshLevel::VF && !row.refinement)
+        row.refinement.emplace();  // present even when the VF case failed
       if (c.status == CaseStatus::failed || c.status == CaseStatus::timeout ||
           !std::isfinite(q.value))
         continue;
+      const bool singular = is_singular(c.spec.problem);
+      if (c.spec.mesh == MeshLevel::VF) {
+        row.refinement->value = q.value;
+        if (!singular)
+          row.refinement->error = q.error_percent;
+        continue;
+      }
       const auto level = static_cast<std::size_t>(c.spec.mesh);
       row.values[level] = q.value;
-      if (!is_singular(c.spec.problem))
+      if (!singular)
         row.errors[level] = q.error_percent;
     }
   }

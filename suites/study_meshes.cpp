@@ -376,12 +376,17 @@ int level_factor(MeshLevel level) {
       return 1;
     case MeshLevel::M:
       return 2;
-    default:
+    case MeshLevel::F:
       return 4;
+    case MeshLevel::VF:
+      return 8;
   }
+  return 1;
 }
 
 int table1_elements(ProblemId problem, MeshLevel level) {
+  if (level == MeshLevel::VF)
+    return 0;  // beyond the study: Table 1 has no VF count
   int coarse = 0;
   switch (problem) {
     case ProblemId::P_p:

@@ -19,8 +19,9 @@
 
 namespace cs::reports {
 
-/// The mesh levels in order: C, M, F (index i of RowVerdict::values is kMeshes[i]).
-inline constexpr auto kMeshes = schema::values<schema::MeshLevel>();
+/// The study's mesh levels in order: C, M, F (index i of RowVerdict::values is kMeshes[i]); the
+/// fourth level, VF, is in RowVerdict::refinement and has its own report section.
+inline constexpr auto kMeshes = schema::kStudyMeshes;
 /// The position of a mesh level in RowVerdict::values.
 constexpr std::size_t mesh_index(schema::MeshLevel m) {
   return static_cast<std::size_t>(m);

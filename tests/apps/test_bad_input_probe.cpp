@@ -90,7 +90,7 @@ std::vector<Probe> name_probes() {
   for (const char* bad : {"H_x", "h_p", "", "P_p ", "S_1/3", "F", "P'", "all", "-", "\n"})
     p.push_back({{"case", bad}});
   for (const auto& [opt, bad] :
-       std::vector<std::pair<std::string, std::string>>{{"--mesh", "VF"},
+       std::vector<std::pair<std::string, std::string>>{{"--mesh", "XF"},
                                                         {"--mesh", "c"},
                                                         {"--mesh", ""},
                                                         {"--element", "Q9"},

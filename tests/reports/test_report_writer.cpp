@@ -196,7 +196,7 @@ INSTANTIATE_TEST_SUITE_P(
                       BadInput{"no cases", sample_with("cases", 7), ".cases: is not an array"},
                       BadInput{
                           "bad case", sample_with_bad_case(),
-                          "cases[3].mesh: unknown mesh level \"X\" (expected one of: C, M, F)"},
+                          "cases[3].mesh: unknown mesh level \"X\" (expected one of: C, M, F, VF)"},
                       BadInput{"unknown algorithm", sample_with_unknown_algorithm(),
                                "rows[1].algorithm: unknown algorithm \"IMCX\""}),
     [](const auto& info) {

@@ -33,7 +33,7 @@ void expect_round_trip(std::size_t expected_count) {
 
 TEST(SchemaVocabulary, EveryAxisRoundTrips) {
   expect_round_trip<ProblemId>(17);  // the study's 11, 2 E1 patch tests, FP_p, CM_p, IF_p, IF_a
-  expect_round_trip<MeshLevel>(3);
+  expect_round_trip<MeshLevel>(4);   // C, M, F and VF
   expect_round_trip<Element>(2);
   expect_round_trip<Algorithm>(5);
   expect_round_trip<ContactKind>(3);

@@ -27,7 +27,7 @@ TEST(CaseSpec, EveryNameRoundTrips) {
   EXPECT_EQ(values<ProblemId>().size(), 17u);
   EXPECT_EQ(study_problems().size(), 11u);
   // 11 problems x 3 meshes x 2 elements x 5 algorithms x 2 discretizations: the study's 660.
-  EXPECT_EQ(study_problems().size() * values<MeshLevel>().size() * values<Element>().size() *
+  EXPECT_EQ(study_problems().size() * schema::kStudyMeshes.size() * values<Element>().size() *
                 values<Algorithm>().size() * study_contacts().size(),
             660u);
 }

@@ -22,7 +22,7 @@ struct HertzErrors {
 
 HertzErrors hertz_errors(Recovery recovery) {
   HertzErrors out;
-  for (MeshLevel mesh : values<MeshLevel>()) {
+  for (MeshLevel mesh : schema::kStudyMeshes) {
     const CaseSpec spec{.problem = ProblemId::H_p,
                         .mesh = mesh,
                         .element = Element::Q4,

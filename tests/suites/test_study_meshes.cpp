@@ -72,7 +72,7 @@ TEST(StudyMeshes, Table1Values) {
 
 TEST(StudyMeshes, StructuredCountsEqualTable1AndElementsAreValid) {
   for (ProblemId p : kStructured) {
-    for (MeshLevel level : values<MeshLevel>()) {
+    for (MeshLevel level : schema::kStudyMeshes) {
       for (ElementType element : {ElementType::Q4, ElementType::Q8}) {
         const StudyMesh m = build_study_mesh(spec_for(p, level, element));
         const std::string what = fmt::format("{} {} {}", to_string(p), to_string(level),
@@ -89,6 +89,18 @@ TEST(StudyMeshes, StructuredCountsEqualTable1AndElementsAreValid) {
       }
     }
   }
+}
+
+// Requirement: the fourth level VF halves F's element sides (8x C's, 64x its elements) and has
+// no Table 1 count (the study ran three meshes).
+TEST(StudyMeshes, VeryFineLevelHalvesTheFineMesh) {
+  EXPECT_EQ(level_factor(MeshLevel::VF), 2 * level_factor(MeshLevel::F));
+  for (ProblemId p : kStructured)
+    EXPECT_EQ(table1_elements(p, MeshLevel::VF), 0) << to_string(p);
+  const StudyMesh c = build_study_mesh(spec_for(ProblemId::H_p, MeshLevel::C, ElementType::Q4));
+  const StudyMesh vf = build_study_mesh(spec_for(ProblemId::H_p, MeshLevel::VF, ElementType::Q4));
+  EXPECT_EQ(vf.info.n_block_elements, 64 * c.info.n_block_elements);
+  EXPECT_NEAR(vf.info.h_contact, c.info.h_contact / 8.0, 1e-12 * c.info.h_contact);
 }
 
 TEST(StudyMeshes, GeometryAndSetsOfTheHertzMesh) {
@@ -146,7 +158,7 @@ std::pair<int, int> aligned_surface_nodes(const StudyMesh& m, double x_max) {
 }
 
 TEST(StudyMeshes, PatchTestNodesMatchButPrimeNodesDoNot) {
-  for (MeshLevel level : values<MeshLevel>()) {
+  for (MeshLevel level : schema::kStudyMeshes) {
     for (ElementType element : {ElementType::Q4, ElementType::Q8}) {
       const StudyMesh p = build_study_mesh(spec_for(ProblemId::P_p, level, element));
       const auto [aligned_p, under_p] = aligned_surface_nodes(p, 1.0);
@@ -173,7 +185,7 @@ TEST(StudyMeshes, IndenterNodesMatchForHertzAndFlatPunch) {
 
 TEST(StudyMeshes, SteuermannCountsWithin5PercentOfTable1AtEveryLevel) {
   for (ProblemId p : kSteuermann) {
-    for (MeshLevel level : values<MeshLevel>()) {
+    for (MeshLevel level : schema::kStudyMeshes) {
       const StudyMeshSpec spec = spec_for(p, level, ElementType::Q4);
       const StudyMesh m = build_study_mesh(spec);
       const double table = table1_elements(p, level);
