@@ -13,12 +13,6 @@ namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-bool in_range(const ParameterSpec& s, double v) {
-  const bool above = s.min_inclusive ? v >= s.min : v > s.min;
-  const bool below = s.max_inclusive ? v <= s.max : v < s.max;
-  return std::isfinite(v) && above && below;
-}
-
 }  // namespace
 
 std::vector<ParameterSpec> common_parameters(double default_p_over_E) {
@@ -67,7 +61,7 @@ Parameters::Parameters(const std::vector<ParameterSpec>& specs,
       throw SuiteInputError(
           fmt::format("problem {} has no parameter '{}' (it has: {})", problem_name, name, known));
     }
-    if (!in_range(*spec, value)) {
+    if (!accepts(*spec, value)) {
       throw SuiteInputError(fmt::format("--set {}={}: out of range {} for problem {}", name, value,
                                         range_text(*spec), problem_name));
     }
@@ -87,6 +81,12 @@ double Parameters::get(std::string_view name) const {
 bool Parameters::overridden(std::string_view name) const {
   const auto it = overridden_.find(name);
   return it != overridden_.end() && it->second;
+}
+
+bool accepts(const ParameterSpec& s, double v) {
+  const bool above = s.min_inclusive ? v >= s.min : v > s.min;
+  const bool below = s.max_inclusive ? v <= s.max : v < s.max;
+  return std::isfinite(v) && above && below;
 }
 
 std::string range_text(const ParameterSpec& s) {

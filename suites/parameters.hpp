@@ -42,6 +42,9 @@ class Parameters {
   std::map<std::string, bool, std::less<>> overridden_;
 };
 
+/// True when `value` is finite and within the parameter's range.
+bool accepts(const ParameterSpec& spec, double value);
+
 /// "[0, 0.5)"-style text of a parameter's range, for listings and error messages.
 std::string range_text(const ParameterSpec& spec);
 
