@@ -12,13 +12,15 @@
 #
 # The sweeps (cases that differ only in FKN, FTOLN or the pinball share one model and its
 # factorization; a different E ratio is a different model):
-#   fkn      1e-3 .. 1e4 (8 values) for AL, PM (and LMP, the exactly enforced reference) with
-#            ss and mortar, Q4 and Q8: H_p and H_a on C, M, F (convergence c), S_1_7 and S_1_3
-#            on F with Q4 and on M with Q8 (the F Q8 Steuermann models dominate the time);
-#   ftoln    1e-3 .. 1 at the default FKN, AL, H_p and H_a, F, Q4 and Q8, ss and mortar;
-#   pinball  1e-3 .. 1e3 for MPC (the study's IMC), H_p, H_a, S_1_7, F, Q4 and Q8, ss and ns;
-#   E_ratio  1e3 .. 1e9 on Pprime_p and H_p, F, Q4 and Q8, LMP and AL, ss.
-# Measured on 2 cores (see the closing note of issue 14): about 3 minutes in all.
+#   fkn      1e-3 .. 1e4 (8 values): AL, PM and LMP (the exactly enforced limit) with ss, ns and
+#            mortar, Q4 and Q8, on H_p and H_a on C, M and F (convergence c); AL and PM ss on
+#            S_1_7 and S_1_3 with Q4 on F (S(1/3) Q4 ss F is the study's -13 % AL case) and on
+#            S_1_7 with Q8 on M (an F Q8 Steuermann model alone takes minutes); AL ns and
+#            mortar on the axisymmetric patch tests P_a and Pprime_a, Q8, F;
+#   ftoln    1e-3 .. 1 at the default FKN: AL, H_p and H_a, F, Q4 and Q8, ss and mortar;
+#   pinball  1e-3 .. 1e3 for MPC (the study's IMC): H_p and H_a, F, Q4 and Q8, ss and ns;
+#   E_ratio  1e3 .. 1e9: LMP and AL ss, Pprime_p and H_p, F, Q4 and Q8.
+# SWEEP_JOBS sets --jobs (default 2). Time and memory: see docs/sweeps.md.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 out=${1:-out/sweeps}
@@ -43,21 +45,23 @@ sweep() {  # sweep NAME ARGS...: one run into OUT/NAME, results.json only
   }
 }
 
-sweep fkn_H --problems H_p,H_a --elements Q4,Q8 --algorithms AL,PM,LMP --contacts ss,mortar \
+sweep fkn_H --problems H_p,H_a --elements Q4,Q8 --algorithms AL,PM,LMP \
+  --contacts ss,ns,mortar --sweep fkn=$fkn
+sweep fkn_P --problems P_a,Pprime_a --meshes F --elements Q8 --algorithms AL --contacts ns,mortar \
   --sweep fkn=$fkn
-sweep fkn_S_Q4 --problems S_1_7,S_1_3 --meshes F --elements Q4 --algorithms AL,PM,LMP \
-  --contacts ss,mortar --sweep fkn=$fkn
-sweep fkn_S_Q8 --problems S_1_7,S_1_3 --meshes M --elements Q8 --algorithms AL,PM,LMP \
-  --contacts ss,mortar --sweep fkn=$fkn
+sweep fkn_S_Q4 --problems S_1_7,S_1_3 --meshes F --elements Q4 --algorithms AL,PM --contacts ss \
+  --sweep fkn=$fkn
+sweep fkn_S_Q8 --problems S_1_7 --meshes M --elements Q8 --algorithms AL,PM --contacts ss \
+  --sweep fkn=$fkn
 sweep ftoln --problems H_p,H_a --meshes F --elements Q4,Q8 --algorithms AL --contacts ss,mortar \
   --sweep ftoln=1e-3,1e-2,0.1,0.5,1
-sweep pinball --problems H_p,H_a,S_1_7 --meshes F --elements Q4,Q8 --algorithms MPC \
-  --contacts ss,ns --sweep pinball=1e-3,1e-2,0.1,0.5,1,10,1e3
+sweep pinball --problems H_p,H_a --meshes F --elements Q4,Q8 --algorithms MPC --contacts ss,ns \
+  --sweep pinball=1e-3,1e-2,0.1,0.5,1,10,1e3
 sweep E_ratio --problems Pprime_p,H_p --meshes F --elements Q4,Q8 --algorithms LMP,AL \
   --contacts ss --sweep E_ratio=1e3,1e4,1e5,1e6,1e7,1e8,1e9
 
 # One results file of every sweep: the strict reader of `report` checks the combination.
-python3 - "$out" fkn_H fkn_S_Q4 fkn_S_Q8 ftoln pinball E_ratio <<'PY'
+python3 - "$out" fkn_H fkn_P fkn_S_Q4 fkn_S_Q8 ftoln pinball E_ratio <<'PY'
 import json, sys
 out, names = sys.argv[1], sys.argv[2:]
 docs = [json.load(open(f"{out}/{n}/results.json")) for n in names]

@@ -103,9 +103,11 @@ std::vector<SweepPanel> sweep_panels(const std::vector<SweepSeries>& series) {
   std::map<Key, std::size_t> slot;
   std::vector<SweepPanel> panels;
   for (const auto& s : series) {
-    if (s.points.empty())
+    if (s.points.empty() || !on_finest_mesh(s, series))
       continue;
     for (const auto& q : s.points.front().result->quantities) {
+      if (q.quantity == schema::Quantity::contact_half_width)
+        continue;  // graded apart: it moves by whole nodes
       const Key key{s.base.problem, q.quantity, s.base.mesh, s.base.element};
       const auto [it, fresh] = slot.try_emplace(key, panels.size());
       if (fresh)

@@ -1,8 +1,8 @@
 #pragma once
 // The figures of the report's sweep section, drawn by gnuplot as DIR/figures/sweep_KEY.png: one
-// per swept key, one panel per problem, quantity, mesh and element, |error| (%) against the
-// swept value (log axes where the values span two decades or more), one curve per option set;
-// a case that did not converge is drawn as an open marker.
+// per swept key, one panel per problem, stress quantity and element on the finest mesh swept,
+// |error| (%) against the swept value (log axes where the values span two decades or more), one
+// curve per option set; a case that did not converge is drawn as an open circle.
 
 #include <filesystem>
 #include <string>
@@ -22,7 +22,8 @@ struct SweepPanel {
   std::vector<const SweepSeries*> series;
 };
 
-/// The panels of a key's series, in document order; every quantity of each problem.
+/// The panels of a key's series, in document order: the finest mesh swept of each problem and
+/// element, every stress quantity (not the contact half-width, graded apart).
 std::vector<SweepPanel> sweep_panels(const std::vector<SweepSeries>& series);
 
 /// The relative file of a key's figure: "figures/sweep_fkn.png".

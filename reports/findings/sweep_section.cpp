@@ -79,16 +79,6 @@ bool penalty_based(const SweepSeries& s) {
   return schema::traits(s.base.algorithm).penalty_based;
 }
 
-/// The finest mesh swept for the series' problem and element (the one the study grades).
-bool on_finest_mesh(const SweepSeries& s, const std::vector<SweepSeries>& all) {
-  for (const auto& o : all) {
-    if (o.base.problem == s.base.problem && o.base.element == s.base.element &&
-        o.base.mesh > s.base.mesh)
-      return false;
-  }
-  return true;
-}
-
 /// The swept values at which every curve satisfies `ok` (a value a curve lacks fails it).
 std::vector<double> values_where_all(const std::vector<Curve>& cs, const std::vector<double>& all,
                                      const std::function<bool(const SweepPoint&, Quantity)>& ok) {
@@ -118,7 +108,8 @@ std::string key_table(const std::vector<SweepSeries>& series, const std::vector<
   for (double v : values)
     header.push_back(format_swept_value(v));
   MarkdownTable table(header);
-  for (const auto& c : curves(series, nullptr)) {
+  const auto finest = [&](const SweepSeries& s) { return on_finest_mesh(s, series); };
+  for (const auto& c : curves(series, finest)) {
     const SweepSeries& s = *c.series;
     std::vector<std::string> row{std::string(schema::to_string(s.base.problem)),
                                  std::string(schema::to_string(c.quantity)),

@@ -72,6 +72,15 @@ std::vector<SweepSeries> sweep_series(const schema::ResultsDocument& doc, const 
   return out;
 }
 
+bool on_finest_mesh(const SweepSeries& s, const std::vector<SweepSeries>& all) {
+  for (const auto& o : all) {
+    if (o.base.problem == s.base.problem && o.base.element == s.base.element &&
+        o.base.mesh > s.base.mesh)
+      return false;
+  }
+  return true;
+}
+
 std::vector<double> swept_values(const std::vector<SweepSeries>& series) {
   std::set<double> values;
   for (const auto& s : series) {

@@ -40,6 +40,10 @@ std::vector<std::string> swept_keys(const schema::ResultsDocument& doc);
 /// left out, and a series of a single point is kept (it is still a swept case).
 std::vector<SweepSeries> sweep_series(const schema::ResultsDocument& doc, const std::string& key);
 
+/// True when no series of the same problem and element has a finer mesh: the mesh the study
+/// grades, and the one the section's tables, figures and windows show.
+bool on_finest_mesh(const SweepSeries& series, const std::vector<SweepSeries>& all);
+
 /// The values of a key over its series, ascending and distinct.
 std::vector<double> swept_values(const std::vector<SweepSeries>& series);
 

@@ -134,5 +134,37 @@ TEST(ParameterSweep, FknSweepOnHpShrinksTowardsTheLagrangeValue) {
   EXPECT_LT(previous, 0.1);                                                // FKN 1000: LM's
 }
 
+// Requirement (issue 14): the default FKN makes the penalty stiff enough that AL is graded like
+// exact enforcement: on H_a M Q4 ss (s with the old default FKN = 1, -9 %) the default AL error
+// is within half a percentage point of LMP's (the limit of AL as FKN grows) and graded alike,
+// while FKN = 1 is more than ten points away.
+TEST(ParameterSweep, DefaultFknGradesHaLikeExactEnforcement) {
+  CaseSelection sel;
+  sel.problems = {ProblemId::H_a};
+  sel.meshes = {MeshLevel::M};
+  sel.elements = {Element::Q4};
+  sel.algorithms = {Algorithm::LMP, Algorithm::AL};
+  sel.contacts = {ContactKind::ss};
+  auto cases = make_case_matrix(sel);  // the defaults
+  sel.algorithms = {Algorithm::AL};
+  sel.overrides = {{"fkn", 1.0}};  // the default before issue 14
+  const auto old = make_case_matrix(sel);
+  cases.insert(cases.end(), old.begin(), old.end());
+  RunnerOptions one;
+  one.jobs = 1;
+  const auto r = run_cases(cases, make_problem_executor, one);
+  ASSERT_EQ(r.size(), 3u);
+  for (const auto& c : r)
+    ASSERT_EQ(c.status, CaseStatus::converged) << case_id(c.spec) << ": " << c.reason;
+  const auto& lmp = r[0].quantities[0];
+  const auto& al = r[1].quantities[0];
+  const auto& al_old = r[2].quantities[0];
+  ASSERT_EQ(al.quantity, schema::Quantity::sigma_c);
+  EXPECT_LT(std::abs(al.error_percent - lmp.error_percent), 0.5);
+  EXPECT_EQ(al.grade, lmp.grade);
+  EXPECT_GT(std::abs(al_old.error_percent - lmp.error_percent), 10.0);
+  EXPECT_GT(static_cast<int>(al_old.grade), static_cast<int>(al.grade));  // s before, g now
+}
+
 }  // namespace
 }  // namespace cs::suites

@@ -64,7 +64,7 @@ TEST(ProblemCatalog, EveryProblemHasAQuantityAndTheCommonParameters) {
     EXPECT_EQ(info.record.axisymmetric, is_axisymmetric(id));
     EXPECT_NE(info.build, nullptr);
     const Parameters p(info.parameters, {}, to_string(id));
-    EXPECT_EQ(p.get("fkn"), 1.0);
+    EXPECT_EQ(p.get("fkn"), 100.0);
     EXPECT_EQ(p.get("ftoln"), 0.1);
   }
 }
