@@ -5,9 +5,9 @@
 #   bash ci/sweeps.sh [OUT] [build-dir]
 #
 #   OUT        output directory (default: out/sweeps). Each sweep is one run, written to
-#              OUT/<key>/results.json with its report; OUT/results.json combines them (the cases
-#              and rows of every run, every swept key in run.sweep) and OUT/report/report.md is
-#              the report of the combination, with its "Parameter sweeps" section.
+#              OUT/<name>/results.json; `merge` combines them into OUT/all/results.json (the
+#              cases and rows of every run, every swept key in run.sweep) with its report
+#              OUT/all/report.md and its "Parameter sweeps" section.
 #   build-dir  a built tree (default: build)
 #
 # The sweeps (cases that differ only in FKN, FTOLN or the pinball share one model and its
@@ -60,28 +60,11 @@ sweep pinball --problems H_p,H_a --meshes F --elements Q4,Q8 --algorithms MPC --
 sweep E_ratio --problems Pprime_p,H_p --meshes F --elements Q4,Q8 --algorithms LMP,AL \
   --contacts ss --sweep E_ratio=1e3,1e4,1e5,1e6,1e7,1e8,1e9
 
-# One results file of every sweep: the strict reader of `report` checks the combination.
-python3 - "$out" fkn_H fkn_P fkn_S_Q4 fkn_S_Q8 ftoln pinball E_ratio <<'PY'
-import json, sys
-out, names = sys.argv[1], sys.argv[2:]
-docs = [json.load(open(f"{out}/{n}/results.json")) for n in names]
-doc = docs[0]
-seen = {p["id"] for p in doc["problems"]}
-axes = {a["key"]: a for a in doc["run"].get("sweep", [])}
-for d in docs[1:]:
-    doc["cases"] += d["cases"]
-    doc["rows"] += d["rows"]
-    doc["problems"] += [p for p in d["problems"] if p["id"] not in seen]
-    seen |= {p["id"] for p in d["problems"]}
-    for a in d["run"].get("sweep", []):
-        axes.setdefault(a["key"], {"key": a["key"], "values": []})
-        axes[a["key"]]["values"] += [v for v in a["values"] if v not in axes[a["key"]]["values"]]
-    doc["run"]["wall_seconds"] += d["run"]["wall_seconds"]
-    doc["run"]["peak_rss_mb"] = max(doc["run"]["peak_rss_mb"], d["run"]["peak_rss_mb"])
-doc["run"]["sweep"] = list(axes.values())
-doc["run"]["command_line"] = "bash ci/sweeps.sh (" + "; ".join(
-    d["run"]["command_line"] for d in docs) + ")"
-json.dump(doc, open(f"{out}/results.json", "w"), indent=1)
-PY
-"$exe" report --results "$out/results.json" --out "$out/report"
-echo "ci/sweeps.sh: wrote $out/results.json and $out/report/report.md" >&2
+# One results file of every sweep (`merge` joins unsharded runs too: their cases, rows and
+# sweeps), and its report with the "Parameter sweeps" section.
+parts=()
+for name in fkn_H fkn_P fkn_S_Q4 fkn_S_Q8 ftoln pinball E_ratio; do
+  parts+=("$out/$name/results.json")
+done
+"$exe" merge "$out/all" "${parts[@]}"
+echo "ci/sweeps.sh: wrote $out/all/results.json and $out/all/report.md" >&2

@@ -66,8 +66,11 @@ TEST(ParameterSweep, ValidatesAgainstTheProblems) {
   EXPECT_NE(invalid({{"fkn", {1, 10}}}, {{"fkn", 2.0}}, h).find("both swept"), std::string::npos);
   EXPECT_NE(invalid({{"re_over_b", {1}}}, {}, {ProblemId::S_1, ProblemId::H_p}).find("H_p"),
             std::string::npos);
-  for (const char* key : {"fkn", "ftoln", "pinball", "E_ratio", "p_over_E", "nu"})
+  for (const char* key : {"fkn", "ftoln", "pinball", "p_over_E", "nu"})
     EXPECT_EQ(invalid({{key, {0.1}}}, {}, h), "") << key;
+  EXPECT_EQ(invalid({{"E_ratio", {1e3, 1e9}}}, {}, h), "");
+  EXPECT_NE(invalid({{"E_ratio", {0.1}}}, {}, h).find("out of range [1, 1e+12]"),
+            std::string::npos);
 }
 
 // Requirement: the cases are the cross product (first axis slowest), each point's values its
