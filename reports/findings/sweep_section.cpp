@@ -394,36 +394,39 @@ std::string fkn_answers(const ResultsIndex& index, const std::vector<SweepSeries
                        "FKN = {}.\n",
                        window_text(converging, values))
                  : "- Convergence (c) needs the C, M and F meshes: no swept row has all three.\n";
-  // Iterations and the range of a default.
-  const int first_nc = [&] {
-    for (std::size_t i = 0; i < values.size(); ++i) {
-      if (count_not_converged(series, values[i], penalty_based) > 0)
-        return static_cast<int>(i);
-    }
-    return -1;
-  }();
+  // Iterations, the cases that do not converge, and the range of a default.
+  std::vector<std::string> not_converged;
+  for (double v : values) {
+    if (const int n = count_not_converged(series, v, penalty_based); n > 0)
+      not_converged.push_back(fmt::format("{} at FKN = {}", n, format_swept_value(v)));
+  }
   out += fmt::format(
-      "- AL iterations (most of any swept case) go from {} at FKN = {} to {} at FKN = {}{}.\n",
+      "- AL iterations (most of any swept case) go from {} at FKN = {} to {} at FKN = {}; {}.\n",
       most_iterations(series, values.front(), Algorithm::AL), format_swept_value(values.front()),
       most_iterations(series, values.back(), Algorithm::AL), format_swept_value(values.back()),
-      first_nc < 0 ? "; every AL/PM case converges"
-                   : fmt::format("; from FKN = {} some AL/PM cases do not converge (the active "
-                                 "set cycles on the ill-conditioned system)",
-                                 format_swept_value(values[static_cast<std::size_t>(first_nc)])));
+      not_converged.empty()
+          ? std::string("every AL/PM case converges")
+          : fmt::format("AL/PM cases that do not converge: {}", fmt::join(not_converged, ", ")));
   if (!eg.empty()) {
     const double lo = eg.front();
     const int lmp = most_iterations(series, lo, Algorithm::LMP);
+    std::optional<double> first_nc_above;
+    for (double v : values) {
+      if (v > lo && !first_nc_above && count_not_converged(series, v, penalty_based) > 0)
+        first_nc_above = v;
+    }
     out += fmt::format(
         "- A default FKN: the smallest swept FKN at which every swept AL/PM row is e or g is {}; "
         "there AL takes at most {} iterations{}{}. The default is the smallest such FKN: larger "
-        "ones buy accuracy only on rows already e or g and cost iterations{}.\n",
+        "ones buy accuracy only on rows already e or g, cost iterations and approach the "
+        "ill-conditioning{}.\n",
         format_swept_value(lo), most_iterations(series, lo, Algorithm::AL),
         lmp >= 0 ? fmt::format(" (LMP, which enforces contact exactly, {})", lmp) : "",
         e.empty() ? ""
                   : fmt::format("; every row is e from FKN = {}", format_swept_value(e.front())),
-        first_nc < 0 ? ""
-                     : fmt::format(", and from FKN = {} cases stop converging",
-                                   format_swept_value(values[static_cast<std::size_t>(first_nc)])));
+        first_nc_above ? fmt::format(" (a case stops converging at FKN = {})",
+                                     format_swept_value(*first_nc_above))
+                       : "");
   }
   out += al_pm_answer(series, values);
   out += study_al_answer(series, study);
@@ -433,27 +436,23 @@ std::string fkn_answers(const ResultsIndex& index, const std::vector<SweepSeries
 std::string pinball_answers(const std::vector<SweepSeries>& series,
                             const std::vector<double>& values) {
   std::string out;
-  for (const auto& c :
-       curves(series, [](const SweepSeries& s) { return s.base.algorithm == Algorithm::MPC; })) {
+  for (const auto& c : curves(series, [&series](const SweepSeries& s) {
+         return s.base.algorithm == Algorithm::MPC && on_finest_mesh(s, series);
+       })) {
+    if (c.quantity == Quantity::contact_half_width)
+      continue;  // graded apart
     std::vector<double> failed;
-    double lo = kInf, hi = -kInf;
+    std::vector<std::string> cells;
     for (const auto& p : c.series->points) {
       const auto e = SweepSeries::error(p, c.quantity);
-      if (!SweepSeries::converged(p) || !e) {
+      if (!SweepSeries::converged(p) || !e)
         failed.push_back(p.value);
-        continue;
-      }
-      lo = std::min(lo, *e);
-      hi = std::max(hi, *e);
+      else
+        cells.push_back(fmt::format("{} at {}", format_percent(*e), format_swept_value(p.value)));
     }
     out += fmt::format("- {}: {}{}.\n", series_label(*c.series, c.quantity),
-                       hi < lo ? std::string("no converged case")
-                       : hi - lo <= kSamePoints
-                           ? fmt::format("{} at every pinball that converges (the pinball changes "
-                                         "nothing)",
-                                         format_percent(lo))
-                           : fmt::format("error from {} to {} over the pinball swept",
-                                         format_percent(lo), format_percent(hi)),
+                       cells.empty() ? std::string("no converged case")
+                                     : fmt::format("{}", fmt::join(cells, ", ")),
                        failed.empty() ? ""
                                       : fmt::format("; not converged or failed at pinball = {}",
                                                     values_text(failed)));
@@ -462,7 +461,9 @@ std::string pinball_answers(const std::vector<SweepSeries>& series,
     return "- No MPC case was swept: MPC is the algorithm the pinball decides (it ties every "
            "point within it).\n" +
            spread_answer(curves(series, nullptr), "pinball", values);
-  return out;
+  return "- MPC ties every point within the pinball at the start: its error at each pinball "
+         "swept (the others' contact search only):\n" +
+         out;
 }
 
 std::string e_ratio_answers(const std::vector<SweepSeries>& series) {
@@ -471,7 +472,7 @@ std::string e_ratio_answers(const std::vector<SweepSeries>& series) {
   for (const auto& c : curves(series, nullptr)) {
     const auto& pts = c.series->points;
     const auto last = SweepSeries::error(pts.back(), c.quantity);
-    if (!last)
+    if (!last || c.quantity == Quantity::contact_half_width)
       continue;
     double settled = pts.back().value;
     for (auto it = pts.rbegin(); it != pts.rend(); ++it) {
@@ -487,11 +488,13 @@ std::string e_ratio_answers(const std::vector<SweepSeries>& series) {
   }
   if (out.empty())
     return "- No swept case has an error.\n";
+  const double smallest = swept_values(series).front();
   return fmt::format(
-             "- The stiff-indenter model stops mattering (every error within {} percentage "
-             "points of its value at the largest ratio swept) from E ratio {} on, for every "
-             "row swept:\n",
-             kSettledPoints, format_swept_value(latest)) +
+             "- The stiff-indenter model stops mattering (every stress error within {} "
+             "percentage points of its value at the largest ratio swept) from E ratio {} on{}, "
+             "for every row swept:\n",
+             kSettledPoints, format_swept_value(latest),
+             latest == smallest ? " (already at the smallest ratio swept)" : "") +
          out;
 }
 
