@@ -25,8 +25,12 @@ CaseResult swept_case(ProblemId p, Element e, Algorithm a, const std::string& ke
                       double error, int iterations, bool converged = true,
                       MeshLevel mesh = MeshLevel::F) {
   CaseResult c;
-  c.spec = schema::CaseSpec{
-      .problem = p, .mesh = mesh, .element = e, .algorithm = a, .contact = ContactKind::ss};
+  c.spec = schema::CaseSpec{.problem = p,
+                            .mesh = mesh,
+                            .element = e,
+                            .algorithm = a,
+                            .contact = ContactKind::ss,
+                            .overrides = {}};
   c.spec.overrides[key] = v;
   c.status = converged ? schema::CaseStatus::converged : schema::CaseStatus::not_converged;
   c.iterations = iterations;
