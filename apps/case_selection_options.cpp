@@ -28,6 +28,9 @@ void add_selection_options(CLI::App& cmd, SelectionArgs& args) {
                  "Nodal stresses: spr (patch recovery; the default) and/or extrapolated (as "
                  "commercial codes print)");
   cmd.add_option("--set", args.sets, "Override a parameter of every case: name=value");
+  cmd.add_option("--sweep", args.sweeps,
+                 "Sweep a --set parameter: key=v1,v2,... (repeatable: the cross product of the "
+                 "values); each case runs once per point, its swept values as its overrides");
 }
 
 suites::CaseSelection make_selection(const SelectionArgs& args) {
@@ -40,6 +43,7 @@ suites::CaseSelection make_selection(const SelectionArgs& args) {
   sel.target = schema::parse<schema::TargetKind>(args.target);
   sel.recoveries = parse_all<schema::Recovery>(args.recoveries, "--recovery");
   sel.overrides = suites::parse_overrides(args.sets);
+  sel.sweeps = suites::parse_sweeps(args.sweeps);
   return sel;
 }
 

@@ -1,7 +1,7 @@
 #pragma once
 // The case-selection options that `run` and `export` share: --problems, --meshes, --elements,
-// --algorithms, --contacts, --target, --recovery and --set, registered, parsed and validated in
-// one place so that both commands select and refuse cases the same way.
+// --algorithms, --contacts, --target, --recovery, --set and --sweep, registered, parsed and
+// validated in one place so that both commands select and refuse cases the same way.
 
 #include <string>
 #include <vector>
@@ -17,13 +17,14 @@ struct SelectionArgs {
   std::vector<std::string> problems, meshes, elements, algorithms, contacts, sets;
   std::string target{schema::to_string(schema::TargetKind::Discretized)};
   std::vector<std::string> recoveries;
+  std::vector<std::string> sweeps;  ///< `--sweep KEY=V1,V2,...`, one axis each
 };
 
 /// Adds the selection options to `cmd`, writing into `args` (which must outlive the parse).
 void add_selection_options(CLI::App& cmd, SelectionArgs& args);
 
 /// The selection `args` name, solved by the built-in solver. Throws SchemaError for an unknown
-/// name, SuiteInputError for an empty list item or a malformed --set.
+/// name, SuiteInputError for an empty list item, a malformed --set or --sweep.
 suites::CaseSelection make_selection(const SelectionArgs& args);
 
 /// Checks every case before anything runs: its --set keys and values exist for its problem and

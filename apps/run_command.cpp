@@ -45,8 +45,10 @@ struct RunArgs {
   std::string command_line;
 };
 
-std::vector<suites::CaseSpec> selected_cases(const RunArgs& args) {
+std::vector<suites::CaseSpec> selected_cases(const RunArgs& args,
+                                             std::vector<schema::SweepAxis>& sweep) {
   suites::CaseSelection sel = make_selection(args.selection);
+  sweep = sel.sweeps;
   sel.solver = schema::parse<schema::SolverKind>(args.solver);
   if (sel.solver == schema::SolverKind::imported)
     throw UsageError("--solver imported: imported results are graded by `grade`, not run");
@@ -86,7 +88,8 @@ double group_cost(const suites::CaseSpec& spec) {
 }
 
 int run(const RunArgs& args) {
-  const auto all_cases = selected_cases(args);
+  std::vector<schema::SweepAxis> sweep;
+  const auto all_cases = selected_cases(args, sweep);
   suites::ExecutorOptions exec;
   exec.calculix_time_limit_seconds = args.ccx_time_limit;
   suites::require_solvers(all_cases, exec);  // e.g. ccx missing: exit 2 before anything runs
@@ -128,6 +131,7 @@ int run(const RunArgs& args) {
   info.command_line = args.command_line;
   info.environment = suites::run_environment();
   info.shard = shard;
+  info.sweep = sweep;
   const auto start = std::chrono::steady_clock::now();
   const auto results = suites::run_cases(cases, suites::executor_factory(exec), options);
   info.wall_seconds =

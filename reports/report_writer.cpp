@@ -9,6 +9,7 @@
 #include "reports/bench/bench_section.hpp"
 #include "reports/figures/bench_figure.hpp"
 #include "reports/figures/mesh_figure.hpp"
+#include "reports/figures/sweep_figure.hpp"
 #include "reports/findings/anomalies_section.hpp"
 #include "reports/findings/extent_section.hpp"
 #include "reports/findings/findings.hpp"
@@ -18,6 +19,7 @@
 #include "reports/findings/regression_report.hpp"
 #include "reports/findings/study_conclusions.hpp"
 #include "reports/findings/summary_section.hpp"
+#include "reports/findings/sweep_section.hpp"
 #include "reports/results/results_csv.hpp"
 #include "reports/tables/appendix_tables.hpp"
 #include "reports/tables/beyond_study_section.hpp"
@@ -116,7 +118,8 @@ std::string variants_section(const ResultsIndex& index) {
 
 std::string report_markdown(const ResultsIndex& index, const StudyReference& study,
                             const FigureSet& figures, const FigureSet& mesh_figures,
-                            bool has_regression, const std::string& bench_md) {
+                            bool has_regression, const std::string& bench_md,
+                            const FigureSet& sweep_figures) {
   const auto findings = generate_findings(index, study);
   const std::string grades = grade_tables_section(index, study);
   const std::string appendix = appendix_section(index, study);
@@ -125,14 +128,14 @@ std::string report_markdown(const ResultsIndex& index, const StudyReference& stu
   const std::string variants = variants_section(index);
   const std::string recovery = recovery_section(index);
 
-  const NumberedSections numbered =
-      number_sections({recommendation_section(index), study_conclusions_section(index),
-                       summary_section(index, findings), mesh_table_section(index, study),
-                       mesh_figures_section(mesh_figures), grades, refinement_section(index),
-                       appendix, figs, divergence, interface_section(index),
-                       anomalies_section(index), beyond_study_section(index), extent_section(index),
-                       friction_section(index), conformal_section(index), variants, recovery},
-                      {bench_md});
+  const NumberedSections numbered = number_sections(
+      {recommendation_section(index), study_conclusions_section(index),
+       summary_section(index, findings), mesh_table_section(index, study),
+       mesh_figures_section(mesh_figures), grades, refinement_section(index), appendix, figs,
+       divergence, interface_section(index), anomalies_section(index), beyond_study_section(index),
+       extent_section(index), sweep_section(index, study, sweep_figures), friction_section(index),
+       conformal_section(index), variants, recovery},
+      {bench_md});
 
   std::string out =
       "# contact-suite report: our contact elements beside the study's ANSYS results\n\n"
@@ -163,24 +166,26 @@ ReportOutcome write_report(const schema::ResultsDocument& results, const ReportO
   const ResultsIndex index(results);
 
   AtomicOutput output(options.out_dir);
-  FigureSet figures, bench_figures, mesh_figures;
+  FigureSet figures, bench_figures, mesh_figures, sweep_figures;
   if (options.figures)
     figures = render_figures(index, output.staging_dir(), options.figure_options);
   if (options.figures && options.mesh_export)
     mesh_figures =
         render_mesh_figures(*options.mesh_export, output.staging_dir(), options.figure_options);
+  if (options.figures)
+    sweep_figures = render_sweep_figures(results, output.staging_dir(), options.figure_options);
   if (options.figures && bench)
     bench_figures = render_bench_figures(*bench, output.staging_dir(), {}, options.figure_options);
   const std::string bench_md = bench ? bench_section(*bench, bench_figures) : std::string();
   output.write_text("report.md", report_markdown(index, study, figures, mesh_figures,
-                                                 baseline.has_value(), bench_md));
+                                                 baseline.has_value(), bench_md, sweep_figures));
   output.write_text("results.csv", results_csv(index, study));
   if (baseline)
     output.write_text("regression.md", regression_markdown(compare_results(*baseline, results)));
 
   ReportOutcome outcome;
   outcome.n_cases = static_cast<int>(results.cases.size());
-  for (const FigureSet* set : {&figures, &bench_figures, &mesh_figures}) {
+  for (const FigureSet* set : {&figures, &bench_figures, &mesh_figures, &sweep_figures}) {
     for (const auto& f : set->figures)
       (f.produced ? outcome.figures_drawn : outcome.figures_missing)++;
   }

@@ -57,10 +57,12 @@ struct ReportOutcome {
 ReportOutcome write_report(const schema::ResultsDocument& results, const ReportOptions& options);
 
 /// The whole report.md text from its parts (no I/O); `mesh_figures` are Figure 3 (empty:
-/// none), `bench_md` is the benchmarks appendix (empty: none).
+/// none), `bench_md` is the benchmarks appendix (empty: none); `sweep_figures` those of the
+/// parameter-sweep section (figures/sweep_figure.hpp).
 std::string report_markdown(const ResultsIndex& index, const StudyReference& study,
                             const FigureSet& figures, const FigureSet& mesh_figures,
-                            bool has_regression, const std::string& bench_md = {});
+                            bool has_regression, const std::string& bench_md = {},
+                            const FigureSet& sweep_figures = FigureSet{});
 
 /// Sections numbered in order, without gaps, and their table of contents.
 struct NumberedSections {

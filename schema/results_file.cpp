@@ -145,6 +145,37 @@ ProblemRecord problem_from_json(const json& j, const std::string& path) {
   return p;
 }
 
+/// The run's sweep axes: an array of {key, values}, keys non-empty and unique, each with at
+/// least one finite value and no value twice (the cases are their cross product).
+std::vector<SweepAxis> sweep_from_json(const JsonFields& r) {
+  const json& a = r.at("sweep");
+  if (!a.is_array())
+    r.fail_field("sweep", "is not an array");
+  std::vector<SweepAxis> axes;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    const JsonFields f(a[i], fmt::format("{}[{}]", r.path_of("sweep"), i));
+    SweepAxis axis{f.string("key"), numbers_from(f, "values")};
+    if (axis.key.empty())
+      f.fail_field("key", "is empty");
+    if (!f.has("values") || axis.values.empty())
+      f.fail_field("values", "is missing or empty");
+    for (std::size_t k = 0; k < axis.values.size(); ++k) {
+      if (!std::isfinite(axis.values[k]))
+        f.fail_field("values", fmt::format("item {} is not a finite number", k));
+      for (std::size_t m = 0; m < k; ++m) {
+        if (axis.values[m] == axis.values[k])
+          f.fail_field("values", fmt::format("item {} repeats item {}", k, m));
+      }
+    }
+    for (const auto& earlier : axes) {
+      if (earlier.key == axis.key)
+        f.fail_field("key", fmt::format("\"{}\" is swept twice", axis.key));
+    }
+    axes.push_back(std::move(axis));
+  }
+  return axes;
+}
+
 RunInfo run_from_json(const JsonFields& r) {
   RunInfo run;
   run.started_utc = r.string("started_utc");
@@ -164,6 +195,8 @@ RunInfo run_from_json(const JsonFields& r) {
     info.total_cases = s.integer("total_cases", 0, kIntMax);
     run.shard = info;
   }
+  if (r.has("sweep"))
+    run.sweep = sweep_from_json(r);
   return run;
 }
 
@@ -434,6 +467,12 @@ json to_json(const ResultsDocument& doc) {
                            {"count", doc.run.shard->count},
                            {"run_key", doc.run.shard->run_key},
                            {"total_cases", doc.run.shard->total_cases}};
+  }
+  if (!doc.run.sweep.empty()) {
+    json sweep = json::array();
+    for (const auto& axis : doc.run.sweep)
+      sweep.push_back({{"key", axis.key}, {"values", numbers_or_null(axis.values)}});
+    out["run"]["sweep"] = sweep;
   }
   json problems = json::array(), cases = json::array(), rows = json::array();
   for (const auto& p : doc.problems)

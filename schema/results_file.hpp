@@ -31,6 +31,15 @@ struct ShardInfo {
   friend bool operator==(const ShardInfo&, const ShardInfo&) = default;
 };
 
+/// One swept parameter of a run (`run --sweep KEY=V1,V2,...`): its `--set` key and its values in
+/// the order given. The run's cases are the cross product of every axis's values.
+struct SweepAxis {
+  std::string key;
+  std::vector<double> values;
+
+  friend bool operator==(const SweepAxis&, const SweepAxis&) = default;
+};
+
 /// What is known about the run as a whole (machine, versions, settings, timing).
 struct RunInfo {
   std::string started_utc;                                ///< ISO 8601
@@ -40,6 +49,7 @@ struct RunInfo {
   std::string command_line;                               ///< how the run was started
   nlohmann::json environment = nlohmann::json::object();  ///< machine, versions, settings
   std::optional<ShardInfo> shard;  ///< set when the file holds one slice of a sharded run
+  std::vector<SweepAxis> sweep;    ///< the swept parameters, in the order given; empty: none
 };
 
 /// A whole results file.

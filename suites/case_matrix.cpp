@@ -22,6 +22,8 @@ std::vector<E> or_all(const std::vector<E>& chosen, const All& all) {
 }  // namespace
 
 std::vector<CaseSpec> make_case_matrix(const CaseSelection& sel) {
+  validate_sweeps(sel.sweeps, sel.overrides, or_all(sel.problems, study_problems()));
+  const auto points = sweep_points(sel.sweeps);
   std::vector<CaseSpec> cases;
   for (ProblemId p : or_all(sel.problems, study_problems())) {
     for (MeshLevel m : or_all(sel.meshes, schema::kStudyMeshes)) {
@@ -31,16 +33,21 @@ std::vector<CaseSpec> make_case_matrix(const CaseSelection& sel) {
           if (sel.algorithms.empty() && a == Algorithm::MPC && is_frictional(p))
             continue;
           for (ContactKind c : or_all(sel.contacts, study_contacts())) {
-            for (Recovery r : or_all(sel.recoveries, std::vector<Recovery>{Recovery::spr}))
-              cases.push_back(CaseSpec{.problem = p,
-                                       .mesh = m,
-                                       .element = e,
-                                       .algorithm = a,
-                                       .contact = c,
-                                       .target = sel.target,
-                                       .recovery = r,
-                                       .solver = sel.solver,
-                                       .overrides = sel.overrides});
+            for (Recovery r : or_all(sel.recoveries, std::vector<Recovery>{Recovery::spr})) {
+              for (const auto& point : points) {
+                auto overrides = sel.overrides;
+                overrides.insert(point.begin(), point.end());
+                cases.push_back(CaseSpec{.problem = p,
+                                         .mesh = m,
+                                         .element = e,
+                                         .algorithm = a,
+                                         .contact = c,
+                                         .target = sel.target,
+                                         .recovery = r,
+                                         .solver = sel.solver,
+                                         .overrides = std::move(overrides)});
+              }
+            }
           }
         }
       }

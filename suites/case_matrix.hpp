@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "suites/case_spec.hpp"
+#include "suites/parameter_sweep.hpp"
 
 namespace cs::suites {
 
@@ -25,9 +26,14 @@ struct CaseSelection {
   /// model and its factorization.
   std::vector<Recovery> recoveries;
   std::map<std::string, double> overrides;  ///< applied to every case
+  /// Swept parameters: each case once per point of their cross product (innermost axis), the
+  /// point's values added to its overrides. Cases that differ only in contact-only keys (fkn,
+  /// ftoln, pinball) share one model; the others split it (suites/runner.hpp).
+  std::vector<SweepAxis> sweeps;
 };
 
-/// Expands a selection into cases; duplicates in a list are ignored.
+/// Expands a selection into cases; duplicates in a list are ignored. Throws SuiteInputError
+/// for a sweep validate_sweeps refuses.
 std::vector<CaseSpec> make_case_matrix(const CaseSelection& selection);
 
 }  // namespace cs::suites

@@ -20,6 +20,12 @@ struct ParameterSpec {
   std::string description;  ///< one line for `contact-suite list`
 };
 
+/// The default FKN of the friction problems (FP_p, CM_p), which keep the FKN of before issue
+/// 14: their tangential penalty is FKT x FKN, and with the frictionless default (100) their
+/// frictional active set cycles (CM_p C AL/PM ss) or loses every sticking row (mortar). The
+/// sweeps of issue 14 cover the frictionless battery only.
+inline constexpr double kFrictionalDefaultFkn = 1.0;
+
 /// The parameters shared by every problem: material, indenter stiffness, contact settings.
 std::vector<ParameterSpec> common_parameters(double default_p_over_E);
 
@@ -41,6 +47,9 @@ class Parameters {
   std::map<std::string, double, std::less<>> values_;
   std::map<std::string, bool, std::less<>> overridden_;
 };
+
+/// True when `value` is finite and within the parameter's range.
+bool accepts(const ParameterSpec& spec, double value);
 
 /// "[0, 0.5)"-style text of a parameter's range, for listings and error messages.
 std::string range_text(const ParameterSpec& spec);

@@ -30,6 +30,8 @@ namespace problems {
 
 std::vector<ParameterSpec> study_parameters(std::vector<ParameterSpec> extra) {
   auto params = common_parameters(kStudyPOverE);
+  if (declares(extra, "mu"))  // a friction problem: FKN as before issue 14 (parameters.hpp)
+    params = with_default(std::move(params), "fkn", kFrictionalDefaultFkn);
   params.insert(params.end(), extra.begin(), extra.end());
   return params;
 }

@@ -75,6 +75,27 @@ void check_slices(const std::vector<schema::ResultsDocument>& parts) {
   }
 }
 
+/// The union of the parts' sweeps: keys in order of first appearance, each key's values in
+/// order of first appearance (the slices of one run have one sweep; separate runs their own).
+std::vector<schema::SweepAxis> merged_sweep(const std::vector<schema::ResultsDocument>& parts) {
+  std::vector<schema::SweepAxis> axes;
+  for (const auto& p : parts) {
+    for (const auto& axis : p.run.sweep) {
+      auto it = std::find_if(axes.begin(), axes.end(),
+                             [&](const schema::SweepAxis& a) { return a.key == axis.key; });
+      if (it == axes.end()) {
+        axes.push_back({axis.key, {}});
+        it = axes.end() - 1;
+      }
+      for (double v : axis.values) {
+        if (std::find(it->values.begin(), it->values.end(), v) == it->values.end())
+          it->values.push_back(v);
+      }
+    }
+  }
+  return axes;
+}
+
 auto order_key(const schema::CaseResult& c) {
   const auto& s = c.spec;
   return std::make_tuple(s.problem, s.mesh, s.element, s.algorithm, s.contact, s.recovery, s.target,
@@ -97,6 +118,7 @@ schema::ResultsDocument merge_results(const std::vector<schema::ResultsDocument>
   schema::ResultsDocument out;
   out.run = parts.front().run;
   out.run.shard.reset();
+  out.run.sweep = merged_sweep(parts);
   out.run.command_line = command_line;
   out.run.wall_seconds = 0.0;
   out.run.jobs = 0;

@@ -150,6 +150,22 @@ std::vector<Probe> friction_and_fit_probes() {
   return p;
 }
 
+/// `run --sweep`: unknown key, empty list, empty item, out of range, duplicates, and a key
+/// both swept and set (issue 14).
+std::vector<Probe> sweep_probes() {
+  std::vector<Probe> p;
+  for (const char* bad :
+       {"unknown=1,2", "fkn=", "fkn", "=1,2", "fkn=1,,10", "fkn=,1", "fkn=1,", "fkn=1,1e5",
+        "fkn=0,1", "nu=0.2,0.5", "E_ratio=0.5,1", "ftoln=2", "pinball=1e9", "fkn=1,abc",
+        "fkn=1,nan", "fkn=1,1", "re_over_b=1,2", "extent=2,0", "extent=2,65"})
+    p.push_back({{"run", "--problems", "H_p", "--meshes", "C", "--sweep", bad, "--out", "o"}});
+  p.push_back({{"run", "--problems", "H_p", "--meshes", "C", "--sweep", "fkn=1,10", "--sweep",
+                "fkn=100", "--out", "o"}});
+  p.push_back({{"run", "--problems", "H_p", "--meshes", "C", "--sweep", "fkn=1,10", "--set",
+                "fkn=100", "--out", "o"}});
+  return p;
+}
+
 std::vector<Probe> run_probes() {
   std::vector<Probe> p;
   for (const char* jobs : {"0", "-1", "", "99999", "abc", "1.5"})
@@ -249,8 +265,8 @@ std::vector<Probe> oracle_probes() {
 
 TEST_F(BadInputProbe, EveryProbeExitsTwoWithOneLineAndLeavesNoFile) {
   std::vector<Probe> probes;
-  for (auto&& list : {name_probes(), set_probes(), friction_and_fit_probes(), run_probes(),
-                      oracle_probes(), import_export_probes(dir_->path())})
+  for (auto&& list : {name_probes(), set_probes(), friction_and_fit_probes(), sweep_probes(),
+                      run_probes(), oracle_probes(), import_export_probes(dir_->path())})
     probes.insert(probes.end(), list.begin(), list.end());
   // Results files that must be refused by report, gate and merge.
   const std::vector<std::function<void(json&)>> mutations{
@@ -270,6 +286,23 @@ TEST_F(BadInputProbe, EveryProbeExitsTwoWithOneLineAndLeavesNoFile) {
       [](json& j) { j.erase("cases"); },
       [](json& j) { j["problems"] = json::array(); },
       [](json& j) { j["run"]["jobs"] = -2; },
+      [](json& j) { j["run"]["sweep"] = "fkn"; },
+      [](json& j) {
+        j["run"]["sweep"] = json::array({{{"key", ""}, {"values", {1}}}});
+      },
+      [](json& j) {
+        j["run"]["sweep"] = json::array({{{"key", "fkn"}, {"values", json::array()}}});
+      },
+      [](json& j) {
+        j["run"]["sweep"] = json::array({{{"key", "fkn"}, {"values", {1, 1}}}});
+      },
+      [](json& j) {
+        j["run"]["sweep"] = json::array({{{"key", "fkn"}, {"values", {"1"}}}});
+      },
+      [](json& j) {
+        j["run"]["sweep"] =
+            json::array({{{"key", "fkn"}, {"values", {1}}}, {{"key", "fkn"}, {"values", {2}}}});
+      },
   };
   for (std::size_t i = 0; i < mutations.size(); ++i) {
     std::string name = "m";  // (appended, not concatenated: GCC 12 warns -Wrestrict here)

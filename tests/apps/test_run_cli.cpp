@@ -66,5 +66,49 @@ TEST(RunCli, UnknownRecoveryIsBadInput) {
   EXPECT_FALSE(std::filesystem::exists(tmp.path() / "run"));
 }
 
+// Requirement (issue 14): --sweep runs each case once per value, the swept value its override
+// (in its id and record), and results.json's run info records the sweep.
+TEST(RunCli, SweepRecordsItsCasesAndAxes) {
+  TempDir tmp;
+  const auto r = run_cli({"run",      "--problems",  "P_p",        "--meshes",
+                          "C",        "--elements",  "Q4",         "--algorithms",
+                          "AL",       "--contacts",  "ss",         "--sweep",
+                          "fkn=1,10", "--sweep",     "nu=0.2,0.3", "--jobs",
+                          "1",        "--no-report", "--out",      (tmp.path() / "run").string()});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto doc = nlohmann::json::parse(read_text(tmp.path() / "run" / "results.json"));
+  ASSERT_EQ(doc["cases"].size(), 4u);
+  EXPECT_EQ(doc["cases"][0]["id"], "P_p/C/Q4/AL/ss/fkn=1/nu=0.2");
+  EXPECT_EQ(doc["cases"][3]["id"], "P_p/C/Q4/AL/ss/fkn=10/nu=0.3");
+  EXPECT_EQ(doc["cases"][3]["overrides"]["nu"], 0.3);
+  const auto& sweep = doc["run"]["sweep"];
+  ASSERT_EQ(sweep.size(), 2u);
+  EXPECT_EQ(sweep[0]["key"], "fkn");
+  EXPECT_EQ(sweep[0]["values"], nlohmann::json::array({1.0, 10.0}));
+  EXPECT_EQ(sweep[1]["key"], "nu");
+}
+
+// Requirement (issue 14): a bad sweep is bad input: exit 2, one line naming it, nothing written.
+TEST(RunCli, BadSweepIsBadInput) {
+  TempDir tmp;
+  const std::string out = (tmp.path() / "run").string();
+  for (const auto& [sweep, message] : std::vector<std::pair<std::string, std::string>>{
+           {"unknown=1,2", "problem P_p has no such parameter"},
+           {"fkn=", "empty value list"},
+           {"fkn=1,,2", "empty item"},
+           {"fkn=1,1e5", "--sweep fkn=100000: out of range"}}) {
+    const auto r =
+        run_cli({"run", "--problems", "P_p", "--meshes", "C", "--sweep", sweep, "--out", out});
+    EXPECT_EQ(r.exit_code, 2) << sweep;
+    EXPECT_NE(r.err.find(message), std::string::npos) << r.err;
+    EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << r.err;
+  }
+  const auto both =
+      run_cli({"run", "--problems", "P_p", "--sweep", "fkn=1,2", "--set", "fkn=3", "--out", out});
+  EXPECT_EQ(both.exit_code, 2);
+  EXPECT_NE(both.err.find("both swept"), std::string::npos) << both.err;
+  EXPECT_FALSE(std::filesystem::exists(tmp.path() / "run"));
+}
+
 }  // namespace
 }  // namespace cs::apps

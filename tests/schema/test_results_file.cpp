@@ -126,6 +126,40 @@ TEST(SchemaResultsFile, RejectsUnknownNamesAndDuplicates) {
   expect_rejected([](json& j) { j["cases"][0]["solver"] = ""; }, "name the code");
 }
 
+// Requirement (issue 14): the run's sweep (keys and values) round-trips; a malformed one is
+// refused with its path; a file without it reads as no sweep.
+TEST(SchemaResultsFile, SweepRoundTripsAndIsChecked) {
+  ResultsDocument doc = small_document();
+  EXPECT_FALSE(to_json(doc)["run"].contains("sweep"));
+  doc.run.sweep = {{"fkn", {0.1, 1.0, 10.0}}, {"nu", {0.2}}};
+  const json once = to_json(doc);
+  const ResultsDocument back = results_from_json(once, "mem");
+  EXPECT_EQ(back.run.sweep, doc.run.sweep);
+  EXPECT_EQ(to_json(back), once);
+  expect_rejected([](json& j) { j["run"]["sweep"] = "fkn"; }, "R.run.sweep: is not an array");
+  expect_rejected(
+      [](json& j) {
+        j["run"]["sweep"] = json::array({{{"key", ""}, {"values", {1}}}});
+      },
+      "R.run.sweep[0].key: is empty");
+  expect_rejected(
+      [](json& j) {
+        j["run"]["sweep"] = json::array({{{"key", "fkn"}, {"values", json::array()}}});
+      },
+      "R.run.sweep[0].values: is missing or empty");
+  expect_rejected(
+      [](json& j) {
+        j["run"]["sweep"] = json::array({{{"key", "fkn"}, {"values", {1, 1}}}});
+      },
+      "item 1 repeats item 0");
+  expect_rejected(
+      [](json& j) {
+        j["run"]["sweep"] =
+            json::array({{{"key", "fkn"}, {"values", {1}}}, {{"key", "fkn"}, {"values", {2}}}});
+      },
+      "R.run.sweep[1].key: \"fkn\" is swept twice");
+}
+
 TEST(SchemaResultsFile, FileErrorsAreSchemaErrors) {
   cs::testing::TempDir dir;
   EXPECT_THROW(read_results_file(dir.path() / "missing.json"), SchemaError);

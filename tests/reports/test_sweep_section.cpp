@@ -1,0 +1,158 @@
+// The parameter-sweep section on in-memory results documents: absent without swept cases; the
+// FKN answers (the e window, AL iterations, AL against PM, the study's S(1/3) AL error) computed
+// from the numbers; the E-ratio settling point; FTOLN's spread; a series per option set.
+
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "report_test_support.hpp"
+#include "reports/figures/sweep_figure.hpp"
+#include "reports/findings/sweep_section.hpp"
+
+namespace cs::reports {
+namespace {
+
+using schema::Algorithm;
+using schema::CaseResult;
+using schema::ContactKind;
+using schema::Element;
+using schema::MeshLevel;
+using schema::ProblemId;
+using schema::Quantity;
+
+CaseResult swept_case(ProblemId p, Element e, Algorithm a, const std::string& key, double v,
+                      double error, int iterations, bool converged = true,
+                      MeshLevel mesh = MeshLevel::F) {
+  CaseResult c;
+  c.spec = schema::CaseSpec{.problem = p,
+                            .mesh = mesh,
+                            .element = e,
+                            .algorithm = a,
+                            .contact = ContactKind::ss,
+                            .overrides = {}};
+  c.spec.overrides[key] = v;
+  c.status = converged ? schema::CaseStatus::converged : schema::CaseStatus::not_converged;
+  c.iterations = iterations;
+  schema::QuantityResult q;
+  q.quantity = Quantity::sigma_c;
+  q.exact = 1.0;
+  q.value = 1.0 + error / 100.0;
+  q.error_percent = error;
+  q.grade = schema::grade_of_error(error);
+  c.quantities.push_back(q);
+  return c;
+}
+
+schema::ResultsDocument document(std::vector<CaseResult> cases,
+                                 std::vector<schema::SweepAxis> sweep) {
+  schema::ResultsDocument doc;
+  doc.run.sweep = std::move(sweep);
+  doc.cases = std::move(cases);
+  return doc;
+}
+
+// Requirement: no swept case, no section (and no figure).
+TEST(SweepSection, AbsentWithoutSweptCases) {
+  const testing::Loaded data(testing::sample_json());
+  EXPECT_EQ(sweep_section(data.index, testing::study(), {}), "");
+  EXPECT_TRUE(swept_keys(data.file).empty());
+}
+
+// Requirement: the FKN answers come from the numbers: the window where every AL/PM row is e
+// (and e or g), AL iterations at both ends, non-convergence at the top, where AL and PM
+// separate, and the range of a default.
+TEST(SweepSection, FknAnswersFromTheNumbers) {
+  const std::vector<double> fkn{0.01, 1, 100, 1e4};
+  // AL: soft at small FKN, e from 100; PM equal to AL except at 0.01 (AL augmented).
+  const double al[] = {-40.0, -6.3, -0.7, -0.5};
+  const double pm[] = {-73.0, -6.3, -0.7, -0.5};
+  const int al_it[] = {3, 8, 13, 16};
+  std::vector<CaseResult> cases;
+  for (std::size_t i = 0; i < fkn.size(); ++i) {
+    cases.push_back(swept_case(ProblemId::H_a, Element::Q4, Algorithm::AL, "fkn", fkn[i], al[i],
+                               al_it[i], i < 3));
+    cases.push_back(
+        swept_case(ProblemId::H_a, Element::Q4, Algorithm::PM, "fkn", fkn[i], pm[i], 2, i < 3));
+    cases.push_back(
+        swept_case(ProblemId::H_a, Element::Q4, Algorithm::LMP, "fkn", fkn[i], -0.6, 10));
+  }
+  const auto doc = document(cases, {{"fkn", fkn}});
+  const ResultsIndex index(doc);
+  const std::string md = sweep_section(index, testing::study(), {});
+  EXPECT_NE(md.find("## Parameter sweeps"), std::string::npos);
+  EXPECT_NE(md.find("### FKN, the normal penalty stiffness (fkn)"), std::string::npos);
+  // e at 100 only (1e4 did not converge), e or g likewise.
+  EXPECT_NE(md.find("is e at FKN = 100, and e or g at FKN = 100"), std::string::npos) << md;
+  EXPECT_NE(md.find("AL iterations (most of any swept case) go from 3 at FKN = 0.01 to 16 at "
+                    "FKN = 10000; AL/PM cases that do not converge: 2 at FKN = 10000"),
+            std::string::npos)
+      << md;
+  EXPECT_NE(md.find("smallest swept FKN at which every swept AL/PM row is e or g is 100; there "
+                    "AL takes at most 13 iterations (LMP, which enforces contact exactly, 10)"),
+            std::string::npos)
+      << md;
+  EXPECT_NE(md.find("AL and PM separate at FKN = 0.01 (by up to 33 percentage points"),
+            std::string::npos)
+      << md;
+  EXPECT_NE(md.find("−6.30 % s, 8 it"), std::string::npos) << md;
+  EXPECT_NE(md.find("(not converged)"), std::string::npos);
+  EXPECT_NE(md.find("Convergence (c) needs the C, M and F meshes"), std::string::npos);
+  // One panel (H_a sigma_c F Q4) with three curves.
+  const auto series = sweep_series(doc, "fkn");
+  ASSERT_EQ(series.size(), 3u);
+  EXPECT_EQ(series[0].points.size(), 4u);
+  const auto panels = sweep_panels(series);
+  ASSERT_EQ(panels.size(), 1u);
+  EXPECT_EQ(panels[0].series.size(), 3u);
+}
+
+// Requirement: the S(1/3) question is answered against the study's own printed AL value
+// (sigma_c, 4Q, ss, F): a crossing is interpolated in log FKN; none is reported as none.
+TEST(SweepSection, StudyAlErrorOnSOneThird) {
+  const auto crossing =
+      document({swept_case(ProblemId::S_1_3, Element::Q4, Algorithm::AL, "fkn", 0.1, -30.0, 4),
+                swept_case(ProblemId::S_1_3, Element::Q4, Algorithm::AL, "fkn", 10, -2.0, 8)},
+               {{"fkn", {0.1, 10}}});
+  const ResultsIndex a(crossing);
+  const std::string md = sweep_section(a, testing::study(), {});
+  EXPECT_NE(md.find("9.5320 against 10.9571: −13.0 %) is reproduced near FKN = 1.6"),
+            std::string::npos)
+      << md;
+  const auto none =
+      document({swept_case(ProblemId::S_1_3, Element::Q4, Algorithm::AL, "fkn", 1, -3.0, 4),
+                swept_case(ProblemId::S_1_3, Element::Q4, Algorithm::AL, "fkn", 10, -2.0, 8)},
+               {{"fkn", {1, 10}}});
+  const ResultsIndex b(none);
+  EXPECT_NE(sweep_section(b, testing::study(), {}).find("is reproduced by no swept FKN"),
+            std::string::npos);
+}
+
+// Requirement: the E ratio stops mattering where every larger ratio is within kSettledPoints
+// of the error at the largest; FTOLN's largest change is named; a key found only in the cases
+// (not in run.sweep) is reported too.
+TEST(SweepSection, ERatioSettlesAndFtolnSpread) {
+  std::vector<CaseResult> cases;
+  const double e[] = {-5.0, -0.8, -0.52, -0.50};
+  const double ratio[] = {1e3, 1e4, 1e5, 1e6};
+  for (int i = 0; i < 4; ++i)
+    cases.push_back(
+        swept_case(ProblemId::H_p, Element::Q4, Algorithm::LMP, "E_ratio", ratio[i], e[i], 9));
+  for (double f : {0.01, 0.1})
+    cases.push_back(swept_case(ProblemId::H_p, Element::Q8, Algorithm::AL, "ftoln", f,
+                               f == 0.01 ? -0.25 : -0.25, 7));
+  const auto doc = document(cases, {{"E_ratio", {1e3, 1e4, 1e5, 1e6}}});
+  const ResultsIndex index(doc);
+  const std::string md = sweep_section(index, testing::study(), {});
+  EXPECT_NE(md.find("from E ratio 100000 on, for every row swept"), std::string::npos) << md;
+  EXPECT_NE(md.find("H_p sigma_c F Q4 LMP ss: from E ratio 100000 on (−0.50 % at 1e+06)"),
+            std::string::npos)
+      << md;
+  EXPECT_NE(md.find("### FTOLN, the penetration tolerance (ftoln)"), std::string::npos) << md;
+  EXPECT_NE(md.find("the largest change of an error is 0 percentage points"), std::string::npos)
+      << md;
+  EXPECT_NE(md.find("it changes nothing"), std::string::npos) << md;
+}
+
+}  // namespace
+}  // namespace cs::reports
