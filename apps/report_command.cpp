@@ -7,6 +7,7 @@
 
 #include <fmt/core.h>
 
+#include "apps/solver_option_mappings.hpp"
 #include "platform/output_transaction.hpp"
 #include "reports/report_writer.hpp"
 #include "schema/results_file.hpp"
@@ -34,6 +35,7 @@ void run_report(const ReportArgs& args) {
     options.study_data = args.study_data;
   options.bench.assign(args.bench.begin(), args.bench.end());
   options.figures = !args.no_figures;
+  options.option_mappings = solver_option_mappings();
   const auto outcome = reports::write_report(results, options);
   output.commit();
   std::printf("%s\n", fmt::format("contact-suite report: {} cases -> {}/report.md ({} files, {} "

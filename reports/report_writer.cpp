@@ -8,6 +8,7 @@
 #include "reports/bench/bench_results.hpp"
 #include "reports/bench/bench_section.hpp"
 #include "reports/figures/bench_figure.hpp"
+#include "reports/figures/cross_code_figure.hpp"
 #include "reports/findings/anomalies_section.hpp"
 #include "reports/findings/findings.hpp"
 #include "reports/findings/recommendation_section.hpp"
@@ -18,6 +19,8 @@
 #include "reports/results/results_csv.hpp"
 #include "reports/tables/appendix_tables.hpp"
 #include "reports/tables/beyond_study_section.hpp"
+#include "reports/tables/cross_code_rows.hpp"
+#include "reports/tables/cross_code_section.hpp"
 #include "reports/tables/divergence_table.hpp"
 #include "reports/tables/grade_tables.hpp"
 #include "reports/tables/interface_table.hpp"
@@ -107,7 +110,7 @@ std::string variants_section(const ResultsIndex& index) {
 
 std::string report_markdown(const ResultsIndex& index, const StudyReference& study,
                             const FigureSet& figures, bool has_regression,
-                            const std::string& bench_md) {
+                            const std::string& bench_md, const std::string& cross_code_md) {
   const auto findings = generate_findings(index, study);
   const std::string grades = grade_tables_section(index, study);
   const std::string appendix = appendix_section(index, study);
@@ -119,7 +122,7 @@ std::string report_markdown(const ResultsIndex& index, const StudyReference& stu
   const NumberedSections numbered =
       number_sections({recommendation_section(index), study_conclusions_section(index),
                        summary_section(index, findings), mesh_table_section(index, study), grades,
-                       appendix, figs, divergence, interface_section(index),
+                       appendix, cross_code_md, figs, divergence, interface_section(index),
                        anomalies_section(index), beyond_study_section(index), variants, recovery},
                       {bench_md});
 
@@ -153,13 +156,19 @@ ReportOutcome write_report(const schema::ResultsDocument& results, const ReportO
 
   AtomicOutput output(options.out_dir);
   FigureSet figures, bench_figures;
+  std::vector<Figure> cross_code_figures;
   if (options.figures)
     figures = render_figures(index, output.staging_dir(), options.figure_options);
+  if (options.figures && is_cross_code(index))
+    cross_code_figures =
+        render_cross_code_figure(index, output.staging_dir(), options.figure_options);
   if (options.figures && bench)
     bench_figures = render_bench_figures(*bench, output.staging_dir(), {}, options.figure_options);
   const std::string bench_md = bench ? bench_section(*bench, bench_figures) : std::string();
-  output.write_text("report.md",
-                    report_markdown(index, study, figures, baseline.has_value(), bench_md));
+  const std::string cross_code_md =
+      cross_code_section(index, study, cross_code_figures, options.option_mappings);
+  output.write_text("report.md", report_markdown(index, study, figures, baseline.has_value(),
+                                                 bench_md, cross_code_md));
   output.write_text("results.csv", results_csv(index, study));
   if (baseline)
     output.write_text("regression.md", regression_markdown(compare_results(*baseline, results)));
@@ -170,6 +179,8 @@ ReportOutcome write_report(const schema::ResultsDocument& results, const ReportO
     for (const auto& f : set->figures)
       (f.produced ? outcome.figures_drawn : outcome.figures_missing)++;
   }
+  for (const auto& f : cross_code_figures)
+    (f.produced ? outcome.figures_drawn : outcome.figures_missing)++;
   outcome.figures_unavailable =
       figures.unavailable.empty() ? bench_figures.unavailable : figures.unavailable;
   outcome.files = output.commit();
