@@ -13,7 +13,7 @@ namespace {
 
 constexpr const char* kSeparator = " │ ";
 
-/// The finest mesh of a row whose case did not converge, with its status.
+/// The finest mesh of a row whose case did not converge, with its status: "timeout (F)".
 std::optional<std::string> unfinished_status(const ResultsIndex& index,
                                              const schema::RowVerdict& row) {
   for (auto it = kMeshes.rbegin(); it != kMeshes.rend(); ++it) {
@@ -33,11 +33,16 @@ std::string ansys_cell(const StudyReference& study, const GradeTableRow& r, sche
 }  // namespace
 
 std::string solver_grade_cell(const ResultsIndex& index, const schema::RowVerdict* row) {
-  if (row != nullptr && !row->grade) {
-    if (auto s = unfinished_status(index, *row))
-      return *s;
-  }
-  return format_grade_cell(index, row);
+  if (row == nullptr)
+    return kMissing;
+  const auto status = unfinished_status(index, *row);
+  if (!row->grade && status)
+    return *status;
+  const std::string grade = format_grade_cell(index, row);
+  // Graded on a coarser mesh because the finer one did not finish: say how it ended.
+  return status && row->graded_mesh && *row->graded_mesh != kFinestMesh
+             ? fmt::format("{}, {}", grade, *status)
+             : grade;
 }
 
 std::optional<CrossCodeGradeTable> build_cross_code_grade_table(const ResultsIndex& index,

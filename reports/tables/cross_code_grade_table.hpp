@@ -3,8 +3,8 @@
 // per Table 2 row of the results (grade_table_rows), a column per option set another solver
 // ran (cross_code_options); each cell holds every solver's grade of the row on the finest mesh
 // ("e, c" as in Table 2, format_grade_cell) and the study's ANSYS cell, e.g.
-// "e, c │ g │ ANSYS e, c". A row a solver did not finish on its finest mesh shows that case's
-// status ("timeout (F)", "not converged (F)", "failed (F)").
+// "e, c │ g │ ANSYS e, c". A row a solver did not finish on its finest mesh also shows that
+// case's status ("g (M)*, timeout (F)", "not converged (F)", "failed (F)").
 //
 // The tally counts, per solver, the rows of the table's option sets by their fine-mesh grade:
 // e with the convergence flag c, e, g, s, u, and no grade (a case not converged, timed out or
@@ -37,8 +37,9 @@ struct GradeTally {
   int rows = 0;
 };
 
-/// A solver's cell of a row: format_grade_cell, or the status of the first mesh (from F
-/// down) that did not converge when the row has no grade.
+/// A solver's cell of a row: format_grade_cell, followed by the status of the finest mesh that
+/// did not converge when the grade is of a coarser mesh ("g (M)*, timeout (F)"), or that
+/// status alone when the row has no grade.
 std::string solver_grade_cell(const ResultsIndex& index, const schema::RowVerdict* row);
 
 /// Table 2′ for `element`, or nullopt when no other solver ran a Table 2 row of it.
