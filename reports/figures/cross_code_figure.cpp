@@ -156,7 +156,7 @@ std::vector<Figure> render_cross_code_figure(const ResultsIndex& index, const fs
     const fs::path png = out_root / figure.file;
     std::error_code ec;
     fs::create_directories(png.parent_path(), ec);
-    const int cols = 2;
+    const int cols = panels.size() > 1 ? 2 : 1;
     const int rows = static_cast<int>((panels.size() + 1) / 2);
     std::string script = fmt::format(
         "set terminal {} size {},{} noenhanced\nset output {}\nset grid\n"
