@@ -7,6 +7,7 @@
 
 #include <fmt/core.h>
 
+#include "apps/solver_option_mappings.hpp"
 #include "platform/output_transaction.hpp"
 #include "reports/report_writer.hpp"
 #include "schema/combined_results.hpp"
@@ -41,6 +42,7 @@ void run_report(const ReportArgs& args) {
   if (!args.mesh_export.empty())
     options.mesh_export = args.mesh_export;
   options.figures = !args.no_figures;
+  options.option_mappings = solver_option_mappings();
   const auto outcome = reports::write_report(results, options);
   output.commit();
   std::printf("%s\n", fmt::format("contact-suite report: {} cases -> {}/report.md ({} files, {} "

@@ -8,6 +8,7 @@
 
 #include <fmt/core.h>
 
+#include "apps/solver_option_mappings.hpp"
 #include "platform/interrupts.hpp"
 #include "reports/report_writer.hpp"
 #include "schema/json_file.hpp"
@@ -32,6 +33,7 @@ std::optional<int> write_run_output(const schema::ResultsDocument& doc,
   if (with_report) {
     reports::ReportOptions report;
     report.out_dir = out.staging();
+    report.option_mappings = solver_option_mappings();
     schema::ResultsDocument named = doc;  // the report names the file it describes
     std::error_code ec;
     const auto shown = std::filesystem::relative(out.directory(), ec);

@@ -8,6 +8,7 @@
 #include "reports/bench/bench_results.hpp"
 #include "reports/bench/bench_section.hpp"
 #include "reports/figures/bench_figure.hpp"
+#include "reports/figures/cross_code_figure.hpp"
 #include "reports/figures/mesh_figure.hpp"
 #include "reports/figures/sweep_figure.hpp"
 #include "reports/findings/anomalies_section.hpp"
@@ -24,6 +25,8 @@
 #include "reports/tables/appendix_tables.hpp"
 #include "reports/tables/beyond_study_section.hpp"
 #include "reports/tables/conformal_section.hpp"
+#include "reports/tables/cross_code_rows.hpp"
+#include "reports/tables/cross_code_section.hpp"
 #include "reports/tables/divergence_table.hpp"
 #include "reports/tables/friction_section.hpp"
 #include "reports/tables/grade_tables.hpp"
@@ -119,7 +122,7 @@ std::string variants_section(const ResultsIndex& index) {
 std::string report_markdown(const ResultsIndex& index, const StudyReference& study,
                             const FigureSet& figures, const FigureSet& mesh_figures,
                             bool has_regression, const std::string& bench_md,
-                            const FigureSet& sweep_figures) {
+                            const FigureSet& sweep_figures, const std::string& cross_code_md) {
   const auto findings = generate_findings(index, study);
   const std::string grades = grade_tables_section(index, study);
   const std::string appendix = appendix_section(index, study);
@@ -128,14 +131,27 @@ std::string report_markdown(const ResultsIndex& index, const StudyReference& stu
   const std::string variants = variants_section(index);
   const std::string recovery = recovery_section(index);
 
-  const NumberedSections numbered = number_sections(
-      {recommendation_section(index), study_conclusions_section(index),
-       summary_section(index, findings), mesh_table_section(index, study),
-       mesh_figures_section(mesh_figures), grades, refinement_section(index), appendix, figs,
-       divergence, interface_section(index), anomalies_section(index), beyond_study_section(index),
-       extent_section(index), sweep_section(index, study, sweep_figures), friction_section(index),
-       conformal_section(index), variants, recovery},
-      {bench_md});
+  const NumberedSections numbered = number_sections({recommendation_section(index),
+                                                     study_conclusions_section(index),
+                                                     summary_section(index, findings),
+                                                     mesh_table_section(index, study),
+                                                     mesh_figures_section(mesh_figures),
+                                                     grades,
+                                                     refinement_section(index),
+                                                     appendix,
+                                                     cross_code_md,
+                                                     figs,
+                                                     divergence,
+                                                     interface_section(index),
+                                                     anomalies_section(index),
+                                                     beyond_study_section(index),
+                                                     extent_section(index),
+                                                     sweep_section(index, study, sweep_figures),
+                                                     friction_section(index),
+                                                     conformal_section(index),
+                                                     variants,
+                                                     recovery},
+                                                    {bench_md});
 
   std::string out =
       "# contact-suite report: our contact elements beside the study's ANSYS results\n\n"
@@ -167,6 +183,7 @@ ReportOutcome write_report(const schema::ResultsDocument& results, const ReportO
 
   AtomicOutput output(options.out_dir);
   FigureSet figures, bench_figures, mesh_figures, sweep_figures;
+  std::vector<Figure> cross_code_figures;
   if (options.figures)
     figures = render_figures(index, output.staging_dir(), options.figure_options);
   if (options.figures && options.mesh_export)
@@ -174,11 +191,17 @@ ReportOutcome write_report(const schema::ResultsDocument& results, const ReportO
         render_mesh_figures(*options.mesh_export, output.staging_dir(), options.figure_options);
   if (options.figures)
     sweep_figures = render_sweep_figures(results, output.staging_dir(), options.figure_options);
+  if (options.figures && is_cross_code(index))
+    cross_code_figures =
+        render_cross_code_figure(index, output.staging_dir(), options.figure_options);
   if (options.figures && bench)
     bench_figures = render_bench_figures(*bench, output.staging_dir(), {}, options.figure_options);
   const std::string bench_md = bench ? bench_section(*bench, bench_figures) : std::string();
-  output.write_text("report.md", report_markdown(index, study, figures, mesh_figures,
-                                                 baseline.has_value(), bench_md, sweep_figures));
+  const std::string cross_code_md =
+      cross_code_section(index, study, cross_code_figures, options.option_mappings);
+  output.write_text("report.md",
+                    report_markdown(index, study, figures, mesh_figures, baseline.has_value(),
+                                    bench_md, sweep_figures, cross_code_md));
   output.write_text("results.csv", results_csv(index, study));
   if (baseline)
     output.write_text("regression.md", regression_markdown(compare_results(*baseline, results)));
@@ -189,6 +212,8 @@ ReportOutcome write_report(const schema::ResultsDocument& results, const ReportO
     for (const auto& f : set->figures)
       (f.produced ? outcome.figures_drawn : outcome.figures_missing)++;
   }
+  for (const auto& f : cross_code_figures)
+    (f.produced ? outcome.figures_drawn : outcome.figures_missing)++;
   outcome.figures_unavailable =
       figures.unavailable.empty() ? bench_figures.unavailable : figures.unavailable;
   outcome.files = output.commit();

@@ -1,9 +1,9 @@
 #pragma once
 // `contact-suite report`: everything a results document turns into, written atomically into one
-// directory: report.md (summary and findings, Tables 2a/2b, appendix tables, figures, the
-// flat-punch divergence table, other option sets, the recovery comparison and, with Google
-// Benchmark JSON of bench_contact_algorithms, the benchmarks), figures/*.png, results.csv, and
-// with a baseline, regression.md.
+// directory: report.md (summary and findings, Tables 2a/2b, appendix tables, with several solvers
+// the cross-code section, figures, the flat-punch divergence table, other option sets, the recovery
+// comparison and, with Google Benchmark JSON of bench_contact_algorithms, the benchmarks),
+// figures/*.png, results.csv, and with a baseline, regression.md.
 //
 // The layout of the folder follows the report: results/ (the index over a results document,
 // the study's reference data, the CSV export), tables/ (Tables 2a/2b, the appendix tables, the
@@ -23,6 +23,7 @@
 #include "reports/figures/figures.hpp"
 #include "reports/results/results_index.hpp"
 #include "reports/results/study_reference.hpp"
+#include "reports/tables/solver_option_mapping.hpp"
 #include "schema/results_file.hpp"
 
 namespace cs::reports {
@@ -41,6 +42,9 @@ struct ReportOptions {
   std::optional<std::filesystem::path> mesh_export;
   bool figures = true;  ///< draw figures with gnuplot
   FigureOptions figure_options;
+  /// How the study's options map to other solvers' (for the cross-code section, shown when the
+  /// results hold more than one solver); the command line takes them from the adapters.
+  std::vector<SolverOptionMapping> option_mappings;
 };
 
 /// What write_report produced.
@@ -58,11 +62,13 @@ ReportOutcome write_report(const schema::ResultsDocument& results, const ReportO
 
 /// The whole report.md text from its parts (no I/O); `mesh_figures` are Figure 3 (empty:
 /// none), `bench_md` is the benchmarks appendix (empty: none); `sweep_figures` those of the
-/// parameter-sweep section (figures/sweep_figure.hpp).
+/// parameter-sweep section (figures/sweep_figure.hpp); `cross_code_md` the cross-code section
+/// (tables/cross_code_section.hpp; empty: none).
 std::string report_markdown(const ResultsIndex& index, const StudyReference& study,
                             const FigureSet& figures, const FigureSet& mesh_figures,
                             bool has_regression, const std::string& bench_md = {},
-                            const FigureSet& sweep_figures = FigureSet{});
+                            const FigureSet& sweep_figures = FigureSet{},
+                            const std::string& cross_code_md = {});
 
 /// Sections numbered in order, without gaps, and their table of contents.
 struct NumberedSections {

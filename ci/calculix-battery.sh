@@ -1,0 +1,84 @@
+#!/usr/bin/env bash
+# The CalculiX battery (issue 13): every problem of the study's battery that CalculiX can take,
+# on the C, M and F meshes, Q4 and Q8, with each CalculiX contact option the study's options map
+# to, and the same cases with our built-in solver, so that the cost of the two solvers is
+# measured in one run on the same cases. Writes OUT/results.json (both solvers) and its report.
+#
+#   bash ci/calculix-battery.sh [OUT] [BUILD_DIR]     # OUT: out/calculix, BUILD_DIR: build
+#
+# The selection: problems P_p P_a Pprime_p Pprime_a H_p H_a S_1 S_1_3 S_1_7 F_p F_a (a
+# discretized indenter: CalculiX has no rigid analytic target); contacts ns and ss (ccx 2.20
+# rejects mortar on 2D elements); algorithms PM and LMP. These are CalculiX's two distinct
+# options per contact type: AL maps to the same LINEAR deck as PM and PLM to the same HARD deck
+# as LMP (`contact-suite list`), so running them would repeat identical ccx jobs; MPC has no
+# CalculiX counterpart.
+#
+# How it runs:
+#   - one `run` process per problem, mesh, element and solver (--jobs 1), so that a case's
+#     peak_rss_mb (the process's peak, or ccx's, whichever is larger) is that model's and not
+#     an earlier, larger one's; each writes OUT-parts/<solver>-<problem>-<mesh>-<element>/;
+#   - the built-in solver first (minutes), then CalculiX on C and M, on F but S, and on the
+#     Steuermann F meshes last (the slowest: up to --ccx-time-limit 600 s per case);
+#     CALCULIX_BATTERY_JOBS (default 1) sets --jobs of the CalculiX runs of the S F meshes;
+#     CALCULIX_BATTERY_STAGES (default all: "builtin calculix-C-M calculix-F calculix-F-S")
+#     runs only the stages named (e.g. the CalculiX stages in a second process beside the
+#     built-in one; parts are directories of their own, so two processes share the work);
+#   - a case CalculiX does not converge on is `not converged` with ccx's reason, one it does not
+#     finish in 600 s is `timeout`; either way the run goes on (exit 1 of a run is accepted);
+#   - finally `merge OUT OUT-parts/*/results.json` combines the parts into one results.json and
+#     report, and the script prints the wall time of each stage and of the whole battery.
+# Parts already present (a results.json in their directory) are not run again: after an
+# interruption the script picks up where it stopped. Delete OUT-parts to start afresh.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+out=${1:-out/calculix}
+build_dir=${2:-build}
+exe="$build_dir/contact-suite"
+parts="$out-parts"
+s_jobs=${CALCULIX_BATTERY_JOBS:-1}
+stages=${CALCULIX_BATTERY_STAGES:-builtin calculix-C-M calculix-F calculix-F-S}
+problems_not_s=(P_p P_a Pprime_p Pprime_a H_p H_a F_p F_a)
+problems_s=(S_1 S_1_3 S_1_7)
+common=(--algorithms PM,LMP --contacts ns,ss --target discretized --no-report)
+
+[ -x "$exe" ] || { echo "calculix-battery: $exe not built (bash ci/build.sh $build_dir)" >&2; exit 2; }
+command -v ccx > /dev/null || { echo "calculix-battery: ccx not on PATH (ci/install-deps.sh)" >&2; exit 2; }
+mkdir -p "$parts"
+battery_start=$(date +%s)
+
+# run_part SOLVER PROBLEM MESH ELEMENT JOBS: one `run` of the selection's cases of one model.
+run_part() {
+  local solver=$1 problem=$2 mesh=$3 element=$4 jobs=$5
+  local dir="$parts/$solver-$problem-$mesh-$element"
+  [ -f "$dir/results.json" ] && return 0
+  local status=0
+  "$exe" run --solver "$solver" --problems "$problem" --meshes "$mesh" --elements "$element" \
+    "${common[@]}" --ccx-time-limit 600 --jobs "$jobs" --out "$dir" || status=$?
+  # Exit 1: some case did not converge or timed out; that is a result, recorded in the file.
+  [ "$status" -le 1 ] || { echo "calculix-battery: $dir failed (exit $status)" >&2; exit "$status"; }
+}
+
+# stage NAME SOLVER JOBS MESHES PROBLEMS...: every part of the given meshes and problems.
+stage() {
+  local name=$1 solver=$2 jobs=$3 meshes=$4
+  shift 4
+  case " $stages " in *" $name "*) ;; *) return 0 ;; esac
+  local start
+  start=$(date +%s)
+  for problem in "$@"; do
+    for mesh in $meshes; do
+      for element in Q4 Q8; do
+        run_part "$solver" "$problem" "$mesh" "$element" "$jobs"
+      done
+    done
+  done
+  echo "calculix-battery: stage $name took $(($(date +%s) - start)) s"
+}
+
+stage builtin builtin 1 "C M F" "${problems_not_s[@]}" "${problems_s[@]}"
+stage calculix-C-M calculix 1 "C M" "${problems_not_s[@]}" "${problems_s[@]}"
+stage calculix-F calculix 1 "F" "${problems_not_s[@]}"
+stage calculix-F-S calculix "$s_jobs" "F" "${problems_s[@]}"
+
+"$exe" merge "$out" "$parts"/*/results.json
+echo "calculix-battery: wall time $(($(date +%s) - battery_start)) s; results in $out/results.json"
