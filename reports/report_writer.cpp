@@ -21,6 +21,7 @@
 #include "reports/findings/study_conclusions.hpp"
 #include "reports/findings/summary_section.hpp"
 #include "reports/findings/sweep_section.hpp"
+#include "reports/findings/variant_rows.hpp"
 #include "reports/results/results_csv.hpp"
 #include "reports/tables/appendix_tables.hpp"
 #include "reports/tables/beyond_study_section.hpp"
@@ -85,11 +86,7 @@ NumberedSections number_sections(const std::vector<std::string>& sections,
 }
 
 std::string variants_section(const ResultsIndex& index) {
-  std::vector<const schema::RowVerdict*> rows;
-  for (const schema::RowVerdict* r : index.variant_rows()) {
-    if (!in_extent_study(r->spec))  // shown in the extent section
-      rows.push_back(r);
-  }
+  const std::vector<const schema::RowVerdict*> rows = other_variant_rows(index);
   if (rows.empty())
     return {};
   std::vector<std::string> header{"Row", "Variant"};

@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include "reports/findings/variant_rows.hpp"
 #include "reports/tables/markdown_table.hpp"
 
 namespace cs::reports {
@@ -13,10 +14,12 @@ namespace {
 
 using schema::RowVerdict;
 
-/// Baseline rows, then variant rows (a rigid target, overrides), in document order.
+/// Baseline rows, then the variant rows no section of their own shows (a rigid target,
+/// overrides), in document order.
 std::vector<const RowVerdict*> all_rows(const ResultsIndex& index) {
   std::vector<const RowVerdict*> rows = index.baseline_rows();
-  rows.insert(rows.end(), index.variant_rows().begin(), index.variant_rows().end());
+  const auto others = other_variant_rows(index);
+  rows.insert(rows.end(), others.begin(), others.end());
   return rows;
 }
 

@@ -252,7 +252,7 @@ TEST(CrossCodeSection, InTheReportOnlyWithSeveralSolvers) {
   EXPECT_NE(md.find("## Cross-code comparison: ours and CalculiX"), std::string::npos);
   EXPECT_NE(md.find("| PM | PRESSURE-OVERCLOSURE=LINEAR | same | penalty |"), std::string::npos);
   EXPECT_NE(md.find("#### Cost: CalculiX beside ours"), std::string::npos);
-  const std::string report = report_markdown(index, study(), {}, false, {}, md);
+  const std::string report = report_markdown(index, study(), {}, {}, false, {}, {}, md);
   EXPECT_NE(report.find("Cross-code comparison"), std::string::npos);
 }
 

@@ -1,0 +1,40 @@
+#!/usr/bin/env bash
+# Regenerates the committed report, reports/study/, from the main job and the studies beyond it:
+#
+#   bash ci/study-report.sh [--reuse]
+#
+# Runs ci/main.sh (out/results.json), ci/extent.sh (out/extent/) and ci/sweeps.sh (out/sweeps/)
+# unless --reuse is given, in which case it uses the results already in out/. Results of the
+# VF refinement (ci/refine.sh: out/refine/results.json) and CalculiX's parts of the battery
+# (ci/calculix-battery.sh: out/calculix-parts/calculix-*/results.json) are added when present;
+# they take long, so they are not run here. The coarse meshes of four problems are exported
+# for Figure 3, and the committed benchmark JSON files are shown as the benchmarks appendix.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+reuse=0
+case "${1:-}" in
+  --reuse) reuse=1 ;;
+  '') ;;
+  *) echo "ci/study-report.sh: unknown argument '$1' (only --reuse)" >&2; exit 2 ;;
+esac
+if [ "$reuse" = 0 ]; then
+  bash ci/main.sh
+  bash ci/extent.sh out/extent
+  bash ci/sweeps.sh out/sweeps
+fi
+exe=./build/contact-suite
+results=(--results out/results.json)
+for f in out/extent/*/results.json out/sweeps/all/results.json out/refine/results.json \
+  out/calculix-parts/calculix-*/results.json; do
+  if [ -f "$f" ]; then results+=(--results "$f"); fi
+done
+rm -rf out/meshes
+"$exe" export --problems H_p,S_1_3,F_p,Pprime_p,IF_p --meshes C --elements Q4 --algorithms LMP \
+  --contacts ss --out out/meshes >/dev/null
+# the median runs last: a case measured in several files is shown from the last
+bench=()
+for f in bench_all_meshes bench_F_H_p_Pprime_p_median5 bench_F_H_p_Q8_median7; do
+  if [ -f "reports/study/bench/$f.json" ]; then bench+=(--bench "reports/study/bench/$f.json"); fi
+done
+"$exe" report "${results[@]}" --mesh-pictures out/meshes "${bench[@]}" --out reports/study
+echo "ci/study-report.sh: reports/study/report.md from ${#results[@]} results arguments"
