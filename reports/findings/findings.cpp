@@ -95,11 +95,18 @@ std::vector<Finding> best_options(const ResultsIndex& index, const StudyReferenc
     }
     const RowVerdict& best = *graded.front();
     const RowVerdict& worst = *graded.back();
+    // A long tie (every option exact on a patch test) is a count, not an enumeration.
+    constexpr std::size_t kNamedTies = 3;
+    std::string best_md = join_names(best_names, " and ");
+    if (best_names.size() > kNamedTies) {
+      best_md = fmt::format(
+          "{} option sets tied (within {} points), e.g. {}", best_names.size(), kTiePercent,
+          join_names({best_names.begin(), best_names.begin() + kNamedTies}, " and "));
+    }
     std::string sentence =
         fmt::format("{}: best {} — {} on F ({}{}) of {} option set(s) graded on F", tr.label_md,
-                    join_names(best_names, " and "), format_percent(*best.errors[fine]),
-                    schema::to_string(*best.grade), best.converging.value_or(false) ? ", c" : "",
-                    graded.size());
+                    best_md, format_percent(*best.errors[fine]), schema::to_string(*best.grade),
+                    best.converging.value_or(false) ? ", c" : "", graded.size());
     if (graded.size() > 1) {
       sentence +=
           fmt::format("; worst {} ({})", option_on(worst), format_percent(*worst.errors[fine]));
