@@ -37,7 +37,8 @@ std::vector<ExtentSeries> collect_series(const ResultsIndex& index) {
   std::vector<std::string> order;
   for (const schema::RowVerdict* r : index.variant_rows()) {
     const auto extent = extent_of(r->spec);
-    if (!extent)
+    // the contact half-width moves in half-element steps: the peak stresses decide the extent
+    if (!extent || r->quantity == schema::Quantity::contact_half_width)
       continue;
     const schema::CaseSpec& s = r->spec;
     const std::string key = fmt::format(
@@ -128,7 +129,7 @@ std::optional<double> half_space_extent(const std::vector<const ExtentSeries*>& 
 
 std::string series_table(const ResultsIndex& index,
                          const std::vector<const ExtentSeries*>& series) {
-  MarkdownTable table({"Element", "Option", "extent", "C", "M", "F", "Richardson limit",
+  MarkdownTable table({"Quantity", "Element", "Option", "extent", "C", "M", "F", "Richardson limit",
                        "F − limit", "change of F from the previous extent"});
   for (const ExtentSeries* s : series) {
     std::optional<double> previous;
@@ -171,12 +172,12 @@ std::string error_split(const ResultsIndex& index, const std::vector<const Exten
     if (!exact || !lim1 || !lim_max || !f1)
       continue;
     out += fmt::format(
-        "- {} {}: F-mesh error at the study's extent {}; of it the block accounts for {} (the "
+        "- {} {} {}: F-mesh error at the study's extent {}; of it the block accounts for {} (the "
         "limit at extent 1 against the limit at {}), the discretization for {} (F against the "
         "limit at extent 1); at extent {} the limit is {} from the exact value.\n",
-        schema::to_string(s->element), s->option.label(), percent_cell(percent_of(f1, exact)),
-        percent_cell(100.0 * (*lim1 - *lim_max) / *exact), extent_label(k_max),
-        percent_cell(100.0 * (*f1 - *lim1) / *exact), extent_label(k_max),
+        schema::label(s->quantity), schema::to_string(s->element), s->option.label(),
+        percent_cell(percent_of(f1, exact)), percent_cell(100.0 * (*lim1 - *lim_max) / *exact),
+        extent_label(k_max), percent_cell(100.0 * (*f1 - *lim1) / *exact), extent_label(k_max),
         percent_cell(percent_of(lim_max, exact)));
   }
   return out;
@@ -186,15 +187,17 @@ std::string error_split(const ResultsIndex& index, const std::vector<const Exten
 /// geometry, both against the physical exact value.
 std::string half_space_grades(const ResultsIndex& index,
                               const std::vector<const ExtentSeries*>& series, double k) {
-  MarkdownTable table({"Element", "Option", "study geometry (extent 1): F error", "grade",
-                       fmt::format("half-space (extent {}): F error", extent_label(k)), "grade"});
+  MarkdownTable table({"Quantity", "Element", "Option", "study geometry (extent 1): F error",
+                       "grade", fmt::format("half-space (extent {}): F error", extent_label(k)),
+                       "grade"});
   for (const ExtentSeries* s : series) {
     const auto at = s->by_extent.find(k);
     const auto base = s->by_extent.find(1.0);
     if (at == s->by_extent.end() || base == s->by_extent.end())
       continue;
     const auto exact = index.exact_of(*base->second);
-    table.add_row({std::string(schema::to_string(s->element)), s->option.label(),
+    table.add_row({std::string(schema::label(s->quantity)),
+                   std::string(schema::to_string(s->element)), s->option.label(),
                    percent_cell(percent_of(fine_value(*base->second), exact)),
                    format_grade_cell(index, base->second),
                    percent_cell(percent_of(fine_value(*at->second), exact)),

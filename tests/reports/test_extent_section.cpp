@@ -86,12 +86,14 @@ TEST(ExtentSection, SplitsTheErrorAndFindsTheHalfSpaceExtent) {
   EXPECT_EQ(md.rfind("## The block's extent", 0), 0u) << md;
   // LMP Q8: F error at extent 1 is -1.25 %; block (9.90 - 9.995)/10 = -0.95 %; discretization
   // (9.875 - 9.90)/10 = -0.25 %; at extent 8 the limit is -0.05 % from exact.
-  EXPECT_NE(md.find("Q8 LMP ss: F-mesh error at the study's extent −1.25 %; of it the block "
+  EXPECT_NE(md.find(std::string(schema::label(schema::Quantity::sigma_c)) +
+                    " Q8 LMP ss: F-mesh error at the study's extent −1.25 %; of it the block "
                     "accounts for −0.95 %"),
             std::string::npos)
       << md;
   EXPECT_NE(md.find("the discretization for −0.25 %"), std::string::npos) << md;
-  EXPECT_NE(md.find("at extent 8 the limit is −0.05 % from the exact value"), std::string::npos) << md;
+  EXPECT_NE(md.find("at extent 8 the limit is −0.05 % from the exact value"), std::string::npos)
+      << md;
   // 9.957782 / 9.9538 - 1 = 0.040 % < 0.05 %: extent 4.
   EXPECT_NE(md.find("From extent 4 on, no fine-mesh value changes by 0.05 % or more (0.040 %"),
             std::string::npos)
