@@ -29,7 +29,7 @@ for f in out/extent/*/results.json out/sweeps/all/results.json out/refine/result
   if [ -f "$f" ]; then results+=(--results "$f"); fi
 done
 rm -rf out/meshes
-"$exe" export --problems H_p,S_1_3,F_p,Pprime_p,IF_p --meshes C --elements Q4 --algorithms LMP \
+"$exe" export --problems H_p,S_1_3,F_p,Pprime_p --meshes C --elements Q4 --algorithms LMP \
   --contacts ss --out out/meshes >/dev/null
 # the median runs last: a case measured in several files is shown from the last
 bench=()
