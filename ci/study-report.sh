@@ -3,8 +3,8 @@
 #
 #   bash ci/study-report.sh [--reuse]
 #
-# Runs ci/main.sh (out/results.json), ci/extent.sh (out/extent/) and ci/sweeps.sh (out/sweeps/)
-# unless --reuse is given, in which case it uses the results already in out/. Results of the
+# Runs ci/main.sh (out/results.json), the friction problems FP_p and CM_p (out/friction/; 20 s),
+# ci/extent.sh (out/extent/) and ci/sweeps.sh (out/sweeps/) unless --reuse is given, in which case it uses the results already in out/. Results of the
 # VF refinement (ci/refine.sh: out/refine/results.json) and CalculiX's parts of the battery
 # (ci/calculix-battery.sh: out/calculix-parts/calculix-*/results.json) are added when present;
 # they take long, so they are not run here. The coarse meshes of four problems are exported
@@ -19,12 +19,14 @@ case "${1:-}" in
 esac
 if [ "$reuse" = 0 ]; then
   bash ci/main.sh
+  ./build/contact-suite run --problems FP_p,CM_p --algorithms AL,PM,LMP,PLM \
+    --contacts ss,ns,mortar --recovery spr --no-report --out out/friction || [ $? -le 1 ]
   bash ci/extent.sh out/extent
   bash ci/sweeps.sh out/sweeps
 fi
 exe=./build/contact-suite
 results=(--results out/results.json)
-for f in out/extent/*/results.json out/sweeps/all/results.json out/refine/results.json \
+for f in out/friction/results.json out/extent/*/results.json out/sweeps/all/results.json out/refine/results.json \
   out/calculix-parts/calculix-*/results.json; do
   if [ -f "$f" ]; then results+=(--results "$f"); fi
 done
