@@ -24,6 +24,7 @@ enum class FigureKind {
   profile,      ///< -sigma_z/p along z = 0 (the study's Figure 4)
   convergence,  ///< |error| (or the singular value) against element size
   bench,        ///< benchmark times (figures/bench_figure.hpp)
+  mesh,         ///< a model's mesh (figures/mesh_figure.hpp, the study's Figure 3)
 };
 
 /// One figure of the report.

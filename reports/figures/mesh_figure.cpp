@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <fstream>
@@ -208,7 +209,7 @@ FigureSet render_mesh_figures(const fs::path& export_dir, const fs::path& out_ro
   const ScratchDir work;
   for (const auto& m : models) {
     Figure f;
-    f.kind = FigureKind::profile;
+    f.kind = FigureKind::mesh;
     f.file = "figures/mesh_" + m.name + ".png";
     f.caption_md =
         fmt::format("{}: {} elements in the indented block, {} in the indenter.", m.name,

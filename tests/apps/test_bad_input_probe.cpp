@@ -325,6 +325,14 @@ TEST_F(BadInputProbe, EveryProbeExitsTwoWithOneLineAndLeavesNoFile) {
   probes.push_back({{"report", "--results", "good/results.json", "--out", "bad\nout"}});
   probes.push_back({{"report", "--results", "good/results.json", "--out", "r2", "--bench",
                      "notjson.json", "--no-figures"}});
+  // several results files: the same file twice (every case in both), a missing second file;
+  // mesh pictures from a directory that is not an export
+  probes.push_back({{"report", "--results", "good/results.json", "--results", "good/results.json",
+                     "--out", "r3", "--no-figures"}});
+  probes.push_back({{"report", "--results", "good/results.json", "--results", "none.json", "--out",
+                     "r4", "--no-figures"}});
+  probes.push_back(
+      {{"report", "--results", "good/results.json", "--mesh-pictures", "good", "--out", "r5"}});
 
   ASSERT_GE(probes.size(), 190u);
   const auto before = listing(dir_->path());
