@@ -116,11 +116,23 @@ std::vector<double> extents_of(const std::vector<const ExtentSeries*>& series) {
   return ks;
 }
 
-/// The smallest extent after which no series' fine value changes by kHalfSpaceChangePercent.
+/// The largest change (percent) of a fine value between consecutive extents from ks[i] on.
+std::optional<double> largest_change_from(const std::vector<const ExtentSeries*>& series,
+                                          const std::vector<double>& ks, std::size_t i) {
+  std::optional<double> worst;
+  for (std::size_t j = i; j + 1 < ks.size(); ++j) {
+    if (const auto change = change_after(series, ks[j]))
+      worst = std::max(worst.value_or(0.0), *change);
+  }
+  return worst;
+}
+
+/// The smallest extent from which on no series' fine value changes by kHalfSpaceChangePercent
+/// between any two consecutive extents run.
 std::optional<double> half_space_extent(const std::vector<const ExtentSeries*>& series) {
   const auto ks = extents_of(series);
   for (std::size_t i = 0; i + 1 < ks.size(); ++i) {
-    const auto change = change_after(series, ks[i]);
+    const auto change = largest_change_from(series, ks, i);
     if (change && *change < kHalfSpaceChangePercent)
       return ks[i];
   }
@@ -231,7 +243,11 @@ std::string problem_part(const ResultsIndex& index, schema::ProblemId problem,
         "\nFrom extent {} on, no fine-mesh value changes by {} % or more ({} % at most): at this "
         "extent the block stands for a half-space.\n",
         extent_label(*k), kHalfSpaceChangePercent,
-        fmt::format("{:.3f}", change_after(series, *k).value_or(0.0)));
+        fmt::format("{:.3f}",
+                    largest_change_from(
+                        series, ks,
+                        static_cast<std::size_t>(std::find(ks.begin(), ks.end(), *k) - ks.begin()))
+                        .value_or(0.0)));
     if (!singular) {
       const std::string grades = half_space_grades(index, series, ks.back());
       if (!grades.empty()) {

@@ -7,6 +7,8 @@
 
 #include <fmt/format.h>
 
+#include "reports/findings/extent_section.hpp"
+
 namespace cs::reports {
 
 std::string SweepSeries::option_label() const {
@@ -37,10 +39,19 @@ bool SweepSeries::converged(const SweepPoint& point) {
 
 std::vector<std::string> swept_keys(const schema::ResultsDocument& doc) {
   std::vector<std::string> keys;
-  for (const auto& axis : doc.run.sweep)
-    keys.push_back(axis.key);
+  const auto add = [&](const schema::RunInfo& run) {
+    for (const auto& axis : run.sweep) {
+      if (std::find(keys.begin(), keys.end(), axis.key) == keys.end())
+        keys.push_back(axis.key);
+    }
+  };
+  add(doc.run);
+  for (const auto& [source, run] : doc.added_runs)  // files combined by `report --results`
+    add(run);
   std::map<std::string, std::set<double>> seen;
   for (const auto& c : doc.cases) {
+    if (in_extent_study(c.spec))  // the extent study has a section of its own
+      continue;
     for (const auto& [name, value] : c.spec.overrides)
       seen[name].insert(value);
   }

@@ -120,6 +120,25 @@ TEST(ExtentSection, SaysSoWhenNoExtentIsWideEnough) {
   EXPECT_EQ(md.find("half-space\": each option"), std::string::npos) << md;
 }
 
+TEST(ExtentSection, AHalfSpaceExtentHoldsForEveryLaterExtent) {
+  // F values 9.9500, 9.9520 (+0.02 %), 9.9800 (+0.28 %), 9.9810 (+0.01 %): a small first step
+  // does not make extent 1 a half-space; only from extent 4 on do all steps stay under 0.05 %.
+  schema::ResultsDocument doc;
+  schema::ProblemRecord p;
+  p.id = schema::ProblemId::S_1;
+  p.quantities = {{schema::Quantity::sigma_c, "peak", "peak", "10", "main"}};
+  doc.problems.push_back(p);
+  add_row(doc, schema::Algorithm::LMP, 1.0, {9.90, 9.94, 9.9500}, 9.96);
+  add_row(doc, schema::Algorithm::LMP, 2.0, {9.90, 9.94, 9.9520}, 9.96);
+  add_row(doc, schema::Algorithm::LMP, 4.0, {9.93, 9.97, 9.9800}, 9.99);
+  add_row(doc, schema::Algorithm::LMP, 8.0, {9.93, 9.97, 9.9810}, 9.99);
+  const ResultsIndex index(doc);
+  const std::string md = extent_section(index);
+  EXPECT_NE(md.find("From extent 4 on, no fine-mesh value changes by 0.05 % or more (0.010 %"),
+            std::string::npos)
+      << md;
+}
+
 TEST(ExtentSection, EmptyWithoutExtentRows) {
   schema::ResultsDocument doc;
   const ResultsIndex index(doc);
