@@ -40,6 +40,8 @@ class Parameters {
   /// The value of a declared parameter; throws std::logic_error for an undeclared name
   /// (a programming error, not an input error).
   double get(std::string_view name) const;
+  /// True when the problem has a parameter called `name`.
+  bool declares(std::string_view name) const { return values_.find(name) != values_.end(); }
   /// True when `name` was set by an override (not its default).
   bool overridden(std::string_view name) const;
 

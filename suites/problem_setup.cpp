@@ -8,6 +8,7 @@
 #include "suites/problem_catalog.hpp"
 #include "suites/problems/interference_fit_parameters.hpp"
 #include "suites/problems/problem_builders.hpp"
+#include "suites/suite_error.hpp"
 
 namespace cs::suites {
 
@@ -24,6 +25,7 @@ void validate_case(const CaseSpec& spec) {
     require_frictional_algorithm(spec, params.get("mu"));
   if (declares(d.parameters, "delta_over_b"))
     problems::require_small_interference(spec, params);
+  problems::require_half_space_gap_switch(params);
 }
 
 namespace problems {
@@ -47,6 +49,29 @@ ParameterSpec extent_parameter() {
           true,
           "the block's width and depth as a multiple of the study's; the mesh within half the "
           "study's extent is unchanged and the rest is stretched outwards"};
+}
+
+ParameterSpec half_space_gap_parameter() {
+  return {"half_space_gap",
+          0.0,
+          0.0,
+          1.0,
+          true,
+          true,
+          "1: gaps along the block's own normal, as the half-space theory of the exact values "
+          "linearizes them; 0: along the target's normal (the first-order tilt term theta u_t "
+          "included)"};
+}
+
+void require_half_space_gap_switch(const Parameters& params) {
+  if (!params.declares("half_space_gap"))
+    return;
+  const double v = params.get("half_space_gap");
+  if (v != 0.0 && v != 1.0)
+    throw SuiteInputError(
+        fmt::format("--set half_space_gap={}: only 0 (the target's normal) or 1 (the block's "
+                    "own normal) is accepted",
+                    v));
 }
 
 std::vector<ParameterSpec> with_default(std::vector<ParameterSpec> params, std::string_view name,
@@ -86,6 +111,8 @@ ProblemSetup start_setup(const CaseSpec& spec, const Parameters& params,
     model.fix(NodeSelection::node_set(sets::kIndenterSymmetry), Component::X);
     setup.pair = {sets::kBlockContact, solver::TargetSurface{sets::kIndenterContact}};
   }
+  if (params.declares("half_space_gap") && params.get("half_space_gap") == 1.0)
+    setup.pair.gap_normal = solver::GapNormal::ContactSurface;
   return setup;
 }
 

@@ -1,7 +1,8 @@
 #pragma once
 // The domain-extent study: how much of an error comes from the study's finite block and how
 // much from the discretization, the extent at which a block stands for a half-space, and the
-// Steuermann grades at that extent ("S, half-space") beside the study geometry's.
+// Steuermann grades at that extent ("S, half-space") beside the study geometry's; and, where the
+// results hold them, the same cases with the half-space theory's gap (`half_space_gap=1`).
 
 #include <string>
 
@@ -13,7 +14,8 @@ namespace cs::reports {
 inline constexpr double kHalfSpaceChangePercent = 0.05;
 
 /// True for a row of the extent study: ours, discretized target, patch recovery, and `extent`
-/// its only override (such rows are shown here, not among the other variants).
+/// its only override, or `extent` with `half_space_gap=1` (such rows are shown here, not among
+/// the other variants).
 bool in_extent_study(const schema::CaseSpec& spec);
 
 /// The section (empty when the results hold no row whose only override is `extent`).

@@ -47,12 +47,14 @@ std::vector<ContactNode> contact_nodes(const ContactSurface& surface) {
         n.weight_abs += abs_w;
         n.depth_h += abs_w * seg.depth_h;
         n.stiffness_per_area += abs_w * seg.youngs_modulus_E / seg.depth_h;
+        n.normal += abs_w * surface.normal(k, t);
       }
     }
   }
   for (ContactNode& n : nodes) {
     n.depth_h /= n.weight_abs;
     n.stiffness_per_area /= n.weight_abs;
+    n.normal.normalize();
   }
   // A degenerate node reports the pressure of the segment node with the largest weight.
   for (int k = 0; k < surface.n_segments(); ++k) {
@@ -123,7 +125,8 @@ Eigen::SparseMatrix<double, Eigen::RowMajor> assemble_rows(
 
 ConstraintSet weighted_gap_constraints(const ContactSurface& surface, const ContactTarget& target,
                                        int n_dofs, int points,
-                                       const std::function<std::vector<double>(int)>& cuts) {
+                                       const std::function<std::vector<double>(int)>& cuts,
+                                       GapNormal normal) {
   ConstraintSet set;
   set.nodes = contact_nodes(surface);
   set.nodal = true;
@@ -149,7 +152,8 @@ ConstraintSet weighted_gap_constraints(const ContactSurface& surface, const Cont
       for (int q = 0; q < rule.size(); ++q) {
         const double t = mid + half * rule.points[q];
         const double dm = rule.weights[q] * half * surface.measure(k, t);
-        const TargetPoint tp = project(target, surface.point(k, t));
+        const TargetPoint tp =
+            oriented(project(target, surface.point(k, t)), normal, surface.normal(k, t));
         const SideShapeValues sv = surface.shape(k, t);
         std::array<double, 3> N{sv.N[0], sv.N[1], sv.N[2]};
         const std::array<double, 3> phi = multiplier_basis(seg.n_nodes, N);

@@ -36,6 +36,7 @@
 #include <Eigen/SparseCore>
 
 #include "solver/contact/contact_surface.hpp"
+#include "solver/contact/gap_normal.hpp"
 #include "solver/contact/target.hpp"
 
 namespace cs::solver {
@@ -48,6 +49,9 @@ struct ContactNode {
   double weight_abs = 0.0;          ///< int |N_a| (r) ds > 0 (differs from w at Q8 corners)
   double depth_h = 0.0;             ///< underlying element depth, averaged with |N_a| (r) ds
   double stiffness_per_area = 0.0;  ///< E / h, averaged with |N_a| (r) ds
+  /// The surface's outward unit normal at the node: the segment normals averaged with
+  /// |N_a| (r) ds (GapNormal::ContactSurface rows of node-to-surface contact).
+  Eigen::Vector2d normal = Eigen::Vector2d::Zero();
   /// A node whose consistent weight vanishes (the corner node on the axis of an axisymmetric Q8
   /// surface: int N_a r ds = 0) carries no consistent force, so lambda / w says nothing about
   /// its pressure; results then report the pressure of this neighbour (the adjacent mid-side
@@ -138,8 +142,12 @@ Eigen::SparseMatrix<double, Eigen::RowMajor> assemble_rows(
 /// int N_c g r ds = -h^2 g'/60 for g = g' (r - r_c)), and on the axis of an axisymmetric surface
 /// int N_c r ds = 0, so its multiplier transmits no net force. With Phi_a >= 0, g >= 0 everywhere
 /// gives g_a >= 0 and every row carries a force lambda_a = int p_h Phi_a (r) ds >= 0 for p_h >= 0.
+///
+/// GAP NORMAL: the gap and force direction of each quadrature point (solver/contact/
+/// gap_normal.hpp), the target's normal unless `normal` says the contact surface's.
 ConstraintSet weighted_gap_constraints(const ContactSurface& surface, const ContactTarget& target,
                                        int n_dofs, int points,
-                                       const std::function<std::vector<double>(int)>& cuts);
+                                       const std::function<std::vector<double>(int)>& cuts,
+                                       GapNormal normal = GapNormal::Target);
 
 }  // namespace cs::solver

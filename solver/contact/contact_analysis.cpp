@@ -130,18 +130,18 @@ const ConstraintSet& ContactAnalysis::constraints(ConstraintRows rows) {
   ConstraintSet set;
   switch (rows) {
     case ConstraintRows::NodeToSurface:
-      set = node_to_surface_constraints(surface_, target_, n_dofs);
+      set = node_to_surface_constraints(surface_, target_, n_dofs, pair_.gap_normal);
       break;
     case ConstraintRows::GaussPoints:
       set = surface_to_surface_constraints(surface_, target_, n_dofs,
-                                           SurfaceToSurfaceRows::GaussPoints);
+                                           SurfaceToSurfaceRows::GaussPoints, pair_.gap_normal);
       break;
     case ConstraintRows::NodalWeightedGaps:
-      set = surface_to_surface_constraints(surface_, target_, n_dofs,
-                                           SurfaceToSurfaceRows::NodalWeightedGaps);
+      set = surface_to_surface_constraints(
+          surface_, target_, n_dofs, SurfaceToSurfaceRows::NodalWeightedGaps, pair_.gap_normal);
       break;
     case ConstraintRows::Mortar:
-      set = mortar_constraints(surface_, target_, n_dofs);
+      set = mortar_constraints(surface_, target_, n_dofs, pair_.gap_normal);
       break;
   }
   return constraints_.emplace(rows, std::move(set)).first->second;

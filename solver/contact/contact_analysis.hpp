@@ -57,6 +57,9 @@ struct RowState;
 struct ContactPair {
   std::string contact_surface;  ///< edge set name, e.g. "block.top"
   TargetSpec target;            ///< TargetSurface{"indenter.bottom"} or a RigidProfile
+  /// Along which normal gaps are measured (solver/contact/gap_normal.hpp): the target's by
+  /// default, or the contact surface's own (the half-space theory's linearization).
+  GapNormal gap_normal = GapNormal::Target;
 };
 
 /// The rows `settings` select.

@@ -27,10 +27,11 @@ std::vector<double> mortar_cuts(const ContactSurface& surface, int k,
 }
 
 ConstraintSet mortar_constraints(const ContactSurface& surface, const ContactTarget& target,
-                                 int n_dofs) {
+                                 int n_dofs, GapNormal normal) {
   const std::vector<Eigen::Vector2d> breakpoints = target_breakpoints(target);
-  return weighted_gap_constraints(surface, target, n_dofs, kMortarGaussPoints,
-                                  [&](int k) { return mortar_cuts(surface, k, breakpoints); });
+  return weighted_gap_constraints(
+      surface, target, n_dofs, kMortarGaussPoints,
+      [&](int k) { return mortar_cuts(surface, k, breakpoints); }, normal);
 }
 
 }  // namespace cs::solver

@@ -28,7 +28,7 @@ inline constexpr int kMortarGaussPoints = 5;
 
 /// The mortar rows of `surface` against `target`; B has n_dofs columns.
 ConstraintSet mortar_constraints(const ContactSurface& surface, const ContactTarget& target,
-                                 int n_dofs);
+                                 int n_dofs, GapNormal normal = GapNormal::Target);
 
 /// The parameters in (-1, 1) of segment k of `surface` at which `points` project (closest
 /// point), sorted and unique: where mortar integration cuts the segment.

@@ -3,7 +3,8 @@
 namespace cs::solver {
 
 ConstraintSet node_to_surface_constraints(const ContactSurface& surface,
-                                          const ContactTarget& target, int n_dofs) {
+                                          const ContactTarget& target, int n_dofs,
+                                          GapNormal normal) {
   ConstraintSet set;
   set.nodes = contact_nodes(surface);
   set.nodal = true;
@@ -14,7 +15,7 @@ ConstraintSet node_to_surface_constraints(const ContactSurface& surface,
   std::vector<Eigen::Triplet<double>> triplets, slip_triplets;
   for (int i = 0; i < m; ++i) {
     const ContactNode& n = set.nodes[i];
-    const TargetPoint tp = project(target, n.position);
+    const TargetPoint tp = oriented(project(target, n.position), normal, n.normal);
     ContactConstraint& r = set.rows[i];
     r.position = n.position;
     r.node = i;

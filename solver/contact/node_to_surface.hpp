@@ -16,6 +16,7 @@ namespace cs::solver {
 
 /// The node-to-surface rows of `surface` against `target`; B has n_dofs columns.
 ConstraintSet node_to_surface_constraints(const ContactSurface& surface,
-                                          const ContactTarget& target, int n_dofs);
+                                          const ContactTarget& target, int n_dofs,
+                                          GapNormal normal = GapNormal::Target);
 
 }  // namespace cs::solver

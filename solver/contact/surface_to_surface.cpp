@@ -11,7 +11,7 @@ int surface_gauss_points(ElementType type) {
 namespace {
 
 ConstraintSet gauss_point_constraints(const ContactSurface& surface, const ContactTarget& target,
-                                      int n_dofs) {
+                                      int n_dofs, GapNormal normal) {
   ConstraintSet set;
   set.nodes = contact_nodes(surface);
   set.nodal = false;
@@ -24,7 +24,7 @@ ConstraintSet gauss_point_constraints(const ContactSurface& surface, const Conta
     for (int q = 0; q < rule.size(); ++q) {
       const double t = rule.points[q];
       const Eigen::Vector2d x = surface.point(k, t);
-      const TargetPoint tp = project(target, x);
+      const TargetPoint tp = oriented(project(target, x), normal, surface.normal(k, t));
       const SideShapeValues sv = surface.shape(k, t);
       ContactConstraint r;
       r.position = x;
@@ -58,13 +58,13 @@ ConstraintSet gauss_point_constraints(const ContactSurface& surface, const Conta
 
 ConstraintSet surface_to_surface_constraints(const ContactSurface& surface,
                                              const ContactTarget& target, int n_dofs,
-                                             SurfaceToSurfaceRows rows) {
+                                             SurfaceToSurfaceRows rows, GapNormal normal) {
   if (rows == SurfaceToSurfaceRows::GaussPoints) {
-    return gauss_point_constraints(surface, target, n_dofs);
+    return gauss_point_constraints(surface, target, n_dofs, normal);
   }
-  return weighted_gap_constraints(surface, target, n_dofs,
-                                  surface_gauss_points(surface.element_type()),
-                                  [](int) { return std::vector<double>{}; });
+  return weighted_gap_constraints(
+      surface, target, n_dofs, surface_gauss_points(surface.element_type()),
+      [](int) { return std::vector<double>{}; }, normal);
 }
 
 }  // namespace cs::solver

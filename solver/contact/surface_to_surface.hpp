@@ -28,6 +28,7 @@ int surface_gauss_points(ElementType type);
 /// The surface-to-surface rows of `surface` against `target`; B has n_dofs columns.
 ConstraintSet surface_to_surface_constraints(const ContactSurface& surface,
                                              const ContactTarget& target, int n_dofs,
-                                             SurfaceToSurfaceRows rows);
+                                             SurfaceToSurfaceRows rows,
+                                             GapNormal normal = GapNormal::Target);
 
 }  // namespace cs::solver

@@ -18,7 +18,8 @@ const ProblemDescriptor& problem_descriptor<ProblemId::F_p>() {
        "13",
        "Eq. 39",
        {{Quantity::sigma_c_star, "−σ<sub>z</sub>(a, 0)/p", "-sigma_z(a,0)/p", "13", ""}}},
-      problems::study_parameters({problems::extent_parameter()}),
+      problems::study_parameters(
+          {problems::extent_parameter(), problems::half_space_gap_parameter()}),
       problems::build_flat_punch};
   return d;
 }

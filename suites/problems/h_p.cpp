@@ -23,7 +23,8 @@ const ProblemDescriptor& problem_descriptor<ProblemId::H_p>() {
         {Quantity::contact_half_width,
          "a<sub>FE</sub>/a, halfway between the last node carrying pressure and the next", "a_FE/a",
          "", ""}}},
-      problems::study_parameters({problems::extent_parameter()}),
+      problems::study_parameters(
+          {problems::extent_parameter(), problems::half_space_gap_parameter()}),
       problems::build_hertz};
   return d;
 }

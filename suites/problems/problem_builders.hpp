@@ -22,6 +22,14 @@ std::vector<ParameterSpec> study_parameters(std::vector<ParameterSpec> extra);
 /// the mesh within half the study's extent is unchanged (StudyMeshSpec::extent).
 ParameterSpec extent_parameter();
 
+/// `half_space_gap` (H, S, F): 1 measures gaps along the indented block's own normal, the
+/// linearization of the half-space theory behind their exact values (solver/contact/
+/// gap_normal.hpp); 0, the default, along the target's normal. Only 0 and 1 are accepted.
+ParameterSpec half_space_gap_parameter();
+
+/// Throws SuiteInputError unless `half_space_gap` (when the problem has it) is 0 or 1.
+void require_half_space_gap_switch(const Parameters& params);
+
 /// `params` with the default of parameter `name` set to `value` (which must lie in its range).
 std::vector<ParameterSpec> with_default(std::vector<ParameterSpec> params, std::string_view name,
                                         double value);

@@ -26,7 +26,8 @@ const ProblemDescriptor& problem_descriptor<ProblemId::S_1_3>() {
       problems::study_parameters(
           {{"re_over_b", 1.0 / 3.0, 0.0, 10.0, false, true,
             "edge radius r_e over the half-width b of the punch's flat face"},
-           problems::extent_parameter()}),
+           problems::extent_parameter(),
+           problems::half_space_gap_parameter()}),
       problems::build_steuermann};
   return d;
 }

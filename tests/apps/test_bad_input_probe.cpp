@@ -122,6 +122,10 @@ std::vector<Probe> set_probes() {
                           "extent=abc", "extent=nan"})
     p.push_back({{"case", "S_1", "--set", bad}});
   p.push_back({{"case", "P_p", "--set", "extent=2"}});
+  // the half-space gap switch: only 0 or 1, and only where there is an indenter's curve (H, S, F)
+  for (const char* bad : {"half_space_gap=0.5", "half_space_gap=2", "half_space_gap=-1"})
+    p.push_back({{"case", "S_1", "--set", bad}});
+  p.push_back({{"case", "P_p", "--set", "half_space_gap=1"}});
   p.push_back({{"run", "--problems", "H_p,P_p", "--meshes", "C", "--set", "extent=2"}});
   p.push_back({{"case", "H_p", "--set", "nu=0.2", "--set", "nu=0.3"}});
   p.push_back({{"run", "--problems", "H_p", "--set", "nu=0.2", "--set", "nu=0.2"}});

@@ -16,7 +16,7 @@ namespace {
 
 constexpr double kExact = 10.0;
 
-schema::CaseSpec spec_at(schema::Algorithm algorithm, double extent) {
+schema::CaseSpec spec_at(schema::Algorithm algorithm, double extent, bool block_normal = false) {
   schema::CaseSpec s;
   s.problem = schema::ProblemId::S_1;
   s.element = schema::Element::Q8;
@@ -24,14 +24,16 @@ schema::CaseSpec spec_at(schema::Algorithm algorithm, double extent) {
   s.contact = schema::ContactKind::ss;
   if (extent != 1.0)
     s.overrides["extent"] = extent;
+  if (block_normal)
+    s.overrides["half_space_gap"] = 1.0;
   return s;
 }
 
 /// A row with values C, M, F, graded on F, converging, with a Richardson limit.
 void add_row(schema::ResultsDocument& doc, schema::Algorithm algorithm, double extent,
-             std::array<double, 3> values, double limit) {
+             std::array<double, 3> values, double limit, bool block_normal = false) {
   schema::RowVerdict row;
-  row.spec = spec_at(algorithm, extent);
+  row.spec = spec_at(algorithm, extent, block_normal);
   row.quantity = schema::Quantity::sigma_c;
   row.id = schema::case_key(row.spec) + "/sigma_c";
   for (std::size_t m = 0; m < 3; ++m) {
@@ -99,8 +101,32 @@ TEST(ExtentSection, SplitsTheErrorAndFindsTheHalfSpaceExtent) {
             std::string::npos)
       << md;
   EXPECT_NE(md.find("half-space\": each option graded at extent 8"), std::string::npos) << md;
+  // The series table: one cell per column, the quantity first.
+  EXPECT_NE(md.find("| " + std::string(schema::label(schema::Quantity::sigma_c)) +
+                    " | Q8 | LMP ss | 2 | 9.8500 (−1.50 %) | 9.9000 (−1.00 %) | 9.9240 (−0.76 %) | "
+                    "9.9600 (−0.40 %) | −0.36 % | +0.50 % |\n"),
+            std::string::npos)
+      << md;
   // AL: u at the study's extent (-11 %), e at the widest (-0.5 %).
   EXPECT_NE(md.find("| Q8 | AL ss | −11.0 % | u, c | −0.50 % | e, c |"), std::string::npos) << md;
+}
+
+// Requirement: rows with the half-space gap (extent and half_space_gap=1) are graded beside the
+// same option's target-normal rows at that extent, against the same exact value; an option run
+// only one way has no line.
+TEST(ExtentSection, GradesTheHalfSpaceGapBesideTheTargetNormal) {
+  schema::ResultsDocument doc = extent_document();
+  // LMP at extent 8 with the block's normal: +0.286, -0.025, -0.0015 % (e, c).
+  add_row(doc, schema::Algorithm::LMP, 8.0, {10.0286, 9.9975, 9.99985}, 10.0, true);
+  const ResultsIndex index(doc);
+  const std::string md = extent_section(index);
+  EXPECT_NE(md.find("\"S(1), half-space gap\": at extent 8"), std::string::npos) << md;
+  // target's normal at extent 8: 9.88, 9.93, 9.957782 -> -1.20, -0.70, -0.42 % (g, c).
+  EXPECT_NE(md.find("| Q8 | LMP ss | −1.20 %, −0.70 %, −0.42 % | e, c | +0.29 %, −0.02 %, −1.5e-03 "
+                    "% | e, c |"),
+            std::string::npos)
+      << md;
+  EXPECT_EQ(md.find("| Q8 | AL ss | −5.00 %"), std::string::npos) << md;  // AL: no such row
 }
 
 TEST(ExtentSection, SaysSoWhenNoExtentIsWideEnough) {

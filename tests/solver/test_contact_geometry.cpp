@@ -11,6 +11,7 @@
 
 #include "solver/contact/constraint_set.hpp"
 #include "solver/contact/contact_error.hpp"
+#include "solver/contact/gap_normal.hpp"
 #include "solver/contact/mortar.hpp"
 #include "support/tolerance.hpp"
 #include "test_contact_support.hpp"
@@ -66,6 +67,36 @@ TEST(ContactRigidProfile, SharpPunchCorner) {
   EXPECT_TRUE(Near(p.normal.x(), 0.6, {0, kTight}));
   EXPECT_THROW(validate(RigidProfile{SharpFlatPunch{{0, 0}, {0, 0}, 1.0}}), ContactError);
   EXPECT_THROW(validate(RigidProfile{RoundedFlatPunch{{0, 0}, {0, 1}, 1.0, 0.0}}), ContactError);
+}
+
+// Requirement: with GapNormal::ContactSurface the gap is the distance from the contact point
+// along the contact surface's normal to the target's tangent line (checked: the point moved
+// back by that gap lies on a tilted rigid plane), the force direction is that normal, and the
+// target's normal is kept where the surfaces do not face each other or when Target is chosen.
+TEST(ContactGapNormal, AlongTheContactSurfaceNormalReachesTheTargetLine) {
+  const double theta = 0.3;
+  const RigidPlane plane{{0.2, 1.0}, {-std::sin(theta), -std::cos(theta)}};  // faces down
+  const Eigen::Vector2d x{0.7, 0.4}, n_contact{0.0, 1.0};  // a block's top face, below it
+  TargetPoint tp;
+  const ProfilePoint pp = closest_point(RigidProfile{plane}, x);
+  tp.gap = pp.gap;
+  tp.normal = pp.normal;
+  tp.closest = pp.closest;
+  const TargetPoint along = oriented(tp, GapNormal::ContactSurface, n_contact);
+  EXPECT_TRUE(Near(along.normal.x(), 0.0, {0, kTight}));
+  EXPECT_TRUE(Near(along.normal.y(), -1.0, {0, kTight}));
+  EXPECT_TRUE(Near(along.gap, tp.gap / std::cos(theta), {0, kTight}));
+  const Eigen::Vector2d hit = x - along.gap * along.normal;  // straight up from x
+  EXPECT_TRUE(Near((hit - plane.point).dot(plane.normal), 0.0, {0, kTight}));
+  EXPECT_GT(std::abs(along.gap - tp.gap), 0.01);  // the closest distance is not that gap
+
+  const TargetPoint same = oriented(tp, GapNormal::Target, n_contact);
+  EXPECT_EQ(same.gap, tp.gap);
+  EXPECT_EQ(same.normal, tp.normal);
+  // a contact surface at right angles to the target: no gap along its normal
+  const TargetPoint away = along_contact_normal(tp, Eigen::Vector2d{tp.normal.y(), -tp.normal.x()});
+  EXPECT_EQ(away.gap, tp.gap);
+  EXPECT_EQ(away.normal, tp.normal);
 }
 
 Model one_block(ElementType type, AnalysisType analysis, double x0, double width, int nx) {
