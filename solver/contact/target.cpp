@@ -29,10 +29,13 @@ TargetPoint project_on_surface(const ContactSurface& surface, const Eigen::Vecto
       continue;
     const double t = surface.closest_parameter(k, x);
     const double distance = (x - surface.point(k, t)).norm();
-    // Prefer an interior projection to an equally distant segment end (shared corner).
+    // Equally distant segments (to kGeometricTie h: e.g. a point inside a convex target corner,
+    // equally far from both sides) are a tie that round-off must not decide: the first segment
+    // keeps it, unless it ends there and the other projects into its interior (shared corner).
+    const double tie = kGeometricTie * surface.segment(k).depth_h;
     const bool interior = std::abs(t) < 1.0;
-    if (distance < best_distance ||
-        (distance == best_distance && interior && std::abs(best_t) >= 1.0)) {
+    if (distance < best_distance - tie ||
+        (distance <= best_distance + tie && interior && std::abs(best_t) >= 1.0)) {
       best = k;
       best_t = t;
       best_distance = distance;
@@ -73,6 +76,14 @@ ContactTarget make_target(const Model& model, const TargetSpec& spec) {
                           validate(p);
                           return p;
                         },
+                    },
+                    spec);
+}
+
+TargetSpec scale_lengths(const TargetSpec& spec, double L) {
+  return std::visit(Overloaded{
+                        [](const TargetSurface& s) -> TargetSpec { return s; },
+                        [L](const RigidProfile& p) -> TargetSpec { return scale_lengths(p, L); },
                     },
                     spec);
 }
