@@ -67,6 +67,10 @@ Model driven_block(Drive drive, AnalysisType analysis) {
   return model;
 }
 
+void PrintTo(const ScalingCase& c, std::ostream* os) {
+  *os << c.name;
+}
+
 class ModelScalingRule : public ::testing::TestWithParam<ScalingCase> {};
 
 // Requirement: with every length times L and moduli and loads times S, the displacement is L

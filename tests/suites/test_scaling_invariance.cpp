@@ -239,17 +239,25 @@ bool is_steuermann(ProblemId p) {
   return p == ProblemId::S_1 || p == ProblemId::S_1_3 || p == ProblemId::S_1_7;
 }
 
+/// Q4 and Q8; S with Q4 only: its C mesh with Q8 has 108k equations (2.8 s a case here), 17 s
+/// of this test. (Run with Q8 while this test was written: within kStiffFloatingPunch.)
+std::vector<Element> elements_for(ProblemId p) {
+  if (is_steuermann(p))
+    return {Element::Q4};
+  return {Element::Q4, Element::Q8};
+}
+
 class ScalingInvariance : public ::testing::TestWithParam<ProblemId> {};
 
-// Requirement: for every problem of the catalogue on the C mesh, Q4 and Q8, every method, the
-// normalized results in units scaled by (L, S) equal the original ones to 1e-9 relative (the
+// Requirement: for every problem of the catalogue on the C mesh, Q4 and Q8 (S: Q4), every method,
+// the normalized results in units scaled by (L, S) equal the original ones to 1e-9 relative (the
 // interface checks, exactly 0 in theory, to 1e-9 of their unit; S with the study's 1e6 stiff
 // punch to its round-off, kStiffFloatingPunch), with the same iteration count and grade: the
 // solver has no absolute length, force or pressure tolerance, and no tie that round-off decides.
 TEST_P(ScalingInvariance, NormalizedResultsDoNotDependOnUnits) {
   const Bounds& bounds = is_steuermann(GetParam()) ? kStiffFloatingPunch : kStrict;
   WorstByMethod worst;
-  for (Element element : {Element::Q4, Element::Q8})
+  for (Element element : elements_for(GetParam()))
     check_invariance(spec_of(GetParam(), element), methods_for(GetParam()), bounds, worst);
   print_worst(to_string(GetParam()), worst);
 }
@@ -259,16 +267,15 @@ const auto kProblems = values<ProblemId>();
 INSTANTIATE_TEST_SUITE_P(Catalogue, ScalingInvariance, ::testing::ValuesIn(kProblems),
                          [](const auto& info) { return std::string(to_string(info.param)); });
 
-// Requirement: S (Q4) with a punch 1e3 times stiffer than the block (round-off 1e3 times smaller
-// than at the study's 1e6) has its graded values invariant to 1e-9 like every other problem:
-// the looser bound of the study's punch is its conditioning, not a scaling rule.
+// Requirement: S_1_3 (Q4) with a punch 1e3 times stiffer than the block (round-off 1e3 times
+// smaller than at the study's 1e6) has its graded values invariant to 1e-9 like every other
+// problem: the looser bound of the study's punch is its conditioning, not a scaling rule.
 TEST(ScalingInvariance, SteuermannWithASofterPunchToOneInABillion) {
   WorstByMethod worst;
-  for (ProblemId problem : {ProblemId::S_1, ProblemId::S_1_3, ProblemId::S_1_7}) {
-    CaseSpec spec = spec_of(problem, Element::Q4);
-    spec.overrides = {{"E_ratio", 1e3}};
-    check_invariance(spec, methods_for(problem), kSofterPunch, worst);
-  }
+  CaseSpec spec = spec_of(ProblemId::S_1_3, Element::Q4);
+  spec.overrides = {{"E_ratio", 1e3}};
+  check_invariance(spec, {{Algorithm::LMP, ContactKind::ss}, {Algorithm::AL, ContactKind::ss}},
+                   kSofterPunch, worst);
   print_worst("S E_ratio=1e3", worst);
 }
 
