@@ -72,7 +72,10 @@ solver::StressRecoveryOptions recovery_options(const CaseSpec& spec) {
 }
 
 ProblemExecutor::ProblemExecutor(const CaseSpec& representative)
-    : setup_(std::make_unique<ProblemSetup>(build_problem(representative))),
+    : ProblemExecutor(build_problem(representative)) {}
+
+ProblemExecutor::ProblemExecutor(ProblemSetup setup)
+    : setup_(std::make_unique<ProblemSetup>(std::move(setup))),
       elastic_(std::make_unique<solver::LinearStaticAnalysis>(setup_->model)) {}
 
 ProblemExecutor::~ProblemExecutor() = default;

@@ -32,6 +32,11 @@ class ProblemExecutor final : public GroupExecutor {
  public:
   /// Builds the problem of `representative` and its elastic analysis (not yet assembled).
   explicit ProblemExecutor(const CaseSpec& representative);
+  /// Runs cases on a setup built elsewhere (e.g. a problem in other units,
+  /// suites/problem_scaling.hpp): the same sampling and grading as a built case. The cases
+  /// run must be of the setup's problem, mesh, element and target (and parameters); their
+  /// algorithm, discretization, recovery and contact settings are free, as for a group.
+  explicit ProblemExecutor(ProblemSetup setup);
   ~ProblemExecutor() override;
 
   CaseResult run(const CaseSpec& spec) override;

@@ -63,13 +63,21 @@ std::vector<ContactNode> contact_nodes(const ContactSurface& surface) {
       ContactNode& n = nodes[find_contact_node(nodes, seg.nodes[a])];
       if (!n.degenerate() || n.pressure_neighbour >= 0)
         continue;
+      // Weights equal to round-off (on a uniform axisymmetric Q8 surface the axis corner's
+      // mid-side neighbour and far corner both have h^2/3) are a tie: the nearer node, the mid-side
+      // one, takes it in any units.
       int best = -1;
       for (int b = 0; b < seg.n_nodes; ++b) {
         const int j = find_contact_node(nodes, seg.nodes[b]);
         if (b == a || nodes[j].degenerate())
           continue;
-        if (best < 0 || nodes[j].weight_w > nodes[best].weight_w)
+        if (best < 0 || nodes[j].weight_w > nodes[best].weight_w * (1.0 + kGeometricTie)) {
           best = j;
+        } else if (nodes[j].weight_w >= nodes[best].weight_w * (1.0 - kGeometricTie) &&
+                   (nodes[j].position - n.position).norm() <
+                       (nodes[best].position - n.position).norm()) {
+          best = j;
+        }
       }
       n.pressure_neighbour = best;
     }

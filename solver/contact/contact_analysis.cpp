@@ -152,7 +152,9 @@ std::vector<int> ContactAnalysis::candidates(const ConstraintSet& set, double pi
   const Eigen::VectorXd g_start = set.g0 + set.B * dofs.prescribed_values();
   std::vector<int> rows;
   for (int j = 0; j < set.n_rows(); ++j) {
-    if (!(std::abs(g_start[j]) <= pinball * set.rows[j].depth_h))
+    // Inclusive to round-off: a point exactly at the pinball radius (one element beyond a
+    // punch's corner at pinball 1) is a candidate in any units, not as round-off decides.
+    if (!(std::abs(g_start[j]) <= pinball * set.rows[j].depth_h * (1.0 + kGeometricTie)))
       continue;
     // A row whose every DOF is prescribed cannot move: it is no contact candidate.
     bool movable = false;

@@ -164,6 +164,32 @@ void validate(const RigidProfile& profile) {
              profile);
 }
 
+RigidProfile scale_lengths(const RigidProfile& profile, double L) {
+  return std::visit(Overloaded{
+                        [L](RigidPlane p) -> RigidProfile {
+                          p.point *= L;
+                          return p;
+                        },
+                        [L](RigidCircle c) -> RigidProfile {
+                          c.center *= L;
+                          c.radius *= L;
+                          return c;
+                        },
+                        [L](RoundedFlatPunch p) -> RigidProfile {
+                          p.face_center *= L;
+                          p.half_width_b *= L;
+                          p.edge_radius_re *= L;
+                          return p;
+                        },
+                        [L](SharpFlatPunch p) -> RigidProfile {
+                          p.face_center *= L;
+                          p.half_width_a *= L;
+                          return p;
+                        },
+                    },
+                    profile);
+}
+
 std::string describe(const RigidProfile& profile) {
   return std::visit(
       Overloaded{

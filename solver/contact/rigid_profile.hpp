@@ -75,6 +75,11 @@ std::vector<Eigen::Vector2d> profile_kinks(const RigidProfile& profile);
 /// directions are non-zero and finite.
 void validate(const RigidProfile& profile);
 
+/// The profile with every length times L > 0 (points, radii, widths; normals and directions
+/// unchanged): the rigid part of a model scaled by solver/model_scaling.hpp. The factor is not
+/// validated here (validate(ModelScaling) does).
+RigidProfile scale_lengths(const RigidProfile& profile, double L);
+
 /// "rigid plane", "rigid circle R = 2", ... for messages.
 std::string describe(const RigidProfile& profile);
 

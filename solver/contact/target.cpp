@@ -18,8 +18,17 @@ struct Overloaded : Ts... {
 template <class... Ts>
 Overloaded(Ts...) -> Overloaded<Ts...>;
 
+/// The end parameter (-1 or 1) of `a` at the corner node it shares with `b`, or `t` if none.
+double shared_end(const ContactSegment& a, const ContactSegment& b, double t) {
+  for (int end = 0; end < 2; ++end) {
+    if (a.nodes[end] == b.nodes[0] || a.nodes[end] == b.nodes[1])
+      return end == 0 ? -1.0 : 1.0;
+  }
+  return t;
+}
+
 TargetPoint project_on_surface(const ContactSurface& surface, const Eigen::Vector2d& x) {
-  int best = -1;
+  int best = -1, tied = -1;
   double best_t = 0.0;
   double best_distance = std::numeric_limits<double>::infinity();
   for (int k = 0; k < surface.n_segments(); ++k) {
@@ -29,15 +38,26 @@ TargetPoint project_on_surface(const ContactSurface& surface, const Eigen::Vecto
       continue;
     const double t = surface.closest_parameter(k, x);
     const double distance = (x - surface.point(k, t)).norm();
-    // Prefer an interior projection to an equally distant segment end (shared corner).
+    // Equally distant segments (to kGeometricTie h) are a tie that round-off must not decide:
+    // an interior projection wins over an equally distant segment end (shared corner); two
+    // interior ones (a point on the bisector inside a convex target corner, e.g. a node of a
+    // conformal fit against the matching node of a faceted arc) are resolved below.
+    const double tie = kGeometricTie * surface.segment(k).depth_h;
     const bool interior = std::abs(t) < 1.0;
-    if (distance < best_distance ||
-        (distance == best_distance && interior && std::abs(best_t) >= 1.0)) {
+    if (distance < best_distance - tie ||
+        (distance <= best_distance + tie && interior && std::abs(best_t) >= 1.0)) {
       best = k;
       best_t = t;
       best_distance = distance;
+      tied = -1;
+    } else if (distance <= best_distance + tie && interior && std::abs(best_t) < 1.0) {
+      tied = k;
     }
   }
+  // Two sides equally close: their shared node is the closest point and the direction from it
+  // the normal (the bisector), symmetric in the two sides, as beyond a convex corner.
+  if (tied >= 0)
+    best_t = shared_end(surface.segment(best), surface.segment(tied), best_t);
   TargetPoint out;
   const Eigen::Vector2d xm = surface.point(best, best_t);
   const Eigen::Vector2d n_segment = surface.normal(best, best_t);
@@ -73,6 +93,14 @@ ContactTarget make_target(const Model& model, const TargetSpec& spec) {
                           validate(p);
                           return p;
                         },
+                    },
+                    spec);
+}
+
+TargetSpec scale_lengths(const TargetSpec& spec, double L) {
+  return std::visit(Overloaded{
+                        [](const TargetSurface& s) -> TargetSpec { return s; },
+                        [L](const RigidProfile& p) -> TargetSpec { return scale_lengths(p, L); },
                     },
                     spec);
 }

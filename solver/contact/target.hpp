@@ -23,6 +23,12 @@
 
 namespace cs::solver {
 
+/// Two lengths of a contact geometry within this fraction of each other (or of the element
+/// depth) are a tie (a point exactly at the pinball radius, a point equally far from two target
+/// segments): decided by a fixed rule, never by round-off, which would make the result depend on
+/// the units (tests/suites/test_scaling_invariance.cpp).
+inline constexpr double kGeometricTie = 1e-9;
+
 /// Names the edge set of a meshed body that serves as the target (e.g. "indenter.bottom").
 struct TargetSurface {
   std::string edge_set;
@@ -30,6 +36,10 @@ struct TargetSurface {
 
 /// What a contact pair names as its target: a meshed surface or a rigid profile.
 using TargetSpec = std::variant<TargetSurface, RigidProfile>;
+
+/// `spec` with its lengths times L (a rigid profile's, see scale_lengths(RigidProfile); a target
+/// surface is a set name and scales with its mesh).
+TargetSpec scale_lengths(const TargetSpec& spec, double L);
 
 /// A meshed target: the segments of the target body's edge set. Its normals point out of the
 /// target body.

@@ -180,6 +180,33 @@ TEST(ContactTargetProjection, MeshedTargetInsideAndBeyondItsEnd) {
   EXPECT_EQ(describe(target), "target surface 'indenter.top'");
 }
 
+// Requirement: a point inside a convex target corner, on its bisector (equally far from both
+// sides, to round-off), projects onto the corner node with the bisector as normal, the same in
+// any units: not onto whichever side round-off finds a hair closer (whose normal is tilted by
+// half the corner's angle).
+TEST(ContactTargetProjection, EquallyCloseSidesTakeTheirSharedNode) {
+  contact_test::PatchSpec spec;
+  spec.indenter_nx = 2;
+  for (const double L : {1.0, 1e3, 1e-3}) {
+    Model model = contact_test::patch_model(spec);
+    int peak = -1;
+    for (int n : resolve_nodes(model.mesh, NodeSelection::edge_set("indenter.top"))) {
+      if (std::abs(model.mesh.nodes[n].x() - 0.5) < 1e-12)
+        peak = n;
+    }
+    ASSERT_GE(peak, 0);
+    model.mesh.nodes[peak].y() = 0.1;  // a roof: two sides meeting at (0.5, 0.1)
+    for (auto& x : model.mesh.nodes)
+      x *= L;
+    const ContactTarget target = make_target(model, TargetSurface{"indenter.top"});
+    const TargetPoint tp = project(target, Eigen::Vector2d(0.5, 0.05) * L);
+    EXPECT_TRUE(Near(tp.gap / L, -0.05, {0, kTight})) << "L = " << L;
+    EXPECT_TRUE(Near(tp.normal.x(), 0.0, {0, kTight})) << "L = " << L;
+    EXPECT_TRUE(Near(tp.normal.y(), 1.0, {0, kTight})) << "L = " << L;
+    EXPECT_TRUE(Near(tp.closest.y() / L, 0.1, {0, kTight})) << "L = " << L;
+  }
+}
+
 TEST(ContactMortar, CutsAtTargetNodesInsideTheSegment) {
   const Model m = one_block(ElementType::Q4, AnalysisType::PlaneStrain, 0.0, 1.0, 2);
   const ContactSurface s(m, "b.bottom");
