@@ -5,7 +5,8 @@
 #
 # Runs ci/main.sh (out/results.json), the friction problems FP_p and CM_p (out/friction/; 20 s),
 # ci/extent.sh (out/extent/) and ci/sweeps.sh (out/sweeps/) unless --reuse is given, in which case it uses the results already in out/. Results of the
-# VF refinement (ci/refine.sh: out/refine/results.json) and CalculiX's parts of the battery
+# VF refinement (ci/refine.sh: out/refine/results.json and out/refine/steuermann/results.json;
+# its C, M and F cases repeat the main job's and are kept once) and CalculiX's parts of the battery
 # (ci/calculix-battery.sh: out/calculix-parts/calculix-*/results.json) are added when present;
 # they take long, so they are not run here. The coarse meshes of four problems are exported
 # for Figure 3, and the committed benchmark JSON files are shown as the benchmarks appendix.
@@ -27,7 +28,7 @@ fi
 exe=./build/contact-suite
 results=(--results out/results.json)
 for f in out/friction/results.json out/extent/*/results.json out/sweeps/all/results.json out/refine/results.json \
-  out/calculix-parts/calculix-*/results.json; do
+  out/refine/steuermann/results.json out/calculix-parts/calculix-*/results.json; do
   if [ -f "$f" ]; then results+=(--results "$f"); fi
 done
 rm -rf out/meshes

@@ -1,7 +1,9 @@
 // Requirement: a report can draw on several results files (the main job, sweeps, another
 // solver's battery) read as one document. Cases and rows are kept in order, problems united,
-// the first file's run is the run, and a case or row in two files is refused with one line
-// naming it and both files.
+// the first file's run is the run. A case or row in two files must be the same analysis run
+// twice (a refinement run repeats the main job's C, M, F cases): with other values it is refused
+// with one line naming it and both files; with the same values it is kept once, and the row takes
+// the refinement record (M-F-VF) of the file that has one. One file given twice is refused.
 
 #include <gtest/gtest.h>
 
@@ -26,11 +28,16 @@ ResultsDocument one_case(const std::string& source, ProblemId problem, MeshLevel
   c.spec.problem = problem;
   c.spec.mesh = mesh;
   c.status = CaseStatus::converged;
+  QuantityResult q;
+  q.quantity = Quantity::sigma_c;
+  q.value = 1.25;
+  c.quantities.push_back(q);
   doc.cases.push_back(c);
   RowVerdict row;
   row.spec = c.spec;
   row.spec.mesh = MeshLevel::C;
   row.id = case_key(row.spec) + "/sigma_c";
+  row.values = {1.25, 1.25, 1.25};
   doc.rows.push_back(row);
   return doc;
 }
@@ -64,11 +71,12 @@ TEST(CombinedResults, OneProblemInTwoFilesIsOneRecord) {
   EXPECT_EQ(all.cases.size(), 2u);
 }
 
-TEST(CombinedResults, ACaseInTwoFilesIsRefusedByName) {
+TEST(CombinedResults, ACaseInTwoFilesWithOtherValuesIsRefusedByName) {
+  ResultsDocument b = one_case("b.json", ProblemId::H_p, MeshLevel::C, 1);
+  b.cases[0].quantities[0].value = 1.25 * (1.0 + 1e-7);  // not round-off: another analysis
   try {
-    combine_results({one_case("a.json", ProblemId::H_p, MeshLevel::C, 1),
-                     one_case("b.json", ProblemId::H_p, MeshLevel::C, 1)});
-    ADD_FAILURE() << "accepted a duplicate case";
+    combine_results({one_case("a.json", ProblemId::H_p, MeshLevel::C, 1), std::move(b)});
+    ADD_FAILURE() << "accepted a case with two values";
   } catch (const SchemaError& e) {
     const std::string m = e.what();
     EXPECT_NE(m.find("H_p/C/"), std::string::npos) << m;
@@ -77,6 +85,26 @@ TEST(CombinedResults, ACaseInTwoFilesIsRefusedByName) {
     EXPECT_EQ(m.find('\n'), std::string::npos) << m;
   }
   EXPECT_THROW(combine_results({}), SchemaError);
+  EXPECT_THROW(combine_results({one_case("a.json", ProblemId::H_p, MeshLevel::C, 1),
+                                one_case("a.json", ProblemId::P_p, MeshLevel::C, 1)}),
+               SchemaError);
+}
+
+TEST(CombinedResults, TheSameAnalysesTwiceAreKeptOnceWithTheRefinementRecord) {
+  ResultsDocument refine = one_case("refine.json", ProblemId::H_p, MeshLevel::C, 1);
+  refine.cases[0].quantities[0].value = 1.25 * (1.0 + 1e-12);  // round-off of another run
+  refine.rows[0].refinement = RefinementVerdict{};
+  refine.rows[0].refinement->value = 1.2501;  // the VF value
+  CaseResult vf = refine.cases[0];
+  vf.spec.mesh = MeshLevel::VF;
+  refine.cases.push_back(vf);
+  const ResultsDocument all =
+      combine_results({one_case("main.json", ProblemId::H_p, MeshLevel::C, 1), std::move(refine)});
+  ASSERT_EQ(all.cases.size(), 2u);  // C once, and VF
+  EXPECT_EQ(all.cases[1].spec.mesh, MeshLevel::VF);
+  ASSERT_EQ(all.rows.size(), 1u);
+  ASSERT_TRUE(all.rows[0].refinement.has_value());
+  EXPECT_DOUBLE_EQ(*all.rows[0].refinement->value, 1.2501);
 }
 
 }  // namespace
