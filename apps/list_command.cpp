@@ -70,8 +70,11 @@ void print_text() {
     std::string quantities;
     for (const auto& q : info.record.quantities)
       quantities += (quantities.empty() ? "" : ", ") + std::string(to_string(q.quantity));
-    fmt::print("  {:<9} {} — graded: {} (study Tables {})\n", to_string(id), info.record.title,
-               quantities, info.record.study_tables);
+    const std::string tables = info.record.study_tables.empty()
+                                   ? std::string("beyond the study")
+                                   : "study Tables " + info.record.study_tables;
+    fmt::print("  {:<9} {} — graded: {} ({})\n", to_string(id), info.record.title, quantities,
+               tables);
     for (const auto& p : info.parameters) {
       if (!is_common(p.name))
         print_parameter(p);
