@@ -8,8 +8,8 @@
 // tangential displacement u_t on a target face inclined by theta to it: the gap changes by
 // theta u_t, and the force has a tangential part theta p. Both are first order in the load (u_t
 // and theta grow with p/E), so they are absent from the small-strain theory; on the rounded
-// edge of a Steuermann punch (theta up to (a - b) / r_e) they shift the peak pressure by about
-// -0.1 % of p at the study's p/E = 1e-3 (S(1)), a floor that refinement cannot remove.
+// edge of a Steuermann punch (theta up to (a - b) / r_e) they lower the peak pressure by about
+// 0.1 % at the study's p/E = 1e-3 (S(1)), a floor that refinement cannot remove.
 
 #include <Eigen/Core>
 
@@ -21,11 +21,6 @@ enum class GapNormal {
   Target,          ///< the target's normal at the closest point (the default)
   ContactSurface,  ///< the contact surface's own normal (the half-space theory's linearization)
 };
-
-/// "target" or "contact surface".
-constexpr const char* to_string(GapNormal g) {
-  return g == GapNormal::Target ? "target" : "contact surface";
-}
 
 /// The gap of `tp` measured along the contact surface's outward unit normal `n_contact`
 /// instead of the target's normal: the direction is -n_contact (out of the target, like
