@@ -9,7 +9,8 @@
 # Writes OUT/lmp-extent-{2,4}/results.json (LMP ss, Q4 and Q8, C M F, on S_1, S_1_3, S_1_7, H_p
 # and F_p: a Richardson limit per extent), OUT/all-extent-8/results.json (every algorithm and
 # discretization of the Steuermann problems at extent 8) and OUT/lmp-extent-8/results.json (H_p
-# and F_p at extent 8), OUT/all-extent-8-half-space-gap/results.json (the Steuermann problems at
+# and F_p at extent 8), OUT/lmp-extent-16/results.json (S_1_7, LMP ss, at extent 16: its
+# half-space extent lies beyond 4), OUT/all-extent-8-half-space-gap/results.json (the Steuermann problems at
 # extent 8 again, with gaps along the block's own normal: `--set half_space_gap=1`). The extent-1 rows are the main job's (ci/main.sh); give all of them to
 # `contact-suite report --results ...` (ci/study-report.sh does) for the report's section.
 set -euo pipefail
@@ -27,6 +28,8 @@ for k in 2 4; do
     --out "$out/lmp-extent-$k"
 done
 run --problems H_p,F_p "${common[@]}" --set extent=8 --out "$out/lmp-extent-8"
+# S(1/7) still changes by more than 0.05 % from 4 to 8: one more doubling for its half-space extent
+run --problems S_1_7 "${common[@]}" --set extent=16 --out "$out/lmp-extent-16"
 run --problems S_1,S_1_3,S_1_7 --contacts ss,ns,mortar --recovery spr --no-report \
   --set extent=8 --out "$out/all-extent-8"
 # The same with the half-space theory's gap (along the block's own normal; the report's

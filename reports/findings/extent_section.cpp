@@ -252,6 +252,26 @@ std::string half_space_grades(const ResultsIndex& index,
   return table.n_rows() == 0 ? std::string() : table.render();
 }
 
+/// The extent at which the half-space grades are given: of the extents at or beyond `from`, the
+/// one with the most series (options), the widest among equals (every option is run at the
+/// widest all-options extent, a few only further out).
+double widest_extent_of_most_options(const std::vector<const ExtentSeries*>& series, double from) {
+  double best = from;
+  std::size_t most = 0;
+  for (double k : extents_of(series)) {
+    if (k < from)
+      continue;
+    const auto n = static_cast<std::size_t>(
+        std::count_if(series.begin(), series.end(),
+                      [k](const ExtentSeries* s) { return s->by_extent.contains(k); }));
+    if (n >= most) {
+      most = n;
+      best = k;
+    }
+  }
+  return best;
+}
+
 /// The widest extent at which some series has rows with both normals.
 std::optional<double> widest_compared_extent(const std::vector<const ExtentSeries*>& series) {
   std::optional<double> widest;
@@ -334,14 +354,15 @@ std::string problem_part(const ResultsIndex& index, schema::ProblemId problem,
                         series, ks,
                         static_cast<std::size_t>(std::find(ks.begin(), ks.end(), *k) - ks.begin()))
                         .value_or(0.0)));
+    const double k_grades = widest_extent_of_most_options(series, *k);
     if (!singular) {
-      const std::string grades = half_space_grades(index, series, ks.back());
+      const std::string grades = half_space_grades(index, series, k_grades);
       if (!grades.empty()) {
         out += fmt::format(
-            "\n\"{}, half-space\": each option graded at extent {} (the widest run, at or beyond "
-            "the half-space extent {}), against the same exact value as the study geometry "
-            "beside it.\n\n{}",
-            schema::label(problem), extent_label(ks.back()), extent_label(*k), grades);
+            "\n\"{}, half-space\": each option graded at extent {} (the widest extent run with "
+            "the most options, at or beyond the half-space extent {}), against the same exact "
+            "value as the study geometry beside it.\n\n{}",
+            schema::label(problem), extent_label(k_grades), extent_label(*k), grades);
       }
     }
   } else if (ks.size() >= 2) {

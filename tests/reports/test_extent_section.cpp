@@ -129,6 +129,20 @@ TEST(ExtentSection, GradesTheHalfSpaceGapBesideTheTargetNormal) {
   EXPECT_EQ(md.find("| Q8 | AL ss | −5.00 %"), std::string::npos) << md;  // AL: no such row
 }
 
+// Requirement: one option run further out (LMP at 16) does not move the half-space grades off the
+// widest extent every option was run at (8), so no option's grade is left out.
+TEST(ExtentSection, GradesAtTheWidestExtentOfMostOptions) {
+  schema::ResultsDocument doc = extent_document();
+  add_row(doc, schema::Algorithm::LMP, 16.0, {9.88, 9.93, 9.9580}, 9.996);
+  const ResultsIndex index(doc);
+  const std::string md = extent_section(index);
+  EXPECT_NE(md.find("half-space\": each option graded at extent 8 (the widest extent run with the "
+                    "most options"),
+            std::string::npos)
+      << md;
+  EXPECT_NE(md.find("| Q8 | AL ss | −11.0 % | u, c | −0.50 % | e, c |"), std::string::npos) << md;
+}
+
 TEST(ExtentSection, SaysSoWhenNoExtentIsWideEnough) {
   schema::ResultsDocument doc;
   schema::ProblemRecord p;
