@@ -29,6 +29,9 @@
 #     report, and the script prints the wall time of each stage and of the whole battery.
 # Parts already present (a results.json in their directory) are not run again: after an
 # interruption the script picks up where it stopped. Delete OUT-parts to start afresh.
+# Two processes may share the work (e.g. a second one with CALCULIX_BATTERY_STAGES=calculix-F-S):
+# each part is claimed by a lock directory OUT-parts/<part>.lock, so no part runs twice; the
+# merge leaves out the parts another process still holds, and says how many.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 out=${1:-out/calculix}
@@ -46,16 +49,36 @@ command -v ccx > /dev/null || { echo "calculix-battery: ccx not on PATH (ci/inst
 mkdir -p "$parts"
 battery_start=$(date +%s)
 
+# claim DIR: take the part DIR for this process (a lock directory holding our pid), or fail when
+# a live process holds it; a lock left by a process that is gone is taken over.
+claims=()
+claim() {
+  local lock="$1.lock"
+  if ! mkdir "$lock" 2> /dev/null; then
+    local holder
+    holder=$(cat "$lock/pid" 2> /dev/null || true)
+    # No pid yet: its holder is between mkdir and writing it.
+    if [ -z "$holder" ] || kill -0 "$holder" 2> /dev/null; then return 1; fi
+    rm -rf "$lock"
+    mkdir "$lock" 2> /dev/null || return 1
+  fi
+  echo $$ > "$lock/pid"
+  claims+=("$lock")
+}
+trap '[ ${#claims[@]} -eq 0 ] || rm -rf "${claims[@]}"' EXIT
+
 # run_part SOLVER PROBLEM MESH ELEMENT JOBS: one `run` of the selection's cases of one model.
 run_part() {
   local solver=$1 problem=$2 mesh=$3 element=$4 jobs=$5
   local dir="$parts/$solver-$problem-$mesh-$element"
   [ -f "$dir/results.json" ] && return 0
+  claim "$dir" || return 0
   local status=0
   "$exe" run --solver "$solver" --problems "$problem" --meshes "$mesh" --elements "$element" \
     "${common[@]}" --ccx-time-limit 600 --jobs "$jobs" --out "$dir" || status=$?
   # Exit 1: some case did not converge or timed out; that is a result, recorded in the file.
   [ "$status" -le 1 ] || { echo "calculix-battery: $dir failed (exit $status)" >&2; exit "$status"; }
+  rm -rf "$dir.lock"
 }
 
 # stage NAME SOLVER JOBS MESHES PROBLEMS...: every part of the given meshes and problems.
@@ -80,5 +103,8 @@ stage calculix-C-M calculix 1 "C M" "${problems_not_s[@]}" "${problems_s[@]}"
 stage calculix-F calculix 1 "F" "${problems_not_s[@]}"
 stage calculix-F-S calculix "$s_jobs" "F" "${problems_s[@]}"
 
-"$exe" merge "$out" "$parts"/*/results.json
+held=$(find "$parts" -maxdepth 1 -type d -name '*.lock' | wc -l)
+[ "$held" -eq 0 ] || echo "calculix-battery: $held part(s) still running in another process; merging what is done"
+# exit 1: some case did not converge or timed out, recorded in the merged results
+"$exe" merge "$out" "$parts"/*/results.json || [ $? -le 1 ]
 echo "calculix-battery: wall time $(($(date +%s) - battery_start)) s; results in $out/results.json"
