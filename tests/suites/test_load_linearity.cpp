@@ -14,6 +14,7 @@
 
 #include <cmath>
 #include <string>
+#include <utility>
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>
@@ -68,18 +69,27 @@ TEST(LoadLinearity, FlatContactsDoNotDependOnPOverE) {
   }
 }
 
+/// The differences of a Hertz case's normalized values over the two decades of p/E below the
+/// default: {1e-3 vs 1e-4, 1e-4 vs 1e-5}, printed with `what`.
+std::pair<double, double> decade_differences(ProblemId problem, Algorithm algorithm,
+                                             double half_space_gap, const std::string& what) {
+  const CaseResult a = run_at(problem, algorithm, 1e-3, half_space_gap),
+                   b = run_at(problem, algorithm, 1e-4, half_space_gap),
+                   c = run_at(problem, algorithm, 1e-5, half_space_gap);
+  const double d1 = largest_difference(a, b), d2 = largest_difference(b, c);
+  std::printf("    %-8s differences %.2e (1e-3 vs 1e-4), %.2e (1e-4 vs 1e-5)\n", what.c_str(), d1,
+              d2);
+  return {d1, d2};
+}
+
 // Requirement: for Hertz the dependence on p/E is of first order: the difference between
 // p/E = 1e-4 and 1e-5 is 0.05 to 0.2 of that between 1e-3 and 1e-4 (a tenth for an exactly
 // linear term; observed H_p LMP sigma_h 2.3e-3 then 2.5e-4), and below 1e-2 at the default.
 TEST(LoadLinearity, HertzDependsOnPOverEAtFirstOrderOnly) {
   for (ProblemId problem : {ProblemId::H_p, ProblemId::H_a}) {
     for (Algorithm algorithm : kAlgorithms) {
-      const CaseResult a = run_at(problem, algorithm, 1e-3), b = run_at(problem, algorithm, 1e-4),
-                       c = run_at(problem, algorithm, 1e-5);
-      const double d1 = largest_difference(a, b), d2 = largest_difference(b, c);
       const std::string what = fmt::format("{} {}", to_string(problem), to_string(algorithm));
-      std::printf("    %-8s differences %.2e (1e-3 vs 1e-4), %.2e (1e-4 vs 1e-5)\n", what.c_str(),
-                  d1, d2);
+      const auto [d1, d2] = decade_differences(problem, algorithm, 0.0, what);
       EXPECT_LT(d1, 1e-2) << what;
       EXPECT_GT(d2, 0.05 * d1) << what;
       EXPECT_LT(d2, 0.2 * d1) << what;
@@ -94,13 +104,8 @@ TEST(LoadLinearity, HertzDependsOnPOverEAtFirstOrderOnly) {
 TEST(LoadLinearity, HertzWithTheHalfSpaceGapDependsOnPOverEAtSecondOrder) {
   for (ProblemId problem : {ProblemId::H_p, ProblemId::H_a}) {
     for (Algorithm algorithm : kAlgorithms) {
-      const CaseResult a = run_at(problem, algorithm, 1e-3, 1.0),
-                       b = run_at(problem, algorithm, 1e-4, 1.0),
-                       c = run_at(problem, algorithm, 1e-5, 1.0);
-      const double d1 = largest_difference(a, b), d2 = largest_difference(b, c);
       const std::string what = fmt::format("{} {}", to_string(problem), to_string(algorithm));
-      std::printf("    %-8s differences %.2e (1e-3 vs 1e-4), %.2e (1e-4 vs 1e-5)\n", what.c_str(),
-                  d1, d2);
+      const auto [d1, d2] = decade_differences(problem, algorithm, 1.0, what);
       EXPECT_LT(d1, 1e-5) << what;
       EXPECT_LT(d2, 0.02 * d1) << what;
       EXPECT_GT(d1, 0.0) << what;  // the second-order term is there: the runs are not identical
