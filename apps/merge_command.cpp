@@ -21,14 +21,16 @@ struct MergeArgs {
   std::string out;
   std::vector<std::string> inputs;
   bool no_report = false;
+  bool mixed_builds = false;
 };
 
 int run_merge(const MergeArgs& args) {
   std::vector<schema::ResultsDocument> parts;
   for (const auto& path : args.inputs)
     parts.push_back(schema::read_results_file(path));
-  const auto merged =
-      suites::merge_results(parts, invocation().empty() ? "contact-suite merge" : invocation());
+  const auto merged = suites::merge_results(
+      parts, invocation().empty() ? "contact-suite merge" : invocation(),
+      args.mixed_builds ? suites::BuildMix::record : suites::BuildMix::refuse);
   platform::OutputTransaction output(args.out);  // after every check: bad input touches nothing
   if (!write_run_output(merged, output, !args.no_report)) {
     report_interrupted_write(args.out);
@@ -52,6 +54,9 @@ void add_merge_command(CLI::App& app, int& exit_code) {
   cmd->add_option("out", args->out, "Output directory")->required();
   cmd->add_option("results", args->inputs, "results.json files to merge")->required();
   cmd->add_flag("--no-report", args->no_report, "Write results.json only");
+  cmd->add_flag("--mixed-builds", args->mixed_builds,
+                "Merge files of different builds (refused otherwise) and record every build "
+                "with its number of files as the merged run's contact_suite_version");
   cmd->callback([args, &exit_code] { exit_code = run_merge(*args); });
 }
 

@@ -23,6 +23,7 @@ struct ReportArgs {
   std::string study_data;
   std::vector<std::string> bench;
   std::string mesh_export;
+  std::vector<std::string> companions;
   bool no_figures = false;
 };
 
@@ -31,6 +32,9 @@ void run_report(const ReportArgs& args) {
   for (const auto& path : args.results)
     documents.push_back(schema::read_results_file(path));
   const schema::ResultsDocument results = schema::combine_results(std::move(documents));
+  std::vector<reports::CompanionReport> companions;
+  for (const auto& c : args.companions)
+    companions.push_back(reports::read_companion_report(args.out_dir, c));
   platform::OutputTransaction output(args.out_dir);
   reports::ReportOptions options;
   options.out_dir = output.staging();
@@ -43,6 +47,7 @@ void run_report(const ReportArgs& args) {
     options.mesh_export = args.mesh_export;
   options.figures = !args.no_figures;
   options.option_mappings = solver_option_mappings();
+  options.companions = std::move(companions);
   const auto outcome = reports::write_report(results, options);
   output.commit();
   std::printf("%s\n", fmt::format("contact-suite report: {} cases -> {}/report.md ({} files, {} "
@@ -85,6 +90,10 @@ void add_report_command(CLI::App& app) {
   cmd->add_option("--mesh-pictures", args->mesh_export,
                   "a directory written by `contact-suite export`: draw its models as the "
                   "report's Figure 3");
+  cmd->add_option("--companion", args->companions,
+                  "another report, relative to --out and written before this one (e.g. "
+                  "calculix/report.md): linked under the title with its own title "
+                  "(repeatable)");
   cmd->add_flag("--no-figures", args->no_figures, "do not run gnuplot");
   cmd->callback([args] { run_report(*args); });
 }

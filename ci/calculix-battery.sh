@@ -25,7 +25,9 @@
 #     built-in one; parts are directories of their own, so two processes share the work);
 #   - a case CalculiX does not converge on is `not converged` with ccx's reason, one it does not
 #     finish in 600 s is `timeout`; either way the run goes on (exit 1 of a run is accepted);
-#   - finally `merge OUT OUT-parts/*/results.json` combines the parts into one results.json and
+#   - finally `merge --mixed-builds OUT OUT-parts/*/results.json` combines the parts into one
+#     results.json (parts resumed after a new commit come from another build: the merged run
+#     names every build and its number of parts, and the report shows it) and
 #     report, and the script prints the wall time of each stage and of the whole battery.
 # Parts already present (a results.json in their directory) are not run again: after an
 # interruption the script picks up where it stopped. Delete OUT-parts to start afresh.
@@ -106,5 +108,5 @@ stage calculix-F-S calculix "$s_jobs" "F" "${problems_s[@]}"
 held=$(find "$parts" -maxdepth 1 -type d -name '*.lock' | wc -l)
 [ "$held" -eq 0 ] || echo "calculix-battery: $held part(s) still running in another process; merging what is done"
 # exit 1: some case did not converge or timed out, recorded in the merged results
-"$exe" merge "$out" "$parts"/*/results.json || [ $? -le 1 ]
+"$exe" merge --mixed-builds "$out" "$parts"/*/results.json || [ $? -le 1 ]
 echo "calculix-battery: wall time $(($(date +%s) - battery_start)) s; results in $out/results.json"

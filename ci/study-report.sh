@@ -40,12 +40,17 @@ bench=()
 for f in bench_all_meshes bench_F_H_p_Pprime_p_median5 bench_F_H_p_Q8_median7; do
   if [ -f "reports/study/bench/$f.json" ]; then bench+=(--bench "reports/study/bench/$f.json"); fi
 done
-"$exe" report "${results[@]}" --mesh-pictures out/meshes "${bench[@]}" --out reports/study
-echo "ci/study-report.sh: reports/study/report.md from ${#results[@]} results arguments"
 # The CalculiX battery as a report of its own: both solvers' parts of one battery run, so that
 # its cost ratios compare the same cases run the same way (one job, one model per part).
 if compgen -G "out/calculix-parts/calculix-*/results.json" > /dev/null; then
   # exit 1: some case did not converge or timed out, a finding recorded in the results
-  "$exe" merge out/calculix out/calculix-parts/*/results.json || [ $? -le 1 ]
+  # its parts may span commits (the battery resumes): the merged run names each build
+  "$exe" merge --mixed-builds out/calculix out/calculix-parts/*/results.json || [ $? -le 1 ]
   "$exe" report --results out/calculix/results.json --out reports/study/calculix
 fi
+# linked from the main report's header when present
+companion=()
+if [ -f reports/study/calculix/report.md ]; then companion=(--companion calculix/report.md); fi
+"$exe" report "${results[@]}" --mesh-pictures out/meshes "${bench[@]}" "${companion[@]}" \
+  --out reports/study
+echo "ci/study-report.sh: reports/study/report.md from ${#results[@]} results arguments"

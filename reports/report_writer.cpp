@@ -116,42 +116,54 @@ std::string variants_section(const ResultsIndex& index) {
          table.render() + "\n";
 }
 
+std::string report_title(const ResultsIndex& index) {
+  if (!is_cross_code(index))
+    return "our contact elements beside the study's ANSYS results";
+  std::string names;
+  const auto solvers = solvers_in(index);
+  for (std::size_t i = 0; i < solvers.size(); ++i) {
+    const char* sep = i == 0 ? "" : (i + 1 == solvers.size() ? " and " : ", ");
+    names += sep + solver_display_name(solvers[i]);
+  }
+  return names + " beside the study's ANSYS results";
+}
+
 std::string report_markdown(const ResultsIndex& index, const StudyReference& study,
-                            const FigureSet& figures, const FigureSet& mesh_figures,
-                            bool has_regression, const std::string& bench_md,
-                            const FigureSet& sweep_figures, const std::string& cross_code_md) {
+                            const ReportContent& content) {
   const auto findings = generate_findings(index, study);
   const std::string grades = grade_tables_section(index, study);
   const std::string appendix = appendix_section(index, study);
-  const std::string figs = figures_section(figures);
+  const std::string figs = figures_section(content.figures);
   const std::string divergence = divergence_section(index, study);
   const std::string variants = variants_section(index);
   const std::string recovery = recovery_section(index);
 
-  const NumberedSections numbered = number_sections({recommendation_section(index),
-                                                     study_conclusions_section(index),
-                                                     summary_section(index, findings),
-                                                     mesh_table_section(index, study),
-                                                     mesh_figures_section(mesh_figures),
-                                                     grades,
-                                                     refinement_section(index),
-                                                     appendix,
-                                                     cross_code_md,
-                                                     figs,
-                                                     divergence,
-                                                     interface_section(index),
-                                                     anomalies_section(index),
-                                                     beyond_study_section(index),
-                                                     extent_section(index),
-                                                     sweep_section(index, study, sweep_figures),
-                                                     friction_section(index),
-                                                     conformal_section(index),
-                                                     variants,
-                                                     recovery},
-                                                    {bench_md});
+  const NumberedSections numbered =
+      number_sections({recommendation_section(index),
+                       study_conclusions_section(index),
+                       summary_section(index, findings),
+                       mesh_table_section(index, study),
+                       mesh_figures_section(content.mesh_figures),
+                       grades,
+                       refinement_section(index),
+                       appendix,
+                       content.cross_code_md,
+                       figs,
+                       divergence,
+                       interface_section(index),
+                       anomalies_section(index),
+                       beyond_study_section(index),
+                       extent_section(index),
+                       sweep_section(index, study, content.sweep_figures),
+                       friction_section(index),
+                       conformal_section(index),
+                       variants,
+                       recovery},
+                      {content.bench_md});
 
   std::string out =
-      "# contact-suite report: our contact elements beside the study's ANSYS results\n\n"
+      "# contact-suite report: " + report_title(index) +
+      "\n\n"
       "The battery of Sezer & Sinclair, \"An Assessment of ANSYS Contact Elements\": "
       "frictionless indentation problems with exact solutions, each on three meshes (C, M = "
       "h/2, F = h/4), graded by the study's Eq. 46 (e < 1 % ≤ g < 5 % ≤ s < 10 % ≤ u) on the "
@@ -159,7 +171,8 @@ std::string report_markdown(const ResultsIndex& index, const StudyReference& stu
       "test Eq. 47. Every table is built from the results file; the study's values come from "
       "data/study (transcribed from its appendix and Table 2).\n\n";
   out += numbered.contents;
-  if (has_regression)
+  out += companions_markdown(content.companions);
+  if (content.has_regression)
     out += "A regression report against the baseline is in [regression.md](regression.md).\n\n";
   out += "Per-case data for spreadsheets: [results.csv](results.csv).\n\n";
   out += numbered.body;
@@ -197,8 +210,9 @@ ReportOutcome write_report(const schema::ResultsDocument& results, const ReportO
   const std::string cross_code_md =
       cross_code_section(index, study, cross_code_figures, options.option_mappings);
   output.write_text("report.md",
-                    report_markdown(index, study, figures, mesh_figures, baseline.has_value(),
-                                    bench_md, sweep_figures, cross_code_md));
+                    report_markdown(index, study,
+                                    {figures, mesh_figures, baseline.has_value(), bench_md,
+                                     sweep_figures, cross_code_md, options.companions}));
   output.write_text("results.csv", results_csv(index, study));
   if (baseline)
     output.write_text("regression.md", regression_markdown(compare_results(*baseline, results)));

@@ -20,6 +20,7 @@
 #include <string>
 #include <vector>
 
+#include "reports/companion_report.hpp"
 #include "reports/figures/figures.hpp"
 #include "reports/results/results_index.hpp"
 #include "reports/results/study_reference.hpp"
@@ -45,6 +46,8 @@ struct ReportOptions {
   /// How the study's options map to other solvers' (for the cross-code section, shown when the
   /// results hold more than one solver); the command line takes them from the adapters.
   std::vector<SolverOptionMapping> option_mappings;
+  /// Other reports linked under the title (read by the caller with read_companion_report).
+  std::vector<CompanionReport> companions;
 };
 
 /// What write_report produced.
@@ -60,15 +63,23 @@ struct ReportOutcome {
 /// directory, schema::SchemaError for a bad baseline.
 ReportOutcome write_report(const schema::ResultsDocument& results, const ReportOptions& options);
 
-/// The whole report.md text from its parts (no I/O); `mesh_figures` are Figure 3 (empty:
-/// none), `bench_md` is the benchmarks appendix (empty: none); `sweep_figures` those of the
-/// parameter-sweep section (figures/sweep_figure.hpp); `cross_code_md` the cross-code section
-/// (tables/cross_code_section.hpp; empty: none).
+/// What report.md holds besides the results document and the study's data.
+struct ReportContent {
+  FigureSet figures;            ///< the figures section's (figures/figures.hpp)
+  FigureSet mesh_figures;       ///< Figure 3 (empty: none)
+  bool has_regression = false;  ///< link regression.md
+  std::string bench_md;         ///< the benchmarks appendix (empty: none)
+  FigureSet sweep_figures;      ///< the parameter-sweep section's (figures/sweep_figure.hpp)
+  std::string cross_code_md;    ///< the cross-code section (tables/cross_code_section.hpp)
+  std::vector<CompanionReport> companions;  ///< other reports linked under the title
+};
+
+/// The report's title: with several solvers in the document, their names.
+std::string report_title(const ResultsIndex& index);
+
+/// The whole report.md text from its parts (no I/O).
 std::string report_markdown(const ResultsIndex& index, const StudyReference& study,
-                            const FigureSet& figures, const FigureSet& mesh_figures,
-                            bool has_regression, const std::string& bench_md = {},
-                            const FigureSet& sweep_figures = FigureSet{},
-                            const std::string& cross_code_md = {});
+                            const ReportContent& content);
 
 /// Sections numbered in order, without gaps, and their table of contents.
 struct NumberedSections {

@@ -197,6 +197,8 @@ RunInfo run_from_json(const JsonFields& r) {
   }
   if (r.has("sweep"))
     run.sweep = sweep_from_json(r);
+  if (r.has("merged_files"))
+    run.merged_files = static_cast<int>(r.integer("merged_files", 0, kIntMax));
   return run;
 }
 
@@ -468,6 +470,8 @@ json to_json(const ResultsDocument& doc) {
                            {"run_key", doc.run.shard->run_key},
                            {"total_cases", doc.run.shard->total_cases}};
   }
+  if (doc.run.merged_files > 0)
+    out["run"]["merged_files"] = doc.run.merged_files;
   if (!doc.run.sweep.empty()) {
     json sweep = json::array();
     for (const auto& axis : doc.run.sweep)

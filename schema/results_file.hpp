@@ -50,6 +50,9 @@ struct RunInfo {
   nlohmann::json environment = nlohmann::json::object();  ///< machine, versions, settings
   std::optional<ShardInfo> shard;  ///< set when the file holds one slice of a sharded run
   std::vector<SweepAxis> sweep;    ///< the swept parameters, in the order given; empty: none
+  /// Results files `merge` combined into this one (0: one run). Then wall_seconds is summed
+  /// over them (machine time) and jobs is the most any one of them ran with.
+  int merged_files = 0;
 };
 
 /// A whole results file.

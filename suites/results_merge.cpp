@@ -37,10 +37,34 @@ void check_versions(const std::vector<schema::ResultsDocument>& parts) {
   for (const auto& p : parts) {
     if (version_of(p) != version_of(parts.front())) {
       throw SuiteInputError(fmt::format(
-          "merge: {} comes from contact-suite {} but {} from {}: results of different builds",
+          "merge: {} comes from contact-suite {} but {} from {}: results of different builds "
+          "(--mixed-builds merges them and records each build)",
           p.source, version_of(p), parts.front().source, version_of(parts.front())));
     }
   }
+}
+
+/// "0.1.0+25580ed" for files of one build; else every build with its number of files, in order
+/// of first appearance: "mixed: 0.1.0+25580ed (128 files), 0.1.0+d76f56f (2 files)".
+std::string builds_of(const std::vector<schema::ResultsDocument>& parts) {
+  std::vector<std::pair<std::string, int>> builds;
+  for (const auto& p : parts) {
+    const std::string v = version_of(p);
+    const auto it =
+        std::find_if(builds.begin(), builds.end(), [&v](const auto& b) { return b.first == v; });
+    if (it == builds.end())
+      builds.emplace_back(v, 1);
+    else
+      ++it->second;
+  }
+  if (builds.size() == 1)
+    return builds.front().first;
+  std::string out = "mixed: ";
+  for (std::size_t i = 0; i < builds.size(); ++i) {
+    out += fmt::format("{}{} ({} file{})", i == 0 ? "" : ", ", builds[i].first, builds[i].second,
+                       builds[i].second == 1 ? "" : "s");
+  }
+  return out;
 }
 
 /// All or none sharded; one run key and count; every slice exactly once.
@@ -110,23 +134,27 @@ void sort_cases(std::vector<schema::CaseResult>& cases) {
 }
 
 schema::ResultsDocument merge_results(const std::vector<schema::ResultsDocument>& parts,
-                                      const std::string& command_line) {
+                                      const std::string& command_line, BuildMix builds) {
   if (parts.empty())
     throw SuiteInputError("merge: no results files given");
-  check_versions(parts);
+  if (builds == BuildMix::refuse)
+    check_versions(parts);
   check_slices(parts);
   schema::ResultsDocument out;
   out.run = parts.front().run;
+  out.run.environment["contact_suite_version"] = builds_of(parts);
   out.run.shard.reset();
   out.run.sweep = merged_sweep(parts);
   out.run.command_line = command_line;
   out.run.wall_seconds = 0.0;
-  out.run.jobs = 0;
+  out.run.jobs = 1;
+  out.run.merged_files = 0;
   std::set<std::string> ids;
   for (const auto& p : parts) {
     out.run.started_utc = std::min(out.run.started_utc, p.run.started_utc);
     out.run.wall_seconds += p.run.wall_seconds;  // summed over the parts: machine time
-    out.run.jobs += p.run.jobs;
+    out.run.jobs = std::max(out.run.jobs, p.run.jobs);
+    out.run.merged_files += std::max(p.run.merged_files, 1);
     out.run.peak_rss_mb = std::max(out.run.peak_rss_mb, p.run.peak_rss_mb);
     for (const auto& c : p.cases) {
       if (!ids.insert(schema::case_id(c.spec)).second) {

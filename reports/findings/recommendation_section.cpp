@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include "reports/tables/cross_code_rows.hpp"
 #include "reports/tables/markdown_table.hpp"
 
 namespace cs::reports {
@@ -146,7 +147,8 @@ const std::vector<Situation>& situations() {
   return all;
 }
 
-std::vector<OptionAssessment> assess_situation(const ResultsIndex& index, const Situation& s) {
+std::vector<OptionAssessment> assess_situation(const ResultsIndex& index, const Situation& s,
+                                               const std::string& solver) {
   std::vector<OptionAssessment> out;
   for (const auto element : schema::values<schema::Element>()) {
     for (const Option& option : all_options()) {
@@ -160,7 +162,7 @@ std::vector<OptionAssessment> assess_situation(const ResultsIndex& index, const 
           // apart (its error is bounded by the mesh, half an element).
           if (q.quantity == schema::Quantity::contact_half_width)
             continue;
-          if (const schema::RowVerdict* row = index.row(id, q.quantity, element, option))
+          if (const auto* row = solver_row(index, solver, id, q.quantity, element, option))
             add_row(index, *row, s.singular, a);
         }
       }
@@ -185,15 +187,35 @@ std::vector<OptionAssessment> assess_situation(const ResultsIndex& index, const 
 }
 
 std::string recommendation_section(const ResultsIndex& index) {
-  MarkdownTable table({"Situation", "Use", "F error", "worst C/M/F", "converging", "iterations (F)",
-                       "Also trustworthy", "Avoid (worst error)"});
+  const bool cross_code = is_cross_code(index);
+  std::vector<std::string> header{"Situation",        "Use",
+                                  "F error",          "worst C/M/F",
+                                  "converging",       "iterations (F)",
+                                  "Also trustworthy", "Avoid (worst error)"};
+  if (cross_code)
+    header.insert(header.begin() + 1, "Solver");
+  MarkdownTable table(header);
   for (const Situation& s : situations()) {
-    const auto all = assess_situation(index, s);
-    if (!all.empty())
-      table.add_row(situation_row(s, all));
+    for (const std::string& solver : solvers_in(index)) {
+      const auto all = assess_situation(index, s, solver);
+      if (all.empty())
+        continue;
+      auto cells = situation_row(s, all);
+      if (cross_code)
+        cells.insert(cells.begin() + 1, solver_display_name(solver));
+      table.add_row(std::move(cells));
+    }
   }
   if (table.n_rows() == 0)
     return {};
+  const std::string per_solver =
+      cross_code
+          ? "- Each solver's options are ranked among themselves: an analyst chooses "
+            "within the code they run. A solver's option is its own mapping of the "
+            "study's option (see the cross-code section); a case that timed out counts "
+            "as not converged. Another solver's **iterations** are its own count (CalculiX: the "
+            "Newton iterations of all increments in its .sta file), not ours.\n"
+          : "";
   return "## Which contact option to use\n\n" + table.render() +
          "\n- Per situation, every option (algorithm, contact discretization, element) over all "
          "the situation's graded rows: **F error** is the largest error on the fine mesh, "
@@ -205,7 +227,8 @@ std::string recommendation_section(const ResultsIndex& index) {
          "**avoid**: anything else, or a case that did not converge. For the flat punch, "
          "**trust** means every row diverges as the singularity demands. Options are ranked by "
          "verdict, then fine-mesh error, worst error and iterations; the first is under "
-         "**Use**.\n"
+         "**Use**.\n" +
+         per_solver +
          "- Option sets that coincide (AL and PM, LMP and PLM where the augmentation or the "
          "tangent plays no part) rank side by side; the per-row evidence is in the tables "
          "that follow.\n\n";

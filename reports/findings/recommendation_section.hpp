@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "reports/results/results_index.hpp"
+#include "reports/tables/cross_code_rows.hpp"
 
 namespace cs::reports {
 
@@ -51,11 +52,13 @@ struct Situation {
 /// The situations of the battery, in report order.
 const std::vector<Situation>& situations();
 
-/// Every option with a row in the situation, best first (trust, usable, avoid; then by F error
-/// and worst error, then by iterations).
-std::vector<OptionAssessment> assess_situation(const ResultsIndex& index, const Situation& s);
+/// Every option of `solver` (a results.json solver label) with a row in the situation, best
+/// first (trust, usable, avoid; then by F error and worst error, then by iterations).
+std::vector<OptionAssessment> assess_situation(const ResultsIndex& index, const Situation& s,
+                                               const std::string& solver = builtin_solver_label());
 
-/// The section (empty when no situation has a row).
+/// The section (empty when no situation has a row). With several solvers in the document, one
+/// row per situation and solver, each solver's options ranked among themselves.
 std::string recommendation_section(const ResultsIndex& index);
 
 }  // namespace cs::reports

@@ -59,15 +59,46 @@ std::string seconds(const std::optional<double>& s) {
   return fmt::format("{:.1f} s", *s);
 }
 
+/// The first `n` words of a command line, with " …" when there were more.
+std::string first_words(const std::string& command, std::size_t n) {
+  std::size_t end = 0;
+  for (std::size_t k = 0; k < n && end != std::string::npos; ++k) {
+    end = command.find_first_not_of(' ', end);
+    end = end == std::string::npos ? end : command.find(' ', end);
+  }
+  return end == std::string::npos ? command : command.substr(0, end) + " …";
+}
+
+/// A merged run: its parts' machine time and the command without its list of files.
+std::string merged_run_text(const schema::RunInfo& run) {
+  std::string out = fmt::format(
+      "Merged from {} results files, the earliest started {}; {} of wall time summed over "
+      "them (machine time: parts may have run one after another or side by side), each part "
+      "with at most {} parallel worker(s)",
+      run.merged_files, run.started_utc.empty() ? "at a time not recorded" : run.started_utc,
+      seconds(finite(run.wall_seconds)), run.jobs);
+  if (finite(run.peak_rss_mb))
+    out +=
+        fmt::format(", peak memory {:.0f} MB (the largest of the parts' contact-suite processes)",
+                    run.peak_rss_mb);
+  if (!run.command_line.empty())
+    out += fmt::format("; command `{}`", first_words(run.command_line, 3));
+  return out;
+}
+
 std::string run_paragraph(const schema::ResultsDocument& r) {
   std::string out = "**Run.** ";
-  out += r.run.started_utc.empty() ? "Start time not recorded" : "Started " + r.run.started_utc;
-  out += fmt::format("; {} wall time with {} parallel worker(s)",
-                     seconds(finite(r.run.wall_seconds)), r.run.jobs);
-  if (finite(r.run.peak_rss_mb))
-    out += fmt::format(", peak memory {:.0f} MB", r.run.peak_rss_mb);
-  if (!r.run.command_line.empty())
-    out += fmt::format("; command `{}`", r.run.command_line);
+  if (r.run.merged_files > 0) {
+    out += merged_run_text(r.run);
+  } else {
+    out += r.run.started_utc.empty() ? "Start time not recorded" : "Started " + r.run.started_utc;
+    out += fmt::format("; {} wall time with {} parallel worker(s)",
+                       seconds(finite(r.run.wall_seconds)), r.run.jobs);
+    if (finite(r.run.peak_rss_mb))
+      out += fmt::format(", peak memory {:.0f} MB", r.run.peak_rss_mb);
+    if (!r.run.command_line.empty())
+      out += fmt::format("; command `{}`", r.run.command_line);
+  }
   out += ".";
   if (!r.source.empty())
     out += fmt::format(" Results file: `{}`.", r.source);

@@ -5,6 +5,7 @@
 
 #include "report_test_support.hpp"
 #include "reports/findings/findings.hpp"
+#include "reports/findings/summary_section.hpp"
 
 namespace cs::reports {
 namespace {
@@ -118,6 +119,28 @@ TEST(Findings, AbsentProblemsAreSaidSo) {
   doc["problems"] = kept_problems;
   EXPECT_NE(finding(doc, FindingTopic::divergence).find("No flat-punch case"), std::string::npos);
   EXPECT_NE(finding(doc, FindingTopic::mortar_mismatched).find("No mismatched-node patch test"),
+            std::string::npos);
+}
+
+// Requirement: a merged results file's summary says what its numbers are: the parts' machine
+// time and the most workers of any one part (not "N parallel workers" for N files), and its
+// command without the list of part files.
+TEST(Summary, AMergedRunIsDescribedAsItsParts) {
+  auto doc = sample_json();
+  doc["run"]["merged_files"] = 130;
+  doc["run"]["jobs"] = 1;
+  doc["run"]["wall_seconds"] = 600.0;
+  doc["run"]["command_line"] = "contact-suite merge out/x out/p1/results.json out/p2/results.json";
+  const Loaded merged(doc);
+  const std::string md = summary_section(merged.index, {});
+  EXPECT_NE(md.find("Merged from 130 results files"), std::string::npos) << md;
+  EXPECT_NE(md.find("10.0 min of wall time summed over them"), std::string::npos) << md;
+  EXPECT_NE(md.find("each part with at most 1 parallel worker(s)"), std::string::npos) << md;
+  EXPECT_NE(md.find("command `contact-suite merge out/x …`"), std::string::npos) << md;
+  EXPECT_EQ(md.find("p1/results.json"), std::string::npos) << md;
+  doc["run"].erase("merged_files");
+  const Loaded single(doc);
+  EXPECT_NE(summary_section(single.index, {}).find("wall time with 1 parallel worker(s)"),
             std::string::npos);
 }
 

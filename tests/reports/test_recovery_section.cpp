@@ -97,10 +97,10 @@ TEST(RecoverySection, AbsentWithoutExtrapolatedRows) {
   const Loaded data(doc);
   EXPECT_FALSE(data.index.has_extrapolated_twins());
   EXPECT_EQ(recovery_section(data.index), "");
-  const std::string md = report_markdown(data.index, testing::study(), {}, {}, false, "");
+  const std::string md = report_markdown(data.index, testing::study(), {});
   EXPECT_EQ(md.find("Nodal stress recovery"), std::string::npos);
   const Loaded with(sample_json());
-  EXPECT_NE(report_markdown(with.index, testing::study(), {}, {}, false, "")
+  EXPECT_NE(report_markdown(with.index, testing::study(), {})
                 .find("-nodal-stress-recovery-patch-recovery-beside-extrapolation)"),
             std::string::npos);
 }

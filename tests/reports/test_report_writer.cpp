@@ -263,6 +263,33 @@ TEST(ReportCommand, ParsesOptionsAndReportsBadInputAsSuch) {
   EXPECT_EQ(run_command({"--out", out}).rfind("parse error", 0), 0u);
 }
 
+// Requirement: `report --companion PATH` links another report, written first under --out, by
+// its own title; a path that leaves the directory, could break the Markdown link, is missing
+// or is not a report is refused in one line before the directory is touched.
+TEST(ReportCommand, CompanionReportIsLinkedByItsTitle) {
+  TempDir tmp;
+  const std::string study = testing::study_dir().string();
+  const fs::path out = tmp.path() / "out";
+  fs::create_directories(out / "other");
+  write_text(out / "other" / "report.md", "# contact-suite report: ours and X beside Y\n\nz\n");
+  write_text(out / "other" / "notes.md", "no title\n");
+  EXPECT_EQ(run_command({"--results", sample_path().string(), "--out", out.string(), "--study-data",
+                         study, "--no-figures", "--companion", "other/report.md"}),
+            "ok");
+  EXPECT_NE(read_text(out / "report.md").find("\nAlso: [ours and X beside Y](other/report.md).\n"),
+            std::string::npos);
+  const std::string before = read_text(out / "report.md");
+  for (const std::string bad : {"../report.md", "/etc/report.md", "other/missing.md",
+                                "other/report.txt", "other/r(1).md", "other/notes.md"}) {
+    const std::string msg =
+        run_command({"--results", sample_path().string(), "--out", out.string(), "--study-data",
+                     study, "--no-figures", "--companion", bad});
+    EXPECT_EQ(msg.rfind("bad input: --companion '" + bad + "'", 0), 0u) << msg;
+    EXPECT_EQ(msg.find('\n'), std::string::npos) << msg;
+  }
+  EXPECT_EQ(read_text(out / "report.md"), before);
+}
+
 TEST(ReportCommand, ExecutableExitsWith2OnBadInput) {
   const std::string exe = CONTACT_SUITE_EXE;
   TempDir tmp;

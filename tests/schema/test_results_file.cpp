@@ -27,6 +27,7 @@ ResultsDocument small_document() {
   doc.run.wall_seconds = 1.5;
   doc.run.jobs = 2;
   doc.run.command_line = "contact-suite run";
+  doc.run.merged_files = 3;
   ProblemRecord p;
   p.id = ProblemId::F_p;
   p.title = "flat punch";
@@ -80,6 +81,7 @@ TEST(SchemaResultsFile, RoundTripsEveryField) {
   const ResultsDocument back = results_from_json(once, "mem");
   EXPECT_EQ(to_json(back), once);
   ASSERT_EQ(back.cases.size(), 1u);
+  EXPECT_EQ(back.run.merged_files, 3);
   EXPECT_EQ(back.cases[0].spec, doc.cases[0].spec);
   EXPECT_TRUE(back.cases[0].quantities[0].singular());
   EXPECT_TRUE(std::isnan(back.cases[0].profile.sigma_z_over_p[1]));

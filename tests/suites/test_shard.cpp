@@ -79,6 +79,38 @@ TEST(Merge, SlicesOfOneRunMergeIntoTheCasesInBatteryOrder) {
   EXPECT_EQ(merged.problems.size(), 3u);
 }
 
+// Requirement: a merged run records how many files it came from, its wall time summed over them
+// (machine time, since the parts may have run one after another) and the most workers any one
+// part had, not their sum: 3 slices of 2 workers are not a 6-worker run.
+TEST(Merge, RecordsThePartsMachineTimeAndTheirWorkers) {
+  const auto all = matrix();
+  std::vector<schema::ResultsDocument> parts;
+  for (int k = 1; k <= 3; ++k) {
+    parts.push_back(slice(all, k, 3, "k"));
+    parts.back().run.wall_seconds = 10.0 * k;
+    parts.back().run.jobs = 2;
+  }
+  parts[1].run.jobs = 1;
+  const auto merged = merge_results(parts, "m");
+  EXPECT_EQ(merged.run.merged_files, 3);
+  EXPECT_EQ(merged.run.jobs, 2);
+  EXPECT_DOUBLE_EQ(merged.run.wall_seconds, 60.0);
+}
+
+// Requirement: files of different builds merge only when asked (`--mixed-builds`), and the
+// merged run then names each build with its number of files instead of the first one's.
+TEST(Merge, MixedBuildsAreRecordedWhenAllowed) {
+  const auto all = matrix();
+  auto a = slice(all, 1, 3, "k"), b = slice(all, 2, 3, "k"), c = slice(all, 3, 3, "k");
+  b.run.environment["contact_suite_version"] = "2";
+  EXPECT_THROW(merge_results({a, b, c}, "m"), SuiteInputError);
+  const auto merged = merge_results({a, b, c}, "m", BuildMix::record);
+  EXPECT_EQ(merged.run.environment["contact_suite_version"], "mixed: 1 (2 files), 2 (1 file)");
+  EXPECT_EQ(merged.cases.size(), all.size());
+  b.run.environment["contact_suite_version"] = "1";
+  EXPECT_EQ(merge_results({a, b, c}, "m").run.environment["contact_suite_version"], "1");
+}
+
 void expect_refused(const std::vector<schema::ResultsDocument>& parts, const std::string& needle) {
   try {
     merge_results(parts, "m");
