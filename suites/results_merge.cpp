@@ -142,7 +142,8 @@ schema::ResultsDocument merge_results(const std::vector<schema::ResultsDocument>
   check_slices(parts);
   schema::ResultsDocument out;
   out.run = parts.front().run;
-  out.run.environment["contact_suite_version"] = builds_of(parts);
+  if (const std::string builds = builds_of(parts); builds != version_of(parts.front()))
+    out.run.environment["contact_suite_version"] = builds;  // several builds, each named
   out.run.shard.reset();
   out.run.sweep = merged_sweep(parts);
   out.run.command_line = command_line;

@@ -109,6 +109,10 @@ TEST(Merge, MixedBuildsAreRecordedWhenAllowed) {
   EXPECT_EQ(merged.cases.size(), all.size());
   b.run.environment["contact_suite_version"] = "1";
   EXPECT_EQ(merge_results({a, b, c}, "m").run.environment["contact_suite_version"], "1");
+  // Files that record no build are merged as they are: no version is made up for them.
+  for (auto* d : {&a, &b, &c})
+    d->run.environment.erase("contact_suite_version");
+  EXPECT_FALSE(merge_results({a, b, c}, "m").run.environment.contains("contact_suite_version"));
 }
 
 void expect_refused(const std::vector<schema::ResultsDocument>& parts, const std::string& needle) {
