@@ -10,6 +10,7 @@ packages=(
   libopenblas0-pthread libopenblas-dev    # the system BLAS/LAPACK CHOLMOD runs on
   libgsl-dev                              # root finding, quadrature
   libfmt-dev libcli11-dev nlohmann-json3-dev
+  libkainjow-mustache-dev                 # the report's prose templates (Mustache)
   libgtest-dev libgmock-dev libbenchmark-dev
   gnuplot-nox                             # figures of the report
   python3 python3-meshio                  # independent VTU reader used by a test

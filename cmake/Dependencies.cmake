@@ -25,6 +25,10 @@ cs_require(nlohmann_json_FOUND "nlohmann-json" nlohmann-json3-dev)
 
 find_package(Threads REQUIRED)
 
+# kainjow's Mustache (header-only): the report's prose templates.
+find_path(KAINJOW_MUSTACHE_INCLUDE_DIR kainjow/mustache.hpp)
+cs_require(KAINJOW_MUSTACHE_INCLUDE_DIR "kainjow Mustache" libkainjow-mustache-dev)
+
 # SuiteSparse 5.x ships no CMake package: find CHOLMOD and its companions by hand.
 find_path(CHOLMOD_INCLUDE_DIR cholmod.h PATH_SUFFIXES suitesparse)
 find_library(CHOLMOD_LIBRARY cholmod)

@@ -1,11 +1,18 @@
 #include "reports/report_writer.hpp"
 
-#include <cctype>
 
 #include <fmt/format.h>
 
 #include "reports/atomic_output.hpp"
 #include "reports/bench/bench_results.hpp"
+#include "reports/facts/claims.hpp"
+#include "reports/facts/situation_verdict.hpp"
+#include "reports/pages/claims_ledger.hpp"
+#include "reports/pages/page_format.hpp"
+#include "reports/pages/problem_page.hpp"
+#include "reports/pages/run_page.hpp"
+#include "reports/pages/verdict_page.hpp"
+#include "reports/render/template_text.hpp"
 #include "reports/bench/bench_section.hpp"
 #include "reports/figures/bench_figure.hpp"
 #include "reports/figures/cross_code_figure.hpp"
@@ -13,18 +20,13 @@
 #include "reports/figures/sweep_figure.hpp"
 #include "reports/findings/anomalies_section.hpp"
 #include "reports/findings/extent_section.hpp"
-#include "reports/findings/findings.hpp"
-#include "reports/findings/recommendation_section.hpp"
 #include "reports/findings/recovery_section.hpp"
 #include "reports/findings/refinement_section.hpp"
 #include "reports/findings/regression_report.hpp"
-#include "reports/findings/study_conclusions.hpp"
-#include "reports/findings/summary_section.hpp"
 #include "reports/findings/sweep_section.hpp"
 #include "reports/findings/variant_rows.hpp"
 #include "reports/results/results_csv.hpp"
 #include "reports/tables/appendix_tables.hpp"
-#include "reports/tables/beyond_study_section.hpp"
 #include "reports/tables/conformal_section.hpp"
 #include "reports/tables/cross_code_rows.hpp"
 #include "reports/tables/cross_code_section.hpp"
@@ -38,52 +40,15 @@
 namespace cs::reports {
 namespace {
 
-/// GitHub's heading anchor: lower case, spaces as '-', ASCII punctuation other than '-' and
-/// '_' dropped, other characters kept.
-std::string heading_anchor(const std::string& heading) {
-  std::string out;
-  for (const char c : heading) {
-    const auto u = static_cast<unsigned char>(c);
-    if (u >= 0x80 || std::isalnum(u) || c == '-' || c == '_')
-      out += static_cast<char>(u < 0x80 ? std::tolower(u) : u);
-    else if (c == ' ')
-      out += '-';
-  }
-  return out;
+/// A section's text without its "## Title" line (its page carries the title).
+std::string strip_heading(const std::string& section) {
+  if (section.rfind("## ", 0) != 0)
+    return section;
+  const std::size_t end = section.find('\n');
+  return end == std::string::npos ? std::string() : section.substr(end + 1);
 }
 
 }  // namespace
-
-NumberedSections number_sections(const std::vector<std::string>& sections,
-                                 const std::vector<std::string>& appendices) {
-  NumberedSections out;
-  std::string contents = "**Contents:**";
-  const auto add = [&](const std::string& section, const std::string& number) {
-    if (section.empty())
-      return;
-    const std::size_t end = section.find('\n');
-    std::string title = section.substr(3, end == std::string::npos ? end : end - 3);
-    const std::string heading = number + ". " + title;
-    const std::size_t colon = title.find(':');
-    contents += fmt::format("{} [{}](#{})", out.toc_entries == 0 ? "" : " ·",
-                            colon == std::string::npos ? title : title.substr(0, colon),
-                            heading_anchor(heading));
-    ++out.toc_entries;
-    out.body += "## " + heading + (end == std::string::npos ? "\n" : section.substr(end));
-  };
-  int n = 0;
-  for (const auto& s : sections) {
-    if (!s.empty())
-      add(s, std::to_string(++n));
-  }
-  char letter = 'A';
-  for (const auto& s : appendices) {
-    if (!s.empty())
-      add(s, std::string("Appendix ") + letter++);
-  }
-  out.contents = contents + "\n\n";
-  return out;
-}
 
 std::string variants_section(const ResultsIndex& index) {
   const std::vector<const schema::RowVerdict*> rows = other_variant_rows(index);
@@ -118,65 +83,83 @@ std::string variants_section(const ResultsIndex& index) {
 
 std::string report_title(const ResultsIndex& index) {
   if (!is_cross_code(index))
-    return "our contact elements beside the study's ANSYS results";
-  std::string names;
-  const auto solvers = solvers_in(index);
-  for (std::size_t i = 0; i < solvers.size(); ++i) {
-    const char* sep = i == 0 ? "" : (i + 1 == solvers.size() ? " and " : ", ");
-    names += sep + solver_display_name(solvers[i]);
-  }
-  return names + " beside the study's ANSYS results";
+    return solver_names(index) == "ours" ? "our contact elements beside the study's ANSYS results"
+                                         : solver_names(index) + " beside the study's ANSYS results";
+  return solver_names(index) + " beside the study's ANSYS results";
+}
+
+std::vector<ReportPage> appendix_pages(const ResultsIndex& index, const StudyReference& study,
+                                       const ReportContent& content) {
+  std::vector<ReportPage> pages = {
+      {"appendix-tables-2.md", "Tables 2a′ and 2b′ beside the study's ANSYS grades",
+       mesh_table_section(index, study) + grade_tables_section(index, study) +
+           divergence_section(index, study)},
+      {"appendix-study-tables.md", "The study's appendix tables, our values beside ANSYS's",
+       appendix_section(index, study)},
+      {"appendix-meshes.md", "The meshes (the study's Figure 3)",
+       mesh_figures_section(content.mesh_figures)},
+      {"appendix-estimates.md", "Error estimates and refinement", refinement_section(index)},
+      {"appendix-cross-code.md", "Other codes beside ours", content.cross_code_md},
+      {"appendix-interface-checks.md", "Interface checks", interface_section(index)},
+      {"appendix-anomalies.md", "Anomalies explained", anomalies_section(index)},
+      {"appendix-extent.md", "The block's extent: finite block or half-space",
+       extent_section(index)},
+      {"appendix-sweeps.md", "Parameter sweeps",
+       sweep_section(index, study, content.sweep_figures)},
+      {"appendix-friction.md", "Friction", friction_section(index)},
+      {"appendix-conformal.md", "Conformal contact", conformal_section(index)},
+      {"appendix-variants.md", "Other option sets (rigid target, parameter overrides)",
+       variants_section(index)},
+      {"appendix-recovery.md", "Nodal stress recovery: patch recovery beside extrapolation",
+       recovery_section(index)},
+      {"appendix-benchmarks.md", "Benchmarks", content.bench_md},
+      {"appendix-run.md", "The run: files, machine, versions", run_page(index.results())},
+  };
+  std::erase_if(pages, [](const ReportPage& p) { return p.markdown.empty(); });
+  return pages;
 }
 
 std::string report_markdown(const ResultsIndex& index, const StudyReference& study,
-                            const ReportContent& content) {
-  const auto findings = generate_findings(index, study);
-  const std::string grades = grade_tables_section(index, study);
-  const std::string appendix = appendix_section(index, study);
-  const std::string figs = figures_section(content.figures);
-  const std::string divergence = divergence_section(index, study);
-  const std::string variants = variants_section(index);
-  const std::string recovery = recovery_section(index);
+                            const ReportContent& content, const std::vector<ReportPage>& problems,
+                            const std::vector<ReportPage>& appendices) {
+  const std::vector<RowFacts> rows = row_facts(index);
+  const std::vector<DivergenceFacts> singular = divergence_facts(index);
+  TemplateData d;
+  d.set("title", report_title(index));
+  d.set("run", run_line(index.results()));
+  d.set("verdict", verdict_page(index, situation_verdicts(index, rows, singular)));
+  d.set("ledger", claims_ledger(study_claims(index, rows, singular)));
+  const auto links = [](const ReportPage& p) {
+    TemplateData l;
+    l.set("file", p.file);
+    l.set("title", p.title);
+    return l;
+  };
+  d.set("problems", template_list(problems, links));
+  d.set("appendices", template_list(appendices, links));
+  d.set("companions", companions_markdown(content.companions));
+  d.set("has_regression", content.has_regression);
+  return render_template(templates::report, d);
+}
 
-  const NumberedSections numbered =
-      number_sections({recommendation_section(index),
-                       study_conclusions_section(index),
-                       summary_section(index, findings),
-                       mesh_table_section(index, study),
-                       mesh_figures_section(content.mesh_figures),
-                       grades,
-                       refinement_section(index),
-                       appendix,
-                       content.cross_code_md,
-                       figs,
-                       divergence,
-                       interface_section(index),
-                       anomalies_section(index),
-                       beyond_study_section(index),
-                       extent_section(index),
-                       sweep_section(index, study, content.sweep_figures),
-                       friction_section(index),
-                       conformal_section(index),
-                       variants,
-                       recovery},
-                      {content.bench_md});
-
-  std::string out =
-      "# contact-suite report: " + report_title(index) +
-      "\n\n"
-      "The battery of Sezer & Sinclair, \"An Assessment of ANSYS Contact Elements\": "
-      "frictionless indentation problems with exact solutions, each on three meshes (C, M = "
-      "h/2, F = h/4), graded by the study's Eq. 46 (e < 1 % ≤ g < 5 % ≤ s < 10 % ≤ u) on the "
-      "fine mesh, with its convergence flag c and, for the singular flat punch, its divergence "
-      "test Eq. 47. Every table is built from the results file; the study's values come from "
-      "data/study (transcribed from its appendix and Table 2).\n\n";
-  out += numbered.contents;
-  out += companions_markdown(content.companions);
-  if (content.has_regression)
-    out += "A regression report against the baseline is in [regression.md](regression.md).\n\n";
-  out += "Per-case data for spreadsheets: [results.csv](results.csv).\n\n";
-  out += numbered.body;
-  return out;
+std::vector<ReportPage> problem_pages(const ResultsIndex& index, const FigureSet& figures,
+                                      const FigureSet& mesh_figures) {
+  const std::vector<RowFacts> rows = row_facts(index);
+  const std::vector<DivergenceFacts> singular = divergence_facts(index);
+  std::vector<ReportPage> pages;
+  for (const schema::ProblemRecord* p : index.problems()) {
+    std::vector<const Figure*> own;
+    for (const FigureSet* set : {&mesh_figures, &figures}) {
+      for (const auto& f : set->figures) {
+        if (f.produced && f.problem == p->id)
+          own.push_back(&f);
+      }
+    }
+    pages.push_back({problem_page_file(p->id),
+                     std::string(schema::label(p->id)) + ": " + p->title,
+                     problem_page(index, *p, rows, singular, own)});
+  }
+  return pages;
 }
 
 ReportOutcome write_report(const schema::ResultsDocument& results, const ReportOptions& options) {
@@ -209,10 +192,16 @@ ReportOutcome write_report(const schema::ResultsDocument& results, const ReportO
   const std::string bench_md = bench ? bench_section(*bench, bench_figures) : std::string();
   const std::string cross_code_md =
       cross_code_section(index, study, cross_code_figures, options.option_mappings);
-  output.write_text("report.md",
-                    report_markdown(index, study,
-                                    {figures, mesh_figures, baseline.has_value(), bench_md,
-                                     sweep_figures, cross_code_md, options.companions}));
+  const ReportContent content{figures,       mesh_figures,  baseline.has_value(), bench_md,
+                              sweep_figures, cross_code_md, options.companions};
+  const std::vector<ReportPage> problems = problem_pages(index, figures, mesh_figures);
+  const std::vector<ReportPage> appendices = appendix_pages(index, study, content);
+  for (const auto& page : problems)
+    output.write_text(page.file, page.markdown);
+  for (const auto& page : appendices)
+    output.write_text(page.file, "# " + page.title + "\n\n[← the report](report.md)\n\n" +
+                                     strip_heading(page.markdown));
+  output.write_text("report.md", report_markdown(index, study, content, problems, appendices));
   output.write_text("results.csv", results_csv(index, study));
   if (baseline)
     output.write_text("regression.md", regression_markdown(compare_results(*baseline, results)));

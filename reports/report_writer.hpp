@@ -77,22 +77,27 @@ struct ReportContent {
 /// The report's title: with several solvers in the document, their names.
 std::string report_title(const ResultsIndex& index);
 
-/// The whole report.md text from its parts (no I/O).
-std::string report_markdown(const ResultsIndex& index, const StudyReference& study,
-                            const ReportContent& content);
-
-/// Sections numbered in order, without gaps, and their table of contents.
-struct NumberedSections {
-  std::string contents;  ///< "**Contents:** [Summary](#1-summary) · ..."
-  std::string body;      ///< the sections with "## 1. Title", ..., "## Appendix A. Title"
-  int toc_entries = 0;
+/// One Markdown file of the report besides report.md: a problem's page or an appendix.
+struct ReportPage {
+  std::string file;   ///< relative to the report directory, e.g. "problem-H_p.md"
+  std::string title;  ///< as report.md links it
+  std::string markdown;
 };
 
-/// Numbers `sections` 1, 2, ... and `appendices` A, B, ... in order; empty ones are left out
-/// and take no number. Each section starts with "## Title"; a title's part before ':' names it
-/// in the contents.
-NumberedSections number_sections(const std::vector<std::string>& sections,
-                                 const std::vector<std::string>& appendices);
+/// The problem pages, one per problem in the results, with their figures.
+std::vector<ReportPage> problem_pages(const ResultsIndex& index, const FigureSet& figures,
+                                      const FigureSet& mesh_figures);
+
+/// The appendices that have content, in the report's order (the one list of them and their
+/// titles).
+std::vector<ReportPage> appendix_pages(const ResultsIndex& index, const StudyReference& study,
+                                       const ReportContent& content);
+
+/// report.md: the verdict page, the claims ledger, and links to the problem pages and the
+/// appendices (no I/O).
+std::string report_markdown(const ResultsIndex& index, const StudyReference& study,
+                            const ReportContent& content, const std::vector<ReportPage>& problems,
+                            const std::vector<ReportPage>& appendices);
 
 /// The section listing rows with a rigid target or parameter overrides (empty if none).
 std::string variants_section(const ResultsIndex& index);

@@ -9,7 +9,6 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
-#include "reports/tables/beyond_study_section.hpp"
 #include "reports/tables/grade_tables.hpp"
 #include "reports/tables/markdown_table.hpp"
 

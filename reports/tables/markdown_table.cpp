@@ -72,4 +72,11 @@ std::string format_percent(double percent) {
   return fmt::format("{}{:.2f} %", sign, magnitude);
 }
 
+std::string format_error_resolved(double percent) {
+  if (percent == 0.0 || std::abs(percent) >= 0.01)
+    return format_percent(percent);
+  const std::string text = fmt::format("{:+.1e} %", percent);
+  return text[0] == '-' ? "−" + text.substr(1) : text;
+}
+
 }  // namespace cs::reports

@@ -29,6 +29,10 @@ std::string format_percent(double percent);
 /// A time in milliseconds to about three significant digits, without exponent: "1234", "56.7",
 /// "8.90", "0.123".
 std::string format_milliseconds(double ms);
+/// format_percent, but below 0.01 % in magnitude "4.1e-13 %", so that an exact result and a
+/// small error are told apart.
+std::string format_error_resolved(double percent);
+
 /// format_value, or the em dash for nullopt.
 std::string format_value(const std::optional<double>& v);
 

@@ -9,9 +9,6 @@
 
 #include "report_test_support.hpp"
 #include "reports/findings/anomalies_section.hpp"
-#include "reports/findings/recommendation_section.hpp"
-#include "reports/findings/study_conclusions.hpp"
-#include "reports/tables/beyond_study_section.hpp"
 #include "reports/tables/divergence_table.hpp"
 #include "reports/tables/markdown_table.hpp"
 #include "reports/tables/mesh_table.hpp"
@@ -22,82 +19,6 @@ namespace {
 using testing::Loaded;
 using testing::sample_json;
 using testing::study;
-
-const Situation& situation_named(const std::string& start) {
-  for (const auto& s : situations()) {
-    if (s.name.rfind(start, 0) == 0)
-      return s;
-  }
-  throw std::logic_error("no situation " + start);
-}
-
-// Requirement: options are ranked by verdict and fine-mesh error, with the verdict following
-// the Eq. 46 bands: LMP mortar (F errors 0.011 % and 0.18 %, worst 1.8 %, both rows c) is
-// trusted; AL ss (σ_h −3.7 % on F) usable; MPC ss (+88 %) and AL ns (σ_h +9.96 %) avoided; an
-// option with its F mesh missing (Q8 AL ss) is avoided, never ranked on what it lacks.
-TEST(Recommendation, RanksHertzOptionsByVerdictAndError) {
-  const Loaded data(sample_json());
-  const auto all = assess_situation(data.index, situation_named("Smooth curved contact"));
-  ASSERT_FALSE(all.empty());
-  EXPECT_EQ(all.front().label(), "LMP mortar Q4");
-  EXPECT_EQ(all.front().verdict, OptionVerdict::trust);
-  EXPECT_NEAR(all.front().fine_error, 0.1758934321843333, 1e-12);
-  EXPECT_NEAR(all.front().worst_error, 1.8252295753189673, 1e-12);
-  EXPECT_EQ(all.front().converging, 2);
-  const auto find = [&](const std::string& label) {
-    for (const auto& a : all) {
-      if (a.label() == label)
-        return a;
-    }
-    ADD_FAILURE() << label;
-    return all.front();
-  };
-  EXPECT_EQ(find("AL ss Q4").verdict, OptionVerdict::usable);
-  EXPECT_EQ(find("MPC ss Q4").verdict, OptionVerdict::avoid);
-  EXPECT_EQ(find("AL ns Q4").verdict, OptionVerdict::avoid);
-  EXPECT_EQ(find("AL ss Q8").verdict, OptionVerdict::avoid);
-  EXPECT_TRUE(find("AL ss Q8").failures);
-  const std::string md = recommendation_section(data.index);
-  EXPECT_EQ(md.rfind("## Which contact option to use\n", 0), 0u);
-  EXPECT_NE(md.find("**LMP mortar Q4** (trust)"), std::string::npos) << md;
-  EXPECT_NE(md.find("MPC ss Q4 (+88.5 %)"), std::string::npos) << md;
-}
-
-// Requirement: each of the study's conclusions is decided by its exceptions: AL ss Q4 is worse
-// than g only on S(1/3) (reproduced); LMP Q4 has no exception, P′ included (refined); MPC is u
-// on every row it has (reproduced); no flat-punch row has a divergence verdict, so that check
-// is left out rather than passed.
-TEST(StudyConclusions, DecidesEachByItsExceptions) {
-  const Loaded data(sample_json());
-  const auto checks = check_study_conclusions(data.index);
-  ASSERT_EQ(checks.size(), 3u);
-  EXPECT_EQ(checks[0].status, ConclusionStatus::reproduced) << checks[0].evidence;
-  EXPECT_NE(checks[0].evidence.find("1 of 5 rows worse than g (S(1/3) sigma_c −15.2 %)"),
-            std::string::npos)
-      << checks[0].evidence;
-  EXPECT_EQ(checks[1].status, ConclusionStatus::refined) << checks[1].evidence;
-  EXPECT_EQ(checks[2].status, ConclusionStatus::reproduced) << checks[2].evidence;
-  EXPECT_NE(checks[2].evidence.find("u on 2 of 2 rows"), std::string::npos) << checks[2].evidence;
-}
-
-// Requirement: a conclusion contradicted by the results is marked so: make AL ss Q4 fail on
-// H_p, which the study's exception does not cover.
-TEST(StudyConclusions, MarksAContradictionNotReproduced) {
-  auto doc = sample_json();
-  for (auto& r : doc["rows"]) {
-    if (r["id"] == "H_p/Q4/AL/ss/sigma_c")
-      r["grade"] = "u";
-  }
-  const Loaded data(doc);
-  EXPECT_EQ(check_study_conclusions(data.index)[0].status, ConclusionStatus::not_reproduced);
-  // One exception of five, but not the study's: the trend holds, refined.
-  for (auto& r : doc["rows"]) {
-    if (r["id"] == "S_1_3/Q4/AL/ss/sigma_c")
-      r["grade"] = "g";
-  }
-  const Loaded one(doc);
-  EXPECT_EQ(check_study_conclusions(one.index)[0].status, ConclusionStatus::refined);
-}
 
 // Requirement: Table 1′ prints our count beside the study's and the difference where they
 // differ (the sample's meshes are small, so every count differs).
@@ -111,17 +32,6 @@ TEST(MeshTable, ShowsOursBesideTheStudysTable1) {
   ASSERT_TRUE(study().table1_elements(schema::ProblemId::S_1_7, schema::MeshLevel::F));
   EXPECT_EQ(*study().table1_elements(schema::ProblemId::S_1_7, schema::MeshLevel::F), 268944);
   EXPECT_EQ(*study().table1_elements(schema::ProblemId::H_a, schema::MeshLevel::M), 1024);
-}
-
-// Requirement: an exact result and a small error are told apart.
-TEST(BeyondStudy, ResolvesErrorsBelowAHundredthOfAPercent) {
-  EXPECT_EQ(format_error_resolved(0.81), "+0.81 %");
-  EXPECT_EQ(format_error_resolved(4.1e-13), "+4.1e-13 %");
-  EXPECT_EQ(format_error_resolved(-2.5e-9), "−2.5e-09 %");
-  EXPECT_EQ(format_error_resolved(0.0), format_percent(0.0));
-  // The sample holds only the study's problems: no such section.
-  const Loaded data(sample_json());
-  EXPECT_EQ(beyond_study_section(data.index), "");
 }
 
 // Requirement: the axis weights the anomaly rests on are right: integral of N r dr over [0, h]

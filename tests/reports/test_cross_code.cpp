@@ -14,7 +14,6 @@
 
 #include "report_test_support.hpp"
 #include "reports/figures/cross_code_figure.hpp"
-#include "reports/findings/recommendation_section.hpp"
 #include "reports/report_writer.hpp"
 #include "reports/tables/cross_code_appendix.hpp"
 #include "reports/tables/cross_code_cost.hpp"
@@ -175,24 +174,6 @@ TEST(CrossCodeGradeTable, TimeoutOnTheFineMeshIsShownAsSuch) {
       << outcome;
 }
 
-// Requirement: with several solvers, "which option to use" ranks each solver's options among
-// themselves, one row per solver: ours PM ss Q4 is trusted (F 0.5 %, worst 4 %, converging),
-// CalculiX's usable (F 2 %); CalculiX timing out on F makes its option one to avoid.
-TEST(CrossCodeRecommendation, EachSolverIsRankedApart) {
-  const auto doc = document(hertz_pair());
-  const ResultsIndex index(doc);
-  const std::string md = recommendation_section(index);
-  EXPECT_NE(md.find("| Situation | Solver | Use |"), std::string::npos) << md;
-  EXPECT_NE(md.find("| ours | **PM ss Q4** (trust) | +0.50 % | +4.00 % |"), std::string::npos)
-      << md;
-  EXPECT_NE(md.find("| CalculiX | **PM ss Q4** (usable) | +2.00 % | +8.00 % |"), std::string::npos)
-      << md;
-  const auto timed_out = document(hertz_pair(true));
-  const ResultsIndex timed_out_index(timed_out);
-  const std::string md2 = recommendation_section(timed_out_index);
-  EXPECT_NE(md2.find("| CalculiX | none to trust; least bad PM ss Q4 |"), std::string::npos) << md2;
-}
-
 // Requirement: cost ratios are the sums of the recorded wall times and the largest peaks of
 // the same cases: ours 1 + 2 + 4 s and 10..30 MB, CalculiX ten times the time and three times
 // the memory; a pair where either did not converge is left out of the "both converged" line.
@@ -271,9 +252,10 @@ TEST(CrossCodeSection, InTheReportOnlyWithSeveralSolvers) {
   EXPECT_NE(md.find("## Cross-code comparison: ours and CalculiX"), std::string::npos);
   EXPECT_NE(md.find("| PM | PRESSURE-OVERCLOSURE=LINEAR | same | penalty |"), std::string::npos);
   EXPECT_NE(md.find("#### Cost: CalculiX beside ours"), std::string::npos);
-  const std::string report =
-      report_markdown(index, study(), {.cross_code_md = md, .companions = {{"x/report.md", "T"}}});
-  EXPECT_NE(report.find("Cross-code comparison"), std::string::npos);
+  const ReportContent content{.cross_code_md = md, .companions = {{"x/report.md", "T"}}};
+  const auto appendices = appendix_pages(index, study(), content);
+  const std::string report = report_markdown(index, study(), content, {}, appendices);
+  EXPECT_NE(report.find("(appendix-cross-code.md)"), std::string::npos);
   EXPECT_EQ(report.rfind("# contact-suite report: ours and CalculiX beside the study's ANSYS "
                          "results\n",
                          0),

@@ -1,0 +1,37 @@
+#pragma once
+// The study's claims and our evidence for each: every claim the paper makes (its abstract, the
+// three Table 2 trends, AL = PM, LMP = PLM, ss = ns for the multiplier options, IMC fastest, low
+// vs high order, convergence under refinement, divergence for all options, the closing remarks),
+// each with the numbers that decide it and a verdict. Only rows that are evidence
+// (RowFacts::evidence) count; the rule that turns numbers into a verdict is written once per
+// claim, in claims.cpp. The words are in templates/claims_ledger.mustache.
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "reports/facts/row_facts.hpp"
+
+namespace cs::reports {
+
+enum class ClaimVerdict { reproduced, refined, not_reproduced, not_testable };
+std::string to_string(ClaimVerdict v);
+
+/// Counts behind a claim; which fields a claim uses is its own (see claims.cpp).
+struct ClaimEvidence {
+  std::string key;  ///< the template section, e.g. "al_equals_pm"
+  ClaimVerdict verdict = ClaimVerdict::not_testable;
+  int n = 0;        ///< the rows, pairs or models examined
+  int n_hold = 0;   ///< of them, those for which the claim holds
+  int n_excluded = 0;  ///< rows left out: not credible, luck of one mesh, or not converged
+  std::optional<double> figure;   ///< a claim's deciding figure (a ratio, a difference)
+  std::optional<double> figure2;  ///< a second figure where the claim has two parts
+  int n2 = 0, n2_hold = 0;        ///< a second part's counts
+  std::string examples;           ///< the rows or models that break the claim, a few
+};
+
+/// Every claim of the study, in the ledger's order.
+std::vector<ClaimEvidence> study_claims(const ResultsIndex& index, const std::vector<RowFacts>& rows,
+                                        const std::vector<DivergenceFacts>& singular);
+
+}  // namespace cs::reports

@@ -1,0 +1,127 @@
+#include "reports/facts/row_facts.hpp"
+
+#include <cmath>
+
+#include "grading/accuracy.hpp"
+#include "grading/credibility.hpp"
+#include "grading/divergence.hpp"
+
+namespace cs::reports {
+namespace {
+
+using schema::MeshLevel;
+
+/// The measure behind a failed interface check, for the evidence a page quotes.
+std::optional<double> measure_of(const schema::InterfaceChecks& c, const std::string& check) {
+  if (check == "force balance" && c.force_balance)
+    return std::abs(*c.force_balance);
+  if (check == "tensile pressure")
+    return c.max_tensile_over_p;
+  if (check == "pressure outside the patch")
+    return c.max_outside_over_p;
+  return std::nullopt;
+}
+
+void add_credibility(const ResultsIndex& index, RowFacts& f) {
+  const schema::CaseResult* fine = index.case_of(*f.row, MeshLevel::F);
+  f.fine_converged = fine && fine->status == schema::CaseStatus::converged;
+  if (!fine || !fine->interface)
+    return;
+  const grading::Credibility c = grading::credibility(*fine->interface);
+  f.credible = c.credible;
+  for (const auto& name : c.failures)
+    f.failures.push_back({name, measure_of(*fine->interface, name)});
+}
+
+void add_trend(RowFacts& f) {
+  const auto& e = f.errors;
+  if (!e[0] || !e[1] || !e[2])
+    return;
+  f.trend = grading::assess_convergence(*e[0], *e[1], *e[2]);
+  const grading::ObservedOrder o = grading::observed_order(*e[0], *e[1], *e[2]);
+  f.order = o.order;
+  f.order_note = o.note;
+  f.luck = grading::luck_of_one_mesh(*e[0], *e[1], *e[2]);
+}
+
+}  // namespace
+
+OptionFamily family_of(schema::Algorithm algorithm) {
+  switch (algorithm) {
+    case schema::Algorithm::AL:
+    case schema::Algorithm::PM:
+      return OptionFamily::penalty;
+    case schema::Algorithm::LMP:
+    case schema::Algorithm::PLM:
+      return OptionFamily::multiplier;
+    case schema::Algorithm::MPC:
+      return OptionFamily::mpc;
+  }
+  return OptionFamily::mpc;
+}
+
+std::vector<RowFacts> row_facts(const ResultsIndex& index) {
+  std::vector<RowFacts> out;
+  for (const schema::RowVerdict* r : index.baseline_rows()) {
+    if (index.singular(r->spec.problem) || !r->errors[2])
+      continue;
+    RowFacts f;
+    f.row = r;
+    f.problem = r->spec.problem;
+    f.quantity = r->quantity;
+    f.element = r->spec.element;
+    f.option = {r->spec.algorithm, r->spec.contact};
+    f.errors = r->errors;
+    f.grade = grading::grade_of_error(*r->errors[2]);
+    f.study_c = r->converging.value_or(false);
+    add_trend(f);
+    add_credibility(index, f);
+    if (const schema::RowVerdict* twin = index.extrapolated_twin(*r))
+      f.extrapolated_error = twin->errors[2];
+    out.push_back(std::move(f));
+  }
+  return out;
+}
+
+std::vector<DivergenceFacts> divergence_facts(const ResultsIndex& index) {
+  std::vector<DivergenceFacts> out;
+  for (const schema::RowVerdict* r : index.baseline_rows()) {
+    if (!index.singular(r->spec.problem) || !ResultsIndex::complete(*r))
+      continue;
+    DivergenceFacts d;
+    d.row = r;
+    d.problem = r->spec.problem;
+    d.element = r->spec.element;
+    d.option = {r->spec.algorithm, r->spec.contact};
+    const auto& v = r->values;
+    d.eq47 = grading::eq47_diverging(*v[0], *v[1], *v[2]);
+    const schema::DivergenceVerdict strict = grading::divergence_verdict(*v[0], *v[1], *v[2]);
+    d.strict = strict.diverges;
+    d.exponent = strict.exponent;
+    const schema::CaseResult* fine = index.case_of(*r, MeshLevel::F);
+    d.fine_converged = fine && fine->status == schema::CaseStatus::converged;
+    out.push_back(d);
+  }
+  return out;
+}
+
+std::vector<const RowFacts*> facts_of(const std::vector<RowFacts>& all, schema::ProblemId problem) {
+  std::vector<const RowFacts*> out;
+  for (const auto& f : all) {
+    if (f.problem == problem)
+      out.push_back(&f);
+  }
+  return out;
+}
+
+bool coincide(const schema::RowVerdict& a, const schema::RowVerdict& b) {
+  for (std::size_t m = 0; m < a.values.size(); ++m) {
+    if (a.values[m].has_value() != b.values[m].has_value())
+      return false;
+    if (a.values[m] && std::abs(*a.values[m] - *b.values[m]) >= 5e-5)
+      return false;
+  }
+  return true;
+}
+
+}  // namespace cs::reports

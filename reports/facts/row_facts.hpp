@@ -1,0 +1,78 @@
+#pragma once
+// What the report may say of each baseline row, decided once by the grading layer (grading/)
+// and queried by every page: the signed errors, the study's grade and c, the noise-aware trend
+// and observed order, whether the F case is credible (interface checks) and whether its grade is
+// the luck of one mesh. Only a row that is `evidence()` may support or refute a claim or an
+// advice; the others are shown, marked, and never counted.
+
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "grading/convergence.hpp"
+#include "reports/results/results_index.hpp"
+
+namespace cs::reports {
+
+/// The study's option families: AL and PM (penalty; AL augments only past FTOLN), LMP and PLM
+/// (Lagrange multipliers; the same without friction) and MPC (the study's IMC).
+enum class OptionFamily { penalty, multiplier, mpc };
+OptionFamily family_of(schema::Algorithm algorithm);
+
+/// A failed interface check and its measure (e.g. force balance 19.2: the relative residual).
+struct CheckFailure {
+  std::string check;
+  std::optional<double> measure;
+};
+
+/// One nonsingular baseline row, graded.
+struct RowFacts {
+  const schema::RowVerdict* row = nullptr;
+  schema::ProblemId problem = schema::ProblemId::P_p;
+  schema::Quantity quantity = schema::Quantity::sigma_c;
+  schema::Element element = schema::Element::Q4;
+  Option option;
+  std::array<std::optional<double>, 3> errors;  ///< signed percent, C, M, F
+  std::optional<schema::Grade> grade;           ///< Eq. 46 on F
+  bool study_c = false;                         ///< the study's convergence flag
+  std::optional<grading::ConvergenceAssessment> trend;  ///< all three meshes present
+  std::optional<double> order;                          ///< guarded observed order
+  std::string order_note;                               ///< why there is no order
+  bool fine_converged = false;  ///< the F case's contact iterations converged
+  bool credible = true;         ///< the F case passes the interface checks
+  std::vector<CheckFailure> failures;  ///< the F case's failed interface checks
+  bool luck = false;                  ///< e or g on F after an error above 100 % on C or M
+  /// The same option set graded with extrapolated nodal stresses (as ANSYS prints them).
+  std::optional<double> extrapolated_error;
+
+  /// May this row support or refute a statement? Graded, converged on F, credible, not luck.
+  bool evidence() const { return grade && fine_converged && credible && !luck; }
+};
+
+/// The flat punch's divergence verdicts of one baseline row.
+struct DivergenceFacts {
+  const schema::RowVerdict* row = nullptr;
+  schema::ProblemId problem = schema::ProblemId::F_p;
+  schema::Element element = schema::Element::Q4;
+  Option option;
+  bool eq47 = false;    ///< the study's Eq. 47
+  bool strict = false;  ///< monotone growth with a square-root-like exponent
+  std::optional<double> exponent;
+  bool fine_converged = false;
+};
+
+/// Every graded quantity of every nonsingular baseline row that has an F value, in index order.
+std::vector<RowFacts> row_facts(const ResultsIndex& index);
+
+/// Every complete singular baseline row.
+std::vector<DivergenceFacts> divergence_facts(const ResultsIndex& index);
+
+/// The row facts of one problem (a view into `all`).
+std::vector<const RowFacts*> facts_of(const std::vector<RowFacts>& all, schema::ProblemId problem);
+
+/// True when two rows' values agree on every mesh to the study's printed digits (4 decimals):
+/// the pages then show them as one row ("AL, PM").
+bool coincide(const schema::RowVerdict& a, const schema::RowVerdict& b);
+
+}  // namespace cs::reports

@@ -1,0 +1,183 @@
+#include "reports/facts/situation_verdict.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+#include "grading/accuracy.hpp"
+
+namespace cs::reports {
+namespace {
+
+using schema::ProblemId;
+
+struct SituationInfo {
+  const char* key;
+  const char* title;
+  bool singular;
+  std::vector<ProblemId> problems;
+};
+
+/// The analyst situations and the problems that stand for them.
+const std::vector<SituationInfo>& situations() {
+  static const std::vector<SituationInfo> all = {
+      {"patch", "Contact patch, matched nodes", false, {ProblemId::P_p, ProblemId::P_a}},
+      {"mismatched", "Contact patch, mismatched nodes", false,
+       {ProblemId::Pprime_p, ProblemId::Pprime_a, ProblemId::Pprime_p_E1, ProblemId::Pprime_a_E1}},
+      {"hertz", "Hertz contact (smooth, curved)", false, {ProblemId::H_p, ProblemId::H_a}},
+      {"steuermann", "Rounded punch (Steuermann)", false,
+       {ProblemId::S_1, ProblemId::S_1_3, ProblemId::S_1_7}},
+      {"conformal", "Conformal fit", false, {ProblemId::IF_p, ProblemId::IF_a}},
+      {"flat", "Flat punch (singular edge)", true, {ProblemId::F_p, ProblemId::F_a}},
+  };
+  return all;
+}
+
+/// Table 2's quantities of a problem, or all of them when the study has no row for it.
+bool graded_in_verdict(const ResultsIndex& index, ProblemId problem, schema::Quantity q) {
+  const schema::ProblemRecord* record = index.problem(problem);
+  if (!record)
+    return false;
+  const bool has_study_rows =
+      std::any_of(record->quantities.begin(), record->quantities.end(),
+                  [](const auto& d) { return !d.study_row.empty(); });
+  const schema::QuantityDefinition* d = record->definition(q);
+  return d && (!has_study_rows || !d->study_row.empty()) &&
+         q != schema::Quantity::contact_half_width;
+}
+
+using CellKey = std::tuple<OptionFamily, schema::ContactKind, schema::Element>;
+
+void add_row(OptionCell& cell, const RowFacts& f) {
+  cell.rows.push_back(&f);
+  const double e = *f.errors[2];
+  if (!cell.worst_error || std::abs(e) > std::abs(*cell.worst_error))
+    cell.worst_error = e;
+  cell.min_error = cell.min_error ? std::min(*cell.min_error, e) : e;
+  cell.max_error = cell.max_error ? std::max(*cell.max_error, e) : e;
+  if (f.errors[1])
+    cell.largest_m_to_f_change = std::max(cell.largest_m_to_f_change, std::abs(e - *f.errors[1]));
+  cell.n_not_credible += f.credible ? 0 : 1;
+  cell.n_luck += f.luck ? 1 : 0;
+  cell.n_not_converged += f.fine_converged ? 0 : 1;
+}
+
+std::vector<OptionCell> make_cells(const ResultsIndex& index, const SituationInfo& s,
+                                   const std::vector<RowFacts>& rows,
+                                   const std::vector<DivergenceFacts>& singular) {
+  std::map<CellKey, OptionCell> cells;
+  const auto cell_of = [&](const Option& o, schema::Element el) -> OptionCell& {
+    OptionCell& c = cells[{family_of(o.algorithm), o.contact, el}];
+    c.family = family_of(o.algorithm);
+    c.contact = o.contact;
+    c.element = el;
+    return c;
+  };
+  for (const ProblemId p : s.problems) {
+    for (const auto& f : rows) {
+      if (f.problem == p && graded_in_verdict(index, p, f.quantity))
+        add_row(cell_of(f.option, f.element), f);
+    }
+    for (const auto& d : singular) {
+      if (d.problem != p)
+        continue;
+      OptionCell& c = cell_of(d.option, d.element);
+      c.singular_rows.push_back(&d);
+      c.n_eq47 += d.eq47 ? 1 : 0;
+      c.n_strict += d.strict ? 1 : 0;
+      c.n_not_converged += d.fine_converged ? 0 : 1;
+    }
+  }
+  std::vector<OptionCell> out;
+  for (auto& [key, c] : cells) {
+    if (c.worst_error)
+      c.worst_grade = grading::grade_of_error(*c.worst_error);
+    c.evidence = c.n_not_credible == 0 && c.n_luck == 0 && c.n_not_converged == 0;
+    out.push_back(std::move(c));
+  }
+  return out;
+}
+
+void rank(SituationVerdict& v) {
+  for (const auto& c : v.cells) {
+    const bool fails = v.singular ? c.n_eq47 < static_cast<int>(c.singular_rows.size())
+                                  : (c.n_not_credible > 0 || c.worst_grade == schema::Grade::u);
+    if (fails)
+      v.avoid.push_back(&c);
+    if (!c.evidence || v.singular || !c.worst_grade)
+      continue;
+    if (!v.best_grade || schema::is_worse(*v.best_grade, *c.worst_grade))
+      v.best_grade = c.worst_grade;
+  }
+  for (const auto& c : v.cells) {
+    if (v.singular) {
+      if (c.n_strict == static_cast<int>(c.singular_rows.size()) && c.n_not_converged == 0)
+        v.best.push_back(&c);
+      continue;
+    }
+    if (!c.evidence || c.worst_grade != v.best_grade)
+      continue;
+    v.best.push_back(&c);
+    v.best_min = v.best_min ? std::min(*v.best_min, *c.min_error) : *c.min_error;
+    v.best_max = v.best_max ? std::max(*v.best_max, *c.max_error) : *c.max_error;
+    v.best_noise = std::max(v.best_noise, c.largest_m_to_f_change);
+  }
+}
+
+}  // namespace
+
+std::vector<SituationVerdict> situation_verdicts(const ResultsIndex& index,
+                                                 const std::vector<RowFacts>& rows,
+                                                 const std::vector<DivergenceFacts>& singular) {
+  std::vector<SituationVerdict> out;
+  for (const SituationInfo& s : situations()) {
+    SituationVerdict v;
+    v.key = s.key;
+    v.title = s.title;
+    v.singular = s.singular;
+    for (const ProblemId p : s.problems) {
+      if (index.problem(p))
+        v.problems.push_back(p);
+    }
+    v.cells = make_cells(index, s, rows, singular);
+    if (v.cells.empty())
+      continue;
+    out.push_back(std::move(v));
+    rank(out.back());
+  }
+  return out;
+}
+
+std::string family_label(OptionFamily family) {
+  switch (family) {
+    case OptionFamily::penalty:
+      return "AL, PM";
+    case OptionFamily::multiplier:
+      return "LMP, PLM";
+    case OptionFamily::mpc:
+      return "MPC";
+  }
+  return {};
+}
+
+std::string cells_label(const std::vector<const OptionCell*>& cells) {
+  std::map<OptionFamily, std::map<schema::Element, std::vector<schema::ContactKind>>> by;
+  for (const OptionCell* c : cells)
+    by[c->family][c->element].push_back(c->contact);
+  std::string out;
+  for (const auto& [family, elements] : by) {
+    std::string part = family_label(family);
+    bool first = true;
+    for (const auto& [element, contacts] : elements) {
+      std::string list;
+      for (const auto k : contacts)
+        list += (list.empty() ? "" : "/") + std::string(schema::to_string(k));
+      part += (first ? " " : ", ") + list + " " + std::string(schema::to_string(element));
+      first = false;
+    }
+    out += (out.empty() ? "" : "; ") + part;
+  }
+  return out;
+}
+
+}  // namespace cs::reports

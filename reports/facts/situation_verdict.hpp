@@ -1,0 +1,58 @@
+#pragma once
+// The verdict per analyst situation (a contact patch, Hertz, a rounded punch, a flat punch, ...):
+// for each option family x contact discretization x element, the worst signed F error over the
+// situation's graded quantities and its grade, with what disqualifies it (interface checks that
+// fail, a grade that is the luck of one mesh, a fine case that did not converge). The best cells
+// are not ranked against each other when they share a grade: their spread is stated beside the
+// change one refinement makes to the same rows, the noise a ranking would have to beat.
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "reports/facts/row_facts.hpp"
+
+namespace cs::reports {
+
+/// One option family with one contact discretization and one element, over a situation.
+struct OptionCell {
+  OptionFamily family = OptionFamily::penalty;
+  schema::ContactKind contact = schema::ContactKind::ss;
+  schema::Element element = schema::Element::Q4;
+  std::vector<const RowFacts*> rows;          ///< nonsingular situations
+  std::vector<const DivergenceFacts*> singular_rows;  ///< the flat punch
+  std::optional<double> worst_error;          ///< signed, the largest |F error|
+  std::optional<schema::Grade> worst_grade;   ///< of worst_error
+  std::optional<double> min_error, max_error;  ///< signed range of the F errors
+  double largest_m_to_f_change = 0.0;          ///< max |e_F - e_M| over its rows (points)
+  int n_not_credible = 0, n_luck = 0, n_not_converged = 0;
+  bool evidence = false;  ///< every row is evidence (RowFacts::evidence)
+  int n_eq47 = 0, n_strict = 0;  ///< the flat punch: rows passing each divergence verdict
+};
+
+/// One situation: its problems' cells and the statements a reader needs.
+struct SituationVerdict {
+  std::string key;    ///< e.g. "hertz"
+  std::string title;  ///< e.g. "Hertz contact (smooth, curved)"
+  bool singular = false;
+  std::vector<schema::ProblemId> problems;
+  std::vector<OptionCell> cells;  ///< every option set present
+  std::vector<const OptionCell*> best;  ///< evidence cells of the best grade (ties)
+  std::vector<const OptionCell*> avoid;  ///< u, not credible, or failing divergence
+  std::optional<schema::Grade> best_grade;
+  std::optional<double> best_min, best_max;  ///< signed F error range over `best`
+  double best_noise = 0.0;                   ///< largest M -> F change over `best` (points)
+};
+
+/// The situations present in the results, in the report's order.
+std::vector<SituationVerdict> situation_verdicts(const ResultsIndex& index,
+                                                 const std::vector<RowFacts>& rows,
+                                                 const std::vector<DivergenceFacts>& singular);
+
+/// "AL, PM", "LMP, PLM" or "MPC".
+std::string family_label(OptionFamily family);
+
+/// A compact list of cells: "AL, PM ss/ns/mortar Q4, ss Q8; LMP, PLM ss Q4".
+std::string cells_label(const std::vector<const OptionCell*>& cells);
+
+}  // namespace cs::reports

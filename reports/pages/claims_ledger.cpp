@@ -1,0 +1,39 @@
+#include "reports/pages/claims_ledger.hpp"
+
+#include <fmt/format.h>
+
+#include "reports/render/template_text.hpp"
+
+namespace cs::reports {
+namespace {
+
+TemplateData claim_data(const ClaimEvidence& c) {
+  TemplateData d;
+  d.set("verdict", to_string(c.verdict));
+  d.set("testable", c.verdict != ClaimVerdict::not_testable);
+  d.set("n", std::to_string(c.n));
+  d.set("n_hold", std::to_string(c.n_hold));
+  d.set("n_fail", std::to_string(c.n - c.n_hold));
+  d.set("n_excluded", std::to_string(c.n_excluded));
+  d.set("has_excluded", c.n_excluded > 0);
+  d.set("n2", std::to_string(c.n2));
+  d.set("n2_hold", std::to_string(c.n2_hold));
+  d.set("has_n2", c.n2 > 0);
+  d.set("has_figure", c.figure.has_value());
+  d.set("figure", c.figure ? fmt::format("{:.3g}", *c.figure) : std::string());
+  d.set("has_examples", !c.examples.empty());
+  d.set("examples", c.examples);
+  return d;
+}
+
+}  // namespace
+
+std::string claims_ledger(const std::vector<ClaimEvidence>& claims) {
+  TemplateData d;
+  for (const auto& c : claims) {
+    d.set(c.key, claim_data(c));
+  }
+  return render_template(templates::claims_ledger, d);
+}
+
+}  // namespace cs::reports

@@ -1,0 +1,174 @@
+#include "reports/pages/problem_page.hpp"
+
+#include <fmt/format.h>
+
+#include "reports/pages/page_format.hpp"
+#include "reports/render/template_text.hpp"
+
+namespace cs::reports {
+namespace {
+
+using schema::Element;
+
+std::string trend_word(const RowFacts& f) {
+  if (!f.trend)
+    return kMissing;
+  return std::string(schema::label(f.trend->trend));
+}
+
+std::string mesh_cell(const std::optional<double>& value, const std::optional<double>& error) {
+  if (!value)
+    return kMissing;
+  return error ? fmt::format("{} ({})", format_value(*value), format_error_resolved(*error))
+               : format_value(*value);
+}
+
+std::string credible_cell(const RowFacts& f) {
+  if (!f.fine_converged)
+    return "F not converged";
+  if (f.credible)
+    return f.luck ? "yes; luck of one mesh" : "yes";
+  std::string out = "no:";
+  for (const auto& failure : f.failures)
+    out += fmt::format(" {}{}", failure.check,
+                       failure.measure ? " " + format_measure(*failure.measure) : "");
+  return out + (f.luck ? "; luck of one mesh" : "");
+}
+
+/// The option label of a row, "AL, PM ss" when its twin coincides (the twin is then skipped).
+std::string option_label(const RowFacts& f, const std::vector<const RowFacts*>& rows, bool& skip) {
+  skip = false;
+  const auto twin_algorithm = [](schema::Algorithm a) -> std::optional<schema::Algorithm> {
+    switch (a) {
+      case schema::Algorithm::AL:
+        return schema::Algorithm::PM;
+      case schema::Algorithm::PM:
+        return schema::Algorithm::AL;
+      case schema::Algorithm::LMP:
+        return schema::Algorithm::PLM;
+      case schema::Algorithm::PLM:
+        return schema::Algorithm::LMP;
+      case schema::Algorithm::MPC:
+        return std::nullopt;
+    }
+    return std::nullopt;
+  }(f.option.algorithm);
+  for (const RowFacts* t : rows) {
+    if (!twin_algorithm || t->option.algorithm != *twin_algorithm ||
+        t->option.contact != f.option.contact || t->element != f.element ||
+        t->quantity != f.quantity || !coincide(*t->row, *f.row))
+      continue;
+    skip = f.option.algorithm == schema::Algorithm::PM || f.option.algorithm == schema::Algorithm::PLM;
+    return fmt::format("{}, {} {}", schema::to_string(std::min(f.option.algorithm, *twin_algorithm)),
+                       schema::to_string(std::max(f.option.algorithm, *twin_algorithm)),
+                       schema::to_string(f.option.contact));
+  }
+  return f.option.label();
+}
+
+TemplateData row_data(const RowFacts& f, const std::string& label, bool has_vf) {
+  TemplateData d;
+  d.set("option", label);
+  d.set("c", mesh_cell(f.row->values[0], f.errors[0]));
+  d.set("m", mesh_cell(f.row->values[1], f.errors[1]));
+  d.set("f", mesh_cell(f.row->values[2], f.errors[2]));
+  d.set("has_vf", has_vf);
+  d.set("vf", f.row->refinement ? mesh_cell(f.row->refinement->value, f.row->refinement->error)
+                                : std::string(kMissing));
+  d.set("grade", f.grade ? std::string(schema::to_string(*f.grade)) : std::string(kMissing));
+  d.set("study_c", f.study_c ? "c" : "");
+  d.set("trend", trend_word(f));
+  d.set("order", f.order ? fmt::format("{:.2f}", *f.order) : f.order_note);
+  d.set("credible", credible_cell(f));
+  return d;
+}
+
+TemplateData quantity_tables(const ResultsIndex& index, const schema::ProblemRecord& problem,
+                             const std::vector<const RowFacts*>& rows) {
+  TemplateData tables{TemplateData::type::list};
+  for (const auto& q : problem.quantities) {
+    for (const Element e : schema::values<Element>()) {
+      std::vector<const RowFacts*> these;
+      bool has_vf = false;
+      for (const RowFacts* f : rows) {
+        if (f->quantity == q.quantity && f->element == e) {
+          these.push_back(f);
+          has_vf = has_vf || f->row->refinement.has_value();
+        }
+      }
+      if (these.empty())
+        continue;
+      TemplateData t;
+      t.set("quantity", q.definition_md);
+      t.set("element", std::string(schema::to_string(e)));
+      t.set("has_vf", has_vf);
+      const auto exact = index.exact_of(*these.front()->row);
+      t.set("exact", exact ? format_value(*exact) : std::string(kMissing));
+      const auto study = index.study_exact_of(*these.front()->row);
+      t.set("has_study_exact", study.has_value());
+      t.set("study_exact", study ? format_value(*study) : std::string());
+      TemplateData list{TemplateData::type::list};
+      bool shared = false;
+      for (const RowFacts* f : these) {
+        bool skip = false;
+        const std::string label = option_label(*f, these, skip);
+        shared = shared || label.find(',') != std::string::npos;
+        if (!skip)
+          list.push_back(row_data(*f, label, has_vf));
+      }
+      t.set("rows", list);
+      t.set("shared", shared);
+      tables.push_back(t);
+    }
+  }
+  return tables;
+}
+
+TemplateData divergence_rows(const std::vector<DivergenceFacts>& singular, schema::ProblemId p) {
+  TemplateData list{TemplateData::type::list};
+  for (const auto& d : singular) {
+    if (d.problem != p)
+      continue;
+    TemplateData r;
+    r.set("option", fmt::format("{} {}", schema::to_string(d.element), d.option.label()));
+    r.set("c", format_value(d.row->values[0]));
+    r.set("m", format_value(d.row->values[1]));
+    r.set("f", format_value(d.row->values[2]));
+    r.set("eq47", d.eq47 ? "holds" : "fails");
+    r.set("strict", d.strict ? "diverges" : "no");
+    r.set("exponent", d.exponent ? fmt::format("{:.2f}", *d.exponent) : std::string(kMissing));
+    list.push_back(r);
+  }
+  return list;
+}
+
+}  // namespace
+
+std::string problem_page_file(schema::ProblemId problem) {
+  return "problem-" + std::string(schema::to_string(problem)) + ".md";
+}
+
+std::string problem_page(const ResultsIndex& index, const schema::ProblemRecord& problem,
+                         const std::vector<RowFacts>& rows,
+                         const std::vector<DivergenceFacts>& singular,
+                         const std::vector<const Figure*>& figures) {
+  TemplateData d;
+  d.set("label", std::string(schema::label(problem.id)));
+  d.set("title", problem.title);
+  d.set("description", problem.description);
+  d.set("exact_source", problem.exact_source);
+  d.set("has_study_tables", !problem.study_tables.empty());
+  d.set("study_tables", problem.study_tables);
+  d.set("singular", problem.singular);
+  d.set("tables", quantity_tables(index, problem, facts_of(rows, problem.id)));
+  d.set("divergence", divergence_rows(singular, problem.id));
+  d.set("figures", template_list(figures, [](const Figure* f) {
+          TemplateData fd;
+          fd.set("file", f->file);
+          fd.set("caption", f->caption_md);
+          return fd;
+        }));
+  return render_template(templates::problem_page, d);
+}
+
+}  // namespace cs::reports

@@ -1,0 +1,95 @@
+#include "reports/pages/run_page.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "reports/render/template_text.hpp"
+
+namespace cs::reports {
+namespace {
+
+/// Every run of the set: the document's own (its source) and those combined into it.
+std::vector<std::pair<std::string, const schema::RunInfo*>> runs_of(
+    const schema::ResultsDocument& doc) {
+  std::vector<std::pair<std::string, const schema::RunInfo*>> out{{doc.source, &doc.run}};
+  for (const auto& [source, run] : doc.added_runs)
+    out.emplace_back(source, &run);
+  return out;
+}
+
+/// Files behind the set: each run counts once, a merged one as its parts.
+int file_count(const schema::ResultsDocument& doc) {
+  int n = 0;
+  for (const auto& [source, run] : runs_of(doc))
+    n += std::max(1, run->merged_files);
+  return n;
+}
+
+double machine_seconds(const schema::ResultsDocument& doc) {
+  double s = 0.0;
+  for (const auto& [source, run] : runs_of(doc))
+    s += std::isfinite(run->wall_seconds) ? run->wall_seconds : 0.0;
+  return s;
+}
+
+void flatten(const nlohmann::json& j, const std::string& prefix, TemplateData& list) {
+  if (j.is_object()) {
+    for (const auto& [k, v] : j.items())
+      flatten(v, prefix.empty() ? k : prefix + "." + k, list);
+    return;
+  }
+  TemplateData d;
+  d.set("key", prefix.empty() ? std::string("(value)") : prefix);
+  d.set("value", j.is_string() ? j.get<std::string>() : j.dump());
+  list.push_back(d);
+}
+
+}  // namespace
+
+std::string run_line(const schema::ResultsDocument& doc) {
+  int converged = 0, not_converged = 0, other = 0;
+  for (const auto& c : doc.cases) {
+    if (c.status == schema::CaseStatus::converged)
+      ++converged;
+    else if (c.status == schema::CaseStatus::not_converged)
+      ++not_converged;
+    else
+      ++other;
+  }
+  TemplateData d;
+  d.set("n_cases", std::to_string(doc.cases.size()));
+  d.set("converged", std::to_string(converged));
+  d.set("not_converged", std::to_string(not_converged));
+  d.set("failed", std::to_string(other));
+  d.set("files", std::to_string(file_count(doc)));
+  d.set("several_files", file_count(doc) > 1);
+  d.set("minutes", fmt::format("{:.1f}", machine_seconds(doc) / 60.0));
+  return render_template(templates::run_line, d);
+}
+
+std::string run_page(const schema::ResultsDocument& doc) {
+  TemplateData d;
+  d.set("line", run_line(doc));
+  d.set("runs", template_list(runs_of(doc), [](const auto& source_run) {
+          const schema::RunInfo& r = *source_run.second;
+          TemplateData rd;
+          rd.set("source", source_run.first.empty() ? std::string("(this run)") : source_run.first);
+          rd.set("started", r.started_utc.empty() ? std::string("not recorded") : r.started_utc);
+          rd.set("minutes", fmt::format("{:.1f}", r.wall_seconds / 60.0));
+          rd.set("parts", std::to_string(std::max(1, r.merged_files)));
+          rd.set("jobs", std::to_string(r.jobs));
+          rd.set("peak", std::isfinite(r.peak_rss_mb) ? fmt::format("{:.0f}", r.peak_rss_mb)
+                                                      : std::string("—"));
+          rd.set("command", r.command_line);
+          return rd;
+        }));
+  TemplateData env{TemplateData::type::list};
+  flatten(doc.run.environment, "", env);
+  d.set("environment", env);
+  return render_template(templates::run_page, d);
+}
+
+}  // namespace cs::reports

@@ -1,0 +1,166 @@
+#include "reports/pages/verdict_page.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <set>
+
+#include <fmt/format.h>
+
+#include "reports/pages/page_format.hpp"
+#include "reports/render/template_text.hpp"
+
+namespace cs::reports {
+namespace {
+
+using schema::Element;
+
+std::string singular_cell(const OptionCell& c) {
+  const int n = static_cast<int>(c.singular_rows.size());
+  if (c.n_strict == n)
+    return "diverges";
+  if (c.n_eq47 == n)
+    return "Eq. 47 only";
+  return fmt::format("fails Eq. 47 ({} of {})", n - c.n_eq47, n);
+}
+
+/// One matrix per element: rows family x discretization, columns the situations.
+TemplateData matrix(const std::vector<SituationVerdict>& situations, Element element) {
+  std::set<std::pair<OptionFamily, schema::ContactKind>> options;
+  for (const auto& s : situations) {
+    for (const auto& c : s.cells) {
+      if (c.element == element)
+        options.insert({c.family, c.contact});
+    }
+  }
+  TemplateData m;
+  m.set("element", std::string(schema::to_string(element)));
+  m.set("columns", template_list(situations, [](const SituationVerdict& s) {
+          return TemplateData(s.title);
+        }));
+  m.set("rows", template_list(options, [&](const auto& option) {
+          TemplateData row;
+          row.set("option", family_label(option.first) + " " +
+                                std::string(schema::to_string(option.second)));
+          row.set("cells", template_list(situations, [&](const SituationVerdict& s) {
+                    for (const auto& c : s.cells) {
+                      if (c.element == element && c.family == option.first &&
+                          c.contact == option.second)
+                        return TemplateData(verdict_cell(c));
+                    }
+                    return TemplateData(std::string(kMissing));
+                  }));
+          return row;
+        }));
+  return m;
+}
+
+/// The largest measure of each failed check over the cells, e.g. "force balance up to 19.2".
+std::string failure_evidence(const std::vector<const OptionCell*>& cells) {
+  std::map<std::string, double> worst;
+  double worst_error = 0.0;
+  int eq47_failures = 0, singular = 0;
+  for (const OptionCell* c : cells) {
+    for (const RowFacts* f : c->rows) {
+      for (const auto& failure : f->failures)
+        worst[failure.check] = std::max(worst[failure.check], failure.measure.value_or(0.0));
+    }
+    if (c->worst_error && std::abs(*c->worst_error) > std::abs(worst_error))
+      worst_error = *c->worst_error;
+    eq47_failures += static_cast<int>(c->singular_rows.size()) - c->n_eq47;
+    singular += static_cast<int>(c->singular_rows.size());
+  }
+  std::vector<std::string> parts;
+  for (const auto& [check, measure] : worst)
+    parts.push_back(fmt::format("{} up to {}", check, format_measure(measure)));
+  if (singular > 0)
+    parts.push_back(fmt::format("Eq. 47 fails on {} of {} rows", eq47_failures, singular));
+  if (parts.empty() && worst_error != 0.0)
+    parts.push_back("F error " + format_error_resolved(worst_error));
+  std::string out;
+  for (const auto& p : parts)
+    out += (out.empty() ? "" : "; ") + p;
+  return out;
+}
+
+TemplateData failures(const SituationVerdict& s) {
+  std::map<OptionFamily, std::vector<const OptionCell*>> by_family;
+  for (const OptionCell* c : s.avoid)
+    by_family[c->family].push_back(c);
+  TemplateData list{TemplateData::type::list};
+  for (const auto& [family, cells] : by_family) {
+    TemplateData d;
+    d.set("situation", s.title);
+    d.set("options", cells_label(cells));
+    d.set("evidence", failure_evidence(cells));
+    list.push_back(d);
+  }
+  return list;
+}
+
+TemplateData advice(const SituationVerdict& s) {
+  TemplateData d;
+  d.set("title", s.title);
+  d.set("singular", s.singular);
+  d.set("has_best", !s.best.empty());
+  d.set("best", cells_label(s.best));
+  d.set("has_avoid", !s.avoid.empty());
+  d.set("avoid", cells_label(s.avoid));
+  if (s.best_grade && s.best_min && s.best_max) {
+    const double spread = *s.best_max - *s.best_min;
+    d.set("grade", std::string(schema::to_string(*s.best_grade)));
+    d.set("min", format_error_resolved(*s.best_min));
+    d.set("max", format_error_resolved(*s.best_max));
+    d.set("spread", format_points(spread));
+    d.set("noise", format_points(s.best_noise));
+    d.set("within_noise", spread <= s.best_noise);
+    d.set("one", s.best.size() == 1);
+    d.set("range", *s.best_min != *s.best_max);
+  }
+  return d;
+}
+
+}  // namespace
+
+std::string verdict_cell(const OptionCell& c) {
+  if (!c.singular_rows.empty())
+    return singular_cell(c);
+  if (!c.worst_error || !c.worst_grade)
+    return kMissing;
+  std::string out = fmt::format("{} {}", schema::to_string(*c.worst_grade),
+                                format_error_resolved(*c.worst_error));
+  if (c.n_not_credible > 0)
+    out += " ✗";
+  if (c.n_luck > 0)
+    out += " ‡";
+  if (c.n_not_converged > 0)
+    out += " †";
+  return out;
+}
+
+std::string verdict_page(const ResultsIndex& index, const std::vector<SituationVerdict>& situations) {
+  TemplateData d;
+  TemplateData matrices{TemplateData::type::list};
+  for (const Element e : schema::values<Element>()) {
+    const bool present = std::any_of(situations.begin(), situations.end(), [&](const auto& s) {
+      return std::any_of(s.cells.begin(), s.cells.end(),
+                         [&](const OptionCell& c) { return c.element == e; });
+    });
+    if (present)
+      matrices.push_back(matrix(situations, e));
+  }
+  d.set("matrices", matrices);
+  d.set("advice", template_list(situations, advice));
+  TemplateData all_failures{TemplateData::type::list};
+  for (const auto& s : situations) {
+    const TemplateData f = failures(s);
+    for (const auto& item : f.list_value())
+      all_failures.push_back(item);
+  }
+  d.set("failures", all_failures);
+  d.set("solvers", solver_names(index));
+  d.set("recovery", recovery_names(index));
+  return render_template(templates::verdict_page, d);
+}
+
+}  // namespace cs::reports

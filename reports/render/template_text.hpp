@@ -1,0 +1,35 @@
+#pragma once
+// The report's prose lives in Mustache templates (reports/templates/*.mustache, checked and
+// embedded at build time: reports/embedded_templates.hpp names each one). A page's C++ computes
+// the numbers and flags that fill a template; every sentence a reader sees is in a template.
+//
+//   TemplateData d;
+//   d.set("n_rows", "12");
+//   std::string md = render_template(templates::verdict_page, d);
+//
+// Values are inserted verbatim (no HTML escaping: the output is Markdown).
+
+#include <string>
+#include <string_view>
+
+#include <kainjow/mustache.hpp>
+
+#include "reports/embedded_templates.hpp"
+
+namespace cs::reports {
+
+using TemplateData = kainjow::mustache::data;
+
+/// A Mustache list of `items`.
+template <typename Range, typename ToData>
+TemplateData template_list(const Range& items, ToData&& to_data) {
+  TemplateData list{TemplateData::type::list};
+  for (const auto& item : items)
+    list.push_back(to_data(item));
+  return list;
+}
+
+/// `text` (an embedded template) rendered with `data`; throws ReportError if rendering fails.
+std::string render_template(std::string_view text, const TemplateData& data);
+
+}  // namespace cs::reports
