@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include "grading/accuracy.hpp"
 #include "reports/tables/cross_code_rows.hpp"
 #include "reports/tables/markdown_table.hpp"
 
@@ -49,9 +50,12 @@ OptionVerdict verdict_of(const OptionAssessment& a, bool singular) {
     return OptionVerdict::avoid;
   if (singular)
     return a.converging == a.rows ? OptionVerdict::trust : OptionVerdict::avoid;
-  if (a.fine_error < 1.0 && a.worst_error < 5.0 && a.converging == a.rows)
+  const schema::Grade fine = grading::grade_of_error(a.fine_error);
+  const schema::Grade worst = grading::grade_of_error(a.worst_error);
+  if (fine == schema::Grade::e && !schema::is_worse(worst, schema::Grade::g) &&
+      a.converging == a.rows)
     return OptionVerdict::trust;
-  return a.fine_error < 5.0 ? OptionVerdict::usable : OptionVerdict::avoid;
+  return schema::is_worse(fine, schema::Grade::g) ? OptionVerdict::avoid : OptionVerdict::usable;
 }
 
 std::string list_labels(const std::vector<const OptionAssessment*>& options, bool with_error) {

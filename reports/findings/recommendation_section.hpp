@@ -16,7 +16,7 @@
 //   usable — every F error < 5 % (g or better);
 //   avoid  — anything else, or a case that did not converge or failed.
 // For the singular flat punch the verdict is the strict divergence verdict of every row
-// (schema::divergence_verdict): trust when every row diverges, avoid otherwise.
+// (grading::divergence_verdict): trust when every row diverges, avoid otherwise.
 
 #include <string>
 #include <vector>

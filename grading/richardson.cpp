@@ -1,31 +1,17 @@
-#include "suites/row_estimates.hpp"
+#include "grading/richardson.hpp"
 
 #include <algorithm>
 #include <cmath>
 
-#include "suites/grading.hpp"
-
-namespace cs::suites {
+namespace cs::grading {
 namespace {
 
 /// Relative size below which a difference of two values is round-off.
 constexpr double kRoundOff = 1e-12;
-
-std::optional<double> order_of(const std::optional<double>& coarse,
-                               const std::optional<double>& fine) {
-  if (!coarse || !fine)
-    return std::nullopt;
-  const double c = std::abs(*coarse), f = std::abs(*fine);
-  if (c < schema::kErrorNoiseFloorPercent || f < schema::kErrorNoiseFloorPercent)
-    return std::nullopt;
-  return std::log2(c / f);
-}
+/// Roache's safety factor for a three-grid study.
+constexpr double kGciSafetyFactor = 1.25;
 
 }  // namespace
-
-std::array<std::optional<double>, 2> pair_orders(const std::array<std::optional<double>, 3>& e) {
-  return {order_of(e[0], e[1]), order_of(e[1], e[2])};
-}
 
 schema::ErrorEstimate error_estimate(double f_c, double f_m, double f_f) {
   schema::ErrorEstimate out;
@@ -49,8 +35,8 @@ schema::ErrorEstimate error_estimate(double f_c, double f_m, double f_f) {
   out.observed_order = p;
   out.richardson = f_f + (f_f - f_m) / denominator;
   if (f_f != 0.0)
-    out.gci_percent = 1.25 * std::abs(d2 / f_f) / denominator * 100.0;
+    out.gci_percent = kGciSafetyFactor * std::abs(d2 / f_f) / denominator * 100.0;
   return out;
 }
 
-}  // namespace cs::suites
+}  // namespace cs::grading

@@ -1,0 +1,18 @@
+#pragma once
+// The accuracy of one computed value against its exact value: the signed percentage error and
+// the study's grade of it (Eq. 46). The grades themselves are vocabulary (schema/grade.hpp).
+
+#include "schema/grade.hpp"
+
+namespace cs::grading {
+
+/// Signed percentage error, 100 (v - x) / |x|: positive when the value exceeds the exact one,
+/// whatever the sign of x. Precondition: x finite and non-zero.
+double error_percent(double value, double exact);
+
+/// Eq. 46 of the study on the magnitude of a percentage error e:
+///   e (excellent) if |e| < 1, g (good) if 1 <= |e| < 5, s (satisfactory) if 5 <= |e| < 10,
+///   u (unsatisfactory) if |e| >= 10 or e is NaN. A boundary belongs to the worse grade.
+schema::Grade grade_of_error(double error_percent);
+
+}  // namespace cs::grading

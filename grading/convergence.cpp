@@ -1,0 +1,100 @@
+#include "grading/convergence.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "grading/accuracy.hpp"
+#include "schema/row_verdict.hpp"
+
+namespace cs::grading {
+namespace {
+
+bool all_finite(double a, double b, double c) {
+  return std::isfinite(a) && std::isfinite(b) && std::isfinite(c);
+}
+
+/// |e| never grows by more than `tol` from C to M to F.
+bool never_grows(double c, double m, double f, double tol) {
+  return m <= c + tol && f <= m + tol;
+}
+
+}  // namespace
+
+bool study_converging(double e_c, double e_m, double e_f) {
+  const double c = std::abs(e_c), m = std::abs(e_m), f = std::abs(e_f);
+  if (!all_finite(c, m, f))
+    return false;
+  constexpr double tol = kErrorResolutionPercent;
+  return never_grows(c, m, f, tol) && (f < c - tol || c <= tol);
+}
+
+ConvergenceAssessment assess_convergence(double e_c, double e_m, double e_f) {
+  ConvergenceAssessment out;
+  const double relative = kPlateauFraction * std::abs(e_f);
+  if (relative > kErrorResolutionPercent) {
+    out.floor_percent = relative;
+    out.floor_reason = fmt::format(
+        "a tenth of the F error ({:.3g} points): a smaller change cannot be told from the "
+        "error's plateau",
+        relative);
+  } else {
+    out.floor_percent = kErrorResolutionPercent;
+    out.floor_reason =
+        fmt::format("{:g} percentage points: the resolution of the study's 4-decimal values",
+                    kErrorResolutionPercent);
+  }
+  if (!all_finite(e_c, e_m, e_f))
+    return out;  // not_converging
+  const double floor = out.floor_percent;
+  if (std::abs(e_m - e_c) < floor && std::abs(e_f - e_m) < floor) {
+    out.trend = Trend::settled;
+    return out;
+  }
+  const double c = std::abs(e_c), m = std::abs(e_m), f = std::abs(e_f);
+  if (never_grows(c, m, f, floor) && f < c - floor)
+    out.trend = Trend::converging;
+  return out;
+}
+
+std::optional<double> pair_order(const std::optional<double>& e_coarse,
+                                 const std::optional<double>& e_fine) {
+  if (!e_coarse || !e_fine)
+    return std::nullopt;
+  const double c = std::abs(*e_coarse), f = std::abs(*e_fine);
+  if (c < schema::kErrorNoiseFloorPercent || f < schema::kErrorNoiseFloorPercent)
+    return std::nullopt;
+  return std::log2(c / f);
+}
+
+ObservedOrder observed_order(double e_c, double e_m, double e_f) {
+  ObservedOrder out;
+  out.pair_orders = {pair_order(e_c, e_m), pair_order(e_m, e_f)};
+  const auto& [p1, p2] = out.pair_orders;
+  const Trend trend = assess_convergence(e_c, e_m, e_f).trend;
+  if (!p1 || !p2 || trend == Trend::settled) {
+    out.note = "at noise level";
+    return out;
+  }
+  if (trend != Trend::converging || !(*p1 > 0.0) || !(*p2 > 0.0)) {
+    out.note = "not monotone";
+    return out;
+  }
+  const double spread = std::abs(*p1 - *p2);
+  if (!(spread <= kAsymptoticOrderSpread)) {
+    out.note =
+        fmt::format("pre-asymptotic (p1 = {:.2f}, p2 = {:.2f} differ by {:.2f})", *p1, *p2, spread);
+    return out;
+  }
+  out.order = 0.5 * (*p1 + *p2);
+  return out;
+}
+
+bool luck_of_one_mesh(double e_c, double e_m, double e_f) {
+  const double coarse = std::max(std::abs(e_c), std::abs(e_m));
+  return coarse >= kUnresolvedErrorPercent &&
+         !schema::is_worse(grade_of_error(e_f), schema::Grade::g);
+}
+
+}  // namespace cs::grading

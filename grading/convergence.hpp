@@ -1,0 +1,85 @@
+#pragma once
+// What the errors of one quantity on the meshes C, M, F (h halving per level) say about
+// convergence: the study's flag, a noise-aware verdict, the observed order and the one-mesh
+// luck rule. Errors are signed percentages (grading/accuracy.hpp); each rule reads them as
+// stated in its comment.
+
+#include <array>
+#include <optional>
+#include <string>
+
+#include "schema/convergence_trend.hpp"
+
+namespace cs::grading {
+
+using schema::Trend;
+
+/// The resolution of the study's printed values (4 decimals of a value of order 1, i.e. 0.01
+/// percentage points): differences below it count as equal.
+inline constexpr double kErrorResolutionPercent = 0.01;
+
+/// The study's 'c' (Table 2): with |e| the error magnitudes and r = kErrorResolutionPercent,
+///   |e_M| <= |e_C| + r  and  |e_F| <= |e_M| + r  (never grows)
+///   and (|e_F| < |e_C| - r  or  |e_C| <= r)      (improves, or exact on every mesh).
+/// False when an error is not finite. It is the study's rule, printed as the study's `c`.
+bool study_converging(double e_c, double e_m, double e_f);
+
+/// The noise-aware verdict, the floor below which a change is noise, and which bound set it.
+struct ConvergenceAssessment {
+  Trend trend = Trend::not_converging;
+  double floor_percent = 0.0;  ///< percentage points
+  std::string floor_reason;
+};
+
+/// A change of the error smaller than a tenth of the error itself cannot be told from its
+/// plateau.
+inline constexpr double kPlateauFraction = 0.1;
+
+/// The noise-aware convergence verdict of the errors on C, M, F:
+///   floor = max(kErrorResolutionPercent, kPlateauFraction |e_F|);
+///   settled        when |e_M - e_C| < floor and |e_F - e_M| < floor (a plateau: the grade
+///                  tells how good it is);
+///   converging     when |e_M| <= |e_C| + floor, |e_F| <= |e_M| + floor and
+///                  |e_F| < |e_C| - floor;
+///   not_converging otherwise, and when an error is not finite.
+/// A plateau reached through noise of a few thousandths of a point (S(1/3) Q8 LMP ss
+/// -0.3194/-0.3217/-0.3130 %, ns -0.3238/-0.3239/-0.3124 %) is settled either way, where the
+/// study's flag tells the two apart on a 0.001-point difference.
+ConvergenceAssessment assess_convergence(double e_c, double e_m, double e_f);
+
+/// The observed order of one mesh pair (h halving), log2(|e_coarse| / |e_fine|); empty where
+/// an error is missing or below schema::kErrorNoiseFloorPercent (round-off: no order fitted).
+std::optional<double> pair_order(const std::optional<double>& e_coarse,
+                                 const std::optional<double>& e_fine);
+
+/// The largest spread of the two pair orders for which the sequence counts as in its
+/// asymptotic range: within one order of each other.
+inline constexpr double kAsymptoticOrderSpread = 1.0;
+
+/// The observed order of the error and the pair orders it comes from.
+struct ObservedOrder {
+  std::array<std::optional<double>, 2> pair_orders;  ///< C->M, M->F (see pair_order)
+  std::optional<double> order;                       ///< (p1 + p2) / 2 when it can be trusted
+  std::string note;                                  ///< why there is no order
+};
+
+/// Pair orders p1 = log2(|e_C|/|e_M|), p2 = log2(|e_M|/|e_F|) (see pair_order) and their mean
+/// as the observed order, given only when assess_convergence finds the sequence converging,
+/// p1 > 0, p2 > 0 and |p1 - p2| <= kAsymptoticOrderSpread. Otherwise `note` says why: "at noise
+/// level" (an error at round-off, or the trend settled), "not monotone" (the trend is not
+/// converging, or an error grows within the floor), or "pre-asymptotic (p1 = .., p2 = ..
+/// differ by ..)". 4 -> 1 -> 0.25 has order 2; 445 -> 310 -> 0.68 (p1 0.52, p2 8.8) has none.
+ObservedOrder observed_order(double e_c, double e_m, double e_f);
+
+/// An error at or above this on C or M means the mesh does not resolve the quantity at all:
+/// to fall from it into the g band (< 5 %) within two halvings of h, the error must shrink
+/// 20-fold, an order above log2(20)/2 = 2.2 per halving, beyond what these elements deliver
+/// at a contact edge.
+inline constexpr double kUnresolvedErrorPercent = 100.0;
+
+/// The luck of one mesh: the F error grades e or g (Eq. 46) after an error of at least
+/// kUnresolvedErrorPercent on C or M: max(|e_C|, |e_M|) >= 100 and |e_F| < 5. Such a fine
+/// grade is not evidence for the option. Pass 0 for a missing C or M error.
+bool luck_of_one_mesh(double e_c, double e_m, double e_f);
+
+}  // namespace cs::grading
