@@ -1,5 +1,6 @@
 #pragma once
-// The study's accuracy grades (Eq. 46), best first, and how a case ended.
+// The study's accuracy grades (Eq. 46, computed by grading/accuracy.hpp), best first, and how
+// a case ended.
 
 #include <cstdint>
 #include <string_view>
@@ -8,7 +9,7 @@
 
 namespace cs::schema {
 
-/// e (excellent) < 1 % <= g (good) < 5 % <= s (satisfactory) < 10 % <= u (unsatisfactory).
+/// Best first: e (excellent), g (good), s (satisfactory), u (unsatisfactory).
 enum class Grade : std::uint8_t { e, g, s, u };
 constexpr std::string_view axis_name(Grade) {
   return "grade";
@@ -25,16 +26,6 @@ constexpr AxisEntry entry(Grade v) {
       return {"u", "", "unsatisfactory"};
   }
   return {};
-}
-
-/// Eq. 46 of the study: the grade of a signed percentage error (NaN: u).
-constexpr Grade grade_of_error(double error_percent) {
-  const double e = error_percent < 0 ? -error_percent : error_percent;
-  if (!(e < 10.0))
-    return Grade::u;  // also catches NaN
-  if (e < 1.0)
-    return Grade::e;
-  return e < 5.0 ? Grade::g : Grade::s;
 }
 
 /// True when `grade` is worse than `reference`.

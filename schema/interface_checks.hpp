@@ -10,12 +10,11 @@
 //                            beyond the exact contact patch (where the exact pressure is 0);
 //   max_penetration_over_h = the largest penetration over the element size at the contact.
 //
-// A check fails beyond its tolerance below; a check that does not apply (no single load to
-// balance, e.g. a problem loaded in steps) is absent.
+// A check fails beyond its tolerance below (grading/interface_check_rules.hpp applies them); a
+// check that does not apply (no single load to balance, e.g. a problem loaded in steps) is
+// absent.
 
 #include <optional>
-#include <string>
-#include <vector>
 
 namespace cs::schema {
 
@@ -38,10 +37,6 @@ struct InterfaceChecks {
   std::optional<double> max_tensile_over_p;
   std::optional<double> max_outside_over_p;
   std::optional<double> max_penetration_over_h;
-
-  /// The names of the checks that fail ("force balance", "tensile pressure",
-  /// "pressure outside the patch", "penetration").
-  std::vector<std::string> failures() const;
 };
 
 }  // namespace cs::schema

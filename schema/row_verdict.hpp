@@ -1,8 +1,8 @@
 #pragma once
 // The study's unit of assessment: one quantity of one problem with one option set, on the
 // C, M and F meshes; graded on the finest mesh present (Table 2) and checked for convergence
-// or, for the singular problems, divergence (Eq. 47). Computed by suites/ (the grading rules),
-// recorded in results.json, read by the gate and the report.
+// or, for the singular problems, divergence (Eq. 47). Assembled by suites/ with the rules of
+// grading/, recorded in results.json, read by the gate and the report.
 
 #include <array>
 #include <optional>
@@ -18,11 +18,10 @@ namespace cs::schema {
 /// Errors below this (percent) are round-off: no order is fitted to them.
 inline constexpr double kErrorNoiseFloorPercent = 1e-6;
 
-/// Error estimate of a nonsingular row from its three meshes (refinement ratio 2): the
-/// observed order p = log2(|f_C - f_M| / |f_M - f_F|), the Richardson limit
-/// f_F + (f_F - f_M)/(2^p - 1) and Roache's grid convergence index of the fine value,
-/// GCI = 1.25 |(f_F - f_M)/f_F| / (2^p - 1) (percent). `asymptotic` is false, and the estimate
-/// left out, when the sequence is oscillatory or diverging or its differences are at round-off.
+/// Error estimate of a nonsingular row from its three meshes (grading/richardson.hpp computes
+/// it): the observed order of the value differences, the Richardson limit and Roache's grid
+/// convergence index of the fine value. `asymptotic` is false, and the estimate left out, when
+/// the sequence is oscillatory or diverging or its differences are at round-off.
 struct ErrorEstimate {
   bool asymptotic = false;
   std::optional<double> observed_order;
@@ -31,26 +30,17 @@ struct ErrorEstimate {
   std::string note;  ///< why there is no estimate ("oscillatory", "at round-off", ...)
 };
 
-/// The divergence verdicts of a singular row (flat punch), two of them:
-///   eq47: the study's Eq. 47, |s_C - s_M| < |s_M - s_F|;
-///   monotone: the magnitudes grow strictly, |s_C| < |s_M| < |s_F|, with one sign;
-///   exponent: the mean observed growth exponent alpha of |s| ~ h^-alpha from the two ratios
-///     (a square-root singularity gives alpha = 1/2);
-///   diverges: monotone and alpha in [kDivergenceExponentMin, kDivergenceExponentMax].
+/// The divergence verdicts of a singular row (flat punch), computed by grading/divergence.hpp:
+///   eq47: the study's Eq. 47;
+///   monotone: the magnitudes grow strictly, with one sign;
+///   exponent: the mean observed growth exponent alpha of |s| ~ h^-alpha;
+///   diverges: the strict verdict (monotone, alpha near the square-root singularity's 1/2).
 struct DivergenceVerdict {
   bool eq47 = false;
   bool monotone = false;
   std::optional<double> exponent;
   bool diverges = false;
 };
-inline constexpr double kDivergenceExponentMin = 0.25;
-inline constexpr double kDivergenceExponentMax = 0.75;
-
-/// Both verdicts from the values of a singular quantity on C, M, F (h halving per level):
-///   eq47 = |s_C - s_M| < |s_M - s_F|;
-///   alpha = (log2(s_M/s_C) + log2(s_F/s_M)) / 2 when the three have one sign;
-///   diverges = (|s_C| < |s_M| < |s_F|, one sign) and alpha in [0.25, 0.75].
-DivergenceVerdict divergence_verdict(double s_c, double s_m, double s_f);
 
 /// What the fourth mesh (VF, h/8, beyond the study) adds to a row: its value and error, the
 /// observed order of the error from F to VF, and the verdicts over M, F, VF, to set beside the
@@ -77,8 +67,8 @@ struct RowVerdict {
   std::optional<MeshLevel> graded_mesh;         ///< which mesh the grade is of
   std::optional<bool> converging;               ///< nonsingular, all three meshes present
   std::optional<bool> diverging;                ///< singular, all three meshes present (Eq. 47)
-  /// Observed orders of the error per mesh pair (C->M, M->F): log2(|e_coarse| / |e_fine|);
-  /// empty where an error is at round-off (below kErrorNoiseFloorPercent) or missing.
+  /// Observed orders of the error per mesh pair (C->M, M->F), grading::pair_order:
+  /// log2(|e_coarse| / |e_fine|); empty where an error is at round-off or missing.
   std::array<std::optional<double>, 2> pair_orders;
   std::optional<ErrorEstimate> estimate;        ///< nonsingular rows with three meshes
   std::optional<DivergenceVerdict> divergence;  ///< singular rows with three meshes

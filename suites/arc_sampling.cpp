@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "suites/grading.hpp"
+#include "grading/accuracy.hpp"
 
 namespace cs::suites {
 
@@ -35,8 +35,8 @@ QuantityResult arc_quantity(const QuantityRule& rule, const solver::ContactResul
   q.value = rule.where == SamplePoint::InterfaceMeanPressure
                 ? mean_pressure_over_exact(contact, setup)
                 : extreme_pressure_over_exact(contact, setup.p);
-  q.error_percent = error_percent(q.value, rule.exact);
-  q.grade = grade_from_error(q.error_percent);
+  q.error_percent = grading::error_percent(q.value, rule.exact);
+  q.grade = grading::grade_of_error(q.error_percent);
   return q;
 }
 

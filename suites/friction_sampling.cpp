@@ -4,7 +4,7 @@
 #include <cmath>
 #include <optional>
 
-#include "suites/grading.hpp"
+#include "grading/accuracy.hpp"
 
 namespace cs::suites {
 namespace {
@@ -57,8 +57,8 @@ QuantityResult contact_quantity(const QuantityRule& rule, const solver::ContactR
   q.study_exact = rule.study_exact;
   q.value = rule.where == SamplePoint::StickZoneEdge ? stick_half_width(contact.nodes) / a
                                                      : contact.peak_shear / p;
-  q.error_percent = error_percent(q.value, rule.exact);
-  q.grade = grade_from_error(q.error_percent);
+  q.error_percent = grading::error_percent(q.value, rule.exact);
+  q.grade = grading::grade_of_error(q.error_percent);
   return q;
 }
 

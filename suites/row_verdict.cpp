@@ -3,8 +3,11 @@
 #include <cmath>
 #include <map>
 
+#include "grading/accuracy.hpp"
+#include "grading/convergence.hpp"
+#include "grading/divergence.hpp"
+#include "grading/richardson.hpp"
 #include "suites/problem_catalog.hpp"
-#include "suites/row_estimates.hpp"
 
 namespace cs::suites {
 namespace {
@@ -17,25 +20,26 @@ std::string row_key(const CaseSpec& spec, Quantity quantity) {
 void apply_refinement_verdicts(RowVerdict& row) {
   schema::RefinementVerdict& vf = *row.refinement;
   if (row.errors[2] && vf.error)
-    vf.pair_order = pair_orders({row.errors[1], row.errors[2], vf.error})[1];
+    vf.pair_order = grading::pair_order(row.errors[2], vf.error);
   if (!row.values[1] || !row.values[2] || !vf.value)
     return;
   if (is_singular(row.spec.problem)) {
-    vf.diverging = is_diverging(*row.values[1], *row.values[2], *vf.value);
-    vf.divergence = divergence_verdict(*row.values[1], *row.values[2], *vf.value);
+    vf.divergence = grading::divergence_verdict(*row.values[1], *row.values[2], *vf.value);
+    vf.diverging = vf.divergence->eq47;
   } else if (row.errors[1] && row.errors[2] && vf.error) {
-    vf.converging = is_converging(*row.errors[1], *row.errors[2], *vf.error);
-    vf.estimate = error_estimate(*row.values[1], *row.values[2], *vf.value);
+    vf.converging = grading::study_converging(*row.errors[1], *row.errors[2], *vf.error);
+    vf.estimate = grading::error_estimate(*row.values[1], *row.values[2], *vf.value);
   }
 }
 
 void apply_verdicts(RowVerdict& row) {
   if (row.refinement)
     apply_refinement_verdicts(row);
-  row.pair_orders = pair_orders(row.errors);
+  row.pair_orders = {grading::pair_order(row.errors[0], row.errors[1]),
+                     grading::pair_order(row.errors[1], row.errors[2])};
   for (int level = 2; level >= 0; --level) {
     if (row.errors[level]) {
-      row.grade = grade_from_error(*row.errors[level]);
+      row.grade = grading::grade_of_error(*row.errors[level]);
       row.graded_mesh = static_cast<MeshLevel>(level);
       break;
     }
@@ -44,13 +48,13 @@ void apply_verdicts(RowVerdict& row) {
   if (!complete)
     return;
   if (is_singular(row.spec.problem)) {
-    row.diverging = is_diverging(*row.values[0], *row.values[1], *row.values[2]);
-    row.divergence = divergence_verdict(*row.values[0], *row.values[1], *row.values[2]);
+    row.divergence = grading::divergence_verdict(*row.values[0], *row.values[1], *row.values[2]);
+    row.diverging = row.divergence->eq47;
     row.grade.reset();  // no finite exact value to grade against
     row.graded_mesh.reset();
   } else {
-    row.converging = is_converging(*row.errors[0], *row.errors[1], *row.errors[2]);
-    row.estimate = error_estimate(*row.values[0], *row.values[1], *row.values[2]);
+    row.converging = grading::study_converging(*row.errors[0], *row.errors[1], *row.errors[2]);
+    row.estimate = grading::error_estimate(*row.values[0], *row.values[1], *row.values[2]);
   }
 }
 

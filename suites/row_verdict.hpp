@@ -1,7 +1,7 @@
 #pragma once
-// The study's unit of assessment (schema/row_verdict.hpp) and the rules that make it: cases
-// that differ only in mesh level form one row per quantity, graded on the finest mesh present
-// (Eq. 46) and checked for convergence or, for the singular problems, divergence (Eq. 47).
+// The study's unit of assessment (schema/row_verdict.hpp), assembled: cases that differ only in
+// mesh level form one row per quantity, graded on the finest mesh present (Eq. 46) and checked
+// for convergence or, for the singular problems, divergence (Eq. 47), by the rules of grading/.
 
 #include <vector>
 

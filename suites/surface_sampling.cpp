@@ -6,6 +6,7 @@
 #include <optional>
 #include <stdexcept>
 
+#include "grading/accuracy.hpp"
 #include "suites/arc_sampling.hpp"
 #include "suites/friction_sampling.hpp"
 
@@ -161,8 +162,8 @@ void sample_quantities(const ProblemSetup& setup,
       q.quantity = rule.quantity;
       q.exact = rule.exact;
       q.value = contact_edge(contact) / setup.length_unit;
-      q.error_percent = error_percent(q.value, rule.exact);
-      q.grade = grade_from_error(q.error_percent);
+      q.error_percent = grading::error_percent(q.value, rule.exact);
+      q.grade = grading::grade_of_error(q.error_percent);
       result.quantities.push_back(q);
       continue;
     }
@@ -176,8 +177,8 @@ void sample_quantities(const ProblemSetup& setup,
     const int i = sample_index(x_nodal, values, rule.where, a);
     q.value = i >= 0 ? values[i] : std::nan("");
     if (std::isfinite(rule.exact)) {
-      q.error_percent = error_percent(q.value, rule.exact);
-      q.grade = grade_from_error(q.error_percent);
+      q.error_percent = grading::error_percent(q.value, rule.exact);
+      q.grade = grading::grade_of_error(q.error_percent);
     }
     if (rule.component == StressComponent::TauXZ && solution != nullptr)
       q.contact_pressure = solution->peak_shear / p;  // the contact's own peak shear

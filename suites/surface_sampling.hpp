@@ -7,7 +7,7 @@
 //
 //   value of a rule = -sigma_c(node*)/p, node* = argmax over the surface nodes of -sigma_c/p
 //     (MaxOnSurface), the node nearest x = 0 (AtAxis) or nearest x = a (AtEdge);
-//   error = 100 (value - exact) / exact, graded by Eq. 46 (suites/grading.hpp);
+//   error = 100 (value - exact) / exact, graded by Eq. 46 (grading/accuracy.hpp);
 //   contact_pressure = pressure(node')/p with node' chosen by the same rule over the contact
 //     nodes (sigma_z quantities only).
 

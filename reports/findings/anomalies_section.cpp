@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include "grading/convergence.hpp"
 #include "reports/tables/markdown_table.hpp"
 #include "reports/tables/option_classes.hpp"
 
@@ -206,11 +207,9 @@ std::string crossings(const ResultsIndex& index) {
   std::vector<std::string> rows;
   int converging = 0;
   for (const schema::RowVerdict* r : index.baseline_rows()) {
-    if (!r->grade || schema::is_worse(*r->grade, schema::Grade::g) || !r->errors[2])
-      continue;
-    const double coarse =
-        std::max(std::abs(r->errors[0].value_or(0.0)), std::abs(r->errors[1].value_or(0.0)));
-    if (coarse < 100.0)
+    if (!r->grade || !r->errors[2] ||
+        !grading::luck_of_one_mesh(r->errors[0].value_or(0.0), r->errors[1].value_or(0.0),
+                                   *r->errors[2]))
       continue;
     converging += r->converging.value_or(false) ? 1 : 0;
     rows.push_back(fmt::format(

@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include "grading/accuracy.hpp"
 #include "reports/tables/grade_tables.hpp"
 #include "reports/tables/markdown_table.hpp"
 
@@ -28,7 +29,7 @@ std::optional<double> pressure_error(const ResultsIndex& index, const RowVerdict
   const schema::QuantityResult* q = index.quantity_of(row, mesh);
   if (q == nullptr || !q->contact_pressure || !std::isfinite(q->exact) || q->exact == 0.0)
     return std::nullopt;
-  return 100.0 * (*q->contact_pressure - q->exact) / std::abs(q->exact);
+  return grading::error_percent(*q->contact_pressure, q->exact);
 }
 
 std::vector<RecoveryPair> graded_pairs(const ResultsIndex& index) {

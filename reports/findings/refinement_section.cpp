@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include "grading/accuracy.hpp"
 #include "reports/findings/variant_rows.hpp"
 #include "reports/tables/markdown_table.hpp"
 
@@ -80,7 +81,7 @@ std::string estimates_table(const ResultsIndex& index) {
     const std::optional<double> exact = index.exact_of(*row);
     std::optional<double> limit_error;
     if (exact && e.richardson && *exact != 0.0)
-      limit_error = 100.0 * (*e.richardson - *exact) / std::abs(*exact);
+      limit_error = grading::error_percent(*e.richardson, *exact);
     table.add_row({row_label(*row), format_value(row->values[2]), percent_cell(row->errors[2]),
                    number_cell(e.observed_order, "{:.2f}"), format_value(e.richardson),
                    percent_cell(limit_error),

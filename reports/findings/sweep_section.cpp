@@ -9,6 +9,7 @@
 
 #include <fmt/format.h>
 
+#include "grading/accuracy.hpp"
 #include "reports/figures/sweep_figure.hpp"
 #include "reports/findings/sweep_series.hpp"
 #include "reports/tables/markdown_table.hpp"
@@ -298,7 +299,7 @@ std::string study_al_answer(const std::vector<SweepSeries>& series, const StudyR
                        Algorithm::AL, schema::ContactKind::ss, schema::MeshLevel::F);
   if (match.value == nullptr || !match.value->exact)
     return "";
-  const double target = 100.0 * (match.value->value - *match.value->exact) / *match.value->exact;
+  const double target = grading::error_percent(match.value->value, *match.value->exact);
   std::string out;
   for (const auto& s : series) {
     if (s.base.problem != schema::ProblemId::S_1_3 || s.base.algorithm != Algorithm::AL ||

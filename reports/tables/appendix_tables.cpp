@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include "grading/accuracy.hpp"
 #include "reports/tables/markdown_table.hpp"
 #include "reports/tables/option_classes.hpp"
 
@@ -302,7 +303,7 @@ std::string exact_value_line(const ResultsIndex& index, const StudyReference& st
     line += fmt::format(
         "; the study printed {} and graded its ANSYS values against that, {} from ours, so "
         "its grades rest on a different exact value (compare its columns with its own)",
-        printed, format_percent(100.0 * (*printed_value - *exact) / *exact));
+        printed, format_percent(grading::error_percent(*printed_value, *exact)));
     if (study_exact && format_value(*study_exact) != printed) {
       line += fmt::format(
           "; the study's convention elsewhere (docs/conventions.md) gives {} here, so its "

@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 
+#include "grading/divergence.hpp"
 #include "reports/tables/markdown_table.hpp"
 
 namespace cs::reports {
@@ -38,10 +39,6 @@ std::string exponent_cell(const std::optional<schema::DivergenceVerdict>& d) {
 
 }  // namespace
 
-bool satisfies_eq47(double c, double m, double f) {
-  return schema::divergence_verdict(c, m, f).eq47;
-}
-
 std::string strict_failure_reason(const std::array<std::optional<double>, 3>& v,
                                   const schema::DivergenceVerdict& d) {
   if (d.diverges)
@@ -57,8 +54,8 @@ std::string strict_failure_reason(const std::array<std::optional<double>, 3>& v,
     return std::string(tensile ? "tensile, " : "") + (shrinking ? "shrinking" : "not monotone");
   }
   return fmt::format("grows at α {} per halving of h, outside [{}, {}]",
-                     format_exponent(*d.exponent), schema::kDivergenceExponentMin,
-                     schema::kDivergenceExponentMax);
+                     format_exponent(*d.exponent), grading::kDivergenceExponentMin,
+                     grading::kDivergenceExponentMax);
 }
 
 std::vector<DivergenceRow> build_divergence_rows(const ResultsIndex& index,
@@ -80,8 +77,8 @@ std::vector<DivergenceRow> build_divergence_rows(const ResultsIndex& index,
               d.study_values[mesh_index(mesh)] = match.value->value;
           }
           if (d.study_values[0] && d.study_values[1] && d.study_values[2]) {
-            d.study_divergence = schema::divergence_verdict(*d.study_values[0], *d.study_values[1],
-                                                            *d.study_values[2]);
+            d.study_divergence = grading::divergence_verdict(*d.study_values[0], *d.study_values[1],
+                                                             *d.study_values[2]);
             d.study_diverging = d.study_divergence->eq47;
           }
           out.push_back(d);
@@ -140,7 +137,7 @@ std::string divergence_section(const ResultsIndex& index, const StudyReference& 
       "square-root singularity at a flat punch's edge (a growth of √2 per halving of h). The "
       "study found Eq. 47 \"complied with for all contact elements and options\"; its columns "
       "apply both verdicts to its printed values.\n\n",
-      schema::kDivergenceExponentMin, schema::kDivergenceExponentMax);
+      grading::kDivergenceExponentMin, grading::kDivergenceExponentMax);
   out += table.render() + "\n";
   out += fmt::format(
       "- Ours: by Eq. 47 {} option set(s) diverge, {} do not, {} without a verdict (— : not "

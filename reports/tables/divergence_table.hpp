@@ -1,6 +1,6 @@
 #pragma once
 // The flat-punch divergence table: for F_p and F_a, per element and option set, the edge
-// stress on C, M, F with two verdicts (schema::divergence_verdict): the study's Eq. 47,
+// stress on C, M, F with two verdicts (grading::divergence_verdict): the study's Eq. 47,
 // |s_C - s_M| < |s_M - s_F|, and the strict one, monotone growth of one sign at a rate alpha
 // (|s| ~ h^-alpha) near the square-root singularity's 1/2; beside the study's ANSYS values
 // with both verdicts applied to them.
@@ -32,9 +32,6 @@ struct DivergenceRow {
 /// "grows too slowly (α 0.05)"); empty when it diverges.
 std::string strict_failure_reason(const std::array<std::optional<double>, 3>& values,
                                   const schema::DivergenceVerdict& d);
-
-/// Eq. 47: |s_C - s_M| < |s_M - s_F|.
-bool satisfies_eq47(double c, double m, double f);
 
 /// The rows of the singular problems (F_p, F_a) present in the results, in the study's order.
 std::vector<DivergenceRow> build_divergence_rows(const ResultsIndex& index,

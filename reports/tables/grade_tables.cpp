@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include "grading/accuracy.hpp"
 #include "reports/tables/markdown_table.hpp"
 #include "reports/tables/option_classes.hpp"
 
@@ -168,8 +169,8 @@ std::string ansys_physical_regrade(const ResultsIndex& index, const StudyReferen
     return {};
   if (std::abs(*match.value->exact - *exact) <= 1e-4 * std::abs(*exact))
     return {};  // the study's exact value is ours
-  const double error = 100.0 * (match.value->value - *exact) / *exact;
-  return fmt::format(" (phys. {})", schema::to_string(schema::grade_of_error(error)));
+  const double error = grading::error_percent(match.value->value, *exact);
+  return fmt::format(" (phys. {})", schema::to_string(grading::grade_of_error(error)));
 }
 
 /// Our cell of one option class, beside the study's grade; counts the comparison.

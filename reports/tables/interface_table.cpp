@@ -1,12 +1,11 @@
 #include "reports/tables/interface_table.hpp"
 
-#include <array>
 #include <cmath>
-#include <functional>
 #include <map>
 
 #include <fmt/format.h>
 
+#include "grading/interface_check_rules.hpp"
 #include "reports/tables/markdown_table.hpp"
 
 namespace cs::reports {
@@ -14,32 +13,6 @@ namespace {
 
 /// Largest number of failing option sets listed.
 constexpr std::size_t kListed = 40;
-
-struct CheckDefinition {
-  const char* name;  ///< as InterfaceChecks::failures() names it
-  const char* measure;
-  double tolerance;
-  std::function<std::optional<double>(const schema::InterfaceChecks&)> value;
-};
-
-const std::array<CheckDefinition, 4>& checks() {
-  static const std::array<CheckDefinition, 4> all{{
-      {"force balance", "|Σ nodal contact forces − load| / load", schema::kForceBalanceTolerance,
-       [](const schema::InterfaceChecks& c) -> std::optional<double> {
-         return c.force_balance ? std::optional(std::abs(*c.force_balance)) : std::nullopt;
-       }},
-      {"tensile pressure", "largest tensile contact pressure / p", schema::kTensileTolerance,
-       [](const schema::InterfaceChecks& c) { return c.max_tensile_over_p; }},
-      {"pressure outside the patch",
-       "largest contact pressure / p more than one element beyond the exact patch",
-       schema::kOutsideTolerance,
-       [](const schema::InterfaceChecks& c) { return c.max_outside_over_p; }},
-      {"penetration", "largest penetration / element size at the contact",
-       schema::kPenetrationTolerance,
-       [](const schema::InterfaceChecks& c) { return c.max_penetration_over_h; }},
-  }};
-  return all;
-}
 
 /// The cases the section covers: the study's option sets and the problems beyond it, once
 /// (extrapolated twins share the contact solution of their patch-recovered case).
@@ -54,28 +27,28 @@ struct Failing {
 
 std::string summary_table(const ResultsIndex& index) {
   MarkdownTable table({"Check", "Measure", "Tolerance", "Cases checked", "Failing", "Worst case"});
-  for (const auto& check : checks()) {
+  for (const auto& check : grading::interface_check_rules()) {
     int checked = 0, failing = 0;
     const schema::CaseResult* worst = nullptr;
     double worst_value = -1.0;
     for (const auto& c : index.results().cases) {
       if (!covered(c))
         continue;
-      const auto v = check.value(*c.interface);
+      const auto v = check.measure(*c.interface);
       if (!v)
         continue;
       ++checked;
-      failing += *v > check.tolerance ? 1 : 0;
+      failing += grading::fails(check, *v) ? 1 : 0;
       if (*v > worst_value) {
         worst_value = *v;
         worst = &c;
       }
     }
-    table.add_row({check.name, check.measure, fmt::format("{:g}", check.tolerance),
-                   std::to_string(checked), std::to_string(failing),
-                   worst != nullptr
-                       ? fmt::format("`{}`: {:.3g}", schema::case_id(worst->spec), worst_value)
-                       : std::string(kMissing)});
+    table.add_row(
+        {std::string(check.name), std::string(check.measure_text),
+         fmt::format("{:g}", check.tolerance), std::to_string(checked), std::to_string(failing),
+         worst != nullptr ? fmt::format("`{}`: {:.3g}", schema::case_id(worst->spec), worst_value)
+                          : std::string(kMissing)});
   }
   return table.render();
 }
@@ -87,9 +60,9 @@ std::string failing_table(const ResultsIndex& index, std::size_t& n_failing) {
   for (const auto& c : index.results().cases) {
     if (!covered(c))
       continue;
-    for (const auto& check : checks()) {
-      const auto v = check.value(*c.interface);
-      if (!v || *v <= check.tolerance)
+    for (const auto& check : grading::interface_check_rules()) {
+      const auto v = check.measure(*c.interface);
+      if (!v || !grading::fails(check, *v))
         continue;
       const std::string variant = variant_of(c.spec);
       const std::string key = fmt::format(

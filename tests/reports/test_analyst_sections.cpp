@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include "grading/divergence.hpp"
 #include "report_test_support.hpp"
 #include "reports/findings/anomalies_section.hpp"
 #include "reports/tables/divergence_table.hpp"
@@ -90,13 +91,13 @@ TEST(StrictDivergence, TheIssuesSequencesDoNotDiverge) {
   for (const Case& c :
        {Case{{-11.97, -12.02, -10.71}, "tensile, not monotone"},
         Case{{73.55, 73.30, 72.94}, "shrinking"}, Case{{3.156, 2.690, 3.164}, "not monotone"}}) {
-    const auto d = schema::divergence_verdict(c.v[0], c.v[1], c.v[2]);
+    const auto d = grading::divergence_verdict(c.v[0], c.v[1], c.v[2]);
     EXPECT_TRUE(d.eq47) << c.reason;
     EXPECT_FALSE(d.diverges) << c.reason;
     EXPECT_EQ(strict_failure_reason({c.v[0], c.v[1], c.v[2]}, d), c.reason);
   }
   const double s = 1.5;
-  const auto sqrt_growth = schema::divergence_verdict(s, s * std::sqrt(2.0), 2.0 * s);
+  const auto sqrt_growth = grading::divergence_verdict(s, s * std::sqrt(2.0), 2.0 * s);
   EXPECT_TRUE(sqrt_growth.diverges);
   EXPECT_NEAR(*sqrt_growth.exponent, 0.5, 1e-12);
   EXPECT_EQ(strict_failure_reason({s, s * std::sqrt(2.0), 2.0 * s}, sqrt_growth), "");

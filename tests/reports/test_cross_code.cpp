@@ -12,6 +12,7 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include "grading/accuracy.hpp"
 #include "report_test_support.hpp"
 #include "reports/figures/cross_code_figure.hpp"
 #include "reports/report_writer.hpp"
@@ -71,7 +72,7 @@ CaseResult hertz_case(SolverKind solver, MeshLevel mesh, double error, double wa
   q.exact = kHertzExact;
   q.value = kHertzExact * (1 + error / 100);
   q.error_percent = error;
-  q.grade = schema::grade_of_error(error);
+  q.grade = grading::grade_of_error(error);
   c.quantities.push_back(q);
   // A pressure profile on a few nodes: the exact one scaled by the error.
   for (double x : {0.0, 0.5, 0.9}) {

@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include "grading/accuracy.hpp"
 #include "reports/findings/extent_section.hpp"
 #include "schema/results_file.hpp"
 
@@ -48,11 +49,11 @@ void add_row(schema::ResultsDocument& doc, schema::Algorithm algorithm, double e
     q.value = values[m];
     q.exact = kExact;
     q.error_percent = *row.errors[m];
-    q.grade = schema::grade_of_error(q.error_percent);
+    q.grade = grading::grade_of_error(q.error_percent);
     c.quantities.push_back(q);
     doc.cases.push_back(c);
   }
-  row.grade = schema::grade_of_error(*row.errors[2]);
+  row.grade = grading::grade_of_error(*row.errors[2]);
   row.graded_mesh = schema::MeshLevel::F;
   row.converging = true;
   row.estimate = schema::ErrorEstimate{true, 2.0, limit, 0.1, ""};

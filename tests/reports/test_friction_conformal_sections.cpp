@@ -13,6 +13,7 @@
 
 #include <gtest/gtest.h>
 
+#include "grading/accuracy.hpp"
 #include "report_test_support.hpp"
 #include "reports/tables/conformal_section.hpp"
 #include "reports/tables/friction_section.hpp"
@@ -41,7 +42,7 @@ schema::RowVerdict row(ProblemId problem, Quantity q, Element element, Algorithm
     r.errors[m] = errors[m];
     r.values[m] = exact * (1.0 + errors[m] / 100.0);
   }
-  r.grade = schema::grade_of_error(errors[2]);
+  r.grade = grading::grade_of_error(errors[2]);
   r.graded_mesh = schema::MeshLevel::F;
   r.converging = std::abs(errors[2]) < std::abs(errors[0]);
   return r;

@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include "grading/accuracy.hpp"
 #include "report_test_support.hpp"
 #include "reports/figures/sweep_figure.hpp"
 #include "reports/findings/sweep_section.hpp"
@@ -39,7 +40,7 @@ CaseResult swept_case(ProblemId p, Element e, Algorithm a, const std::string& ke
   q.exact = 1.0;
   q.value = 1.0 + error / 100.0;
   q.error_percent = error;
-  q.grade = schema::grade_of_error(error);
+  q.grade = grading::grade_of_error(error);
   c.quantities.push_back(q);
   return c;
 }

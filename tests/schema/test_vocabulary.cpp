@@ -11,6 +11,7 @@
 
 #include "schema/case_axes.hpp"
 #include "schema/case_spec.hpp"
+#include "schema/convergence_trend.hpp"
 #include "schema/grade.hpp"
 #include "schema/quantity.hpp"
 #include "schema/schema_error.hpp"
@@ -43,6 +44,7 @@ TEST(SchemaVocabulary, EveryAxisRoundTrips) {
   expect_round_trip<Quantity>(9);
   expect_round_trip<Grade>(4);
   expect_round_trip<CaseStatus>(4);
+  expect_round_trip<Trend>(3);
 }
 
 TEST(SchemaVocabulary, AliasesParseToTheirEnumerator) {

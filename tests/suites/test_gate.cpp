@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include "grading/accuracy.hpp"
 #include "schema/baseline_file.hpp"
 #include "schema/schema_error.hpp"
 #include "suites/gate.hpp"
@@ -23,8 +24,8 @@ CaseResult hertz_case(MeshLevel mesh, double value) {
   q.quantity = Quantity::sigma_c;
   q.exact = 4.0 / M_PI;
   q.value = value;
-  q.error_percent = error_percent(value, q.exact);
-  q.grade = grade_from_error(q.error_percent);
+  q.error_percent = grading::error_percent(value, q.exact);
+  q.grade = grading::grade_of_error(q.error_percent);
   r.quantities.push_back(q);
   return r;
 }

@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include "grading/interface_check_rules.hpp"
 #include "schema/interface_checks.hpp"
 #include "suites/case_matrix.hpp"
 #include "suites/problem_executor.hpp"
@@ -46,7 +47,7 @@ TEST(InterfaceChecks, ContactForcesCarryTheWholeLoad) {
       // Node-to-surface against the faceted rounded punch closes beyond the exact edge (a
       // finding of the check, asserted below); the integrated discretizations do not.
       if (c != ContactKind::ns || p != ProblemId::S_1_3) {
-        EXPECT_TRUE(r.interface->failures().empty()) << case_id(r.spec);
+        EXPECT_TRUE(grading::interface_failures(*r.interface).empty()) << case_id(r.spec);
       }
     }
   }
@@ -82,7 +83,7 @@ TEST(InterfaceChecks, PenetrationGrowsAsThePenaltySoftens) {
   const CaseResult r = run_one(soft);
   ASSERT_TRUE(r.interface && r.interface->max_penetration_over_h);
   EXPECT_GT(*r.interface->max_penetration_over_h, schema::kPenetrationTolerance);
-  const auto failures = r.interface->failures();
+  const auto failures = grading::interface_failures(*r.interface);
   EXPECT_NE(std::find(failures.begin(), failures.end(), "penetration"), failures.end());
   const CaseResult lm = run_one(spec_of(ProblemId::H_p, Algorithm::LMP, ContactKind::ns));
   ASSERT_TRUE(lm.interface && lm.interface->max_penetration_over_h);

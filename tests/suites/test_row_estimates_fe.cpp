@@ -1,4 +1,4 @@
-// The error estimator (suites/row_estimates.hpp) on real finite-element sequences whose exact
+// The error estimator (grading/richardson.hpp) on real finite-element sequences whose exact
 // answer and order are known: Lame's thick cylinder under internal pressure (the bore's radial
 // displacement, Q4 nodal values converge at O(h^2)), and the suite's Hertz problem against its
 // oracle (4/pi). The observed order, the Richardson limit and the GCI must tell the truth about
@@ -8,10 +8,10 @@
 
 #include <gtest/gtest.h>
 
+#include "grading/richardson.hpp"
 #include "solver/linear_static.hpp"
 #include "solver/test_fe_support.hpp"
 #include "suites/problem_executor.hpp"
-#include "suites/row_estimates.hpp"
 #include "support/tolerance.hpp"
 
 namespace cs::suites {
@@ -51,7 +51,7 @@ double bore_displacement(int n) {
 // and a GCI that bounds the fine value's true error.
 TEST(RowEstimatesFe, LameBoreDisplacementHasOrderTwoAndItsLimit) {
   const double c = bore_displacement(8), m = bore_displacement(16), f = bore_displacement(32);
-  const schema::ErrorEstimate e = error_estimate(c, m, f);
+  const schema::ErrorEstimate e = grading::error_estimate(c, m, f);
   ASSERT_TRUE(e.asymptotic) << e.note;
   EXPECT_NEAR(*e.observed_order, 2.0, 0.05);
   const double fine_error = std::abs(f - kExactBore);
@@ -86,7 +86,7 @@ TEST(RowEstimatesFe, HertzEstimateAgreesWithTheOracle) {
   const double exact = 4.0 / M_PI;
   const double c = hertz_sigma_c(MeshLevel::C), m = hertz_sigma_c(MeshLevel::M),
                f = hertz_sigma_c(MeshLevel::F);
-  const schema::ErrorEstimate e = error_estimate(c, m, f);
+  const schema::ErrorEstimate e = grading::error_estimate(c, m, f);
   std::printf("    H_p Q8 LMP mortar sigma_c: %.6f %.6f %.6f; %s p = %.3f, R = %.6f, GCI %.3g %%\n",
               c, m, f, e.asymptotic ? "asymptotic" : e.note.c_str(), e.observed_order.value_or(NAN),
               e.richardson.value_or(NAN), e.gci_percent.value_or(NAN));

@@ -1,0 +1,46 @@
+// Requirement: the signed percentage error is relative to the exact value's magnitude, and
+// Eq. 46 grades its magnitude with each boundary in the worse grade and NaN unsatisfactory.
+
+#include <cmath>
+#include <limits>
+
+#include <gtest/gtest.h>
+
+#include "grading/accuracy.hpp"
+
+namespace cs::grading {
+namespace {
+
+using schema::Grade;
+
+TEST(Accuracy, Eq46BoundariesBelongToTheWorseGrade) {
+  EXPECT_EQ(grade_of_error(0.0), Grade::e);
+  EXPECT_EQ(grade_of_error(0.999), Grade::e);
+  EXPECT_EQ(grade_of_error(-0.999), Grade::e);
+  EXPECT_EQ(grade_of_error(1.0), Grade::g);
+  EXPECT_EQ(grade_of_error(-4.999), Grade::g);
+  EXPECT_EQ(grade_of_error(5.0), Grade::s);
+  EXPECT_EQ(grade_of_error(9.999), Grade::s);
+  EXPECT_EQ(grade_of_error(10.0), Grade::u);
+  EXPECT_EQ(grade_of_error(-250.0), Grade::u);
+  EXPECT_EQ(grade_of_error(std::numeric_limits<double>::quiet_NaN()), Grade::u);
+  EXPECT_EQ(grade_of_error(std::numeric_limits<double>::infinity()), Grade::u);
+}
+
+TEST(Accuracy, ErrorPercentIsSignedAndRelativeToTheExactMagnitude) {
+  // Binary-exact operands, so the results are exact.
+  EXPECT_EQ(error_percent(1.25, 1.0), 25.0);
+  EXPECT_EQ(error_percent(0.75, 1.0), -25.0);
+  EXPECT_EQ(error_percent(-1.25, -1.0), -25.0);  // below a negative exact value: negative
+  EXPECT_EQ(error_percent(3.0, 2.0), 50.0);
+}
+
+TEST(Accuracy, StudyTable3aValueGradesAsTheStudyGradesIt) {
+  // Table 3a LMP/PLM fine mesh 1.0019 against 1: graded 'e' in Table 2a.
+  EXPECT_EQ(grade_of_error(error_percent(1.0019, 1.0)), Grade::e);
+  // Table 7a (4Q, ss, AL/PM) fine mesh 1.2737 against 4/pi: 'e' in Table 2a.
+  EXPECT_EQ(grade_of_error(error_percent(1.2737, 4.0 / M_PI)), Grade::e);
+}
+
+}  // namespace
+}  // namespace cs::grading

@@ -1,0 +1,120 @@
+// Requirement: the study's 'c' stays the study's rule (0.01-point resolution); the noise-aware
+// verdict calls a plateau settled whichever way noise of a few thousandths of a point falls,
+// and names the bound that set its floor; no order is fitted to a non-monotone, noise-level or
+// pre-asymptotic sequence; a fine grade after an unresolved coarse mesh is the luck of one mesh.
+
+#include <cmath>
+#include <limits>
+
+#include <gtest/gtest.h>
+
+#include "grading/convergence.hpp"
+#include "support/tolerance.hpp"
+
+namespace cs::grading {
+namespace {
+
+using cs::testing::Near;
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+TEST(StudyConverging, IsTheStudysRule) {
+  // Table 7a (4Q, ss, AL/PM) 1.2628, 1.2704, 1.2737 against 4/pi: Table 2a marks it 'c'.
+  const double exact = 4.0 / M_PI;
+  auto e = [&](double v) { return 100.0 * (v - exact) / exact; };
+  EXPECT_TRUE(study_converging(e(1.2628), e(1.2704), e(1.2737)));
+  // Table 3a LMP/PLM 1.0001, 1.0003, 1.0019: not converging in Table 2a.
+  EXPECT_FALSE(study_converging(0.01, 0.03, 0.19));
+  EXPECT_TRUE(study_converging(1e-12, 3e-12, 2e-12));  // exact on every mesh
+  EXPECT_FALSE(study_converging(5.0, 5.0, 5.0));       // stuck at 5 %
+  EXPECT_FALSE(study_converging(1.0, 2.0, 0.5));       // grows on M
+  EXPECT_FALSE(study_converging(kNaN, 1.0, 0.5));
+}
+
+TEST(StudyConverging, FlipsOnNoiseAtAPlateau) {
+  // Issue 23, item 5: S(1/3) Q8 LMP ss gets no c, LMP ns gets c, on 0.001-point differences.
+  EXPECT_FALSE(study_converging(-0.3194, -0.3217, -0.3130));
+  EXPECT_TRUE(study_converging(-0.3238, -0.3239, -0.3124));
+}
+
+TEST(AssessConvergence, ThePlateauOfSOneThirdIsSettledBothWays) {
+  const auto ss = assess_convergence(-0.3194, -0.3217, -0.3130);
+  const auto ns = assess_convergence(-0.3238, -0.3239, -0.3124);
+  EXPECT_EQ(ss.trend, Trend::settled);
+  EXPECT_EQ(ns.trend, Trend::settled);
+  // The floor is a tenth of |e_F|, 0.0313 and 0.03124 points, above the 0.01 resolution.
+  EXPECT_TRUE(Near(ss.floor_percent, 0.03130, {1e-12, 0}));  // machine precision
+  EXPECT_NE(ss.floor_reason.find("a tenth of the F error"), std::string::npos) << ss.floor_reason;
+}
+
+TEST(AssessConvergence, ConvergingAndNotConverging) {
+  const auto falling = assess_convergence(4.0, 1.0, 0.25);
+  EXPECT_EQ(falling.trend, Trend::converging);
+  EXPECT_EQ(assess_convergence(1.0, 2.0, 3.0).trend, Trend::not_converging);
+  EXPECT_EQ(assess_convergence(-4.0, 1.0, -0.25).trend, Trend::converging);   // magnitudes fall
+  EXPECT_EQ(assess_convergence(4.0, 1.0, 3.0).trend, Trend::not_converging);  // grows on F
+  EXPECT_EQ(assess_convergence(kNaN, 1.0, 0.5).trend, Trend::not_converging);
+}
+
+TEST(AssessConvergence, SmallErrorsUseTheStudysResolutionAsTheFloor) {
+  const auto exact = assess_convergence(1e-12, 3e-12, 2e-12);
+  EXPECT_EQ(exact.trend, Trend::settled);
+  EXPECT_EQ(exact.floor_percent, kErrorResolutionPercent);
+  EXPECT_NE(exact.floor_reason.find("resolution"), std::string::npos) << exact.floor_reason;
+  // 0.05 -> 0.03 -> 0.02: the first change, 0.02 points, exceeds the floor of 0.01: not
+  // settled; the error falls by more than the floor: converging.
+  EXPECT_EQ(assess_convergence(0.05, 0.03, 0.02).trend, Trend::converging);
+}
+
+TEST(ObservedOrder, OrderTwoOfAnExactPowerLaw) {
+  const auto o = observed_order(4.0, 1.0, 0.25);
+  ASSERT_TRUE(o.order.has_value()) << o.note;
+  EXPECT_TRUE(Near(*o.order, 2.0, {1e-12, 0}));  // machine precision
+  EXPECT_TRUE(o.note.empty());
+}
+
+TEST(ObservedOrder, NoOrderForThePreAsymptoticMpcRow) {
+  // Issue 23: S(1/3) Q4 MPC ss runs 445 -> 310 -> 0.68 %, once fitted an order of 4.7.
+  const auto o = observed_order(445.0, 310.0, 0.68);
+  EXPECT_FALSE(o.order.has_value());
+  ASSERT_TRUE(o.pair_orders[0] && o.pair_orders[1]);
+  EXPECT_TRUE(Near(*o.pair_orders[0], std::log2(445.0 / 310.0), {1e-12, 0}));
+  EXPECT_NE(o.note.find("pre-asymptotic"), std::string::npos) << o.note;
+  // H_p Q4 MPC ss: -116 -> -39 -> -4.8 %, pair orders 1.57 and 3.02.
+  EXPECT_FALSE(observed_order(-116.0, -39.0, -4.8).order.has_value());
+}
+
+TEST(ObservedOrder, NoOrderForNoiseOrNonMonotoneSequences) {
+  const auto plateau = observed_order(-0.3194, -0.3217, -0.3130);
+  EXPECT_FALSE(plateau.order.has_value());
+  EXPECT_EQ(plateau.note, "at noise level");
+  const auto round_off = observed_order(4.0, 1.0, 1e-12);
+  EXPECT_FALSE(round_off.order.has_value());
+  EXPECT_FALSE(round_off.pair_orders[1].has_value());  // 1e-12 % is round-off
+  EXPECT_EQ(round_off.note, "at noise level");
+  const auto growing = observed_order(1.0, 2.0, 3.0);
+  EXPECT_FALSE(growing.order.has_value());
+  EXPECT_EQ(growing.note, "not monotone");
+  // 4 -> 4.05 -> 1: converging (the growth on M is within the floor of 0.1) but p1 < 0.
+  const auto dip = observed_order(4.0, 4.05, 1.0);
+  EXPECT_FALSE(dip.order.has_value());
+  EXPECT_EQ(dip.note, "not monotone");
+}
+
+TEST(PairOrder, MissingOrRoundOffErrorsHaveNoOrder) {
+  EXPECT_TRUE(Near(*pair_order(4.0, 1.0), 2.0, {1e-12, 0}));
+  EXPECT_TRUE(Near(*pair_order(-4.0, 2.0), 1.0, {1e-12, 0}));  // magnitudes
+  EXPECT_FALSE(pair_order(std::nullopt, 1.0).has_value());
+  EXPECT_FALSE(pair_order(1.0, 1e-9).has_value());
+}
+
+TEST(LuckOfOneMesh, AFineGradeAfterAnUnresolvedMesh) {
+  EXPECT_TRUE(luck_of_one_mesh(445.0, 310.0, 0.68));   // e on F
+  EXPECT_TRUE(luck_of_one_mesh(-116.0, -39.0, -4.8));  // g on F, from C
+  EXPECT_TRUE(luck_of_one_mesh(0.0, 100.0, 4.0));      // from M; missing C passed as 0
+  EXPECT_FALSE(luck_of_one_mesh(99.0, 60.0, 0.5));     // never unresolved
+  EXPECT_FALSE(luck_of_one_mesh(445.0, 310.0, 5.0));   // s on F: no good grade to discount
+}
+
+}  // namespace
+}  // namespace cs::grading
