@@ -288,9 +288,9 @@ TEST(OutputSafety, SigkillAtRandomMomentsLeavesOneWholeSet) {
     EXPECT_FALSE(whole_set_problem(d).empty()) << "attempt " << i << ": a mixed or partial set";
   }
   std::printf(
-      "24 kills (seed %u): %d runs finished before their kill, %d commits rolled "
-      "forward\n",
-      seed, finished, rolled_forward);
+      "24 kills (seed %u; solve phase 0-%.2f s, report phase %.2f-%.2f s): %d runs finished "
+      "before their kill, %d commits rolled forward\n",
+      seed, solve, solve, total, finished, rolled_forward);
   ASSERT_EQ(run_args(root, run_of("P_p", true)).exit_code, 0);
   EXPECT_EQ(whole_set_problem(d), "P_p");
   for (const auto& e : fs::directory_iterator(d)) {
