@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "platform/output_directory.hpp"
+#include "platform/platform_error.hpp"
 
 namespace cs::platform {
 namespace fs = std::filesystem;
@@ -25,8 +26,8 @@ const std::string kOld = std::string(kOwnershipMark) + ".old";
 const std::string kStagingPrefix = std::string(kOwnershipMark) + ".staging-";
 const std::string kResults = "results.json";
 
-std::runtime_error failure(const std::string& what, const fs::path& path, int error) {
-  return std::runtime_error(what + " '" + path.string() + "': " + std::strerror(error));
+OutputError failure(const std::string& what, const fs::path& path, int error) {
+  return OutputError(what + " '" + path.string() + "': " + std::strerror(error));
 }
 
 bool exists_no_follow(const fs::path& p, struct stat* st = nullptr) {

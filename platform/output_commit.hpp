@@ -18,13 +18,13 @@
 
 namespace cs::platform {
 
-/// Steps 1-3 for `staging`, a directory inside `dir`. Throws std::runtime_error naming the
+/// Steps 1-3 for `staging`, a directory inside `dir`. Throws OutputError naming the
 /// cause when a write or rename fails (before step 2, `dir` is unchanged).
 void commit_staged_set(const std::filesystem::path& dir, const std::filesystem::path& staging);
 
 /// Finishes an interrupted commit in `dir` (step 3 from its journal) and removes what killed
 /// transactions left: `.contact-suite.old` and `.contact-suite.staging-*`. The caller holds the
-/// lock of `dir`. Throws std::runtime_error when a rename fails.
+/// lock of `dir`. Throws OutputError when a rename fails.
 void recover_output_directory(const std::filesystem::path& dir);
 
 }  // namespace cs::platform

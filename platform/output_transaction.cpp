@@ -21,8 +21,8 @@ std::string quoted(const fs::path& p) {
   return "'" + p.string() + "'";
 }
 
-std::runtime_error failure(const std::string& what, const fs::path& path, int error) {
-  return std::runtime_error(what + " " + quoted(path) + ": " + std::strerror(error));
+OutputError failure(const std::string& what, const fs::path& path, int error) {
+  return OutputError(what + " " + quoted(path) + ": " + std::strerror(error));
 }
 
 /// Writes `text` as the whole of the open file `fd`.
@@ -133,7 +133,7 @@ void OutputTransaction::write_text(const std::string& relative, std::string_view
   std::error_code ec;
   fs::create_directories(path.parent_path(), ec);
   if (ec)
-    throw std::runtime_error("cannot create " + quoted(path.parent_path()) + ": " + ec.message());
+    throw OutputError("cannot create " + quoted(path.parent_path()) + ": " + ec.message());
   write_file(path, content);
 }
 
@@ -154,7 +154,7 @@ std::vector<std::string> OutputTransaction::commit() {
       files.push_back(rel.generic_string());
   }
   if (ec)
-    throw std::runtime_error("cannot list " + quoted(staging_) + ": " + ec.message());
+    throw OutputError("cannot list " + quoted(staging_) + ": " + ec.message());
   std::sort(files.begin(), files.end());
   try {
     commit_staged_set(dir_, staging_);

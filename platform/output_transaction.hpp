@@ -44,7 +44,7 @@ class OutputTransaction {
   /// (waiting for it when `wait`, else failing at once), finishes an interrupted commit,
   /// removes stale staging directories of killed runs and creates a fresh one. Throws
   /// PlatformError for a directory it may not use or one another process holds, and
-  /// std::runtime_error when the file system fails (e.g. no space left).
+  /// OutputError when the file system fails (e.g. no space left).
   explicit OutputTransaction(std::filesystem::path dir, bool wait = false);
   ~OutputTransaction();
   OutputTransaction(const OutputTransaction&) = delete;
@@ -56,11 +56,11 @@ class OutputTransaction {
   const std::filesystem::path& directory() const { return dir_; }
 
   /// Writes a whole text file `relative` (e.g. "figures/a.gp") under staging_dir(), creating
-  /// its parent directories; throws std::runtime_error naming the file and the cause.
+  /// its parent directories; throws OutputError naming the file and the cause.
   void write_text(const std::string& relative, std::string_view content) const;
 
   /// Makes the staged set the directory's set (see above). Returns the committed regular files
-  /// relative to the directory, sorted. Throws std::runtime_error when a rename fails (the next
+  /// relative to the directory, sorted. Throws OutputError when a rename fails (the next
   /// transaction on the directory finishes the commit).
   std::vector<std::string> commit();
 
