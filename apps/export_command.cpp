@@ -22,6 +22,7 @@ struct ExportArgs {
 };
 
 int run_export(const ExportArgs& args) {
+  platform::check_output_directory(args.out);  // refused before any input is read
   const auto cases = suites::make_case_matrix(make_selection(args.selection));
   validate_cases(cases);
   for (const auto& spec : cases)
@@ -39,11 +40,11 @@ int run_export(const ExportArgs& args) {
     const std::string dir = "models/" + suites::model_directory_name(representative);
     const suites::ProblemSetup setup = suites::build_problem(representative);
     for (const auto& file : suites::model_files(setup))
-      stage_text_file(output, dir + "/" + file.name, file.text);
+      output.write_text(dir + "/" + file.name, file.text);
     for (std::size_t i : members)
       cases_csv += suites::cases_csv_rows(cases[i], setup, dir);
   }
-  stage_text_file(output, "cases.csv", cases_csv);
+  output.write_text("cases.csv", cases_csv);
   output.commit();
   fmt::print("wrote {} cases on {} models to {}\n", cases.size(), groups.size(), args.out);
   return kSuccess;

@@ -44,6 +44,7 @@ std::string read_import_file(const std::string& path) {
 }
 
 int run_grade(const GradeArgs& args) {
+  platform::check_output_directory(args.out);  // refused before any input is read
   suites::require_imported_solver_name(args.solver_name);
   const auto cases = suites::parse_import_csv(read_import_file(args.import_file), args.import_file);
   // Taken before grading: an unwritable or busy directory fails now; bad input found while

@@ -20,6 +20,7 @@
 #include "apps/run_command.hpp"
 #include "apps/usage_error.hpp"
 #include "platform/interrupts.hpp"
+#include "platform/platform_error.hpp"
 #include "schema/schema_error.hpp"
 
 namespace {
@@ -78,6 +79,9 @@ int main(int argc, char** argv) {
   } catch (const std::invalid_argument& e) {
     std::fprintf(stderr, "contact-suite: error: %s\n", one_line(e.what()).c_str());
     return cs::apps::kBadInput;
+  } catch (const cs::platform::OutputError& e) {  // e.g. no space left on the device
+    std::fprintf(stderr, "contact-suite: error: %s\n", one_line(e.what()).c_str());
+    return cs::apps::kOutputFailed;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "contact-suite: internal error: %s\n", one_line(e.what()).c_str());
     return 3;

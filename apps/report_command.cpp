@@ -28,6 +28,7 @@ struct ReportArgs {
 };
 
 void run_report(const ReportArgs& args) {
+  platform::check_output_directory(args.out_dir);  // refused before any input is read
   std::vector<schema::ResultsDocument> documents;
   for (const auto& path : args.results)
     documents.push_back(schema::read_results_file(path));
@@ -37,7 +38,7 @@ void run_report(const ReportArgs& args) {
     companions.push_back(reports::read_companion_report(args.out_dir, c));
   platform::OutputTransaction output(args.out_dir);
   reports::ReportOptions options;
-  options.out_dir = output.staging();
+  options.out_dir = output.staging_dir();
   if (!args.baseline.empty())
     options.baseline = args.baseline;
   if (!args.study_data.empty())

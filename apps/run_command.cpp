@@ -12,8 +12,10 @@
 
 #include "apps/case_selection_options.hpp"
 #include "apps/invocation.hpp"
+#include "apps/memory_plan.hpp"
 #include "apps/usage_error.hpp"
 #include "apps/write_run_output.hpp"
+#include "platform/available_memory.hpp"
 #include "platform/interrupts.hpp"
 #include "platform/output_transaction.hpp"
 #include "schema/results_file.hpp"
@@ -42,6 +44,7 @@ struct RunArgs {
   bool shard_given = false;
   bool no_report = false;
   bool surface_csv = false;
+  double max_memory_gib = 0.0;
   std::string command_line;
 };
 
@@ -73,7 +76,13 @@ void stage_surface_csv(const std::vector<suites::CaseResult>& results,
       c.rows.push_back({n.x, n.sigma_z, n.sigma_x, n.contact_pressure, 0});
     cases.push_back(std::move(c));
   }
-  stage_text_file(output, "surface.csv", suites::import_csv_text(cases));
+  output.write_text("surface.csv", suites::import_csv_text(cases));
+}
+
+/// "S_1_7/VF/Q8": the model of a case, for messages.
+std::string model_name(const suites::CaseSpec& spec) {
+  return fmt::format("{}/{}/{}", suites::to_string(spec.problem), suites::to_string(spec.mesh),
+                     schema::to_string(spec.element));
 }
 
 /// A rough relative cost of a model, to start the largest first.
@@ -88,6 +97,7 @@ double group_cost(const suites::CaseSpec& spec) {
 }
 
 int run(const RunArgs& args) {
+  platform::check_output_directory(args.out);  // refused before any input is read
   std::vector<schema::SweepAxis> sweep;
   const auto all_cases = selected_cases(args, sweep);
   suites::ExecutorOptions exec;
@@ -117,12 +127,19 @@ int run(const RunArgs& args) {
   options.jobs = jobs;
   options.on_case_done = [&progress](const suites::CaseResult& r) { progress.case_done(r); };
   options.group_cost = group_cost;
-  // Memory in proportion to the cost estimate; a budget of 1.5 times the largest model keeps
-  // the two largest from running at once (the peak: two S F Q8 models together take about
-  // 7 GB) while smaller ones run beside them.
-  options.group_memory = group_cost;
-  for (const auto& c : cases)
-    options.memory_budget = std::max(options.memory_budget, 1.5 * group_cost(c));
+  // Memory in proportion to the cost estimate, planned against what the machine has
+  // (apps/memory_plan.hpp): refused now, or scheduled to fit.
+  const auto largest =
+      std::max_element(cases.begin(), cases.end(),
+                       [](const auto& a, const auto& b) { return group_cost(a) < group_cost(b); });
+  const MemoryPlan memory =
+      plan_memory(largest == cases.end() ? 0.0 : kMiBPerCostUnit * group_cost(*largest),
+                  largest == cases.end() ? std::string() : model_name(*largest),
+                  {platform::available_memory_mb(), 1024.0 * args.max_memory_gib});
+  if (!memory.note.empty())
+    std::fprintf(stderr, "contact-suite: %s\n", memory.note.c_str());
+  options.group_memory = [](const suites::CaseSpec& c) { return kMiBPerCostUnit * group_cost(c); };
+  options.memory_budget = memory.budget_mib;
   options.should_stop = [] { return platform::interrupted_signal() != 0; };
 
   schema::RunInfo info;
@@ -183,6 +200,10 @@ void add_run_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--jobs", args->jobs, "Parallel workers, 1 to 256 (default: the number of cores)")
       ->check(CLI::Range(1, 256));
   cmd->add_option("--out", args->out, "Output directory")->capture_default_str();
+  cmd->add_option("--max-memory", args->max_memory_gib,
+                  "GiB this run may use at most (default: MemAvailable less 10 %); a model "
+                  "estimated above it is refused before the run starts")
+      ->check(CLI::PositiveNumber);
   cmd->add_flag("--no-report", args->no_report, "Write results.json only");
   cmd->add_flag("--surface-csv", args->surface_csv,
                 "Also write surface.csv: each converged case's nodal stresses and contact "

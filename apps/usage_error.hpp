@@ -15,9 +15,10 @@ class UsageError : public std::runtime_error {
 
 /// Exit codes of the contact-suite command, shared by every subcommand.
 enum ExitCode : int {
-  kSuccess = 0,      ///< all went well
-  kCasesFailed = 1,  ///< the run completed but some cases failed (or a gate failed)
-  kBadInput = 2,     ///< bad input: unknown names, out-of-range values, unreadable files
+  kSuccess = 0,       ///< all went well
+  kCasesFailed = 1,   ///< the run completed but some cases failed (or a gate failed)
+  kBadInput = 2,      ///< bad input: unknown names, out-of-range values, unreadable files
+  kOutputFailed = 3,  ///< the output directory could not be written (e.g. no space left)
 };
 
 }  // namespace cs::apps

@@ -2,8 +2,6 @@
 
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
-#include <stdexcept>
 #include <system_error>
 
 #include <fmt/core.h>
@@ -15,24 +13,13 @@
 
 namespace cs::apps {
 
-void stage_text_file(const platform::OutputTransaction& out, const std::string& relative,
-                     std::string_view text) {
-  const std::filesystem::path path = out.staging() / relative;
-  std::filesystem::create_directories(path.parent_path());
-  std::ofstream file(path, std::ios::binary);
-  file.write(text.data(), static_cast<std::streamsize>(text.size()));
-  file.close();
-  if (!file)
-    throw std::runtime_error("cannot write " + path.string());
-}
-
 std::optional<int> write_run_output(const schema::ResultsDocument& doc,
                                     platform::OutputTransaction& out, bool with_report) {
-  schema::write_results_file(out.staging() / "results.json", doc);
+  schema::write_results_file(out.staging_dir() / "results.json", doc);
   int figures = 0;
   if (with_report) {
     reports::ReportOptions report;
-    report.out_dir = out.staging();
+    report.out_dir = out.staging_dir();
     report.option_mappings = solver_option_mappings();
     schema::ResultsDocument named = doc;  // the report names the file it describes
     std::error_code ec;

@@ -15,11 +15,6 @@
 
 namespace cs::apps {
 
-/// Writes `text` as the file `relative` (its parent directories created) under out.staging();
-/// throws std::runtime_error if it cannot be written.
-void stage_text_file(const platform::OutputTransaction& out, const std::string& relative,
-                     std::string_view text);
-
 /// Stages results.json (and the report when `with_report`) and commits `out`. Returns the
 /// number of figures drawn (0 without a report); nullopt when an interrupt (SIGINT, SIGTERM)
 /// arrived before the commit, e.g. while gnuplot drew: then nothing is committed and the

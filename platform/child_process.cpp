@@ -2,7 +2,7 @@
 
 #include <fcntl.h>
 #include <signal.h>
-#include <spawn.h>
+#include <sys/prctl.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -11,6 +11,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <thread>
 
@@ -69,55 +70,105 @@ std::string output_target(const std::filesystem::path& path) {
   return path.empty() ? std::string("/dev/null") : std::filesystem::absolute(path).string();
 }
 
-/// File actions and attributes of the spawn, released on destruction.
-class SpawnSetup {
- public:
-  explicit SpawnSetup(const ChildOptions& options)
-      : out_(output_target(options.stdout_path)),
-        err_(output_target(options.stderr_path)),
-        dir_(options.working_directory.string()) {
-    posix_spawn_file_actions_init(&actions_);
-    posix_spawnattr_init(&attr_);
-    constexpr int kWrite = O_WRONLY | O_CREAT | O_TRUNC;
-    posix_spawn_file_actions_addopen(&actions_, 0, "/dev/null", O_RDONLY, 0);
-    posix_spawn_file_actions_addopen(&actions_, 1, out_.c_str(), kWrite, 0644);
-    if (err_ == out_ && err_ != "/dev/null")
-      posix_spawn_file_actions_adddup2(&actions_, 1, 2);
-    else
-      posix_spawn_file_actions_addopen(&actions_, 2, err_.c_str(), kWrite, 0644);
-    posix_spawn_file_actions_addclosefrom_np(&actions_, 3);
-    if (!dir_.empty())
-      posix_spawn_file_actions_addchdir_np(&actions_, dir_.c_str());
-    set_attributes();
+/// The program's path: argv[0] itself when it holds '/', else the first executable of that name
+/// in our PATH (as posix_spawnp and execvp search); empty when there is none.
+std::string resolve_program(const std::string& program) {
+  if (program.find('/') != std::string::npos)
+    return program;
+  const char* path = std::getenv("PATH");
+  std::string dirs = path != nullptr ? path : "/usr/local/bin:/usr/bin:/bin";
+  for (std::size_t at = 0; at <= dirs.size();) {
+    const std::size_t end = std::min(dirs.find(':', at), dirs.size());
+    const std::string dir = end > at ? dirs.substr(at, end - at) : ".";
+    const std::string candidate = dir + "/" + program;
+    if (access(candidate.c_str(), X_OK) == 0 && !std::filesystem::is_directory(candidate))
+      return candidate;
+    at = end + 1;
   }
-  ~SpawnSetup() {
-    posix_spawn_file_actions_destroy(&actions_);
-    posix_spawnattr_destroy(&attr_);
-  }
-  SpawnSetup(const SpawnSetup&) = delete;
-  SpawnSetup& operator=(const SpawnSetup&) = delete;
+  return {};
+}
 
-  const posix_spawn_file_actions_t* actions() const { return &actions_; }
-  const posix_spawnattr_t* attributes() const { return &attr_; }
-
- private:
-  void set_attributes() {
-    sigset_t defaults, empty;
-    sigemptyset(&defaults);
-    for (int sig : {SIGINT, SIGTERM, SIGQUIT, SIGHUP, SIGPIPE})
-      sigaddset(&defaults, sig);
-    sigemptyset(&empty);
-    posix_spawnattr_setsigdefault(&attr_, &defaults);
-    posix_spawnattr_setsigmask(&attr_, &empty);
-    posix_spawnattr_setpgroup(&attr_, 0);  // a new group whose id is the child's pid
-    posix_spawnattr_setflags(
-        &attr_, POSIX_SPAWN_SETPGROUP | POSIX_SPAWN_SETSIGDEF | POSIX_SPAWN_SETSIGMASK);
-  }
-
-  std::string out_, err_, dir_;
-  posix_spawn_file_actions_t actions_;
-  posix_spawnattr_t attr_;
+/// Everything the child needs, prepared before fork(): between fork() and exec() the child
+/// (a copy of a multi-threaded process) may only make async-signal-safe calls.
+struct ExecPlan {
+  std::string program, out, err, dir;
+  char* const* argv;
+  char* const* envp;
+  pid_t parent;
 };
+
+/// Runs in the child: never returns. Reports a failure as its errno on `error_fd` (close-on-
+/// exec, so a successful exec closes it and the parent reads nothing).
+[[noreturn]] void exec_child(const ExecPlan& plan, int error_fd) {
+  auto fail = [error_fd](int error) {
+    [[maybe_unused]] const ssize_t n = write(error_fd, &error, sizeof error);
+    _exit(127);
+  };
+  // Killed when the thread that started it dies, SIGKILL included; if the parent died before
+  // this line the signal will never come, so leave at once.
+  if (prctl(PR_SET_PDEATHSIG, SIGKILL) != 0)
+    fail(errno);
+  if (getppid() != plan.parent)
+    _exit(127);
+  setpgid(0, 0);  // a new group whose id is the child's pid
+  struct sigaction dfl {};
+  dfl.sa_handler = SIG_DFL;
+  for (int sig : {SIGINT, SIGTERM, SIGQUIT, SIGHUP, SIGPIPE})
+    sigaction(sig, &dfl, nullptr);
+  sigset_t empty;
+  sigemptyset(&empty);
+  sigprocmask(SIG_SETMASK, &empty, nullptr);
+  const int in = open("/dev/null", O_RDONLY);
+  const int out = open(plan.out.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  if (in < 0 || out < 0 || dup2(in, 0) < 0 || dup2(out, 1) < 0)
+    fail(errno);
+  if (plan.err == plan.out && plan.err != "/dev/null") {
+    if (dup2(1, 2) < 0)
+      fail(errno);
+  } else {
+    const int err = open(plan.err.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    if (err < 0 || dup2(err, 2) < 0)
+      fail(errno);
+  }
+  // No descriptor above 2 survives exec (error_fd is close-on-exec).
+  if (error_fd > 3)
+    close_range(3, static_cast<unsigned>(error_fd) - 1, 0);
+  close_range(static_cast<unsigned>(error_fd) + 1, ~0U, 0);
+  if (!plan.dir.empty() && chdir(plan.dir.c_str()) != 0)
+    fail(errno);
+  execve(plan.program.c_str(), plan.argv, plan.envp);
+  fail(errno);
+  _exit(127);
+}
+
+/// fork() + exec_child; returns the child's pid, or -errno when it could not start.
+pid_t start_child(const ExecPlan& plan) {
+  int pipe_fds[2];
+  if (pipe2(pipe_fds, O_CLOEXEC) != 0)
+    return -errno;
+  const pid_t pid = fork();
+  if (pid == 0)
+    exec_child(plan, pipe_fds[1]);
+  const int fork_error = errno;
+  close(pipe_fds[1]);
+  if (pid < 0) {
+    close(pipe_fds[0]);
+    return -fork_error;
+  }
+  setpgid(pid, pid);  // also here, so that the group exists before we may signal it
+  int error = 0;
+  ssize_t n = 0;
+  while ((n = read(pipe_fds[0], &error, sizeof error)) < 0 && errno == EINTR) {
+  }
+  close(pipe_fds[0]);
+  if (n == static_cast<ssize_t>(sizeof error)) {  // exec failed: reap the child
+    int status = 0;
+    while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+    }
+    return -error;
+  }
+  return pid;
+}
 
 std::string spawn_error_message(const ChildOptions& options, int error) {
   const std::string& program = options.argv[0];
@@ -209,13 +260,17 @@ ChildResult run_child(const ChildOptions& options) {
   std::vector<std::string> args = options.argv;
   std::vector<std::string> env = child_environment(options);
   std::vector<char*> c_args = c_array(args), c_env = c_array(env);
-  SpawnSetup setup(options);
+  const ExecPlan plan{resolve_program(options.argv[0]),
+                      output_target(options.stdout_path),
+                      output_target(options.stderr_path),
+                      options.working_directory.string(),
+                      c_args.data(),
+                      c_env.data(),
+                      getpid()};
   const auto start = Clock::now();
-  pid_t pid = 0;
-  const int rc = posix_spawnp(&pid, c_args[0], setup.actions(), setup.attributes(), c_args.data(),
-                              c_env.data());
-  if (rc != 0) {
-    result.spawn_error = spawn_error_message(options, rc);
+  const pid_t pid = plan.program.empty() ? -ENOENT : start_child(plan);
+  if (pid < 0) {
+    result.spawn_error = spawn_error_message(options, -pid);
     return result;
   }
   result.started = true;

@@ -1,8 +1,12 @@
 #pragma once
-// Running an external program without a shell: posix_spawnp with an argument vector.
+// Running an external program without a shell: fork and exec with an argument vector.
 //
 // No argument is ever interpreted: spaces, quotes, ';', '$(...)' and newlines reach the child
 // verbatim, so no user string can become a command. The child
+//   - dies with us: it is started with PR_SET_PDEATHSIG = SIGKILL (checked against the race of
+//     our death before the call), so a SIGKILL to contact-suite also stops gnuplot or ccx,
+//     which would otherwise write on into an abandoned staging directory. The signal follows
+//     the thread that called run_child, which blocks until the child ends;
 //   - runs in its own process group (its group id is its pid), with the default disposition
 //     of SIGINT, SIGTERM, SIGQUIT, SIGHUP and SIGPIPE and an empty signal mask;
 //   - reads stdin from /dev/null and writes stdout and stderr to the given files (truncated;

@@ -1,54 +1,80 @@
 #pragma once
 // An output directory written as one transaction: a run's results.json, results.csv, report.md
-// and figures appear together or not at all.
+// and figures appear together or not at all, in a directory the tool owns
+// (platform/output_directory.hpp), without touching anything else in it.
 //
-//   OutputTransaction out("out");     // takes the directory's lock, clears stale staging
-//   write files under out.staging();  // the complete new set
-//   out.commit();                     // swaps it in atomically
+//   OutputTransaction out("out");     // checks and takes the directory, opens a staging area
+//   write files under out.staging_dir() (or out.write_text(...)): the complete new set
+//   out.commit();                     // moves the set into place
 //
-// The lock: an exclusive flock(2) on `<parent>/.<name>.lock`, held from construction to
-// destruction (the kernel drops it if the process dies). A second writer gets a PlatformError
-// ("another contact-suite process is writing to 'out'") unless asked to wait.
-// The staging directory `<parent>/.<name>.staging-<pid>` is a sibling of the output directory
-// (same file system). commit() first hard-links into it every entry of the existing directory
-// that the new set does not replace (so nothing a user kept there is lost), then exchanges the
-// two directories with renameat2(RENAME_EXCHANGE), one atomic step, and removes the old set.
-// A kill at any moment leaves `out` holding either the complete old set or the complete new
-// set; the leftover staging directory is removed by the next transaction on `out`.
-// Without commit(), the destructor removes the staging directory and `out` is untouched.
+// Everything lives inside the directory (nothing is created beside it):
+//   .contact-suite                 the ownership mark, and the lock: an exclusive flock(2) on
+//                                  it, held from construction to destruction (the kernel drops
+//                                  it when the process dies). A second writer gets a
+//                                  PlatformError unless asked to wait.
+//   .contact-suite.set             the names of the entries of the committed set, one a line
+//   .contact-suite.staging-PID/    where the new set is written
+//   .contact-suite.commit/         a complete set being moved into place (the commit journal)
+//   .contact-suite.old/            entries of the previous set being removed
+// The commit: the staging directory, with the list of its entries, is renamed to
+// `.contact-suite.commit` in one atomic step: from then on the new set is decided. Its entries
+// are then renamed into place one by one, results.json last (a file replaces its predecessor
+// atomically; a directory such as figures/ first moves its predecessor aside), entries of the
+// previous set that the new one lacks are moved aside, and the list is installed. Whoever opens
+// the directory next finds an interrupted commit by its journal and finishes it before anything
+// else, so after a kill at any moment the directory holds the complete old set, or the complete
+// new set once the journal (present only for the microseconds of the renames) is rolled forward.
+// Entries the tool did not write (a user's notes, subdirectories, mount points) are never
+// moved, re-created, re-owned or re-moded: they keep their inode.
+// Without commit(), the destructor removes the staging directory, and the mark and the
+// directory too when this transaction created them: a refused or failed run leaves nothing.
 
 #include <filesystem>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "platform/output_directory.hpp"
 
 namespace cs::platform {
 
 class OutputTransaction {
  public:
-  /// Takes the lock of `dir` (waiting for it when `wait`, else failing at once), removes stale
-  /// staging directories of earlier interrupted runs and creates a fresh one. Throws
-  /// PlatformError naming the cause: a path with control characters, a parent that does not
-  /// exist or is not writable, `dir` being a file, the lock held by another process.
+  /// Checks `dir` (check_output_directory), creates and marks it when needed, takes its lock
+  /// (waiting for it when `wait`, else failing at once), finishes an interrupted commit,
+  /// removes stale staging directories of killed runs and creates a fresh one. Throws
+  /// PlatformError for a directory it may not use or one another process holds, and
+  /// OutputError when the file system fails (e.g. no space left).
   explicit OutputTransaction(std::filesystem::path dir, bool wait = false);
   ~OutputTransaction();
   OutputTransaction(const OutputTransaction&) = delete;
   OutputTransaction& operator=(const OutputTransaction&) = delete;
 
-  /// Where the new set is written (an empty directory at first).
-  const std::filesystem::path& staging() const { return staging_; }
+  /// Where the new set is written (empty at first but for its own mark).
+  const std::filesystem::path& staging_dir() const { return staging_; }
+  /// The output directory, absolute (a symbolic link to it resolved).
   const std::filesystem::path& directory() const { return dir_; }
 
-  /// Makes the staged set the content of the directory (see above). Throws PlatformError.
-  void commit();
+  /// Writes a whole text file `relative` (e.g. "figures/a.gp") under staging_dir(), creating
+  /// its parent directories; throws OutputError naming the file and the cause.
+  void write_text(const std::string& relative, std::string_view content) const;
+
+  /// Makes the staged set the directory's set (see above). Returns the committed regular files
+  /// relative to the directory, sorted. Throws OutputError when a rename fails (the next
+  /// transaction on the directory finishes the commit).
+  std::vector<std::string> commit();
 
  private:
+  void take_directory(bool wait);
+  void release_on_failure();
+
+  std::filesystem::path shown_;  ///< the directory as given, for messages
   std::filesystem::path dir_;
   std::filesystem::path staging_;
-  std::filesystem::path created_lock_;  ///< the lock file, when this transaction created it
   int lock_fd_ = -1;
+  bool created_dir_ = false;
+  bool created_mark_ = false;
   bool committed_ = false;
 };
-
-/// Throws PlatformError if `path` holds a control character (newline, tab, escape, ...): such
-/// names break every line-oriented consumer (scripts, logs, plot files) and are refused.
-void require_printable_path(const std::filesystem::path& path, const char* what);
 
 }  // namespace cs::platform

@@ -15,4 +15,12 @@ class PlatformError : public std::invalid_argument {
   explicit PlatformError(const std::string& what) : std::invalid_argument(what) {}
 };
 
+/// The file system failed while an output directory was written (no space left, an I/O error,
+/// a rename refused): not bad input and not a bug. The message is one line naming the file and
+/// the cause; main() exits with kOutputFailed (3).
+class OutputError : public std::runtime_error {
+ public:
+  explicit OutputError(const std::string& what) : std::runtime_error(what) {}
+};
+
 }  // namespace cs::platform

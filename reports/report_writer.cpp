@@ -3,7 +3,7 @@
 
 #include <fmt/format.h>
 
-#include "reports/atomic_output.hpp"
+#include "platform/output_transaction.hpp"
 #include "reports/bench/bench_results.hpp"
 #include "reports/facts/claims.hpp"
 #include "reports/facts/situation_verdict.hpp"
@@ -174,7 +174,7 @@ ReportOutcome write_report(const schema::ResultsDocument& results, const ReportO
     bench = load_bench_files(options.bench);
   const ResultsIndex index(results);
 
-  AtomicOutput output(options.out_dir);
+  platform::OutputTransaction output(options.out_dir);
   FigureSet figures, bench_figures, mesh_figures, sweep_figures;
   std::vector<Figure> cross_code_figures;
   if (options.figures)

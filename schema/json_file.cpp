@@ -2,6 +2,8 @@
 
 #include <unistd.h>
 
+#include <cerrno>
+#include <cstring>
 #include <fstream>
 #include <sstream>
 
@@ -44,9 +46,10 @@ void write_json_file_atomically(const std::filesystem::path& path, const nlohman
     out << doc.dump(1) << "\n";
     out.flush();
     if (!out) {
+      const std::string why = std::strerror(errno);  // e.g. "No space left on device"
       std::error_code ignored;
       std::filesystem::remove(tmp, ignored);
-      throw SchemaError(fmt::format("cannot write '{}'", path.string()));
+      throw SchemaError(fmt::format("cannot write '{}': {}", path.string(), why));
     }
   }
   std::error_code ec;

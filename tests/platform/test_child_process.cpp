@@ -2,11 +2,15 @@
 // working directory, environment, redirections and time limit, and reports how the child ended.
 
 #include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
+#include <chrono>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <thread>
 
 #include <gtest/gtest.h>
 
@@ -153,6 +157,45 @@ TEST(ChildProcess, MeasuresPeakMemory) {
   EXPECT_GT(r.peak_rss_mb, 45.0);
   EXPECT_LT(r.peak_rss_mb, 500.0);
   EXPECT_GT(r.wall_seconds, 0.0);
+}
+
+// Requirement (issue 25, item 3): a child dies with us. A process that runs a child through
+// run_child and is then killed with SIGKILL (no handler can run) takes the child with it, so
+// gnuplot or ccx never writes on into an abandoned staging directory.
+TEST(ChildProcess, TheChildDiesWhenWeAreKilled) {
+  cs::testing::TempDir tmp;
+  const std::filesystem::path pid_file = tmp.path() / "child.pid";
+  const pid_t runner = fork();
+  ASSERT_GE(runner, 0);
+  if (runner == 0) {  // the process that will be killed: runs a child for 30 s
+    ChildOptions o =
+        shell_free({"sh", "-c", "echo $$ > '" + pid_file.string() + "'; exec sleep 30"});
+    run_child(o);
+    _exit(0);
+  }
+  pid_t child = 0;
+  for (int i = 0; i < 500 && child == 0; ++i) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    std::istringstream(read_all(pid_file)) >> child;
+  }
+  ASSERT_GT(child, 0) << "the child never started";
+  ASSERT_EQ(kill(runner, SIGKILL), 0);
+  int status = 0;
+  ASSERT_EQ(waitpid(runner, &status, 0), runner);
+  // The kernel sends SIGKILL to the child as the runner's thread exits: allow it 2 s (it takes
+  // microseconds; the margin is for a loaded machine). The child is init's to reap, so a
+  // zombie counts as dead: its /proc state is Z.
+  bool dead = false;
+  for (int i = 0; i < 200 && !dead; ++i) {
+    const std::string stat = read_all("/proc/" + std::to_string(child) + "/stat");
+    const auto close = stat.rfind(')');
+    dead = stat.empty() || (close != std::string::npos && stat.substr(close + 2, 1) == "Z");
+    if (!dead)
+      std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
+  if (!dead)
+    kill(child, SIGKILL);
+  EXPECT_TRUE(dead) << "the child outlived the killed process";
 }
 
 TEST(ChildProcess, BadOptionsThrow) {

@@ -44,10 +44,12 @@ ReportOutcome report_from_file(const fs::path& results, const ReportOptions& opt
   return write_report(schema::read_results_file(results), options);
 }
 
-/// A directory with the user's files in it, to check that a failed report leaves it alone.
+/// A directory an earlier report made (it carries the mark), with the user's files in it, to
+/// check that a failed report leaves it alone.
 struct UserDir {
   explicit UserDir(const fs::path& root) : path(root / "out") {
     fs::create_directories(path / "figures");
+    write_text(path / ".contact-suite", "");
     write_text(path / "report.md", "the user's previous report\n");
     write_text(path / "notes.txt", "the user's own notes\n");
     write_text(path / "figures" / "mine.png", "not really a png");
@@ -58,8 +60,10 @@ struct UserDir {
     EXPECT_EQ(read_text(path / "figures" / "mine.png"), "not really a png");
     int entries = 0;
     for (const auto& e : fs::directory_iterator(path)) {
+      if (e.path().filename().string().rfind(".contact-suite", 0) == 0)
+        continue;  // the mark, which a report writes into an empty mark
       ++entries;
-      EXPECT_EQ(e.path().filename().string().rfind(".tmp-", 0), std::string::npos) << e.path();
+      EXPECT_EQ(e.path().filename().string().find("staging"), std::string::npos) << e.path();
     }
     EXPECT_EQ(entries, 3);  // report.md, notes.txt, figures/: nothing added
     EXPECT_FALSE(fs::exists(path / "results.csv"));
@@ -69,7 +73,7 @@ struct UserDir {
 
 TEST(ReportWriter, WritesReportCsvAndRegression) {
   TempDir tmp;
-  auto o = options_for(tmp.path() / "new" / "dir");
+  auto o = options_for(tmp.path() / "new");  // created: its parent exists
   o.baseline = sample_path();
   const auto outcome = write_report(sample(), o);
   EXPECT_EQ(outcome.n_cases, 59);
@@ -96,7 +100,7 @@ TEST(ReportWriter, WritesReportCsvAndRegression) {
   EXPECT_NE(run.find("| solver.factorization | CHOLMOD supernodal |"), std::string::npos);
   EXPECT_NE(run.find("| `" + sample_path().string() + "` |"), std::string::npos);
   for (const auto& e : fs::directory_iterator(o.out_dir))
-    EXPECT_EQ(e.path().filename().string().rfind(".tmp-", 0), std::string::npos);
+    EXPECT_EQ(e.path().filename().string().find("staging"), std::string::npos);
 }
 
 TEST(ReportWriter, ReplacesItsOwnFilesAndKeepsTheUsers) {
@@ -215,7 +219,7 @@ TEST(ReportWriter, BadBaselineOrStudyDataLeavesTheDirectoryUntouched) {
 TEST(ReportWriter, OutputThatIsAFileIsAnError) {
   TempDir tmp;
   write_text(tmp.path() / "file", "x");
-  EXPECT_THROW(write_report(sample(), options_for(tmp.path() / "file")), ReportError);
+  EXPECT_THROW(write_report(sample(), options_for(tmp.path() / "file")), std::invalid_argument);
   EXPECT_EQ(read_text(tmp.path() / "file"), "x");
 }
 
@@ -264,6 +268,7 @@ TEST(ReportCommand, CompanionReportIsLinkedByItsTitle) {
   const std::string study = testing::study_dir().string();
   const fs::path out = tmp.path() / "out";
   fs::create_directories(out / "other");
+  write_text(out / ".contact-suite", "");  // a directory contact-suite made
   write_text(out / "other" / "report.md", "# contact-suite report: ours and X beside Y\n\nz\n");
   write_text(out / "other" / "notes.md", "no title\n");
   EXPECT_EQ(run_command({"--results", sample_path().string(), "--out", out.string(), "--study-data",
