@@ -46,6 +46,10 @@ bool graded_in_verdict(const ResultsIndex& index, ProblemId problem, schema::Qua
          q != schema::Quantity::contact_half_width;
 }
 
+/// Differences below the study's printed resolution (4 decimals of a value near 1: 0.01 %) never
+/// rank options, whatever one refinement changes.
+constexpr double kTieResolutionPercent = 0.01;
+
 using CellKey = std::tuple<OptionFamily, schema::ContactKind, schema::Element>;
 
 void add_row(OptionCell& cell, const RowFacts& f) {
@@ -120,7 +124,7 @@ void rank(SituationVerdict& v) {
     v.best.push_back(&c);
     v.best_min = v.best_min ? std::min(*v.best_min, *c.min_error) : *c.min_error;
     v.best_max = v.best_max ? std::max(*v.best_max, *c.max_error) : *c.max_error;
-    v.best_noise = std::max(v.best_noise, c.largest_m_to_f_change);
+    v.best_noise = std::max({v.best_noise, c.largest_m_to_f_change, kTieResolutionPercent});
   }
 }
 
@@ -161,21 +165,23 @@ std::string family_label(OptionFamily family) {
 }
 
 std::string cells_label(const std::vector<const OptionCell*>& cells) {
-  std::map<OptionFamily, std::map<schema::Element, std::vector<schema::ContactKind>>> by;
-  for (const OptionCell* c : cells)
-    by[c->family][c->element].push_back(c->contact);
+  std::map<OptionFamily, std::map<schema::Element, std::string>> by;
+  for (const OptionCell* c : cells) {
+    std::string& contacts = by[c->family][c->element];
+    contacts += (contacts.empty() ? "" : "/") + std::string(schema::to_string(c->contact));
+  }
   std::string out;
   for (const auto& [family, elements] : by) {
-    std::string part = family_label(family);
-    bool first = true;
+    // Elements with the same discretizations share one entry: "ss/ns Q4/Q8".
+    std::map<std::string, std::string> by_contacts;
     for (const auto& [element, contacts] : elements) {
-      std::string list;
-      for (const auto k : contacts)
-        list += (list.empty() ? "" : "/") + std::string(schema::to_string(k));
-      part += (first ? " " : ", ") + list + " " + std::string(schema::to_string(element));
-      first = false;
+      std::string& els = by_contacts[contacts];
+      els += (els.empty() ? "" : "/") + std::string(schema::to_string(element));
     }
-    out += (out.empty() ? "" : "; ") + part;
+    std::string part;
+    for (const auto& [contacts, els] : by_contacts)
+      part += (part.empty() ? " " : ", ") + contacts + " " + els;
+    out += (out.empty() ? "" : "; ") + family_label(family) + part;
   }
   return out;
 }

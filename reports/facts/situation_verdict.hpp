@@ -41,7 +41,9 @@ struct SituationVerdict {
   std::vector<const OptionCell*> avoid;  ///< u, not credible, or failing divergence
   std::optional<schema::Grade> best_grade;
   std::optional<double> best_min, best_max;  ///< signed F error range over `best`
-  double best_noise = 0.0;                   ///< largest M -> F change over `best` (points)
+  /// What a ranking of `best` would have to beat (points): the largest M -> F change over its
+  /// rows, and at least the study's printed resolution, 0.01 points.
+  double best_noise = 0.0;
 };
 
 /// The situations present in the results, in the report's order.

@@ -1,0 +1,251 @@
+// The verdict page and the claims ledger on a real run (data/battery_results.json: patch tests,
+// Hertz, a Steuermann punch and the flat punch, Q4 and Q8, every algorithm, ss and ns, C, M, F).
+// Every number they quote is recomputed here from the results' raw records through the grading
+// layer, independently of reports/facts/.
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+#include <gtest/gtest.h>
+
+#include "grading/accuracy.hpp"
+#include "grading/convergence.hpp"
+#include "grading/credibility.hpp"
+#include "grading/divergence.hpp"
+#include "report_test_support.hpp"
+#include "reports/facts/claims.hpp"
+#include "reports/facts/situation_verdict.hpp"
+#include "reports/pages/claims_ledger.hpp"
+#include "reports/pages/verdict_page.hpp"
+
+namespace cs::reports {
+namespace {
+
+using schema::Algorithm;
+using schema::MeshLevel;
+
+struct Battery {
+  Battery()
+      : doc(schema::read_results_file(testing::source_dir() / "tests" / "reports" / "data" /
+                                      "battery_results.json")),
+        index(doc),
+        rows(row_facts(index)),
+        singular(divergence_facts(index)) {}
+  schema::ResultsDocument doc;
+  ResultsIndex index;
+  std::vector<RowFacts> rows;
+  std::vector<DivergenceFacts> singular;
+};
+
+const Battery& battery() {
+  static const Battery b;
+  return b;
+}
+
+const schema::CaseResult* case_of(const schema::RowVerdict& row, MeshLevel mesh) {
+  schema::CaseSpec spec = row.spec;
+  spec.mesh = mesh;
+  const std::string id = schema::case_id(spec);
+  for (const auto& c : battery().doc.cases) {
+    if (c.spec.problem == spec.problem && schema::case_id(c.spec) == id)
+      return &c;
+  }
+  return nullptr;
+}
+
+/// Is a raw row evidence? Recomputed: F converged, credible by the interface checks, not luck.
+bool evidence(const schema::RowVerdict& r) {
+  const schema::CaseResult* fine = case_of(r, MeshLevel::F);
+  if (!fine || fine->status != schema::CaseStatus::converged || !r.errors[2])
+    return false;
+  if (fine->interface && !grading::credibility(*fine->interface).credible)
+    return false;
+  return !(r.errors[0] && r.errors[1] &&
+           grading::luck_of_one_mesh(*r.errors[0], *r.errors[1], *r.errors[2]));
+}
+
+const ClaimEvidence& claim(const std::string& key) {
+  static const std::vector<ClaimEvidence> claims =
+      study_claims(battery().index, battery().rows, battery().singular);
+  for (const auto& c : claims) {
+    if (c.key == key)
+      return c;
+  }
+  throw std::logic_error("no claim " + key);
+}
+
+// Requirement: the ledger holds at least 8 claims, divergence and "IMC fastest" among them, each
+// with a verdict.
+TEST(ClaimsLedger, HoldsTheStudysClaimsWithVerdicts) {
+  const auto claims = study_claims(battery().index, battery().rows, battery().singular);
+  EXPECT_GE(claims.size(), 8u);
+  const std::string md = claims_ledger(claims);
+  for (const char* key : {"divergence", "mpc_fastest", "al_equals_pm", "element_order"})
+    EXPECT_NO_THROW(claim(key)) << key;
+  for (const auto& c : claims)
+    EXPECT_NE(md.find(to_string(c.verdict)), std::string::npos) << c.key;
+}
+
+// Requirement: the divergence claim counts Eq. 47 and the strict verdict over every complete
+// flat-punch row, recomputed from the raw values.
+TEST(ClaimsLedger, DivergenceCountsEq47OverEveryFlatPunchRow) {
+  int n = 0, eq47 = 0, strict = 0;
+  for (const auto& r : battery().doc.rows) {
+    if (r.spec.problem != schema::ProblemId::F_p || !r.is_baseline() || !r.values[0] ||
+        !r.values[1] || !r.values[2])
+      continue;
+    ++n;
+    eq47 += grading::eq47_diverging(*r.values[0], *r.values[1], *r.values[2]) ? 1 : 0;
+    strict += grading::divergence_verdict(*r.values[0], *r.values[1], *r.values[2]).diverges;
+  }
+  const ClaimEvidence& c = claim("divergence");
+  EXPECT_GT(n, 0);
+  EXPECT_EQ(c.n, n);
+  EXPECT_EQ(c.n_hold, eq47);
+  EXPECT_EQ(c.n2_hold, strict);
+  EXPECT_EQ(c.verdict, eq47 == n ? ClaimVerdict::reproduced
+                                 : (eq47 >= 0.75 * n ? ClaimVerdict::refined
+                                                     : ClaimVerdict::not_reproduced));
+  const std::string md = claims_ledger({c});
+  EXPECT_NE(md.find(std::to_string(eq47) + " of " + std::to_string(n) + " flat-punch rows"),
+            std::string::npos);
+}
+
+// Requirement: AL = PM counts the AL/PM pairs whose values agree to the printed digits.
+TEST(ClaimsLedger, AlEqualsPmComparesEveryPair) {
+  std::map<std::string, const schema::RowVerdict*> pm;
+  for (const auto& r : battery().doc.rows) {
+    if (r.is_baseline() && r.spec.algorithm == Algorithm::PM)
+      pm[r.id.substr(0, r.id.find("/PM/")) + r.id.substr(r.id.find("/PM/") + 3)] = &r;
+  }
+  int n = 0, same = 0;
+  for (const auto& r : battery().doc.rows) {
+    if (!r.is_baseline() || r.spec.algorithm != Algorithm::AL || !r.errors[2] ||
+        battery().index.singular(r.spec.problem))
+      continue;
+    const auto it = pm.find(r.id.substr(0, r.id.find("/AL/")) + r.id.substr(r.id.find("/AL/") + 3));
+    if (it == pm.end())
+      continue;
+    ++n;
+    bool equal = true;
+    for (int m = 0; m < 3; ++m)
+      equal = equal && r.values[m].has_value() == it->second->values[m].has_value() &&
+              (!r.values[m] || std::abs(*r.values[m] - *it->second->values[m]) < 5e-5);
+    same += equal ? 1 : 0;
+  }
+  EXPECT_GT(n, 0);
+  EXPECT_EQ(claim("al_equals_pm").n, n);
+  EXPECT_EQ(claim("al_equals_pm").n_hold, same);
+}
+
+// Requirement: "IMC uniformly unsatisfactory" counts only evidence rows: an MPC row whose F case
+// fails an interface check, did not converge, or is the luck of one mesh is excluded, never
+// counted for or against.
+TEST(ClaimsLedger, MpcClaimCountsOnlyEvidence) {
+  int n = 0, bad = 0, excluded = 0;
+  for (const auto& r : battery().doc.rows) {
+    if (!r.is_baseline() || r.spec.algorithm != Algorithm::MPC || !r.errors[2] ||
+        battery().index.singular(r.spec.problem))
+      continue;
+    if (!evidence(r)) {
+      ++excluded;
+      continue;
+    }
+    const bool patch = r.spec.problem == schema::ProblemId::P_p ||
+                       r.spec.problem == schema::ProblemId::Pprime_p;
+    if (patch)
+      continue;
+    ++n;
+    const auto g = grading::grade_of_error(*r.errors[2]);
+    bad += g == schema::Grade::s || g == schema::Grade::u;
+  }
+  const ClaimEvidence& c = claim("mpc_unsatisfactory");
+  EXPECT_GT(excluded, 0) << "the fixture has MPC rows that are not evidence";
+  EXPECT_EQ(c.n_excluded, excluded);
+  EXPECT_EQ(c.n, n);
+  EXPECT_EQ(c.n_hold, bad);
+}
+
+// Requirement: "IMC fastest" is measured: per fine-mesh model, MPC's case time against the
+// fastest other option's.
+TEST(ClaimsLedger, MpcFastestIsMeasuredPerModel) {
+  std::map<std::string, std::map<Algorithm, double>> times;
+  for (const auto& c : battery().doc.cases) {
+    if (c.spec.mesh != MeshLevel::F || !c.is_baseline() ||
+        c.status != schema::CaseStatus::converged)
+      continue;
+    schema::CaseSpec model = c.spec;
+    model.algorithm = Algorithm::AL;
+    times[schema::case_id(model)][c.spec.algorithm] = c.wall_seconds;
+  }
+  int n = 0, fastest = 0;
+  for (const auto& [model, t] : times) {
+    if (!t.count(Algorithm::MPC) || t.size() < 2)
+      continue;
+    ++n;
+    double other = INFINITY;
+    for (const auto& [a, s] : t)
+      other = a == Algorithm::MPC ? other : std::min(other, s);
+    fastest += t.at(Algorithm::MPC) < other;
+  }
+  EXPECT_GT(n, 0);
+  EXPECT_EQ(claim("mpc_fastest").n, n);
+  EXPECT_EQ(claim("mpc_fastest").n_hold, fastest);
+}
+
+// Requirement: each verdict cell is the worst signed F error over its rows, graded by Eq. 46,
+// and is marked when a row is not evidence; the page prints it with its sign.
+TEST(VerdictPage, CellsAreTheWorstSignedFineErrorGradedByEq46) {
+  const auto situations = situation_verdicts(battery().index, battery().rows, battery().singular);
+  ASSERT_FALSE(situations.empty());
+  int cells = 0;
+  for (const auto& s : situations) {
+    for (const auto& c : s.cells) {
+      if (c.rows.empty())
+        continue;
+      ++cells;
+      double worst = 0.0;
+      int not_credible = 0;
+      for (const RowFacts* f : c.rows) {
+        const double e = *f->row->errors[2];
+        worst = std::abs(e) > std::abs(worst) ? e : worst;
+        const schema::CaseResult* fine = case_of(*f->row, MeshLevel::F);
+        not_credible += fine && fine->interface && !grading::credibility(*fine->interface).credible;
+        EXPECT_TRUE(std::count(s.problems.begin(), s.problems.end(), f->problem));
+        EXPECT_EQ(family_of(f->option.algorithm), c.family);
+      }
+      EXPECT_EQ(*c.worst_error, worst);
+      EXPECT_EQ(*c.worst_grade, grading::grade_of_error(worst));
+      EXPECT_EQ(c.n_not_credible, not_credible);
+      const std::string cell = verdict_cell(c);
+      EXPECT_EQ(cell.find(not_credible > 0 ? "✗" : "~") != std::string::npos, not_credible > 0);
+      EXPECT_NE(cell.find(worst < 0 ? "−" : "+"), std::string::npos) << cell;
+    }
+  }
+  EXPECT_GT(cells, 10);
+}
+
+// Requirement: the best options of a situation are evidence cells of one grade, not ranked; an
+// option whose rows fail an interface check is never among them.
+TEST(VerdictPage, TiesAreEvidenceOfTheBestGrade) {
+  for (const auto& s : situation_verdicts(battery().index, battery().rows, battery().singular)) {
+    for (const OptionCell* c : s.best) {
+      if (s.singular)
+        continue;
+      EXPECT_TRUE(c->evidence) << s.title;
+      EXPECT_EQ(c->worst_grade, s.best_grade) << s.title;
+      EXPECT_EQ(c->n_not_credible, 0);
+    }
+  }
+}
+
+// Requirement: the first screen of the study's battery is at most 60 lines.
+TEST(VerdictPage, FitsOnTheFirstScreen) {
+  const auto situations = situation_verdicts(battery().index, battery().rows, battery().singular);
+  const std::string md = verdict_page(battery().index, situations);
+  EXPECT_LE(std::count(md.begin(), md.end(), '\n'), 60);
+}
+
+}  // namespace
+}  // namespace cs::reports
