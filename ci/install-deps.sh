@@ -10,9 +10,11 @@ packages=(
   libopenblas0-pthread libopenblas-dev    # the system BLAS/LAPACK CHOLMOD runs on
   libgsl-dev                              # root finding, quadrature
   libfmt-dev libcli11-dev nlohmann-json3-dev
+  libpugixml-dev                          # JUnit XML of run and gate (--junit)
   libgtest-dev libgmock-dev libbenchmark-dev
   gnuplot-nox                             # figures of the report
   python3 python3-meshio                  # independent VTU reader used by a test
+  python3-xmlschema                       # validates --junit output against tests/ci/junit.xsd
   calculix-ccx                            # the second solver graded by the suite (ccx 2.20)
 )
 # Optional groups: `--slurm` adds a single-node Slurm cluster (ci/slurm-smoke.sh);

@@ -23,6 +23,9 @@ cs_require(CLI11_FOUND "CLI11" libcli11-dev)
 find_package(nlohmann_json 3.10 QUIET)
 cs_require(nlohmann_json_FOUND "nlohmann-json" nlohmann-json3-dev)
 
+find_package(pugixml QUIET)
+cs_require(pugixml_FOUND "pugixml" libpugixml-dev)
+
 find_package(Threads REQUIRED)
 
 # SuiteSparse 5.x ships no CMake package: find CHOLMOD and its companions by hand.
