@@ -22,6 +22,11 @@ struct GateArgs {
   CiReportFiles ci;
 };
 
+/// The file name of a path, for the summary's title (the directories are the CI job's own).
+std::string file_name(const std::string& path) {
+  return std::filesystem::path(path).filename().string();
+}
+
 int update_baseline(const GateArgs& args, const std::vector<suites::CaseResult>& results) {
   schema::GateTolerances tolerances;
   if (std::filesystem::exists(args.baseline)) {  // keep the tolerances a team has set
@@ -45,9 +50,10 @@ int run_gate(const GateArgs& args) {
   const auto baseline = schema::read_baseline_file(args.baseline);
   const auto report = suites::run_gate(baseline, results);
   if (args.ci.any()) {
-    write_ci_reports(
-        args.ci, suites::gate_row_outcomes(baseline, report, results), "contact-suite gate",
-        fmt::format("contact-suite gate of {} against {}", args.results, args.baseline));
+    write_ci_reports(args.ci, suites::gate_row_outcomes(baseline, report, results),
+                     "contact-suite gate",
+                     fmt::format("contact-suite gate of {} against {}", file_name(args.results),
+                                 file_name(args.baseline)));
   }
   if (report.passed()) {
     fmt::print("gate: passed — {} cases and {} rows within the baseline {}\n", report.cases_checked,

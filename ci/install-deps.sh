@@ -14,7 +14,9 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   gnuplot-nox                             # figures of the report
   python3 python3-meshio                  # independent VTU reader used by a test
-  python3-xmlschema                       # validates --junit output against tests/ci/junit.xsd
+  libxml2-utils                           # xmllint: validates --junit output (tests/ci/junit.xsd)
+  python3-dev pybind11-dev                # the Python module contact_suite (python/)
+  python3-numpy python3-pytest            # its arrays and its tests
   calculix-ccx                            # the second solver graded by the suite (ccx 2.20)
 )
 # Optional groups: `--slurm` adds a single-node Slurm cluster (ci/slurm-smoke.sh);

@@ -70,7 +70,8 @@ std::map<std::string, std::vector<std::string>> testcases_with(const fs::path& x
 }
 
 /// A baseline of the fixture (`gate --update`), with H_p/M/Q4/AL/ss's sigma_c scaled by
-/// 1 + 1e-3: a drift a thousand times the default tolerance of 1e-6.
+/// 1 + 1e-3 (a drift a thousand times the default tolerance of 1e-6), and H_p/F/Q4/MPC/ss, which
+/// did not converge in the fixture, recorded as converged (so that it stopped converging).
 fs::path drifted_baseline(const TempDir& tmp) {
   const fs::path baseline = tmp.path() / "baseline.json";
   const auto r = run_cli(
@@ -84,6 +85,10 @@ fs::path drifted_baseline(const TempDir& tmp) {
           c["quantities"]["sigma_c"]["value"].get<double>() * 1.001;
       drifted = true;
     }
+    if (c["id"] == "H_p/F/Q4/MPC/ss") {
+      c["status"] = "converged";
+      c["reason"] = "";
+    }
   }
   EXPECT_TRUE(drifted);
   write_text(baseline, doc.dump(2));
@@ -92,7 +97,8 @@ fs::path drifted_baseline(const TempDir& tmp) {
 
 // Requirement: against a baseline with one value drifted, the gate's JUnit file validates and
 // fails exactly that value's row, its failure naming the value, the baseline and the tolerance;
-// the XML and the summary equal their gold files.
+// the rows of a case that stopped converging are errors; the XML and the summary equal their
+// gold files.
 TEST(JunitCli, DriftedBaselineFailsExactlyItsRow) {
   TempDir tmp;
   const fs::path baseline = drifted_baseline(tmp);
@@ -112,7 +118,15 @@ TEST(JunitCli, DriftedBaselineFailsExactlyItsRow) {
   EXPECT_NE(reasons[0].find("value drift of H_p/M/Q4/AL/ss sigma_c: now "), std::string::npos)
       << reasons[0];
   EXPECT_NE(reasons[0].find("> tolerance 1e-06"), std::string::npos) << reasons[0];
-  EXPECT_TRUE(testcases_with(xml, "error").empty());
+  const auto errors = testcases_with(xml, "error");
+  ASSERT_EQ(errors.size(), 2u);
+  for (const auto* row : {"H_p/Q4/MPC/ss/sigma_c", "H_p/Q4/MPC/ss/sigma_h"}) {
+    ASSERT_EQ(errors.count(row), 1u) << row;
+    EXPECT_NE(errors.at(row).at(0).find("status of H_p/F/Q4/MPC/ss: now not_converged, baseline "
+                                        "converged"),
+              std::string::npos)
+        << errors.at(row).at(0);
+  }
 
   expect_gold(read_text(xml), "gate_drifted.junit.xml");
   expect_gold(read_text(md), "gate_drifted.summary.md");
@@ -165,8 +179,9 @@ TEST(JunitCli, RunWritesAValidFile) {
       EXPECT_GT(tc.attribute("time").as_double(), 0.0);
     }
   }
-  EXPECT_EQ(names, (std::set<std::string>{"P_p/Q4/AL/ss/sigma_z_max", "H_p/Q4/AL/ss/sigma_c",
-                                          "H_p/Q4/AL/ss/sigma_h"}));
+  EXPECT_EQ(names,
+            (std::set<std::string>{"P_p/Q4/AL/ss/sigma_z_max", "H_p/Q4/AL/ss/sigma_c",
+                                   "H_p/Q4/AL/ss/contact_half_width", "H_p/Q4/AL/ss/sigma_h"}));
   EXPECT_NE(read_text(md).find("## contact-suite run (2 cases): passed"), std::string::npos)
       << read_text(md);
 }
