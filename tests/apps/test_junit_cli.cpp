@@ -132,9 +132,9 @@ TEST(JunitCli, DriftedBaselineFailsExactlyItsRow) {
   expect_gold(read_text(md), "gate_drifted.summary.md");
 }
 
-// Requirement: the gate of results against their own baseline passes; rows whose cases failed
-// in the baseline are skipped (nothing to compare), and the XML validates.
-TEST(JunitCli, UnchangedResultsPassAndFailedRowsAreSkipped) {
+// Requirement: the gate of results against their own baseline passes every row (the fixture's
+// failed and unconverged cases failed in the baseline too), and the XML validates.
+TEST(JunitCli, UnchangedResultsPass) {
   TempDir tmp;
   const fs::path baseline = tmp.path() / "baseline.json";
   ASSERT_EQ(
@@ -153,6 +153,7 @@ TEST(JunitCli, UnchangedResultsPassAndFailedRowsAreSkipped) {
   const auto root = doc.child("testsuites");
   EXPECT_EQ(root.attribute("tests").as_int(), 32);  // the fixture's rows
   EXPECT_EQ(root.attribute("failures").as_int(), 0);
+  EXPECT_EQ(root.attribute("errors").as_int(), 0);
 }
 
 // Requirement: `run --junit` writes one testcase per row, with an error for each row whose case
