@@ -5,11 +5,13 @@
 
 #include <fmt/core.h>
 
+#include "apps/ci_report_files.hpp"
 #include "apps/usage_error.hpp"
 #include "schema/baseline_file.hpp"
 #include "schema/json_file.hpp"
 #include "schema/results_file.hpp"
 #include "suites/gate.hpp"
+#include "suites/row_outcomes.hpp"
 
 namespace cs::apps {
 namespace {
@@ -17,7 +19,13 @@ namespace {
 struct GateArgs {
   std::string baseline, results;
   bool update = false;
+  CiReportFiles ci;
 };
+
+/// The file name of a path, for the summary's title (the directories are the CI job's own).
+std::string file_name(const std::string& path) {
+  return std::filesystem::path(path).filename().string();
+}
 
 int update_baseline(const GateArgs& args, const std::vector<suites::CaseResult>& results) {
   schema::GateTolerances tolerances;
@@ -33,11 +41,20 @@ int update_baseline(const GateArgs& args, const std::vector<suites::CaseResult>&
 }
 
 int run_gate(const GateArgs& args) {
+  if (args.update && args.ci.any())
+    throw UsageError("--junit and --summary report a check; --update checks nothing");
+  require_writable(args.ci);
   const auto results = schema::read_results_file(args.results).cases;
   if (args.update)
     return update_baseline(args, results);
   const auto baseline = schema::read_baseline_file(args.baseline);
   const auto report = suites::run_gate(baseline, results);
+  if (args.ci.any()) {
+    write_ci_reports(args.ci, suites::gate_row_outcomes(baseline, report, results),
+                     "contact-suite gate",
+                     fmt::format("contact-suite gate of {} against {}", file_name(args.results),
+                                 file_name(args.baseline)));
+  }
   if (report.passed()) {
     fmt::print("gate: passed — {} cases and {} rows within the baseline {}\n", report.cases_checked,
                report.rows_checked, args.baseline);
@@ -59,6 +76,7 @@ void add_gate_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--results", args->results, "Results file of a run (results.json)")->required();
   cmd->add_flag("--update", args->update,
                 "Rewrite the baseline from the results (keeps its tolerances)");
+  add_ci_report_options(*cmd, args->ci);
   cmd->callback([args, &exit_code] { exit_code = run_gate(*args); });
 }
 

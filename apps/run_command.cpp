@@ -11,6 +11,7 @@
 #include <fmt/core.h>
 
 #include "apps/case_selection_options.hpp"
+#include "apps/ci_report_files.hpp"
 #include "apps/invocation.hpp"
 #include "apps/memory_plan.hpp"
 #include "apps/usage_error.hpp"
@@ -26,6 +27,7 @@
 #include "suites/problem_executor.hpp"
 #include "suites/problem_setup.hpp"
 #include "suites/progress.hpp"
+#include "suites/row_outcomes.hpp"
 #include "suites/row_verdict.hpp"
 #include "suites/run_environment.hpp"
 #include "suites/shard.hpp"
@@ -45,6 +47,7 @@ struct RunArgs {
   bool no_report = false;
   bool surface_csv = false;
   double max_memory_gib = 0.0;
+  CiReportFiles ci;
   std::string command_line;
 };
 
@@ -98,6 +101,7 @@ double group_cost(const suites::CaseSpec& spec) {
 
 int run(const RunArgs& args) {
   platform::check_output_directory(args.out);  // refused before any input is read
+  require_writable(args.ci);  // before anything runs: a bad path costs nothing
   std::vector<schema::SweepAxis> sweep;
   const auto all_cases = selected_cases(args, sweep);
   suites::ExecutorOptions exec;
@@ -174,6 +178,10 @@ int run(const RunArgs& args) {
     report_interrupted_write(args.out);
     return 128 + platform::interrupted_signal();
   }
+  if (args.ci.any()) {
+    write_ci_reports(args.ci, suites::run_row_outcomes(results, doc.rows), "contact-suite run",
+                     fmt::format("contact-suite run ({} cases)", results.size()));
+  }
   fmt::print("wrote {}{}\n", (std::filesystem::path(args.out) / "results.json").string(),
              args.no_report ? "" : fmt::format(" and its report ({} figures)", *figures));
   for (const auto& r : results) {
@@ -208,6 +216,7 @@ void add_run_command(CLI::App& app, int& exit_code) {
   cmd->add_flag("--surface-csv", args->surface_csv,
                 "Also write surface.csv: each converged case's nodal stresses and contact "
                 "pressures on the sampled surface, in the layout `grade --import` reads");
+  add_ci_report_options(*cmd, args->ci);
   auto* shard = cmd->add_option(
       "--shard", args->shard,
       "Run slice K of N (K/N, 1-based) of the selected cases; slices keep the cases "

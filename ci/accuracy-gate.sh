@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # The accuracy gate of CI: runs the C and M meshes of every problem and option (and the F mesh
 # of every problem but the Steuermann ones, whose fine meshes take most of the full matrix's
-# time), then checks the results against the committed baseline ci/baseline.json.
+# time), then checks the results against the committed baseline ci/baseline.json. The gate's
+# verdict per row is written as JUnit XML to <build-dir>/ci-accuracy/junit.xml, for the CI's
+# test report, and its Markdown summary appended to $GITHUB_STEP_SUMMARY when that is set.
 #
 #   bash ci/accuracy-gate.sh [build-dir]            # check
 #   bash ci/accuracy-gate.sh [build-dir] --update   # rewrite the baseline deliberately
@@ -21,5 +23,8 @@ mkdir -p "$out"
 if [ "${2:-}" = "--update" ]; then
   "$exe" gate --baseline ci/baseline.json --results "$out/all/results.json" --update
 else
-  "$exe" gate --baseline ci/baseline.json --results "$out/all/results.json"
+  summary=()
+  [ -n "${GITHUB_STEP_SUMMARY:-}" ] && summary=(--summary "$GITHUB_STEP_SUMMARY")
+  "$exe" gate --baseline ci/baseline.json --results "$out/all/results.json" \
+    --junit "$out/junit.xml" "${summary[@]}"
 fi

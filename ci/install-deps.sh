@@ -11,9 +11,13 @@ packages=(
   libgsl-dev                              # root finding, quadrature
   libfmt-dev libcli11-dev nlohmann-json3-dev
   libkainjow-mustache-dev                 # the report's prose templates (Mustache)
+  libpugixml-dev                          # JUnit XML of run and gate (--junit)
   libgtest-dev libgmock-dev libbenchmark-dev
   gnuplot-nox                             # figures of the report
   python3 python3-meshio                  # independent VTU reader used by a test
+  libxml2-utils                           # xmllint: validates --junit output (tests/ci/junit.xsd)
+  python3-dev pybind11-dev                # the Python module contact_suite (python/)
+  python3-numpy python3-pytest            # its arrays and its tests
   calculix-ccx                            # the second solver graded by the suite (ccx 2.20)
 )
 # Optional groups: `--slurm` adds a single-node Slurm cluster (ci/slurm-smoke.sh);

@@ -23,6 +23,9 @@ cs_require(CLI11_FOUND "CLI11" libcli11-dev)
 find_package(nlohmann_json 3.10 QUIET)
 cs_require(nlohmann_json_FOUND "nlohmann-json" nlohmann-json3-dev)
 
+find_package(pugixml QUIET)
+cs_require(pugixml_FOUND "pugixml" libpugixml-dev)
+
 find_package(Threads REQUIRED)
 
 # kainjow's Mustache (header-only): the report's prose templates.
@@ -48,6 +51,19 @@ add_library(cs_cholmod INTERFACE)
 target_include_directories(cs_cholmod SYSTEM INTERFACE ${CHOLMOD_INCLUDE_DIR})
 target_link_libraries(cs_cholmod INTERFACE ${CHOLMOD_LIBRARY} ${SUITESPARSECONFIG_LIBRARY}
                                            ${METIS_LIBRARY} ${LAPACK_LIBRARIES} ${BLAS_LIBRARIES})
+
+if(CONTACT_SUITE_BUILD_PYTHON)
+  # Debian's python3: the one the .deb depends on and the one with Debian's NumPy and pytest. A
+  # python3 of pyenv or a virtualenv first on PATH has neither; pass -DPython3_EXECUTABLE to
+  # choose another.
+  if(NOT DEFINED Python3_EXECUTABLE AND EXISTS /usr/bin/python3)
+    set(Python3_EXECUTABLE /usr/bin/python3)
+  endif()
+  find_package(Python3 3.9 QUIET COMPONENTS Interpreter Development.Module)
+  cs_require(Python3_FOUND "Python 3 headers" python3-dev)
+  find_package(pybind11 2.6 QUIET CONFIG)
+  cs_require(pybind11_FOUND "pybind11" pybind11-dev)
+endif()
 
 if(CONTACT_SUITE_BUILD_TESTS)
   find_package(GTest QUIET)

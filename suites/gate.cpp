@@ -18,13 +18,22 @@ std::string optional_bool_text(const std::optional<bool>& v) {
   return v ? (*v ? "yes" : "no") : "n/a";
 }
 
+/// Every row a case belongs to (one per quantity).
+std::vector<std::string> row_ids(const CaseResult& c) {
+  std::vector<std::string> ids;
+  for (const auto& q : c.quantities)
+    ids.push_back(row_id(c.spec, q.quantity));
+  return ids;
+}
+
 /// A value that was finite must stay within tolerance; a value that was missing may appear.
 void check_case(const Baseline& baseline, const CaseResult& old_case, const CaseResult& new_case,
                 GateReport& report) {
   const std::string id = case_id(old_case.spec);
   if (old_case.status == CaseStatus::converged && new_case.status != CaseStatus::converged) {
     report.failures.push_back({id, "status", std::string(to_string(old_case.status)),
-                               std::string(to_string(new_case.status)), new_case.reason});
+                               std::string(to_string(new_case.status)), new_case.reason,
+                               row_ids(old_case)});
   }
   for (const auto& q_old : old_case.quantities) {
     if (!std::isfinite(q_old.value))
@@ -36,7 +45,12 @@ void check_case(const Baseline& baseline, const CaseResult& old_case, const Case
     }
     const std::string qid = id + " " + std::string(to_string(q_old.quantity));
     if (q_new == nullptr || !std::isfinite(q_new->value)) {
-      report.failures.push_back({qid, "value drift", number_text(q_old.value), "none", "no value"});
+      report.failures.push_back({qid,
+                                 "value drift",
+                                 number_text(q_old.value),
+                                 "none",
+                                 "no value",
+                                 {row_id(old_case.spec, q_old.quantity)}});
       continue;
     }
     const double tol = baseline.tolerances.of(q_old.quantity);
@@ -44,8 +58,12 @@ void check_case(const Baseline& baseline, const CaseResult& old_case, const Case
         std::abs(q_new->value - q_old.value) / std::max(std::abs(q_old.value), 1e-300);
     if (!(drift <= tol)) {
       report.failures.push_back(
-          {qid, "value drift", number_text(q_old.value), number_text(q_new->value),
-           fmt::format("relative drift {:.3g} > tolerance {:.3g}", drift, tol)});
+          {qid,
+           "value drift",
+           number_text(q_old.value),
+           number_text(q_new->value),
+           fmt::format("relative drift {:.3g} > tolerance {:.3g}", drift, tol),
+           {row_id(old_case.spec, q_old.quantity)}});
     }
   }
 }
@@ -53,19 +71,29 @@ void check_case(const Baseline& baseline, const CaseResult& old_case, const Case
 void check_row(const RowVerdict& old_row, const RowVerdict& new_row, GateReport& report) {
   if (old_row.grade) {
     if (!new_row.grade || is_worse(*new_row.grade, *old_row.grade)) {
-      report.failures.push_back({old_row.id, "grade", std::string(to_string(*old_row.grade)),
+      report.failures.push_back({old_row.id,
+                                 "grade",
+                                 std::string(to_string(*old_row.grade)),
                                  new_row.grade ? std::string(to_string(*new_row.grade)) : "none",
-                                 "worse against the exact value (Eq. 46)"});
+                                 "worse against the exact value (Eq. 46)",
+                                 {old_row.id}});
     }
   }
   if (old_row.converging.value_or(false) && !new_row.converging.value_or(false)) {
-    report.failures.push_back({old_row.id, "converging", optional_bool_text(old_row.converging),
-                               optional_bool_text(new_row.converging), "stopped converging"});
+    report.failures.push_back({old_row.id,
+                               "converging",
+                               optional_bool_text(old_row.converging),
+                               optional_bool_text(new_row.converging),
+                               "stopped converging",
+                               {old_row.id}});
   }
   if (old_row.diverging.value_or(false) && !new_row.diverging.value_or(false)) {
-    report.failures.push_back({old_row.id, "diverging", optional_bool_text(old_row.diverging),
+    report.failures.push_back({old_row.id,
+                               "diverging",
+                               optional_bool_text(old_row.diverging),
                                optional_bool_text(new_row.diverging),
-                               "no longer diverges at the singular edge (Eq. 47)"});
+                               "no longer diverges at the singular edge (Eq. 47)",
+                               {old_row.id}});
   }
 }
 
@@ -133,6 +161,18 @@ GateReport run_gate(const Baseline& baseline, const std::vector<CaseResult>& res
     ++report.rows_checked;
   }
   return report;
+}
+
+std::string failure_line(const GateFailure& failure) {
+  std::string line = fmt::format("{} of {}: now {}, baseline {}", failure.check, failure.id,
+                                 failure.after, failure.before);
+  if (!failure.detail.empty())
+    line += " (" + failure.detail + ")";
+  for (char& c : line) {
+    if (c == '\n' || c == '\r')
+      c = ' ';
+  }
+  return line;
 }
 
 std::string format_gate_failures(const GateReport& report) {

@@ -29,7 +29,12 @@ struct GateFailure {
   std::string before;  ///< baseline value / grade / status
   std::string after;   ///< new value / grade / status
   std::string detail;  ///< e.g. the relative drift and the tolerance
+  std::vector<std::string> row_ids;  ///< the rows it concerns (a case's failure: all its rows)
 };
+
+/// The one-line reason of a failure, e.g. "value drift of H_p/M/Q4/AL/ss sigma_c: now
+/// 1.2705, baseline 1.2704 (relative drift 7.9e-05 > tolerance 1e-06)".
+std::string failure_line(const GateFailure& failure);
 
 /// The gate's verdict.
 struct GateReport {

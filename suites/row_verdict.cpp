@@ -12,10 +12,6 @@
 namespace cs::suites {
 namespace {
 
-std::string row_key(const CaseSpec& spec, Quantity quantity) {
-  return schema::case_key(spec) + "/" + std::string(to_string(quantity));
-}
-
 /// The verdicts over M, F, VF, beside the row's C-M-F ones (the row must have VF).
 void apply_refinement_verdicts(RowVerdict& row) {
   schema::RefinementVerdict& vf = *row.refinement;
@@ -60,12 +56,16 @@ void apply_verdicts(RowVerdict& row) {
 
 }  // namespace
 
+std::string row_id(const CaseSpec& spec, Quantity quantity) {
+  return schema::case_key(spec) + "/" + std::string(to_string(quantity));
+}
+
 std::vector<RowVerdict> make_row_verdicts(const std::vector<CaseResult>& cases) {
   std::map<std::string, RowVerdict> rows;
   std::vector<std::string> order;  // first-seen order keeps the runner's (study) order
   for (const auto& c : cases) {
     for (const auto& q : c.quantities) {
-      const std::string key = row_key(c.spec, q.quantity);
+      const std::string key = row_id(c.spec, q.quantity);
       auto [it, inserted] = rows.try_emplace(key);
       RowVerdict& row = it->second;
       if (inserted) {

@@ -363,6 +363,9 @@ fs::path default_study_data_dir() {
     for (int up = 0; up < 5 && !dir.empty(); ++up) {
       if (holds_study_data(dir / "data" / "study"))
         return dir / "data" / "study";
+      const fs::path installed = dir / "share" / "contact-suite" / "data" / "study";
+      if (holds_study_data(installed))  // an installed program: PREFIX/bin -> PREFIX/share
+        return installed;
       if (dir == dir.parent_path())
         break;
       dir = dir.parent_path();

@@ -126,8 +126,9 @@ class StudyReference {
 StudyReference load_study_reference(const std::filesystem::path& dir);
 
 /// Where the study data is when the user does not say: the compile definition
-/// CONTACT_SUITE_STUDY_DATA_DIR if that directory exists, else the first `data/study` found
-/// walking up from the running executable's directory, else from the working directory.
+/// CONTACT_SUITE_STUDY_DATA_DIR if that directory exists, else the first `data/study` (or
+/// `share/contact-suite/data/study`, where `cmake --install` puts it) found walking up from the
+/// running executable's directory, else `data/study` in the working directory.
 /// Throws ReportError when none holds ansys_results.csv.
 std::filesystem::path default_study_data_dir();
 

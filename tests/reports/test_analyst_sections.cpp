@@ -69,6 +69,7 @@ TEST(Anomalies, ExplainsCrossingsAndAlEqualsPm) {
   for (auto& r : doc["rows"]) {
     if (r["id"] == "H_p/Q4/MPC/ss/sigma_c") {
       r["error_percent"]["C"] = 270.0;
+      r["error_percent"]["F"] = 0.5;  // the grade is of the F error
       r["grade"] = "e";
     }
   }

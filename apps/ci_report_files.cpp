@@ -1,0 +1,101 @@
+#include "apps/ci_report_files.hpp"
+
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <system_error>
+
+#include <fmt/core.h>
+
+#include "apps/usage_error.hpp"
+#include "reports/ci/ci_summary.hpp"
+#include "reports/ci/junit_xml.hpp"
+
+namespace cs::apps {
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path directory_of(const fs::path& file) {
+  return file.has_parent_path() ? file.parent_path() : fs::path(".");
+}
+
+/// Throws unless `path` (of `option`) names a file that can be created or appended to.
+void require_writable_file(const std::string& option, const std::string& path) {
+  if (path.empty())
+    return;
+  std::error_code ec;
+  const fs::path file(path);
+  if (fs::is_directory(file, ec))
+    throw UsageError(fmt::format("{} {}: is a directory, not a file", option, path));
+  const fs::path dir = directory_of(file);
+  if (!fs::is_directory(dir, ec))
+    throw UsageError(
+        fmt::format("{} {}: the directory {} does not exist", option, path, dir.string()));
+  const bool existed = fs::exists(file, ec);
+  std::FILE* f = std::fopen(path.c_str(), "a");
+  if (f == nullptr) {
+    throw UsageError(
+        fmt::format("{} {}: cannot be written ({})", option, path, std::strerror(errno)));
+  }
+  std::fclose(f);
+  if (!existed)
+    fs::remove(file, ec);
+}
+
+/// Writes `text` to a temporary file beside `path`, then renames it over `path`.
+void replace_file(const std::string& option, const std::string& path, const std::string& text) {
+  std::string temp = (directory_of(path) / ".contact-suite-XXXXXX").string();
+  const int fd = mkstemp(temp.data());
+  if (fd < 0)
+    throw UsageError(
+        fmt::format("{} {}: cannot be written ({})", option, path, std::strerror(errno)));
+  const bool written = ::write(fd, text.data(), text.size()) == static_cast<ssize_t>(text.size()) &&
+                       ::fsync(fd) == 0;
+  ::close(fd);
+  std::error_code ec;
+  if (written)
+    fs::permissions(temp, fs::perms(0644), ec);
+  if (!written || ec || std::rename(temp.c_str(), path.c_str()) != 0) {
+    fs::remove(temp, ec);
+    throw UsageError(fmt::format("{} {}: cannot be written", option, path));
+  }
+}
+
+void append_file(const std::string& option, const std::string& path, const std::string& text) {
+  std::ofstream out(path, std::ios::binary | std::ios::app);
+  out << text;
+  out.close();
+  if (!out)
+    throw UsageError(fmt::format("{} {}: cannot be written", option, path));
+}
+
+}  // namespace
+
+void add_ci_report_options(CLI::App& cmd, CiReportFiles& files) {
+  cmd.add_option("--junit", files.junit,
+                 "Also write the rows as JUnit XML for a CI test report: one testsuite per "
+                 "problem, one testcase per row");
+  cmd.add_option("--summary", files.summary,
+                 "Also append a Markdown summary (counts, rows that did not pass or moved) to "
+                 "this file, e.g. \"$GITHUB_STEP_SUMMARY\"");
+}
+
+void require_writable(const CiReportFiles& files) {
+  require_writable_file("--junit", files.junit);
+  require_writable_file("--summary", files.summary);
+}
+
+void write_ci_reports(const CiReportFiles& files, const std::vector<schema::RowOutcome>& rows,
+                      std::string_view name, std::string_view title) {
+  if (!files.junit.empty())
+    replace_file("--junit", files.junit, reports::junit_xml(rows, name));
+  if (!files.summary.empty())
+    append_file("--summary", files.summary, reports::ci_summary_markdown(rows, title));
+}
+
+}  // namespace cs::apps
