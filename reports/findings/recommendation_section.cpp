@@ -123,26 +123,19 @@ std::string OptionAssessment::label() const {
 }
 
 const std::vector<Situation>& situations() {
+  using S = schema::Situation;
   static const std::vector<Situation> all{
-      {"Flat contact, nodes aligned (P<sub>p</sub>, P<sub>a</sub>)",
-       {ProblemId::P_p, ProblemId::P_a},
-       false},
+      {"Flat contact, nodes aligned (P<sub>p</sub>, P<sub>a</sub>)", S::matched_patch, false},
       {"Flat contact, nodes not aligned, stiff indenter (P′<sub>p</sub>, P′<sub>a</sub>)",
-       {ProblemId::Pprime_p, ProblemId::Pprime_a},
-       false},
+       S::mismatched_patch, false},
       {"Flat contact, nodes not aligned, bodies of one modulus (P′ E<sub>1</sub>)",
-       {ProblemId::Pprime_p_E1, ProblemId::Pprime_a_E1},
-       false},
+       S::mismatched_patch_equal_moduli, false},
       {"Smooth curved contact (Hertz: H<sub>p</sub> both stresses, H<sub>a</sub>)",
-       {ProblemId::H_p, ProblemId::H_a},
-       false},
-      {"Punch with rounded edges (Steuermann S(1), S(1/3), S(1/7))",
-       {ProblemId::S_1, ProblemId::S_1_3, ProblemId::S_1_7},
-       false},
+       S::smooth_curved, false},
+      {"Punch with rounded edges (Steuermann S(1), S(1/3), S(1/7))", S::rounded_punch, false},
       {"Sharp punch edge: a singularity the analyst must be alerted to (F<sub>p</sub>, "
        "F<sub>a</sub>)",
-       {ProblemId::F_p, ProblemId::F_a},
-       true},
+       S::flat_punch, true},
   };
   return all;
 }
@@ -153,10 +146,10 @@ std::vector<OptionAssessment> assess_situation(const ResultsIndex& index, const 
   for (const auto element : schema::values<schema::Element>()) {
     for (const Option& option : all_options()) {
       OptionAssessment a{option, element};
-      for (const ProblemId id : s.problems) {
-        const schema::ProblemRecord* p = index.problem(id);
-        if (p == nullptr)
+      for (const schema::ProblemRecord* p : index.problems()) {
+        if (p->situation != s.situation)
           continue;
+        const ProblemId id = p->id;
         for (const auto& q : p->quantities) {
           // The stresses an analyst checks against strength; the contact half-width is graded
           // apart (its error is bounded by the mesh, half an element).

@@ -42,10 +42,11 @@ struct OptionAssessment {
   std::string label() const;  ///< "LMP ss Q4"
 };
 
-/// A situation: its name and the problems it groups.
+/// A situation the advice is given for: its name, and the problems it groups, which are those
+/// whose record names `situation` (their descriptors declare it).
 struct Situation {
   std::string name;
-  std::vector<schema::ProblemId> problems;
+  schema::Situation situation = schema::Situation::matched_patch;
   bool singular = false;
 };
 
