@@ -14,6 +14,7 @@
 // its line in schema/case_axes.hpp. A problem outside the battery is registered at run time
 // instead (register_problem, one line).
 
+#include <utility>
 #include <vector>
 
 #include "schema/problem_facts.hpp"
