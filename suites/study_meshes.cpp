@@ -411,9 +411,9 @@ int steuermann_target_elements(double re_over_b, MeshLevel level) {
 StudyMesh build_study_mesh(const StudyMeshSpec& spec) {
   const MeshFamily family = layout_of(spec.problem).family;
   if (family == MeshFamily::own) {
-    throw SuiteInputError(fmt::format(
-        "study mesh {}: the problem builds its own mesh (its layout is `own`)",
-        to_string(spec.problem)));
+    throw SuiteInputError(
+        fmt::format("study mesh {}: the problem builds its own mesh (its layout is `own`)",
+                    to_string(spec.problem)));
   }
   require_positive(spec.a, "a", spec.problem);
   require_extent(spec);
@@ -421,12 +421,11 @@ StudyMesh build_study_mesh(const StudyMeshSpec& spec) {
   StudyMesh out = steuermann ? build_steuermann(spec) : build_uniform(spec);
   out.info.n_nodes = out.mesh.n_nodes();
   out.info.table1_block_elements =
-      steuermann
-          ? (spec.options.steuermann_target_elements > 0
-                 ? spec.options.steuermann_target_elements * level_factor(spec.level) *
-                       level_factor(spec.level)
-                 : steuermann_target_elements(spec.r_e / spec.b, spec.level))
-          : table1_elements(spec.problem, spec.level);
+      steuermann ? (spec.options.steuermann_target_elements > 0
+                        ? spec.options.steuermann_target_elements * level_factor(spec.level) *
+                              level_factor(spec.level)
+                        : steuermann_target_elements(spec.r_e / spec.b, spec.level))
+                 : table1_elements(spec.problem, spec.level);
   out.info.h_contact = contact_element_size(out.mesh, spec.a);
   return out;
 }

@@ -24,8 +24,7 @@ using testing::TempDir;
 /// carried `situation` and `length_scale`.
 std::string old_style_results(const std::string& dir) {
   const auto r = run_cli({"run", "--problems", "P_p", "--elements", "Q4", "--algorithms", "LMP",
-                          "--contacts", "ss", "--jobs", "1", "--no-report", "--out",
-                          dir + "/run"});
+                          "--contacts", "ss", "--jobs", "1", "--no-report", "--out", dir + "/run"});
   EXPECT_EQ(r.exit_code, 0) << r.err;
   json doc = json::parse(read_text(dir + "/run/results.json"));
   EXPECT_EQ(doc["problems"][0]["situation"], "matched_patch");  // a run writes them
@@ -59,8 +58,7 @@ TEST(OldResultsCli, ReportRefreshesTheProblemRecords) {
   TempDir tmp;
   const std::string dir = tmp.path().string();
   const std::string old = old_style_results(dir);
-  const auto r =
-      run_cli({"report", "--results", old, "--out", dir + "/report", "--no-figures"});
+  const auto r = run_cli({"report", "--results", old, "--out", dir + "/report", "--no-figures"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const std::string report = read_text(dir + "/report/report.md");
   EXPECT_NE(report.find("| Flat contact, nodes aligned (P<sub>p</sub>, P<sub>a</sub>) | LMP ss Q4"),

@@ -38,8 +38,7 @@ ProblemSetup build_uniform_patch(const CaseSpec& spec, const Parameters& params)
   const solver::RigidProfile rigid = solver::RigidPlane{{0.0, 0.0}, {0.0, 1.0}};
   ProblemSetup setup = problems::start_setup(spec, params, mesh, rigid);
   setup.model.loads.add_pressure(study_sets::kBlockFarZ, setup.p);
-  setup.model.fix(solver::NodeSelection::node_set(study_sets::kIndenterLoad),
-                  solver::Component::Z);
+  setup.model.fix(solver::NodeSelection::node_set(study_sets::kIndenterLoad), solver::Component::Z);
   const double exact = uniform_pressure_exact(setup.p);
   setup.exact_pressure_over_p = [exact](double x) { return x <= 1.0 ? exact : 0.0; };
   setup.quantities.push_back({Quantity::sigma_z_max, SamplePoint::MaxOnSurface,
