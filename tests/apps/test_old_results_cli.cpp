@@ -61,8 +61,10 @@ TEST(OldResultsCli, ReportRefreshesTheProblemRecords) {
   const auto r = run_cli({"report", "--results", old, "--out", dir + "/report", "--no-figures"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const std::string report = read_text(dir + "/report/report.md");
-  EXPECT_NE(report.find("| Flat contact, nodes aligned (P<sub>p</sub>, P<sub>a</sub>) | LMP ss Q4"),
-            std::string::npos);
+  EXPECT_NE(
+      report.find("| Flat contact, nodes aligned (P<sub>p</sub>, P<sub>a</sub>) | **LMP ss Q4**"),
+      std::string::npos)
+      << report.substr(0, 2000);
 }
 
 }  // namespace
