@@ -12,6 +12,7 @@
 #include "reports/report_writer.hpp"
 #include "schema/combined_results.hpp"
 #include "schema/results_file.hpp"
+#include "suites/problem_catalog.hpp"
 
 namespace cs::apps {
 namespace {
@@ -30,8 +31,11 @@ struct ReportArgs {
 void run_report(const ReportArgs& args) {
   platform::check_output_directory(args.out_dir);  // refused before any input is read
   std::vector<schema::ResultsDocument> documents;
-  for (const auto& path : args.results)
+  for (const auto& path : args.results) {
     documents.push_back(schema::read_results_file(path));
+    // A file written before the records held every fact gets them from the catalogue.
+    suites::refresh_problem_records(documents.back().problems);
+  }
   const schema::ResultsDocument results = schema::combine_results(std::move(documents));
   std::vector<reports::CompanionReport> companions;
   for (const auto& c : args.companions)

@@ -88,14 +88,11 @@ std::string model_name(const suites::CaseSpec& spec) {
                      schema::to_string(spec.element));
 }
 
-/// A rough relative cost of a model, to start the largest first.
+/// A rough relative cost of a model, to start the largest first: the problem's relative cost
+/// (its descriptor) times f^2 for the level's elements, and 3 for Q8.
 double group_cost(const suites::CaseSpec& spec) {
   const double f = suites::level_factor(spec.mesh);  // elements grow as f^2
-  double cost = f * f;
-  if (spec.problem == suites::ProblemId::S_1 || spec.problem == suites::ProblemId::S_1_3 ||
-      spec.problem == suites::ProblemId::S_1_7) {
-    cost *= 30.0;
-  }
+  const double cost = f * f * suites::problem_descriptor(spec.problem).relative_cost;
   return spec.element == schema::Element::Q8 ? 3.0 * cost : cost;
 }
 

@@ -10,6 +10,8 @@
 #include <array>
 #include <cstdint>
 #include <string_view>
+#include <type_traits>
+#include <vector>
 
 #include "schema/name_table.hpp"
 
@@ -21,6 +23,12 @@ namespace cs::schema {
 /// patch test, and CM_p, Cattaneo-Mindlin partial slip; IF_p and IF_a, the interference fits of
 /// a shaft in a ring and a sphere in a shell, conformal contact). Each has one descriptor in
 /// suites/problems/.
+///
+/// A problem defined outside the battery (a test's, an extension's) has no enumerator: it is
+/// registered at run time (suites::register_problem, one line) and takes an id from
+/// kFirstRegisteredProblem up, whose names the registry keeps (registered_entry below). The
+/// enumerators stay the keys of the built-in problems, so that every switch over them is
+/// checked by -Werror=switch and results.json keeps its names; see suites/problem_catalog.hpp.
 enum class ProblemId : std::uint8_t {
   P_p,
   P_a,
@@ -40,6 +48,15 @@ enum class ProblemId : std::uint8_t {
   IF_p,
   IF_a,
 };
+/// The first id of the problems registered at run time (ids below it are enumerators).
+inline constexpr std::uint8_t kFirstRegisteredProblem = 128;
+
+/// The names of a registered problem ({} for an id no one registered), and the registered ids
+/// in the order of registration (schema/registered_problems.cpp). Not constexpr: the vocabulary
+/// functions reach them only at run time (name_table.hpp).
+AxisEntry registered_entry(ProblemId v);
+std::vector<ProblemId> registered_values(ProblemId);
+
 constexpr std::string_view axis_name(ProblemId) {
   return "problem";
 }
@@ -80,7 +97,11 @@ constexpr AxisEntry entry(ProblemId v) {
     case ProblemId::IF_a:
       return {"IF_a", "", "IF<sub>a</sub>"};
   }
-  return {};
+  // Not an enumerator: at compile time the end of the table (count(), values()); at run time
+  // a registered problem, if any.
+  if (std::is_constant_evaluated())
+    return {};
+  return registered_entry(v);
 }
 
 /// The study's systematically refined meshes, coarse, medium (h/2) and fine (h/4), and one

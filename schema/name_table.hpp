@@ -12,12 +12,17 @@
 //
 // Enumerators are numbered 0, 1, 2, ... in table order (the study's order); values<E>() walks
 // them until entry() returns an empty name.
+//
+// An axis may also have values registered at run time (ProblemId, for problems defined outside
+// the battery): it then declares `std::vector<E> registered_values(E)`, and try_parse, parse and
+// accepted_names know those values too (values<E>() and count<E>() stay the enumerators).
 
 #include <array>
 #include <cstddef>
 #include <optional>
 #include <string>
 #include <string_view>
+#include <type_traits>
 
 #include "schema/schema_error.hpp"
 
@@ -70,21 +75,38 @@ constexpr std::string_view label(E v) {
 /// The enumerator named or aliased `text`, or nullopt.
 template <Axis E>
 constexpr std::optional<E> try_parse(std::string_view text) {
-  for (E v : values<E>()) {
+  const auto names = [text](E v) {
     const AxisEntry e = entry(v);
-    if (text == e.name || (!e.alias.empty() && text == e.alias))
+    return text == e.name || (!e.alias.empty() && text == e.alias);
+  };
+  for (E v : values<E>()) {
+    if (names(v))
       return v;
+  }
+  if constexpr (requires { registered_values(E{}); }) {
+    if (!std::is_constant_evaluated()) {
+      for (E v : registered_values(E{})) {
+        if (names(v))
+          return v;
+      }
+    }
   }
   return std::nullopt;
 }
 
-/// "AL, PM, LMP, PLM, MPC": the canonical names, for messages.
+/// "AL, PM, LMP, PLM, MPC": the canonical names (registered values last), for messages.
 template <Axis E>
 std::string accepted_names() {
   std::string out;
-  for (E v : values<E>()) {
+  const auto add = [&out](E v) {
     out += out.empty() ? "" : ", ";
     out += to_string(v);
+  };
+  for (E v : values<E>())
+    add(v);
+  if constexpr (requires { registered_values(E{}); }) {
+    for (E v : registered_values(E{}))
+      add(v);
   }
   return out;
 }

@@ -3,11 +3,17 @@
 // problem's descriptor (suites/problems/): its title, analysis type, whether it is singular,
 // the study's tables and equations for it, and how each graded quantity is defined. The report
 // builds its catalogue from these records, never from a list of its own.
+//
+// `situation` and `length_scale` came in after results files had been written without them:
+// they are optional in results.json, and `report` and `merge` fill them in from the built-in
+// catalogue for a problem it knows (suites::refresh_problem_records). A run always writes them.
 
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "schema/case_axes.hpp"
+#include "schema/problem_facts.hpp"
 #include "schema/quantity.hpp"
 
 namespace cs::schema {
@@ -33,6 +39,11 @@ struct ProblemRecord {
   std::string study_tables;  ///< the study's appendix tables, e.g. "7, 8"
   std::string exact_source;  ///< where the exact value comes from, e.g. "Eq. 15"
   std::vector<QuantityDefinition> quantities;
+  /// The analyst's situation the problem stands for (the advice is given per situation); none
+  /// in a results file written before it was recorded, for a problem no catalogue knows.
+  std::optional<Situation> situation{};
+  /// What x and the element size h are normalized by; none as for `situation`.
+  std::optional<LengthScale> length_scale{};
 
   /// The definition of `q`, or nullptr when the problem does not grade it.
   const QuantityDefinition* definition(Quantity q) const;

@@ -142,6 +142,11 @@ ProblemRecord problem_from_json(const json& j, const std::string& path) {
                             q.string("definition_plain"), q.string("study_table"),
                             q.string("study_row")});
   }
+  // Optional: files written before these were recorded lack them.
+  if (r.has("situation"))
+    p.situation = r.name<Situation>("situation");
+  if (r.has("length_scale"))
+    p.length_scale = r.name<LengthScale>("length_scale");
   return p;
 }
 
@@ -450,10 +455,15 @@ json to_json(const ProblemRecord& p) {
   json quantities = json::array();
   for (const auto& d : p.quantities)
     quantities.push_back(problem_quantity_to_json(d));
-  return {{"id", to_string(p.id)},          {"title", p.title},
-          {"description", p.description},   {"axisymmetric", p.axisymmetric},
-          {"singular", p.singular},         {"study_tables", p.study_tables},
-          {"exact_source", p.exact_source}, {"quantities", quantities}};
+  json out{{"id", to_string(p.id)},          {"title", p.title},
+           {"description", p.description},   {"axisymmetric", p.axisymmetric},
+           {"singular", p.singular},         {"study_tables", p.study_tables},
+           {"exact_source", p.exact_source}, {"quantities", quantities}};
+  if (p.situation)
+    out["situation"] = to_string(*p.situation);
+  if (p.length_scale)
+    out["length_scale"] = to_string(*p.length_scale);
+  return out;
 }
 
 json to_json(const ResultsDocument& doc) {

@@ -1,8 +1,16 @@
 #include "suites/problem_catalog.hpp"
 
 #include <array>
+#include <deque>
+#include <mutex>
 #include <set>
+#include <string>
 #include <utility>
+
+#include <fmt/format.h>
+
+#include "schema/registered_problems.hpp"
+#include "suites/suite_error.hpp"
 
 namespace cs::suites {
 namespace {
@@ -12,15 +20,68 @@ std::array<const ProblemDescriptor*, sizeof...(I)> collect(std::index_sequence<I
   return {&problem_descriptor<static_cast<ProblemId>(I)>()...};
 }
 
-const auto& catalogue() {
+const auto& built_in() {
   static const auto all = collect(std::make_index_sequence<schema::count<ProblemId>()>{});
   return all;
+}
+
+/// The registered problems' descriptors, element i for id kFirstRegisteredProblem + i (a deque:
+/// references handed out stay valid as it grows).
+struct Registered {
+  std::mutex mutex;
+  std::deque<ProblemDescriptor> descriptors;
+};
+
+Registered& registered() {
+  static Registered r;
+  return r;
+}
+
+const ProblemDescriptor* find_registered(ProblemId id) {
+  const auto index = static_cast<std::size_t>(id);
+  if (index < schema::kFirstRegisteredProblem)
+    return nullptr;
+  Registered& r = registered();
+  const std::lock_guard lock(r.mutex);
+  const std::size_t i = index - schema::kFirstRegisteredProblem;
+  return i < r.descriptors.size() ? &r.descriptors[i] : nullptr;
+}
+
+const ProblemDescriptor* find(ProblemId id) {
+  const auto index = static_cast<std::size_t>(id);
+  return index < built_in().size() ? built_in()[index] : find_registered(id);
 }
 
 }  // namespace
 
 const ProblemDescriptor& problem_descriptor(ProblemId id) {
-  return *catalogue().at(static_cast<std::size_t>(id));
+  if (const ProblemDescriptor* d = find(id))
+    return *d;
+  throw SuiteInputError(
+      fmt::format("problem id {} is neither built in nor registered", static_cast<int>(id)));
+}
+
+bool is_known_problem(ProblemId id) {
+  return find(id) != nullptr;
+}
+
+ProblemId register_problem(std::string_view name, ProblemDescriptor descriptor) {
+  Registered& r = registered();
+  const std::lock_guard lock(r.mutex);
+  const ProblemId id = schema::register_problem_name(name);
+  descriptor.record.id = id;
+  r.descriptors.push_back(std::move(descriptor));
+  return id;
+}
+
+std::vector<ProblemId> all_problems() {
+  const auto built_in_ids = values<ProblemId>();
+  std::vector<ProblemId> out(built_in_ids.begin(), built_in_ids.end());
+  for (ProblemId id : schema::registered_values(ProblemId{})) {
+    if (is_known_problem(id))
+      out.push_back(id);
+  }
+  return out;
 }
 
 bool is_axisymmetric(ProblemId id) {
@@ -56,6 +117,18 @@ std::vector<schema::ProblemRecord> problem_records(const std::vector<CaseResult>
   for (ProblemId id : present)
     out.push_back(problem_descriptor(id).record);
   return out;
+}
+
+void refresh_problem_records(std::vector<schema::ProblemRecord>& records) {
+  for (auto& record : records) {
+    const ProblemDescriptor* d = find(record.id);
+    if (d == nullptr)
+      continue;
+    if (!record.situation)
+      record.situation = d->situation;
+    if (!record.length_scale)
+      record.length_scale = d->length_scale;
+  }
 }
 
 }  // namespace cs::suites

@@ -12,6 +12,7 @@
 #include "solver/mesh/mesh_sets.hpp"
 #include "solver/mesh/mesh_transform.hpp"
 #include "solver/mesh/structured_block.hpp"
+#include "suites/problem_catalog.hpp"
 #include "suites/suite_error.hpp"
 
 namespace cs::suites {
@@ -27,18 +28,13 @@ void require_positive(double value, const char* name, ProblemId problem) {
   }
 }
 
-bool is_pprime(ProblemId p) {
-  return p == ProblemId::Pprime_p || p == ProblemId::Pprime_a || p == ProblemId::Pprime_p_E1 ||
-         p == ProblemId::Pprime_a_E1;
+/// The layout the problem's descriptor declares.
+const MeshLayout& layout_of(ProblemId p) {
+  return problem_descriptor(p).mesh_layout;
 }
 bool is_patch(ProblemId p) {
-  return p == ProblemId::P_p || p == ProblemId::P_a || is_pprime(p);
-}
-bool is_hertz(ProblemId p) {
-  return p == ProblemId::H_p || p == ProblemId::H_a;
-}
-bool is_steuermann(ProblemId p) {
-  return p == ProblemId::S_1 || p == ProblemId::S_1_3 || p == ProblemId::S_1_7;
+  const MeshFamily f = layout_of(p).family;
+  return f == MeshFamily::patch || f == MeshFamily::mismatched_patch;
 }
 
 /// Gives a block made by make_block or make_nested_refinement the study's set names.
@@ -109,24 +105,17 @@ struct UniformLayout {
 };
 
 UniformLayout uniform_layout(const StudyMeshSpec& spec) {
-  const int f = level_factor(spec.level);
-  const double a = spec.a;
-  switch (spec.problem) {
-    case ProblemId::P_p:
-    case ProblemId::P_a:
-      return {a, spec.options.patch_height_over_a * a, 8 * f};
-    case ProblemId::Pprime_p:
-    case ProblemId::Pprime_a:
-    case ProblemId::Pprime_p_E1:
-    case ProblemId::Pprime_a_E1:
-      return {a, spec.options.patch_height_over_a * a, 10 * f};
-    case ProblemId::H_p:
-      return {4 * a, 4 * a, 16 * f};
-    case ProblemId::H_a:
-      return {8 * a, 8 * a, 16 * f};
-    default:  // F_p, F_a
-      return {4 * a, 4 * a, 32 * f};
+  const MeshLayout& layout = layout_of(spec.problem);
+  if (layout.elements_per_side < 1 || !(layout.block_side_over_a > 0.0)) {
+    throw SuiteInputError(fmt::format(
+        "study mesh {}: a uniform layout needs elements_per_side >= 1 and block_side_over_a > 0 "
+        "(has {} and {})",
+        to_string(spec.problem), layout.elements_per_side, layout.block_side_over_a));
   }
+  const int f = level_factor(spec.level);
+  const double width = layout.block_side_over_a * spec.a;
+  const double depth = is_patch(spec.problem) ? spec.options.patch_height_over_a * spec.a : width;
+  return {width, depth, layout.elements_per_side * f};
 }
 
 /// P, P', H, F: a uniform block and a structured indenter.
@@ -149,16 +138,17 @@ StudyMesh build_uniform(const StudyMeshSpec& spec) {
   ind.type = spec.element;
   ind.body_name = study_sets::kIndenter;
   const std::vector<double> block_x = surface_corner_x(block);
+  const MeshFamily family = layout_of(spec.problem).family;
   if (is_patch(spec.problem)) {
     ind.profile = solver::flat_profile(spec.a);
     ind.height = o.patch_indenter_height_over_a * spec.a;
-    if (is_pprime(spec.problem)) {
+    if (family == MeshFamily::mismatched_patch) {
       const int n = o.pprime_indenter_elements > 0 ? o.pprime_indenter_elements : layout.n - 1;
       ind.surface_x = solver::uniform_between(0.0, spec.a, n);
     } else {
       ind.surface_x = block_x;
     }
-  } else if (is_hertz(spec.problem)) {
+  } else if (family == MeshFamily::hertz) {
     const double half_width = o.hertz_indenter_half_width_over_a * spec.a;
     require_positive(half_width, "hertz_indenter_half_width_over_a * a", spec.problem);
     if (!(spec.R > half_width)) {
@@ -387,38 +377,8 @@ int level_factor(MeshLevel level) {
 int table1_elements(ProblemId problem, MeshLevel level) {
   if (level == MeshLevel::VF)
     return 0;  // beyond the study: Table 1 has no VF count
-  int coarse = 0;
-  switch (problem) {
-    case ProblemId::P_p:
-    case ProblemId::P_a:
-      coarse = 64;
-      break;
-    case ProblemId::Pprime_p:
-    case ProblemId::Pprime_a:
-      coarse = 100;
-      break;
-    case ProblemId::H_p:
-    case ProblemId::H_a:
-      coarse = 256;
-      break;
-    case ProblemId::S_1:
-      coarse = 8372;
-      break;
-    case ProblemId::S_1_3:
-      coarse = 16222;
-      break;
-    case ProblemId::S_1_7:
-      coarse = 16809;
-      break;
-    case ProblemId::F_p:
-    case ProblemId::F_a:
-      coarse = 1024;
-      break;
-    default:  // problems beyond the study: no Table 1 count
-      return 0;
-  }
   const int f = level_factor(level);
-  return coarse * f * f;
+  return layout_of(problem).table1_elements * f * f;
 }
 
 int steuermann_target_elements(double re_over_b, MeshLevel level) {
@@ -449,17 +409,23 @@ int steuermann_target_elements(double re_over_b, MeshLevel level) {
 }
 
 StudyMesh build_study_mesh(const StudyMeshSpec& spec) {
+  const MeshFamily family = layout_of(spec.problem).family;
+  if (family == MeshFamily::own) {
+    throw SuiteInputError(
+        fmt::format("study mesh {}: the problem builds its own mesh (its layout is `own`)",
+                    to_string(spec.problem)));
+  }
   require_positive(spec.a, "a", spec.problem);
   require_extent(spec);
-  StudyMesh out = is_steuermann(spec.problem) ? build_steuermann(spec) : build_uniform(spec);
+  const bool steuermann = family == MeshFamily::steuermann;
+  StudyMesh out = steuermann ? build_steuermann(spec) : build_uniform(spec);
   out.info.n_nodes = out.mesh.n_nodes();
   out.info.table1_block_elements =
-      is_steuermann(spec.problem)
-          ? (spec.options.steuermann_target_elements > 0
-                 ? spec.options.steuermann_target_elements * level_factor(spec.level) *
-                       level_factor(spec.level)
-                 : steuermann_target_elements(spec.r_e / spec.b, spec.level))
-          : table1_elements(spec.problem, spec.level);
+      steuermann ? (spec.options.steuermann_target_elements > 0
+                        ? spec.options.steuermann_target_elements * level_factor(spec.level) *
+                              level_factor(spec.level)
+                        : steuermann_target_elements(spec.r_e / spec.b, spec.level))
+                 : table1_elements(spec.problem, spec.level);
   out.info.h_contact = contact_element_size(out.mesh, spec.a);
   return out;
 }

@@ -6,6 +6,9 @@
 // the indenter sits in z <= 0. x = 0 is the symmetry line (plane strain) or the axis
 // (axisymmetric, x = r). Only the half x >= 0 is meshed.
 //
+// Which family builds a problem's mesh, the block's size and its element count are the
+// problem's MeshLayout (suites/mesh_layout.hpp, in its descriptor). The study's problems:
+//
 // Indented body ("block", body 0), as Table 1 counts it:
 //   P, P'  0 < x < a,  0 < z < h (h = a by default)   8x8 / 10x10 elements at C, uniform
 //   H_p    0 < x < 4a, 0 < z < 4a                     16x16 at C, uniform
@@ -120,7 +123,8 @@ struct StudyMesh {
 /// solver::MeshError through from the generators.
 StudyMesh build_study_mesh(const StudyMeshSpec& spec);
 
-/// Table 1 of the study: elements of the indented body for a problem and level.
+/// Table 1 of the study: elements of the indented body for a problem and level (the count its
+/// descriptor's MeshLayout gives for C, times 4 per level; 0 beyond the study and for VF).
 int table1_elements(ProblemId problem, MeshLevel level);
 
 /// The S count aimed at for any r_e/b: Table 1 at 1, 1/3 and 1/7; between them, interpolated

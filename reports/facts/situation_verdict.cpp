@@ -1,6 +1,8 @@
 #include "reports/facts/situation_verdict.hpp"
 
 #include <algorithm>
+#include <array>
+#include <cctype>
 #include <cmath>
 #include <map>
 
@@ -11,26 +13,21 @@ namespace {
 
 using schema::ProblemId;
 
-struct SituationInfo {
-  const char* key;
-  const char* title;
-  bool singular;
-  std::vector<ProblemId> problems;
-};
+/// The situations in the report's order: the study's, then those beyond it.
+constexpr std::array kSituationOrder = {
+    schema::Situation::matched_patch,  schema::Situation::mismatched_patch,
+    schema::Situation::mismatched_patch_equal_moduli, schema::Situation::smooth_curved,
+    schema::Situation::rounded_punch,  schema::Situation::conformal_fit,
+    schema::Situation::frictional,     schema::Situation::flat_punch};
 
-/// The analyst situations and the problems that stand for them.
-const std::vector<SituationInfo>& situations() {
-  static const std::vector<SituationInfo> all = {
-      {"patch", "Contact patch, matched nodes", false, {ProblemId::P_p, ProblemId::P_a}},
-      {"mismatched", "Contact patch, mismatched nodes", false,
-       {ProblemId::Pprime_p, ProblemId::Pprime_a, ProblemId::Pprime_p_E1, ProblemId::Pprime_a_E1}},
-      {"hertz", "Hertz contact (smooth, curved)", false, {ProblemId::H_p, ProblemId::H_a}},
-      {"steuermann", "Rounded punch (Steuermann)", false,
-       {ProblemId::S_1, ProblemId::S_1_3, ProblemId::S_1_7}},
-      {"conformal", "Conformal fit", false, {ProblemId::IF_p, ProblemId::IF_a}},
-      {"flat", "Flat punch (singular edge)", true, {ProblemId::F_p, ProblemId::F_a}},
-  };
-  return all;
+/// The problems of a situation, as their records say (a record without one is in none).
+std::vector<ProblemId> problems_of(const ResultsIndex& index, schema::Situation situation) {
+  std::vector<ProblemId> out;
+  for (const schema::ProblemRecord* p : index.problems()) {
+    if (p->situation == situation)
+      out.push_back(p->id);
+  }
+  return out;
 }
 
 /// Table 2's quantities of a problem, or all of them when the study has no row for it.
@@ -66,7 +63,7 @@ void add_row(OptionCell& cell, const RowFacts& f) {
   cell.n_not_converged += f.fine_converged ? 0 : 1;
 }
 
-std::vector<OptionCell> make_cells(const ResultsIndex& index, const SituationInfo& s,
+std::vector<OptionCell> make_cells(const ResultsIndex& index, const std::vector<ProblemId>& problems,
                                    const std::vector<RowFacts>& rows,
                                    const std::vector<DivergenceFacts>& singular) {
   std::map<CellKey, OptionCell> cells;
@@ -77,7 +74,7 @@ std::vector<OptionCell> make_cells(const ResultsIndex& index, const SituationInf
     c.element = el;
     return c;
   };
-  for (const ProblemId p : s.problems) {
+  for (const ProblemId p : problems) {
     for (const auto& f : rows) {
       if (f.problem == p && graded_in_verdict(index, p, f.quantity))
         add_row(cell_of(f.option, f.element), f);
@@ -134,16 +131,14 @@ std::vector<SituationVerdict> situation_verdicts(const ResultsIndex& index,
                                                  const std::vector<RowFacts>& rows,
                                                  const std::vector<DivergenceFacts>& singular) {
   std::vector<SituationVerdict> out;
-  for (const SituationInfo& s : situations()) {
+  for (const schema::Situation s : kSituationOrder) {
     SituationVerdict v;
-    v.key = s.key;
-    v.title = s.title;
-    v.singular = s.singular;
-    for (const ProblemId p : s.problems) {
-      if (index.problem(p))
-        v.problems.push_back(p);
-    }
-    v.cells = make_cells(index, s, rows, singular);
+    v.key = std::string(schema::to_string(s));
+    v.title = std::string(schema::label(s));
+    v.title[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(v.title[0])));
+    v.problems = problems_of(index, s);
+    v.singular = !v.problems.empty() && index.singular(v.problems.front());
+    v.cells = make_cells(index, v.problems, rows, singular);
     if (v.cells.empty())
       continue;
     out.push_back(std::move(v));

@@ -32,8 +32,8 @@ struct OptionCell {
 
 /// One situation: its problems' cells and the statements a reader needs.
 struct SituationVerdict {
-  std::string key;    ///< e.g. "hertz"
-  std::string title;  ///< e.g. "Hertz contact (smooth, curved)"
+  std::string key;    ///< the situation's name, e.g. "smooth_curved"
+  std::string title;  ///< its label, capitalized: "Smooth curved contact (Hertz)"
   bool singular = false;
   std::vector<schema::ProblemId> problems;
   std::vector<OptionCell> cells;  ///< every option set present

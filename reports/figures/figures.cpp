@@ -31,10 +31,16 @@ constexpr StudyFigure4 kFigure4[] = {
     {ProblemId::S_1_3, "b (Steuermann contact, r<sub>e</sub>/b = 1/3)"},
 };
 
-/// The Steuermann problems are normalized by the punch half-width b, the others by the contact
-/// half-width a.
-bool over_punch_width(ProblemId id) {
-  return id == ProblemId::S_1 || id == ProblemId::S_1_3 || id == ProblemId::S_1_7;
+/// What the problem's x and h are normalized by, as its record gives it (the contact
+/// half-width a for a record that names none).
+schema::LengthScale length_scale(const schema::ProblemRecord* p) {
+  return p != nullptr && p->length_scale ? *p->length_scale
+                                         : schema::LengthScale::contact_half_width_a;
+}
+
+/// "x / a", "h / b": `what` over the problem's length scale.
+std::string over_length(const schema::ProblemRecord* p, std::string_view what) {
+  return fmt::format("{} / {}", what, schema::symbol(length_scale(p)));
 }
 
 struct Series {
@@ -324,7 +330,7 @@ Panel convergence_panel(const ResultsIndex& index, const schema::ProblemRecord& 
   const Slot slot{p.id, q.quantity, element};
   Panel panel{
       std::string(schema::to_string(element)),
-      over_punch_width(p.id) ? "element size h / b" : "element size h / a",
+      over_length(&p, "element size h"),
       p.singular ? q.definition_plain + " (grows without bound if diverging)" : "|error| (%)",
       true,
       std::nullopt,
@@ -404,7 +410,7 @@ Panel profile_panel(const ResultsIndex& index, const OptionClass& cls, const Slo
                     bool& has_exact) {
   static constexpr std::array<const char*, 3> kMeshColours{"#9ecae1", "#4292c6", "#08306b"};
   const schema::RowVerdict* row = class_row(index, cls, slot);
-  Panel panel{cls.label(),    over_punch_width(slot.problem) ? "x / b" : "x / a",
+  Panel panel{cls.label(),    over_length(index.problem(slot.problem), "x"),
               "-sigma_z / p", false,
               std::nullopt,   {}};
   const schema::ExactProfile* exact = nullptr;
@@ -523,7 +529,8 @@ Figure profile_figure(const ResultsIndex& index, const Gnuplot* gnuplot, const f
   const auto shared = profile_range(every);
   for (auto& panel : panels)
     panel.xrange = shared;
-  if (over_punch_width(id)) {
+  const schema::LengthScale scale = length_scale(index.problem(id));
+  if (scale == schema::LengthScale::punch_half_width_b) {  // the rounded punch's edge peak
     if (auto zoom = peak_zoom_panel(panels))
       panels.push_back(std::move(*zoom));
   }
@@ -532,7 +539,7 @@ Figure profile_figure(const ResultsIndex& index, const Gnuplot* gnuplot, const f
       "meshes{}, one panel per option set ({}).",
       fmt::format(fmt::runtime(study_panel.caption), schema::label(id)), schema::to_string(element),
       any_exact ? " against the exact curve (black, dashed)" : "",
-      over_punch_width(id) ? "x over the punch half-width b" : "x over the contact half-width a");
+      fmt::format("x over {}", schema::label(scale)));
   if (any_missing_exact) {
     fig.notes.push_back(
         any_exact ? "some panels have no exact curve: their cases carry no `exact_profile`."

@@ -30,7 +30,12 @@ const ProblemDescriptor& problem_descriptor<ProblemId::CM_p>() {
         {Quantity::c_over_a, "c/a", "c/a", "", ""},
         {Quantity::sigma_c, "−σ<sub>z</sub>(0, 0)/p", "-sigma_z(0,0)/p", "", ""}}},
       parameters,
-      problems::build_cattaneo_mindlin};
+      problems::build_cattaneo_mindlin,
+      schema::Situation::frictional,
+      schema::LengthScale::contact_half_width_a,
+      /*relative_cost=*/1.0,
+      {MeshFamily::own, 0.0, 0, 0},
+      {"", ""}};
   return d;
 }
 

@@ -20,7 +20,12 @@ const ProblemDescriptor& problem_descriptor<ProblemId::F_p>() {
        {{Quantity::sigma_c_star, "−σ<sub>z</sub>(a, 0)/p", "-sigma_z(a,0)/p", "13", ""}}},
       problems::study_parameters(
           {problems::extent_parameter(), problems::half_space_gap_parameter()}),
-      problems::build_flat_punch};
+      problems::build_flat_punch,
+      schema::Situation::flat_punch,
+      schema::LengthScale::contact_half_width_a,
+      /*relative_cost=*/1.0,
+      {MeshFamily::flat_punch, 4.0, 32, 1024},
+      {"sadowsky", "flat_punch_plane"}};
   return d;
 }
 

@@ -33,7 +33,12 @@ const ProblemDescriptor& problem_descriptor<ProblemId::FP_p>() {
        {{Quantity::tau_max, "−τ<sub>xz</sub><sup>max</sup>/p", "-tau_xz^max/p", "", ""},
         {Quantity::sigma_z_max, "−σ<sub>z</sub><sup>max</sup>/p", "-sigma_z^max/p", "", ""}}},
       parameters,
-      problems::build_frictional_patch};
+      problems::build_frictional_patch,
+      schema::Situation::frictional,
+      schema::LengthScale::contact_half_width_a,
+      /*relative_cost=*/1.0,
+      {MeshFamily::patch, 1.0, 8, 0},
+      {"", ""}};
   return d;
 }
 

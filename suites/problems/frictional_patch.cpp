@@ -85,7 +85,7 @@ ProblemSetup build_frictional_patch(const CaseSpec& spec, const Parameters& para
   const double tau = params.get("tau_over_mu_p") * mu * p;
   const oracles::PlaneStress exact = exact_state(p, tau, mu);
 
-  StudyMesh built = build_study_mesh({.problem = ProblemId::P_p,
+  StudyMesh built = build_study_mesh({.problem = spec.problem,
                                       .level = spec.mesh,
                                       .element = to_solver(spec.element),
                                       .a = 1.0,

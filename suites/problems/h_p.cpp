@@ -25,7 +25,12 @@ const ProblemDescriptor& problem_descriptor<ProblemId::H_p>() {
          "", ""}}},
       problems::study_parameters(
           {problems::extent_parameter(), problems::half_space_gap_parameter()}),
-      problems::build_hertz};
+      problems::build_hertz,
+      schema::Situation::smooth_curved,
+      schema::LengthScale::contact_half_width_a,
+      /*relative_cost=*/1.0,
+      {MeshFamily::hertz, 4.0, 16, 256},
+      {"hertz-plane", "hertz_plane"}};
   return d;
 }
 

@@ -23,7 +23,12 @@ const ProblemDescriptor& problem_descriptor<ProblemId::IF_a>() {
        {{Quantity::p_mean, "p<sub>mean</sub>/p", "p_mean/p", "", ""},
         {Quantity::p_arc, "p(θ<sub>max</sub>)/p", "p(theta_max)/p", "", ""}}},
       problems::interference_fit_parameters(),
-      problems::build_interference_fit};
+      problems::build_interference_fit,
+      schema::Situation::conformal_fit,
+      schema::LengthScale::bore_radius_b,
+      /*relative_cost=*/1.0,
+      {MeshFamily::own, 0.0, 0, 0},
+      {"", ""}};
   return d;
 }
 

@@ -19,7 +19,12 @@ const ProblemDescriptor& problem_descriptor<ProblemId::P_p>() {
        "Eq. 6",
        {{Quantity::sigma_z_max, "−σ<sub>z</sub><sup>max</sup>/p", "-sigma_z^max/p", "3", "main"}}},
       problems::study_parameters({}),
-      problems::build_patch_test};
+      problems::build_patch_test,
+      schema::Situation::matched_patch,
+      schema::LengthScale::contact_half_width_a,
+      /*relative_cost=*/1.0,
+      {MeshFamily::patch, 1.0, 8, 64},
+      {"table", "patch_test"}};
   return d;
 }
 

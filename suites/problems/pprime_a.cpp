@@ -20,7 +20,12 @@ const ProblemDescriptor& problem_descriptor<ProblemId::Pprime_a>() {
        "Eq. 8",
        {{Quantity::sigma_z_max, "−σ<sub>z</sub><sup>max</sup>/p", "-sigma_z^max/p", "6", "main"}}},
       problems::study_parameters({}),
-      problems::build_patch_test};
+      problems::build_patch_test,
+      schema::Situation::mismatched_patch,
+      schema::LengthScale::contact_half_width_a,
+      /*relative_cost=*/1.0,
+      {MeshFamily::mismatched_patch, 1.0, 10, 100},
+      {"table", "patch_test"}};
   return d;
 }
 

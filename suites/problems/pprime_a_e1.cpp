@@ -25,7 +25,12 @@ const ProblemDescriptor& problem_descriptor<ProblemId::Pprime_a_E1>() {
        "Eq. 8",
        {{Quantity::sigma_z_max, "−σ<sub>z</sub><sup>max</sup>/p", "-sigma_z^max/p", "", ""}}},
       problems::with_default(problems::study_parameters({}), "E_ratio", 1.0),
-      problems::build_patch_test};
+      problems::build_patch_test,
+      schema::Situation::mismatched_patch_equal_moduli,
+      schema::LengthScale::contact_half_width_a,
+      /*relative_cost=*/1.0,
+      {MeshFamily::mismatched_patch, 1.0, 10, 0},
+      {"table", "patch_test"}};
   return d;
 }
 

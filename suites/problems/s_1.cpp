@@ -27,7 +27,12 @@ const ProblemDescriptor& problem_descriptor<ProblemId::S_1>() {
             "edge radius r_e over the half-width b of the punch's flat face"},
            problems::extent_parameter(),
            problems::half_space_gap_parameter()}),
-      problems::build_steuermann};
+      problems::build_steuermann,
+      schema::Situation::rounded_punch,
+      schema::LengthScale::punch_half_width_b,
+      /*relative_cost=*/30.0,
+      {MeshFamily::steuermann, 0.0, 0, 8372},
+      {"steuermann", "steuermann"}};
   return d;
 }
 

@@ -13,6 +13,7 @@
 #include <fstream>
 #include <iterator>
 #include <numbers>
+#include <set>
 #include <sstream>
 #include <string>
 #include <tuple>
@@ -31,6 +32,7 @@
 #include "oracles/mcewen.hpp"
 #include "oracles/steuermann.hpp"
 #include "oracles/strip_load.hpp"
+#include "suites/problem_catalog.hpp"
 
 namespace cs::apps {
 namespace {
@@ -192,6 +194,28 @@ TEST(OracleCli, HelpListsEveryOracle) {
   }
   const CliRun steuermann = run({"oracle", "steuermann", "--help"});
   EXPECT_NE(steuermann.out.find("--eq32-factor"), std::string::npos) << steuermann.out;
+}
+
+// Requirement: every problem's descriptor names an `oracle` subcommand that exists (its
+// --help succeeds) and a key that the reference table has, where it names one; the problems
+// whose oracle has no command-line entry say so with an empty subcommand.
+TEST(OracleCli, EveryDescriptorsOracleEntryIsACommand) {
+  const json table = answer({"oracle", "table", "--json"});
+  std::set<std::string> checked;
+  for (const auto id : suites::all_problems()) {
+    const suites::OracleEntry& entry = suites::problem_descriptor(id).oracle;
+    const std::string problem(schema::to_string(id));
+    if (!entry.reference_key.empty()) {
+      EXPECT_TRUE(table.contains(std::string(entry.reference_key)))
+          << problem << ": " << entry.reference_key;
+    }
+    if (entry.subcommand.empty() || !checked.insert(std::string(entry.subcommand)).second)
+      continue;
+    const std::vector<std::string> args{"oracle", std::string(entry.subcommand), "--help"};
+    const CliRun r = run(args);
+    EXPECT_EQ(r.exit_code, 0) << problem << "\n" << describe(args, r);
+  }
+  EXPECT_GE(checked.size(), 5U);  // table, hertz-plane, hertz-axi, steuermann, sadowsky, ...
 }
 
 TEST(OracleCli, BadInputExitsTwoWithOneLineOnStderrAndNothingOnStdout) {

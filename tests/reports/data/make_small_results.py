@@ -94,10 +94,19 @@ def punch_quantity(table):
             "definition_plain": "-sigma_z(a,0)/p", "study_table": table, "study_row": ""}
 
 
+# The situation and length scale each problem's descriptor declares.
+FACTS = {"P_p": "matched_patch", "P_a": "matched_patch", "Pprime_p": "mismatched_patch",
+         "Pprime_a": "mismatched_patch", "H_p": "smooth_curved", "H_a": "smooth_curved",
+         "S_1": "rounded_punch", "S_1_3": "rounded_punch", "S_1_7": "rounded_punch",
+         "F_p": "flat_punch", "F_a": "flat_punch"}
+
+
 def problem(pid, title, description, axisymmetric, singular, tables, source, quantities):
     return {"id": pid, "title": title, "description": description, "axisymmetric": axisymmetric,
             "singular": singular, "study_tables": tables, "exact_source": source,
-            "quantities": quantities}
+            "quantities": quantities, "situation": FACTS[pid],
+            "length_scale": "punch_half_width_b" if pid.startswith("S_")
+            else "contact_half_width_a"}
 
 
 PROBLEMS = [
