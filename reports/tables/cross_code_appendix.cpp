@@ -46,19 +46,18 @@ std::string solver_value_cell(const ResultsIndex& index, const schema::RowVerdic
   return out;
 }
 
-std::vector<CrossCodeAppendixTable> build_cross_code_appendix(const ResultsIndex& index,
-                                                              const StudyReference& study) {
-  std::vector<CrossCodeAppendixTable> out;
+std::vector<std::pair<schema::ProblemId, MarkdownTable>> build_cross_code_appendix(
+    const ResultsIndex& index, const StudyReference& study) {
+  std::vector<std::pair<schema::ProblemId, MarkdownTable>> out;
   const auto solvers = solvers_in(index);
   for (const schema::ProblemRecord* p : index.problems()) {
-    CrossCodeAppendixTable t;
-    t.problem = p->id;
-    t.columns = {"Row", "Exact"};
+    std::vector<std::string> header{"Row", "Exact"};
     for (const auto mesh : kMeshes) {
       for (const auto& s : solvers)
-        t.columns.push_back(fmt::format("{} {}", schema::to_string(mesh), solver_display_name(s)));
+        header.push_back(fmt::format("{} {}", schema::to_string(mesh), solver_display_name(s)));
     }
-    t.columns.push_back(fmt::format("{} ANSYS", schema::to_string(kFinestMesh)));
+    header.push_back(fmt::format("{} ANSYS", schema::to_string(kFinestMesh)));
+    MarkdownTable t(header);
     for (const auto& q : p->quantities) {
       for (const auto element : schema::values<schema::Element>()) {
         for (const auto& o : cross_code_options(index, p->id, q.quantity, element)) {
@@ -76,21 +75,14 @@ std::vector<CrossCodeAppendixTable> build_cross_code_appendix(const ResultsIndex
           for (const auto* r : rows)
             any = any == nullptr ? r : any;
           cells.push_back(any == nullptr ? std::string(kMissing) : ansys_value(study, *any));
-          t.rows.push_back(std::move(cells));
+          t.add_row(std::move(cells));
         }
       }
     }
-    if (!t.rows.empty())
-      out.push_back(std::move(t));
+    if (t.n_rows() > 0)
+      out.emplace_back(p->id, std::move(t));
   }
   return out;
-}
-
-std::string CrossCodeAppendixTable::markdown() const {
-  MarkdownTable table(columns);
-  for (const auto& r : rows)
-    table.add_row(r);
-  return fmt::format("#### {}\n\n{}\n", schema::label(problem), table.render());
 }
 
 }  // namespace cs::reports

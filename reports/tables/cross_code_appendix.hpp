@@ -8,23 +8,18 @@
 
 #include "reports/results/results_index.hpp"
 #include "reports/results/study_reference.hpp"
+#include "reports/tables/markdown_table.hpp"
 
 namespace cs::reports {
-
-struct CrossCodeAppendixTable {
-  schema::ProblemId problem = schema::ProblemId::P_p;
-  std::vector<std::string> columns;  ///< "Row", "Exact", "C ours", "C CalculiX", ..., "F ANSYS"
-  std::vector<std::vector<std::string>> rows;
-  std::string markdown() const;
-};
 
 /// A solver's cell on one mesh: "1.2734 (+0.05 %)", the value alone for a singular quantity,
 /// the case's status ("timeout", "not converged", "failed") without a value, or "—".
 std::string solver_value_cell(const ResultsIndex& index, const schema::RowVerdict* row,
                               schema::MeshLevel mesh);
 
-/// One table per problem with rows of another solver, in the report's problem order.
-std::vector<CrossCodeAppendixTable> build_cross_code_appendix(const ResultsIndex& index,
-                                                              const StudyReference& study);
+/// One table per problem with rows of another solver, in the report's problem order; columns
+/// "Row", "Exact", "C ours", "C CalculiX", ..., "F ANSYS".
+std::vector<std::pair<schema::ProblemId, MarkdownTable>> build_cross_code_appendix(
+    const ResultsIndex& index, const StudyReference& study);
 
 }  // namespace cs::reports

@@ -110,16 +110,16 @@ std::vector<CrossCodeCost> cross_code_cost(const ResultsIndex& index) {
   return out;
 }
 
-std::string CrossCodeCost::markdown() const {
-  const std::string name = solver_display_name(solver);
+MarkdownTable cost_table(const CrossCodeCost& cost) {
+  const std::string name = solver_display_name(cost.solver);
   MarkdownTable table({"Cases", "pairs", fmt::format("{} converged", name), "ours (s)",
                        fmt::format("{} (s)", name), "time ratio", "ours peak (MB)",
                        fmt::format("{} peak (MB)", name), "memory ratio"});
-  for (const auto& l : lines)
+  for (const auto& l : cost.lines)
     table.add_row(cells(l));
-  table.add_row(cells(total));
-  table.add_row(cells(total_both_converged));
-  return fmt::format("#### Cost: {} beside ours\n\n{}\n", name, table.render());
+  table.add_row(cells(cost.total));
+  table.add_row(cells(cost.total_both_converged));
+  return table;
 }
 
 }  // namespace cs::reports

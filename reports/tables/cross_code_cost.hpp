@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "reports/results/results_index.hpp"
+#include "reports/tables/markdown_table.hpp"
 
 namespace cs::reports {
 
@@ -34,8 +35,10 @@ struct CrossCodeCost {
   std::vector<CostLine> lines;    ///< per problem and mesh, in the report's order
   CostLine total;                 ///< every pair
   CostLine total_both_converged;  ///< the pairs where both converged
-  std::string markdown() const;
 };
+
+/// The comparison as a table: a row per line, then the two totals.
+MarkdownTable cost_table(const CrossCodeCost& cost);
 
 /// One comparison per solver other than ours that shares cases with ours (none: empty).
 std::vector<CrossCodeCost> cross_code_cost(const ResultsIndex& index);

@@ -24,7 +24,7 @@ std::optional<std::string> unfinished_status(const ResultsIndex& index,
   return std::nullopt;
 }
 
-std::string ansys_cell(const StudyReference& study, const GradeTableRow& r, schema::Element element,
+std::string ansys_cell(const StudyReference& study, const StudyRowKey& r, schema::Element element,
                        const Option& o) {
   const StudyGrade* g = study.find_grade(r.problem, r.study_row, element, o.algorithm, o.contact);
   return g == nullptr ? std::string("ANSYS ") + kMissing : "ANSYS " + g->cell();
@@ -45,12 +45,10 @@ std::string solver_grade_cell(const ResultsIndex& index, const schema::RowVerdic
              : grade;
 }
 
-std::optional<CrossCodeGradeTable> build_cross_code_grade_table(const ResultsIndex& index,
-                                                                const StudyReference& study,
-                                                                schema::Element element) {
-  CrossCodeGradeTable t;
-  t.element = element;
-  t.solvers = solvers_in(index);
+std::optional<MarkdownTable> build_cross_code_grade_table(const ResultsIndex& index,
+                                                          const StudyReference& study,
+                                                          schema::Element element) {
+  const auto solvers = solvers_in(index);
   std::vector<Option> options;
   const auto rows = grade_table_rows(index, study);
   for (const auto& r : rows) {
@@ -67,47 +65,24 @@ std::optional<CrossCodeGradeTable> build_cross_code_grade_table(const ResultsInd
     const auto& all = all_options();
     return std::find(all.begin(), all.end(), a) < std::find(all.begin(), all.end(), b);
   });
-  t.columns.push_back("Problem");
+  std::vector<std::string> header{"Problem"};
   for (const auto& o : options)
-    t.columns.push_back(o.label());
+    header.push_back(o.label());
+  MarkdownTable t(header);
   for (const auto& r : rows) {
     if (!r.quantity || cross_code_options(index, r.problem, *r.quantity, element).empty())
       continue;
     std::vector<std::string> cells{r.label_md};
     for (const auto& o : options) {
       std::string cell;
-      for (const auto& s : t.solvers)
+      for (const auto& s : solvers)
         cell += solver_grade_cell(index, solver_row(index, s, r.problem, *r.quantity, element, o)) +
                 kSeparator;
       cells.push_back(cell + ansys_cell(study, r, element, o));
     }
-    t.rows.push_back(std::move(cells));
+    t.add_row(std::move(cells));
   }
   return t;
-}
-
-std::string CrossCodeGradeTable::markdown() const {
-  std::string order;
-  for (const auto& s : solvers)
-    order += solver_display_name(s) + kSeparator;
-  MarkdownTable table(columns);
-  for (const auto& r : rows)
-    table.add_row(r);
-  return fmt::format("#### Table 2′ ({}): {}ANSYS\n\n{}\n", schema::to_string(element), order,
-                     table.render());
-}
-
-std::optional<std::string> CrossCodeGradeTable::cell(const std::string& row_label,
-                                                     const std::string& column) const {
-  for (const auto& r : rows) {
-    if (r.empty() || r[0] != row_label)
-      continue;
-    for (std::size_t j = 0; j < columns.size() && j < r.size(); ++j) {
-      if (columns[j] == column)
-        return r[j];
-    }
-  }
-  return std::nullopt;
 }
 
 std::string grade_class(const schema::RowVerdict* row) {

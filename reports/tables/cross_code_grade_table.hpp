@@ -17,19 +17,9 @@
 
 #include "reports/results/results_index.hpp"
 #include "reports/results/study_reference.hpp"
+#include "reports/tables/markdown_table.hpp"
 
 namespace cs::reports {
-
-/// One Table 2′ (one element).
-struct CrossCodeGradeTable {
-  schema::Element element = schema::Element::Q4;
-  std::vector<std::string> solvers;  ///< labels, ours first
-  std::vector<std::string> columns;  ///< "Problem", then option labels ("PM ss")
-  std::vector<std::vector<std::string>> rows;
-  std::string markdown() const;
-  /// The cell under `column` in the row labelled `row_label`, or nullopt.
-  std::optional<std::string> cell(const std::string& row_label, const std::string& column) const;
-};
 
 /// Per solver, rows by fine-mesh grade: "e, c", "e", "g", "s", "u", "no grade".
 struct GradeTally {
@@ -42,10 +32,12 @@ struct GradeTally {
 /// status alone when the row has no grade.
 std::string solver_grade_cell(const ResultsIndex& index, const schema::RowVerdict* row);
 
-/// Table 2′ for `element`, or nullopt when no other solver ran a Table 2 row of it.
-std::optional<CrossCodeGradeTable> build_cross_code_grade_table(const ResultsIndex& index,
-                                                                const StudyReference& study,
-                                                                schema::Element element);
+/// Table 2′ for `element` (columns "Problem", then option labels such as "PM ss"; each cell
+/// the solvers' grades in solvers_in() order, then the study's), or nullopt when no other
+/// solver ran a Table 2 row of it.
+std::optional<MarkdownTable> build_cross_code_grade_table(const ResultsIndex& index,
+                                                          const StudyReference& study,
+                                                          schema::Element element);
 
 /// The tally of every solver over the rows of Table 2′ (both elements) that all solvers ran.
 std::map<std::string, GradeTally> cross_code_grade_tally(const ResultsIndex& index,

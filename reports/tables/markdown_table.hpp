@@ -14,6 +14,10 @@ class MarkdownTable {
   explicit MarkdownTable(std::vector<std::string> header) : header_(std::move(header)) {}
   void add_row(std::vector<std::string> cells) { rows_.push_back(std::move(cells)); }
   std::size_t n_rows() const { return rows_.size(); }
+  const std::vector<std::string>& header() const { return header_; }
+  const std::vector<std::vector<std::string>>& rows() const { return rows_; }
+  /// The cell under `column` in the first row whose first cell is `row_label`, or nullopt.
+  std::optional<std::string> cell(const std::string& row_label, const std::string& column) const;
   /// The table as Markdown, ending with a newline; '|' inside cells is escaped.
   std::string render() const;
 
