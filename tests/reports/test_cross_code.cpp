@@ -216,6 +216,26 @@ TEST(CrossCodeAppendix, ValuesPerMeshAndSolver) {
   EXPECT_EQ(col("F ours").substr(0, 6), fmt::format("{:.4f}", kHertzExact * 1.005));
 }
 
+// Requirement: an error is printed with its sign: an under-estimate of the peak reads "−52.3 %",
+// never "+52.3 %".
+TEST(CrossCodeAppendix, ErrorsAreSigned) {
+  std::vector<CaseResult> cases;
+  for (const auto m : kMeshes) {
+    cases.push_back(hertz_case(SolverKind::builtin, m, 1.0));
+    cases.push_back(hertz_case(SolverKind::calculix, m, -52.26));
+  }
+  const auto doc = document(cases);
+  const ResultsIndex index(doc);
+  const auto tables = build_cross_code_appendix(index, study());
+  ASSERT_EQ(tables.size(), 1U);
+  const auto& t = tables[0].second;
+  const std::string cell = t.cell(t.rows()[0][0], "F CalculiX").value_or("");
+  EXPECT_NE(cell.find("(−52.3 %)"), std::string::npos) << cell;
+  const std::string md = cross_code_section(index, study(), {}, {});
+  EXPECT_EQ(md.find("+52.3"), std::string::npos);
+  EXPECT_NE(md.find("−52.3 %"), std::string::npos);
+}
+
 // Requirement: the figure has one curve per solver with a fine-mesh pressure and the exact
 // curve; a solver without one is named with its case's status.
 TEST(CrossCodeFigure, OneCurvePerSolverAndTheExactOne) {
