@@ -5,10 +5,8 @@
 #include <fmt/format.h>
 
 #include "reports/render/template_text.hpp"
-#include "reports/tables/cross_code_appendix.hpp"
-#include "reports/tables/cross_code_cost.hpp"
-#include "reports/tables/cross_code_grade_table.hpp"
 #include "reports/tables/cross_code_rows.hpp"
+#include "reports/tables/cross_code_tables.hpp"
 #include "reports/tables/markdown_table.hpp"
 
 namespace cs::reports {

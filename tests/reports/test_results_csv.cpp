@@ -88,8 +88,7 @@ TEST(ResultsCsv, CarriesTheRowsVerdicts) {
   const auto lines = lines_of(results_csv(data.index, study()));
   const auto header = fields_of(lines[0]);
   const auto column = [&](const std::string& name) {
-    return static_cast<std::size_t>(std::find(header.begin(), header.end(), name) -
-                                    header.begin());
+    return static_cast<std::size_t>(std::find(header.begin(), header.end(), name) - header.begin());
   };
   ASSERT_LT(column("strict_divergence"), header.size());
   int nonsingular = 0, singular = 0;
