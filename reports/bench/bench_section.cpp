@@ -354,7 +354,7 @@ std::string bench_section(const BenchResults& bench, const FigureSet& figures,
   d.set("has_models", !bench.contact.empty());
   d.set("models", template_list(by_model(bench),
                                 [](const auto& m) { return model_data(m.first, m.second); }));
-  return render_template(templates::bench_section, d);
+  return tidy_markdown(render_template(templates::bench_section, d));
 }
 
 }  // namespace cs::reports

@@ -228,7 +228,7 @@ std::string appendix_section(const ResultsIndex& index, const StudyReference& st
   groups.push_back(group);
   TemplateData d;
   d.set("groups", groups);
-  return render_template(templates::appendix_tables, d);
+  return tidy_markdown(render_template(templates::appendix_tables, d));
 }
 
 }  // namespace cs::reports

@@ -134,7 +134,7 @@ std::string conformal_section(const ResultsIndex& index) {
     return {};
   TemplateData d;
   d.set("problems", problems);
-  return render_template(templates::conformal_section, d);
+  return tidy_markdown(render_template(templates::conformal_section, d));
 }
 
 }  // namespace cs::reports

@@ -129,7 +129,7 @@ std::string cross_code_section(const ResultsIndex& index, const StudyReference& 
   d.set("costs", template_list(costs, titled));
   d.set("has_appendix", !appendix.empty());
   d.set("appendix", template_list(appendix, titled));
-  return render_template(templates::cross_code_section, d);
+  return tidy_markdown(render_template(templates::cross_code_section, d));
 }
 
 }  // namespace cs::reports

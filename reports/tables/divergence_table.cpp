@@ -128,7 +128,7 @@ std::string divergence_section(const ResultsIndex& index, const StudyReference& 
     d.set(key, std::to_string(n));
   d.set("fine_not_converged",
         text_or_false(t.fine_not_converged > 0 ? std::to_string(t.fine_not_converged) : ""));
-  return render_template(templates::divergence_table, d);
+  return tidy_markdown(render_template(templates::divergence_table, d));
 }
 
 }  // namespace cs::reports

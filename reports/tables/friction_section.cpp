@@ -130,7 +130,7 @@ std::string friction_section(const ResultsIndex& index) {
     return {};
   TemplateData d;
   d.set("problems", problems);
-  return render_template(templates::friction_section, d);
+  return tidy_markdown(render_template(templates::friction_section, d));
 }
 
 }  // namespace cs::reports

@@ -368,7 +368,7 @@ std::string grade_tables_section(const ResultsIndex& index, const StudyReference
   for (const ContactKind c : contacts_in_study(false))
     renamed.push_back(fmt::format("{} was not in the study", schema::to_string(c)));
   d.set("study_names", joined(renamed, "; "));
-  return render_template(templates::grade_tables, d);
+  return tidy_markdown(render_template(templates::grade_tables, d));
 }
 
 }  // namespace cs::reports

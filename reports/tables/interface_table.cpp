@@ -107,7 +107,7 @@ std::string interface_section(const ResultsIndex& index) {
   d.set("failing", listed.render());
   d.set("more", text_or_false(
                     failing.n_rows() > kListed ? std::to_string(failing.n_rows() - kListed) : ""));
-  return render_template(templates::interface_table, d);
+  return tidy_markdown(render_template(templates::interface_table, d));
 }
 
 }  // namespace cs::reports

@@ -59,6 +59,17 @@ std::optional<std::string> MarkdownTable::cell(const std::string& row_label,
   return std::nullopt;
 }
 
+std::string tidy_markdown(const std::string& markdown) {
+  std::string out;
+  int newlines = 0;
+  for (char c : markdown) {
+    newlines = c == '\n' ? newlines + 1 : 0;
+    if (newlines <= 2)
+      out += c;
+  }
+  return out;
+}
+
 std::string format_value(double v) {
   return fmt::format("{:.4f}", v);
 }

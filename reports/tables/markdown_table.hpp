@@ -26,6 +26,9 @@ class MarkdownTable {
   std::vector<std::vector<std::string>> rows_;
 };
 
+/// `markdown` with every run of blank lines (left by a template's skipped sections) cut to one.
+std::string tidy_markdown(const std::string& markdown);
+
 /// A normalized stress as the study prints it: 4 decimals ("1.2732").
 std::string format_value(double v);
 /// A signed percentage: "+0.07 %", "−12.3 %" (2 significant decimals below 10 %, 1 above).

@@ -82,7 +82,7 @@ std::string mesh_table_section(const ResultsIndex& index, const StudyReference& 
                                            : fmt::format("{:.2f} %", differing.largest_percent)));
   d.set("problems", differing.problems);
   d.set("table", table.render());
-  return render_template(templates::mesh_table, d);
+  return tidy_markdown(render_template(templates::mesh_table, d));
 }
 
 }  // namespace cs::reports
