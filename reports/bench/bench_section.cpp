@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include "reports/render/template_text.hpp"
 #include "reports/results/results_index.hpp"
 #include "reports/tables/markdown_table.hpp"
 
@@ -76,125 +77,100 @@ std::vector<std::pair<BenchModel, std::vector<const ContactBenchmark*>>> by_mode
   return out;
 }
 
-/// A word on ratios below the physical floor of 1, when there are any.
-std::string below_floor_note(const BenchResults& bench) {
+/// The cases with a ratio below the physical floor of 1, and the lowest of them.
+TemplateData below_floor(const BenchResults& bench) {
   int below = 0, with_ratio = 0;
   const ContactBenchmark* lowest = nullptr;
   for (const auto& b : bench.contact) {
-    if (!b.ratio)
-      continue;
-    ++with_ratio;
-    if (*b.ratio >= 1)
+    with_ratio += b.ratio ? 1 : 0;
+    if (!b.ratio || *b.ratio >= 1)
       continue;
     ++below;
     if (lowest == nullptr || *b.ratio < *lowest->ratio)
       lowest = &b;
   }
   if (below == 0)
-    return {};
-  return fmt::format(
-      "**{} of {} cases have a ratio below 1** (the lowest, {}: {} {} {}): the contact analysis "
-      "was measured faster than one solve of its model. Each case is timed once, so part of "
-      "this is noise (`--benchmark_repetitions=N` gives medians); below 1 on most cases of a "
-      "model, it means the contact analysis's factorization (its own fill-reducing ordering, "
-      "the contact DOFs last) was cheaper than the reference's.\n\n",
-      below, with_ratio, format_ratio(lowest->ratio), model_md(lowest->model),
-      name(lowest->contact), name(lowest->algorithm));
+    return TemplateData(false);
+  TemplateData d;
+  d.set("below", std::to_string(below));
+  d.set("with_ratio", std::to_string(with_ratio));
+  d.set("lowest", fmt::format("{}: {} {} {}", format_ratio(lowest->ratio), model_md(lowest->model),
+                              name(lowest->contact), name(lowest->algorithm)));
+  return d;
 }
 
-std::string intro(const BenchResults& bench) {
-  std::string out = fmt::format(
-      "Timings of the contact algorithms by Google Benchmark (`bench_contact_algorithms`; {} "
-      "Contact and {} ContactAllOptions benchmarks). *Time* is one contact analysis: assembly, "
-      "constraint rows, condensation onto the contact DOFs, the active-set iterations and the "
-      "displacement recovery. *Ratio* is that time over one assembly + factorization + solve of "
-      "the same model measured in the same run (the *reference*): the physical floor is 1.\n\n",
-      bench.contact.size(), bench.all_options.size());
-  for (const auto& source : bench.sources)
-    out += machine_line(source) + "\n\n";
-  out += below_floor_note(bench);
-  if (bench.n_replaced > 0) {
-    out += fmt::format(
-        "{} cases were measured in more than one file; the later file's measurement is shown.\n\n",
-        bench.n_replaced);
+/// The target's verdict when no case was measured at its mesh: the meshes that were, and the
+/// finest one's count for orientation.
+TemplateData not_judged(const BenchResults& bench, const BenchTarget& target) {
+  std::vector<schema::MeshLevel> meshes;
+  for (const auto m : kMeshes) {
+    if (std::any_of(bench.contact.begin(), bench.contact.end(),
+                    [&](const auto& b) { return b.model.mesh == m; }))
+      meshes.push_back(m);
   }
-  return out;
+  TemplateData d;
+  d.set("files", bench.sources.size() > 1 ? "s" : "");
+  d.set("meshes", meshes.empty() ? std::string("none") : join_and(names(meshes)));
+  d.set("finest", TemplateData(false));
+  if (!meshes.empty()) {
+    BenchTarget finest = target;
+    finest.mesh = meshes.back();
+    const TargetCheck there = check_target(bench, finest);
+    if (there.n_cases() > 0) {
+      TemplateData f;
+      f.set("mesh", name(finest.mesh));
+      f.set("met", std::to_string(there.met.size()));
+      f.set("cases", std::to_string(there.n_cases()));
+      d.set("finest", f);
+    }
+  }
+  return d;
 }
 
-std::string target_section(const BenchResults& bench, const BenchTarget& target) {
+TemplateData target_data(const BenchResults& bench, const BenchTarget& target) {
   std::vector<std::string> problems;
   for (const auto p : target.problems)
     problems.emplace_back(schema::label(p));
-  std::string out = fmt::format(
-      "### Target: ratio ≤ {:g} for {} at mesh {}\n\n"
-      "Issue #7's target for {}: the contact analysis costs at most {:g} × one assembly + "
-      "factorization + solve. A case that did not converge misses it whatever its ratio.\n\n",
-      target.max_ratio, join_and(names(target.algorithms)), name(target.mesh), join_and(problems),
-      target.max_ratio);
+  TemplateData d;
+  d.set("max_ratio", fmt::format("{:g}", target.max_ratio));
+  d.set("algorithms", join_and(names(target.algorithms)));
+  d.set("algorithms_or", join_and(names(target.algorithms), "or"));
+  d.set("mesh", name(target.mesh));
+  d.set("problems", join_and(problems));
   const TargetCheck check = check_target(bench, target);
-  if (check.n_cases() == 0) {
-    std::vector<schema::MeshLevel> meshes;
-    for (const auto m : kMeshes) {
-      const bool present = std::any_of(bench.contact.begin(), bench.contact.end(),
-                                       [&](const auto& b) { return b.model.mesh == m; });
-      if (present)
-        meshes.push_back(m);
-    }
-    out += fmt::format(
-        "**Not judged:** no {} case at mesh {} in the bench file{} (meshes "
-        "measured: {}).",
-        join_and(names(target.algorithms), "or"), name(target.mesh),
-        bench.sources.size() > 1 ? "s" : "",
-        meshes.empty() ? std::string("none") : join_and(names(meshes)));
-    if (!meshes.empty()) {
-      BenchTarget finest = target;
-      finest.mesh = meshes.back();
-      const TargetCheck there = check_target(bench, finest);
-      if (there.n_cases() > 0) {
-        out += fmt::format(
-            " For orientation, at mesh {}, the finest measured, {} of {} such "
-            "cases have a ratio ≤ {:g}.",
-            name(finest.mesh), there.met.size(), there.n_cases(), target.max_ratio);
-      }
-    }
-    return out + "\n\n";
+  d.set("judged", check.n_cases() > 0);
+  d.set("not_judged", check.n_cases() > 0 ? TemplateData(false) : not_judged(bench, target));
+  d.set("cases", std::to_string(check.n_cases()));
+  d.set("met", std::to_string(check.met.size()));
+  d.set("n_missed", text_or_false(check.missed.empty() ? "" : std::to_string(check.missed.size())));
+  MarkdownTable missed({"Model", "Contact", "Algorithm", "Ratio", "Time (ms)", "Note"});
+  for (const ContactBenchmark* b : check.missed) {
+    missed.add_row({model_md(b->model), name(b->contact), name(b->algorithm),
+                    format_ratio(b->ratio), format_ms(b->time_ms),
+                    b->converged() ? "" : b->failure()});
   }
-  if (check.missed.empty()) {
-    out += fmt::format("**All {} cases meet it.**\n\n", check.n_cases());
-  } else {
-    out += fmt::format("**{} of {} cases meet it; {} miss it:**\n\n", check.met.size(),
-                       check.n_cases(), check.missed.size());
-    MarkdownTable table({"Model", "Contact", "Algorithm", "Ratio", "Time (ms)", "Note"});
-    for (const ContactBenchmark* b : check.missed) {
-      table.add_row({model_md(b->model), name(b->contact), name(b->algorithm),
-                     format_ratio(b->ratio), format_ms(b->time_ms),
-                     b->converged() ? "" : b->failure()});
-    }
-    out += table.render() + "\n";
+  d.set("missed", missed.render());
+  std::vector<std::pair<std::string, std::string>> met;  // model, "ss PM 1.40, ..."
+  for (const ContactBenchmark* b : check.met) {
+    const std::string item =
+        fmt::format("{} {} {}", name(b->contact), name(b->algorithm), format_ratio(b->ratio));
+    if (met.empty() || met.back().first != model_md(b->model))
+      met.emplace_back(model_md(b->model), item);
+    else
+      met.back().second += ", " + item;
   }
-  if (!check.met.empty()) {
-    out += "Meet it (ratio):\n\n";
-    std::string line;
-    for (std::size_t i = 0; i < check.met.size(); ++i) {
-      const ContactBenchmark& b = *check.met[i];
-      if (i == 0 || !(check.met[i - 1]->model == b.model))
-        line += fmt::format("{}- {}: ", i == 0 ? "" : "\n", model_md(b.model));
-      else
-        line += ", ";
-      line += fmt::format("{} {} {}", name(b.contact), name(b.algorithm), format_ratio(b.ratio));
-    }
-    out += line + "\n\n";
-  }
-  if (!check.not_measured.empty()) {
-    out += fmt::format("Not measured at mesh {} (not judged): {}.\n\n", name(target.mesh),
-                       join_and(check.not_measured));
-  }
-  return out;
+  d.set("has_met", !met.empty());
+  d.set("met_models", template_list(met, [](const auto& m) {
+          TemplateData e;
+          e.set("model", m.first);
+          e.set("items", m.second);
+          return e;
+        }));
+  d.set("not_measured", text_or_false(join_and(check.not_measured)));
+  return d;
 }
 
-std::string all_options_section(const BenchResults& bench) {
-  if (bench.all_options.empty())
-    return {};
+MarkdownTable all_options_table(const BenchResults& bench) {
   std::vector<const AllOptionsBenchmark*> rows;
   for (const auto& b : bench.all_options)
     rows.push_back(&b);
@@ -203,20 +179,16 @@ std::string all_options_section(const BenchResults& bench) {
   });
   MarkdownTable table(
       {"Model", "Time (ms)", "Cases", "Converged", "Ratio per case", "Reference (ms)"});
+  const auto count = [](const std::optional<int>& n) {
+    return n ? std::to_string(*n) : std::string(kMissing);
+  };
   for (const AllOptionsBenchmark* b : rows) {
-    const auto count = [](const std::optional<int>& n) {
-      return n ? std::to_string(*n) : std::string(kMissing);
-    };
     table.add_row({model_md(b->model),
                    b->error.empty() ? format_ms(b->time_ms) : "error: " + b->error, count(b->cases),
                    count(b->converged), format_ratio(b->ratio_per_case),
                    format_ms(b->reference_ms)});
   }
-  return "### All options of a model on one factorization (ContactAllOptions)\n\n"
-         "Every contact discretization × algorithm of one model on one shared sparse "
-         "factorization, as `contact-suite run` solves a model's cases; ratio per case = time / "
-         "cases / reference.\n\n" +
-         table.render() + "\n";
+  return table;
 }
 
 /// One cell of a model table: "4.10 ms · 1.28× · 2 it." (+ " + 3 aug." for AL, " ✗" when the
@@ -232,27 +204,28 @@ std::string case_cell(const ContactBenchmark& b) {
   return b.converged() ? out : out + " ✗";
 }
 
-std::string model_table(const BenchModel& model,
+TemplateData model_data(const BenchModel& model,
                         const std::vector<const ContactBenchmark*>& cases) {
   std::optional<double> reference;
-  for (const ContactBenchmark* b : cases)
-    reference = reference ? reference : b->reference_ms;
-  std::string out =
-      fmt::format("#### {} (reference {} ms)\n\n", model_md(model), format_ms(reference));
   std::vector<ContactKind> contacts;
   std::vector<BenchMethod> algorithms;
+  const auto has = [&](auto pred) { return std::any_of(cases.begin(), cases.end(), pred); };
+  for (const ContactBenchmark* b : cases)
+    reference = reference ? reference : b->reference_ms;
   for (const auto c : bench_contacts()) {
-    if (std::any_of(cases.begin(), cases.end(), [&](const auto* b) { return b->contact == c; }))
+    if (has([&](const auto* b) { return b->contact == c; }))
       contacts.push_back(c);
   }
   for (const auto a : schema::values<BenchMethod>()) {
-    if (std::any_of(cases.begin(), cases.end(), [&](const auto* b) { return b->algorithm == a; }))
+    if (has([&](const auto* b) { return b->algorithm == a; }))
       algorithms.push_back(a);
   }
-  std::vector<std::string> header{"Algorithm"};
-  for (const auto c : contacts)
-    header.push_back(name(c));
-  MarkdownTable table(header);
+  MarkdownTable table([&] {
+    std::vector<std::string> header{"Algorithm"};
+    for (const auto c : contacts)
+      header.push_back(name(c));
+    return header;
+  }());
   for (const auto a : algorithms) {
     std::vector<std::string> row{name(a)};
     for (const auto c : contacts) {
@@ -263,48 +236,37 @@ std::string model_table(const BenchModel& model,
     }
     table.add_row(std::move(row));
   }
-  out += table.render() + "\n";
+  std::vector<std::string> failures;
   for (const ContactBenchmark* b : cases) {
     if (!b->converged())
-      out += fmt::format("✗ {} {}: {}\n", name(b->contact), name(b->algorithm), b->failure());
+      failures.push_back(
+          fmt::format("✗ {} {}: {}", name(b->contact), name(b->algorithm), b->failure()));
   }
-  return std::any_of(cases.begin(), cases.end(), [](const auto* b) { return !b->converged(); })
-             ? out + "\n"
-             : out;
+  TemplateData d;
+  d.set("model", model_md(model));
+  d.set("reference", format_ms(reference));
+  d.set("table", table.render());
+  d.set("has_failures", !failures.empty());
+  d.set("failures", template_list(failures, [](const std::string& f) { return TemplateData(f); }));
+  return d;
 }
 
-std::string models_section(const BenchResults& bench) {
-  if (bench.contact.empty())
-    return {};
-  std::string out = fmt::format(
-      "### Time per model and option\n\n"
-      "Each cell: the time of the contact analysis, its ratio to the model's reference (one "
-      "assembly + factorization + solve) and the active-set iterations (for {}, + the "
-      "augmentations); ✗ marks a case that did not converge or stopped with an error, named "
-      "below its table.\n\n",
-      name(BenchMethod::AL));
-  for (const auto& [model, cases] : by_model(bench))
-    out += model_table(model, cases);
-  return out;
-}
-
-std::string figure_section(const FigureSet& figures) {
+TemplateData figure_data(const FigureSet& figures) {
   if (figures.figures.empty() && figures.unavailable.empty())
-    return {};
-  std::string out = "### Time per algorithm at the finest mesh\n\n";
-  if (!figures.unavailable.empty())
-    return out + fmt::format("**No figure:** {}.\n\n", figures.unavailable);
-  for (const Figure& f : figures.figures) {
-    if (f.produced)
-      out += fmt::format("![{}]({})\n\n", "benchmark times", f.file);
-    else
-      out += fmt::format("*(figure not drawn: {})*\n\n",
-                         f.error.empty() ? "nothing to plot" : f.error);
-    out += f.caption_md + "\n\n";
-    for (const auto& n : f.notes)
-      out += fmt::format("*Note: {}*\n\n", n);
-  }
-  return out;
+    return TemplateData(false);
+  TemplateData d;
+  d.set("unavailable", text_or_false(figures.unavailable));
+  d.set("list", template_list(figures.figures, [](const Figure& f) {
+          TemplateData e;
+          e.set("produced", f.produced);
+          e.set("file", f.file);
+          e.set("error", f.error.empty() ? "nothing to plot" : f.error);
+          e.set("caption", f.caption_md);
+          e.set("notes",
+                template_list(f.notes, [](const std::string& n) { return TemplateData(n); }));
+          return e;
+        }));
+  return d;
 }
 
 }  // namespace
@@ -376,8 +338,23 @@ std::string machine_line(const BenchSource& source) {
 
 std::string bench_section(const BenchResults& bench, const FigureSet& figures,
                           const BenchTarget& target) {
-  return "## Benchmarks\n\n" + intro(bench) + target_section(bench, target) +
-         figure_section(figures) + all_options_section(bench) + models_section(bench);
+  TemplateData d;
+  d.set("n_contact", std::to_string(bench.contact.size()));
+  d.set("n_all_options", std::to_string(bench.all_options.size()));
+  d.set("machines", template_list(bench.sources, [](const BenchSource& s) {
+          return TemplateData(machine_line(s));
+        }));
+  d.set("below_floor", below_floor(bench));
+  d.set("replaced", text_or_false(bench.n_replaced > 0 ? std::to_string(bench.n_replaced) : ""));
+  d.set("target", target_data(bench, target));
+  d.set("figures", figure_data(figures));
+  d.set("all_options",
+        text_or_false(bench.all_options.empty() ? "" : all_options_table(bench).render()));
+  d.set("al", name(BenchMethod::AL));
+  d.set("has_models", !bench.contact.empty());
+  d.set("models", template_list(by_model(bench),
+                                [](const auto& m) { return model_data(m.first, m.second); }));
+  return tidy_markdown(render_template(templates::bench_section, d));
 }
 
 }  // namespace cs::reports

@@ -29,6 +29,11 @@ TemplateData template_list(const Range& items, ToData&& to_data) {
   return list;
 }
 
+/// `text`, or false when it is empty, so that "{{#key}}…{{/key}}" shows only a non-empty text.
+inline TemplateData text_or_false(const std::string& text) {
+  return text.empty() ? TemplateData(false) : TemplateData(text);
+}
+
 /// `text` (an embedded template) rendered with `data`; throws ReportError if rendering fails.
 std::string render_template(std::string_view text, const TemplateData& data);
 

@@ -1,6 +1,11 @@
 #include "reports/results/results_csv.hpp"
 
+#include <map>
+
 #include <fmt/format.h>
+
+#include "grading/convergence.hpp"
+#include "grading/divergence.hpp"
 
 namespace cs::reports {
 namespace {
@@ -38,19 +43,81 @@ std::string overrides_text(const schema::CaseSpec& s) {
   return out;
 }
 
+std::string flag(const std::optional<bool>& b) {
+  return b ? (*b ? "true" : "false") : "";
+}
+
+/// The row verdicts of a case's quantity (C, M or F of some row), to repeat its verdicts on the
+/// case's line: the study's c, the noise-aware trend, Eq. 47 and the strict divergence verdict.
+using RowsByCase =
+    std::map<std::pair<const schema::CaseResult*, schema::Quantity>, const schema::RowVerdict*>;
+
+RowsByCase rows_by_case(const ResultsIndex& index) {
+  RowsByCase out;
+  for (const auto& r : index.results().rows) {
+    for (const auto mesh : kMeshes) {
+      if (const schema::CaseResult* c = index.case_of(r, mesh))
+        out.emplace(std::pair(c, r.quantity), &r);
+    }
+  }
+  return out;
+}
+
+std::vector<std::string> verdict_fields(const ResultsIndex& index, const schema::RowVerdict* r) {
+  if (r == nullptr)
+    return {"", "", "", ""};
+  const auto& e = r->errors;
+  const auto& v = r->values;
+  std::string trend, eq47, strict;
+  if (index.singular(r->spec.problem)) {
+    if (v[0] && v[1] && v[2]) {
+      const auto d = grading::divergence_verdict(*v[0], *v[1], *v[2]);
+      eq47 = flag(d.eq47);
+      strict = flag(d.diverges);
+    }
+  } else if (e[0] && e[1] && e[2]) {
+    trend = schema::to_string(grading::assess_convergence(*e[0], *e[1], *e[2]).trend);
+  }
+  return {flag(r->converging), trend, eq47, strict};
+}
+
 }  // namespace
 
 const std::vector<std::string>& results_csv_columns() {
-  static const std::vector<std::string> columns{
-      "case_id",        "problem",          "mesh",         "element",     "algorithm",
-      "contact",        "target",           "recovery",     "overrides",   "status",
-      "reason",         "iterations",       "wall_seconds", "n_elements",  "n_equations",
-      "element_size_h", "quantity",         "value",        "exact",       "error_percent",
-      "grade",          "contact_pressure", "study_exact",  "ansys_value", "ansys_table"};
+  static const std::vector<std::string> columns{"case_id",
+                                                "problem",
+                                                "mesh",
+                                                "element",
+                                                "algorithm",
+                                                "contact",
+                                                "target",
+                                                "recovery",
+                                                "overrides",
+                                                "status",
+                                                "reason",
+                                                "iterations",
+                                                "wall_seconds",
+                                                "n_elements",
+                                                "n_equations",
+                                                "element_size_h",
+                                                "quantity",
+                                                "value",
+                                                "exact",
+                                                "error_percent",
+                                                "grade",
+                                                "contact_pressure",
+                                                "study_exact",
+                                                "ansys_value",
+                                                "ansys_table",
+                                                "converging",
+                                                "trend",
+                                                "eq47",
+                                                "strict_divergence"};
   return columns;
 }
 
 std::string results_csv(const ResultsIndex& index, const StudyReference& study) {
+  const RowsByCase rows = rows_by_case(index);
   std::string out;
   for (const auto& name : results_csv_columns())
     out += (out.empty() ? "" : ",") + name;
@@ -87,7 +154,7 @@ std::string results_csv(const ResultsIndex& index, const StudyReference& study) 
       out += line + "\n";
     };
     if (c.quantities.empty()) {
-      emit(std::vector<std::string>(9));
+      emit(std::vector<std::string>(13));
       continue;
     }
     for (const auto& q : c.quantities) {
@@ -100,9 +167,14 @@ std::string results_csv(const ResultsIndex& index, const StudyReference& study) 
           ansys_table = match.value->table;
         }
       }
-      emit({name(q.quantity), number(q.value), q.singular() ? "inf" : number(q.exact),
-            number(q.error_percent), name(q.grade), number(q.contact_pressure),
-            number(q.study_exact), ansys_value, ansys_table});
+      const auto row = rows.find({&c, q.quantity});
+      std::vector<std::string> tail{
+          name(q.quantity),        number(q.value), q.singular() ? "inf" : number(q.exact),
+          number(q.error_percent), name(q.grade),   number(q.contact_pressure),
+          number(q.study_exact),   ansys_value,     ansys_table};
+      for (auto& f : verdict_fields(index, row == rows.end() ? nullptr : row->second))
+        tail.push_back(std::move(f));
+      emit(tail);
     }
   }
   return out;

@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 
+#include "reports/render/template_text.hpp"
 #include "reports/tables/grade_tables.hpp"
 #include "reports/tables/markdown_table.hpp"
 
@@ -92,25 +93,6 @@ std::optional<double> lm_mean_error(const ResultsIndex& index, schema::ProblemId
   return out;
 }
 
-std::string findings(const ResultsIndex& index, const schema::ProblemRecord& p) {
-  std::string out;
-  if (const auto lm = lm_mean_error(index, p.id)) {
-    out += fmt::format(
-        "- Lagrange multipliers (LMP, PLM) with ss and mortar, F: the largest error of the mean "
-        "pressure is {} ({}).\n",
-        format_error_resolved(*lm), std::abs(*lm) < 1.0 ? "within 1 %" : "not within 1 %");
-  }
-  const auto worst = worst_arc_option(index, p.id), best = best_arc_option(index, p.id);
-  if (worst && best) {
-    out += fmt::format(
-        "- Along the arc, F: the largest deviation is {} ({} {}), the smallest {} ({} {}).\n",
-        format_error_resolved(worst->deviation_percent), schema::to_string(worst->element),
-        worst->option.label(), format_error_resolved(best->deviation_percent),
-        schema::to_string(best->element), best->option.label());
-  }
-  return out.empty() ? out : out + "\n";
-}
-
 }  // namespace
 
 std::optional<ArcExtreme> worst_arc_option(const ResultsIndex& index, schema::ProblemId problem) {
@@ -122,29 +104,37 @@ std::optional<ArcExtreme> best_arc_option(const ResultsIndex& index, schema::Pro
 }
 
 std::string conformal_section(const ResultsIndex& index) {
-  std::string body;
+  TemplateData problems{TemplateData::type::list};
   for (const schema::ProblemRecord* p : index.problems()) {
     if (!is_conformal_problem(*p))
       continue;
     const std::string table = options_table(index, *p);
     if (table.empty())
       continue;
-    body += fmt::format(
-        "### {} — {}\n\nFine mesh, each cell: the mean pressure's error / the largest deviation "
-        "of the pressure along the arc (the error of p<sub>arc</sub>), then their grades (Eq. "
-        "46; \", c\" converging). Exact pressure from {}.\n\n{}\n{}",
-        schema::label(p->id), p->title, p->exact_source, table, findings(index, *p));
+    TemplateData d;
+    d.set("label", std::string(schema::label(p->id)));
+    d.set("title", p->title);
+    d.set("source", p->exact_source);
+    d.set("table", table);
+    const auto lm = lm_mean_error(index, p->id);
+    d.set("lm", text_or_false(lm ? format_error_resolved(*lm) : ""));
+    d.set("lm_within", lm && std::abs(*lm) < 1.0);
+    const auto worst = worst_arc_option(index, p->id), best = best_arc_option(index, p->id);
+    d.set("arc", worst && best);
+    for (const auto& [key, e] : {std::pair{"worst", worst}, {"best", best}}) {
+      if (e) {
+        d.set(key, format_error_resolved(e->deviation_percent));
+        d.set(std::string(key) + "_option",
+              fmt::format("{} {}", schema::to_string(e->element), e->option.label()));
+      }
+    }
+    problems.push_back(d);
   }
-  if (body.empty())
+  if (problems.is_empty_list())
     return {};
-  return "## Conformal contact\n\nInterference fits: the radial interference is an initial "
-         "overlap that the contact resolves along a whole quarter circle, where the exact "
-         "pressure is uniform. p<sub>mean</sub> is the interface's resultant over the exact one; "
-         "p<sub>arc</sub> is the nodal pressure farthest from the exact one, so its error is the "
-         "largest deviation along the arc (suites/arc_sampling.hpp). MPC ties the overlapping "
-         "points to a zero gap from the start; on a fit that stays closed it is the multiplier "
-         "solution.\n\n" +
-         body;
+  TemplateData d;
+  d.set("problems", problems);
+  return tidy_markdown(render_template(templates::conformal_section, d));
 }
 
 }  // namespace cs::reports

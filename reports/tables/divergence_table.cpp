@@ -1,20 +1,16 @@
 #include "reports/tables/divergence_table.hpp"
 
 #include <cmath>
+#include <map>
 
 #include <fmt/format.h>
 
 #include "grading/divergence.hpp"
-#include "reports/tables/markdown_table.hpp"
+#include "reports/facts/row_facts.hpp"
+#include "reports/render/template_text.hpp"
 
 namespace cs::reports {
 namespace {
-
-std::string verdict(const std::optional<bool>& diverging) {
-  if (!diverging)
-    return kMissing;
-  return *diverging ? "diverges" : "**does not diverge**";
-}
 
 /// "0.46", "−0.05" (the minus sign as in the other tables).
 std::string format_exponent(double alpha) {
@@ -22,19 +18,20 @@ std::string format_exponent(double alpha) {
   return text[0] == '-' ? "−" + text.substr(1) : text;
 }
 
-std::string strict_cell(const std::array<std::optional<double>, 3>& values,
-                        const std::optional<schema::DivergenceVerdict>& d) {
+/// The Eq. 47 cell, the exponent cell and the strict cell of one sequence.
+std::array<std::string, 3> verdict_cells(const std::array<std::optional<double>, 3>& v,
+                                         const std::optional<schema::DivergenceVerdict>& d) {
   if (!d)
-    return kMissing;
-  if (d->diverges)
-    return "diverges";
-  return "**does not diverge**: " + strict_failure_reason(values, *d);
+    return {kMissing, kMissing, kMissing};
+  return {d->eq47 ? "diverges" : "**does not diverge**",
+          d->exponent ? format_exponent(*d->exponent) : std::string(kMissing),
+          d->diverges ? "diverges" : "**does not diverge**: " + strict_failure_reason(v, *d)};
 }
 
-std::string exponent_cell(const std::optional<schema::DivergenceVerdict>& d) {
-  if (!d || !d->exponent)
+std::string values_text(const std::array<std::optional<double>, 3>& v) {
+  if (!v[0] && !v[1] && !v[2])
     return kMissing;
-  return format_exponent(*d->exponent);
+  return fmt::format("{} / {} / {}", format_value(v[0]), format_value(v[1]), format_value(v[2]));
 }
 
 }  // namespace
@@ -58,9 +55,17 @@ std::string strict_failure_reason(const std::array<std::optional<double>, 3>& v,
                      grading::kDivergenceExponentMax);
 }
 
-std::vector<DivergenceRow> build_divergence_rows(const ResultsIndex& index,
-                                                 const StudyReference& study) {
-  std::vector<DivergenceRow> out;
+DivergenceTableFacts build_divergence_table(const ResultsIndex& index,
+                                            const StudyReference& study) {
+  const std::string c(schema::to_string(kMeshes[0])), m(schema::to_string(kMeshes[1])),
+      f(schema::to_string(kMeshes[2]));
+  DivergenceTableFacts out{
+      .table = MarkdownTable({"Problem", "Element", "Option", c, m, f, "Eq. 47 (ours)", "α (ours)",
+                              "strict (ours)", fmt::format("ANSYS {} / {} / {}", c, m, f),
+                              "Eq. 47 (ANSYS)", "α (ANSYS)", "strict (ANSYS)"})};
+  std::map<const schema::RowVerdict*, DivergenceFacts> facts;
+  for (const auto& d : divergence_facts(index))
+    facts[d.row] = d;
   for (const schema::ProblemRecord* p : index.problems()) {
     if (!p->singular)
       continue;
@@ -68,20 +73,36 @@ std::vector<DivergenceRow> build_divergence_rows(const ResultsIndex& index,
       for (const auto element : schema::values<schema::Element>()) {
         for (const auto& option : index.options_present(p->id, q.quantity, element)) {
           const schema::RowVerdict* row = index.row(p->id, q.quantity, element, option);
-          DivergenceRow d{p->id,           element, option, row->values, row->diverging,
-                          row->divergence, {},      {},     {}};
+          std::optional<schema::DivergenceVerdict> ours;
+          if (const auto it = facts.find(row); it != facts.end()) {
+            ours = schema::DivergenceVerdict{it->second.eq47, false, it->second.exponent,
+                                             it->second.strict};
+            ours->monotone = row->divergence && row->divergence->monotone;
+            (ours->eq47 ? out.eq47 : out.eq47_fails)++;
+            (ours->diverges ? out.strict : out.strict_fails)++;
+            out.eq47_only += ours->eq47 && !ours->diverges;
+            out.fine_not_converged += it->second.fine_converged ? 0 : 1;
+          } else {
+            ++out.undecided;
+          }
+          std::array<std::optional<double>, 3> theirs;
           for (const auto mesh : kMeshes) {
             const auto match = study.find_value(p->id, q.quantity, element, option.algorithm,
                                                 option.contact, mesh);
             if (match.value != nullptr)
-              d.study_values[mesh_index(mesh)] = match.value->value;
+              theirs[mesh_index(mesh)] = match.value->value;
           }
-          if (d.study_values[0] && d.study_values[1] && d.study_values[2]) {
-            d.study_divergence = grading::divergence_verdict(*d.study_values[0], *d.study_values[1],
-                                                             *d.study_values[2]);
-            d.study_diverging = d.study_divergence->eq47;
-          }
-          out.push_back(d);
+          std::optional<schema::DivergenceVerdict> study_verdict;
+          if (theirs[0] && theirs[1] && theirs[2])
+            study_verdict = grading::divergence_verdict(*theirs[0], *theirs[1], *theirs[2]);
+          out.study_strict_fails += study_verdict && !study_verdict->diverges;
+          const auto a = verdict_cells(row->values, ours), b = verdict_cells(theirs, study_verdict);
+          const bool fine_ok = index.state(*row, kFinestMesh) != MeshState::not_converged;
+          out.table.add_row({std::string(schema::label(p->id)),
+                             std::string(schema::to_string(element)), option.label(),
+                             format_value(row->values[0]), format_value(row->values[1]),
+                             format_value(row->values[2]) + (fine_ok ? "" : "!"), a[0], a[1], a[2],
+                             values_text(theirs), b[0], b[1], b[2]});
         }
       }
     }
@@ -90,74 +111,24 @@ std::vector<DivergenceRow> build_divergence_rows(const ResultsIndex& index,
 }
 
 std::string divergence_section(const ResultsIndex& index, const StudyReference& study) {
-  const auto rows = build_divergence_rows(index, study);
-  if (rows.empty())
+  const DivergenceTableFacts t = build_divergence_table(index, study);
+  if (t.table.n_rows() == 0)
     return {};
-  const std::string c(schema::to_string(kMeshes[0])), m(schema::to_string(kMeshes[1])),
-      f(schema::to_string(kMeshes[2]));
-  MarkdownTable table({"Problem", "Element", "Option", c, m, f, "Eq. 47 (ours)", "α (ours)",
-                       "strict (ours)", fmt::format("ANSYS {} / {} / {}", c, m, f),
-                       "Eq. 47 (ANSYS)", "α (ANSYS)", "strict (ANSYS)"});
-  int ours_fail = 0, ours_pass = 0, undecided = 0, strict_pass = 0, strict_fail = 0;
-  int eq47_only = 0, study_strict_fail = 0;
-  for (const auto& r : rows) {
-    std::string study_cells = kMissing;
-    if (r.study_values[0] || r.study_values[1] || r.study_values[2]) {
-      study_cells = fmt::format("{} / {} / {}", format_value(r.study_values[0]),
-                                format_value(r.study_values[1]), format_value(r.study_values[2]));
-    }
-    table.add_row({std::string(schema::label(r.problem)), std::string(schema::to_string(r.element)),
-                   r.option.label(), format_value(r.values[0]), format_value(r.values[1]),
-                   format_value(r.values[2]), verdict(r.diverging), exponent_cell(r.divergence),
-                   strict_cell(r.values, r.divergence), study_cells, verdict(r.study_diverging),
-                   exponent_cell(r.study_divergence),
-                   strict_cell(r.study_values, r.study_divergence)});
-    if (r.divergence) {
-      (r.divergence->diverges ? strict_pass : strict_fail)++;
-      eq47_only += r.divergence->eq47 && !r.divergence->diverges;
-    }
-    study_strict_fail += r.study_divergence && !r.study_divergence->diverges;
-    if (!r.diverging) {
-      ++undecided;
-    } else if (*r.diverging) {
-      ++ours_pass;
-    } else {
-      ++ours_fail;
-    }
-  }
-  std::string out = fmt::format(
-      "## Flat punch: divergence (Eq. 47 and a strict verdict)\n\n"
-      "At the punch edge the exact stress is singular, so a trustworthy element should "
-      "*diverge*: the study wants a result \"numerically consistent with stresses increasing "
-      "without bound\". Its Eq. 47 asks only |σ̄<sub>C</sub> − σ̄<sub>M</sub>| < "
-      "|σ̄<sub>M</sub> − σ̄<sub>F</sub>|, which a tensile, shrinking or oscillating sequence can "
-      "pass. The strict verdict asks more: the three values have one sign and grow, "
-      "|σ̄<sub>C</sub>| < |σ̄<sub>M</sub>| < |σ̄<sub>F</sub>|, at a rate α (|σ̄| ∝ h<sup>−α</sup>, "
-      "the mean of log<sub>2</sub> of the two ratios) in [{}, {}] around the 1/2 of the "
-      "square-root singularity at a flat punch's edge (a growth of √2 per halving of h). The "
-      "study found Eq. 47 \"complied with for all contact elements and options\"; its columns "
-      "apply both verdicts to its printed values.\n\n",
-      grading::kDivergenceExponentMin, grading::kDivergenceExponentMax);
-  out += table.render() + "\n";
-  out += fmt::format(
-      "- Ours: by Eq. 47 {} option set(s) diverge, {} do not, {} without a verdict (— : not "
-      "all of C, M, F available). By the strict verdict {} diverge and {} do not; {} pass "
-      "Eq. 47 without diverging.\n"
-      "- ANSYS (the study's values): {} option set(s) fail the strict verdict.\n",
-      ours_pass, ours_fail, undecided, strict_pass, strict_fail, eq47_only, study_strict_fail);
-  std::string mapped;
-  for (const auto first : study_columns())
-    mapped += (mapped.empty() ? "" : "; ") + study_column_label(first);
-  std::string not_in_study;
-  for (const auto c : schema::values<schema::ContactKind>()) {
-    if (!schema::traits(c).in_study)
-      not_in_study += fmt::format("{}{}", not_in_study.empty() ? "" : ", ", schema::to_string(c));
-  }
-  out += fmt::format(
-      "- Option: our algorithm and contact type; the ANSYS column is the study's value for the "
-      "mapped option ({}), — where the study printed none{}.\n\n",
-      mapped, not_in_study.empty() ? "" : fmt::format(" (e.g. {})", not_in_study));
-  return out;
+  TemplateData d;
+  d.set("min", fmt::format("{}", grading::kDivergenceExponentMin));
+  d.set("max", fmt::format("{}", grading::kDivergenceExponentMax));
+  d.set("table", t.table.render());
+  for (const auto& [key, n] : {std::pair{"eq47", t.eq47},
+                               {"eq47_fails", t.eq47_fails},
+                               {"undecided", t.undecided},
+                               {"strict", t.strict},
+                               {"strict_fails", t.strict_fails},
+                               {"eq47_only", t.eq47_only},
+                               {"study_strict_fails", t.study_strict_fails}})
+    d.set(key, std::to_string(n));
+  d.set("fine_not_converged",
+        text_or_false(t.fine_not_converged > 0 ? std::to_string(t.fine_not_converged) : ""));
+  return tidy_markdown(render_template(templates::divergence_table, d));
 }
 
 }  // namespace cs::reports

@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 
+#include "reports/render/template_text.hpp"
 #include "reports/tables/grade_tables.hpp"
 #include "reports/tables/markdown_table.hpp"
 
@@ -76,28 +77,6 @@ std::string lmp_plm_table(const ResultsIndex& index, const schema::ProblemRecord
   return table.n_rows() == 0 ? std::string() : table.render();
 }
 
-std::string lmp_plm_words(const ResultsIndex& index, const schema::ProblemRecord& p) {
-  const LmpPlmDifference d = lmp_plm_difference(index, p.id);
-  if (d.n_pairs == 0)
-    return {};
-  if (d.n_equal == d.n_pairs) {
-    return fmt::format(
-        "LMP and PLM agree to within 0.01 percentage points on all {} pairs: the exact state "
-        "has the same shear everywhere, so the tangential penalty's elastic slip (shear / kt) is "
-        "one rigid shift of the interface and changes no traction.\n\n",
-        d.n_pairs);
-  }
-  return fmt::format(
-      "LMP and PLM agree to within 0.01 percentage points on {} of {} pairs; the largest "
-      "difference is {:.2f} percentage points ({}, {} {}). PLM holds a sticking point with a "
-      "multiplier (no slip increment); LMP holds it with the tangential penalty kt = FKT FKN E/h "
-      "w, so it slips elastically by its shear over kt. Where the shear varies along the "
-      "contact, that elastic slip varies too, and it redistributes the shear and moves the "
-      "stick-slip boundary.\n\n",
-      d.n_equal, d.n_pairs, d.points, schema::label(d.quantity), schema::to_string(d.element),
-      schema::to_string(d.contact));
-}
-
 }  // namespace
 
 LmpPlmDifference lmp_plm_difference(const ResultsIndex& index, schema::ProblemId problem) {
@@ -125,27 +104,33 @@ LmpPlmDifference lmp_plm_difference(const ResultsIndex& index, schema::ProblemId
 }
 
 std::string friction_section(const ResultsIndex& index) {
-  std::string body;
+  TemplateData problems{TemplateData::type::list};
   for (const schema::ProblemRecord* p : index.problems()) {
     if (!is_friction_problem(*p))
       continue;
     const std::string grades = grades_table(index, *p);
     if (grades.empty())
       continue;
-    body += fmt::format(
-        "### {} — {}\n\nFine-mesh error and grade (Eq. 46, \", c\" converging) "
-        "of every option, exact values from {}.\n\n{}\n",
-        schema::label(p->id), p->title, p->exact_source, grades);
-    const std::string pairs = lmp_plm_table(index, *p);
-    if (!pairs.empty())
-      body += fmt::format("LMP beside PLM, fine mesh:\n\n{}\n{}", pairs, lmp_plm_words(index, *p));
+    const LmpPlmDifference diff = lmp_plm_difference(index, p->id);
+    TemplateData d;
+    d.set("label", std::string(schema::label(p->id)));
+    d.set("title", p->title);
+    d.set("source", p->exact_source);
+    d.set("grades", grades);
+    d.set("pairs", text_or_false(lmp_plm_table(index, *p)));
+    d.set("all_equal", diff.n_pairs > 0 && diff.n_equal == diff.n_pairs);
+    d.set("n_pairs", std::to_string(diff.n_pairs));
+    d.set("n_equal", std::to_string(diff.n_equal));
+    d.set("points", fmt::format("{:.2f}", diff.points));
+    d.set("where", fmt::format("{}, {} {}", schema::label(diff.quantity),
+                               schema::to_string(diff.element), schema::to_string(diff.contact)));
+    problems.push_back(d);
   }
-  if (body.empty())
+  if (problems.is_empty_list())
     return {};
-  return "## Friction\n\nCoulomb friction (docs/conventions.md, \"Friction\"): the normal load "
-         "first, then the tangential one in load steps. MPC is not defined with slip and is not "
-         "run.\n\n" +
-         body;
+  TemplateData d;
+  d.set("problems", problems);
+  return tidy_markdown(render_template(templates::friction_section, d));
 }
 
 }  // namespace cs::reports

@@ -6,7 +6,9 @@
 #include <fmt/format.h>
 
 #include "grading/accuracy.hpp"
-#include "reports/tables/markdown_table.hpp"
+#include "grading/convergence.hpp"
+#include "reports/facts/row_facts.hpp"
+#include "reports/render/template_text.hpp"
 #include "reports/tables/option_classes.hpp"
 
 namespace cs::reports {
@@ -17,7 +19,7 @@ using schema::ContactKind;
 
 /// A column group of the study's Table 2 and our option sets that belong under it.
 struct ColumnGroup {
-  std::string name;  ///< for notes: "AL, PM (ss)"
+  std::string name;  ///< "AL, PM (ss)"
   std::vector<Option> candidates;
 };
 
@@ -30,37 +32,40 @@ std::vector<ContactKind> contacts_in_study(bool in_study) {
   return out;
 }
 
-std::string names_of(const std::vector<Algorithm>& algorithms) {
+std::string joined(const std::vector<std::string>& names, const char* separator) {
   std::string out;
-  for (const Algorithm a : algorithms)
-    out += fmt::format("{}{}", out.empty() ? "" : ", ", schema::to_string(a));
+  for (const auto& n : names)
+    out += (out.empty() ? "" : separator) + n;
   return out;
 }
 
+std::string names_of(const std::vector<Algorithm>& algorithms) {
+  std::vector<std::string> names;
+  for (const Algorithm a : algorithms)
+    names.emplace_back(schema::to_string(a));
+  return joined(names, ", ");
+}
+
 /// The study's columns (split by contact type where its Table 2 splits them), then one group
-/// per contact type the study did not have: "AL, PM (ss)", "AL, PM (ns)", "LMP, PLM",
-/// "MPC (IMC)", "mortar".
+/// per contact type the study did not have.
 std::vector<ColumnGroup> column_groups(const StudyReference& study) {
   std::vector<ColumnGroup> groups;
   for (const Algorithm first : study_columns()) {
     const auto members = study_column_members(first);
     const std::string ours = names_of(members);
-    if (study.separates_contacts(first)) {
-      for (const ContactKind c : contacts_in_study(true)) {
-        ColumnGroup g{fmt::format("{} ({})", ours, schema::to_string(c)), {}};
-        for (const Algorithm a : members)
-          g.candidates.push_back({a, c});
-        groups.push_back(std::move(g));
-      }
-      continue;
-    }
     const std::string theirs = study_column_label(first);
-    ColumnGroup g{theirs == ours ? ours : fmt::format("{} ({})", ours, theirs), {}};
-    for (const ContactKind c : contacts_in_study(true)) {
+    const bool split = study.separates_contacts(first);
+    const auto contacts = contacts_in_study(true);
+    for (const ContactKind c : contacts) {
+      if (split || c == contacts.front()) {
+        groups.push_back({split            ? fmt::format("{} ({})", ours, schema::to_string(c))
+                          : theirs == ours ? ours
+                                           : fmt::format("{} ({})", ours, theirs),
+                          {}});
+      }
       for (const Algorithm a : members)
-        g.candidates.push_back({a, c});
+        groups.back().candidates.push_back({a, c});
     }
-    groups.push_back(std::move(g));
   }
   for (const ContactKind c : contacts_in_study(false)) {
     ColumnGroup g{std::string(schema::to_string(c)), {}};
@@ -71,178 +76,190 @@ std::vector<ColumnGroup> column_groups(const StudyReference& study) {
   return groups;
 }
 
-/// The pairs whose coincidence the notes state (the study's groupings, and ours): the
-/// algorithms of a study column on each contact type, the contact types of a study column
-/// that the study does not separate, then the same algorithms on the types it did not have.
+/// The pairs whose coincidence the table states: the algorithms of a study column on each
+/// contact type, the contact types of a column the study does not separate, then the same
+/// algorithms on the types it did not have.
 std::vector<std::pair<Option, Option>> stated_pairs(const StudyReference& study) {
   std::vector<std::pair<Option, Option>> out;
   const auto in_study = contacts_in_study(true);
-  for (const Algorithm first : study_columns()) {
-    const auto members = study_column_members(first);
-    for (const ContactKind c : in_study) {
-      for (std::size_t i = 1; i < members.size(); ++i)
-        out.push_back({{first, c}, {members[i], c}});
-    }
-    if (!study.separates_contacts(first) && in_study.size() >= 2)
-      out.push_back({{first, in_study[0]}, {first, in_study[1]}});
-  }
-  for (const ContactKind c : contacts_in_study(false)) {
+  for (const bool studied : {true, false}) {
     for (const Algorithm first : study_columns()) {
       const auto members = study_column_members(first);
-      for (std::size_t i = 1; i < members.size(); ++i)
-        out.push_back({{first, c}, {members[i], c}});
+      for (const ContactKind c : contacts_in_study(studied)) {
+        for (std::size_t i = 1; i < members.size(); ++i)
+          out.push_back({{first, c}, {members[i], c}});
+      }
+      if (studied && !study.separates_contacts(first) && in_study.size() >= 2)
+        out.push_back({{first, in_study[0]}, {first, in_study[1]}});
     }
   }
   return out;
 }
 
-std::string pair_statement(const Option& a, const Option& b, const OptionComparison& cmp) {
-  const bool same_contact = a.contact == b.contact;
+PairFacts pair_facts(const Option& a, const Option& b, const OptionComparison& cmp) {
   const auto name = [](auto v) { return schema::to_string(v); };
-  const std::string names =
-      same_contact
-          ? fmt::format("{} and {} ({})", name(a.algorithm), name(b.algorithm), name(a.contact))
-          : fmt::format("{} {} and {} {}", name(a.algorithm), name(a.contact), name(b.algorithm),
-                        name(b.contact));
-  const std::string unpaired =
-      cmp.only_one > 0 ? fmt::format(" ({} row(s) have only one of them)", cmp.only_one) : "";
-  if (cmp.coincide()) {
-    // Without friction, the Lagrange-multiplier variants of one study column are one method.
-    const bool same_method = same_contact && a.algorithm != b.algorithm &&
-                             same_study_column(a.algorithm, b.algorithm) &&
-                             !schema::traits(a.algorithm).penalty_based;
-    return fmt::format(
-        "{}{} coincide on all {} rows where both ran (values within {} % on every "
-        "mesh){}: one column.",
-        names, same_method ? ", the same method without friction," : "", cmp.compared,
-        kCoincidenceRelative * 100, unpaired);
-  }
-  std::string how;
-  if (cmp.max_relative > kCoincidenceRelative) {
-    how = fmt::format("largest value difference {:.2g} % at {}", cmp.max_relative * 100,
-                      cmp.where_max);
-  }
-  if (cmp.states_differ > 0) {
-    how += fmt::format(
-        "{}their cases ended differently (missing, failed, not converged) on {} "
-        "row(s)",
-        how.empty() ? "" : "; ", cmp.states_differ);
-  }
-  return fmt::format("{} differ on {} of {} rows ({}){}: separate columns.", names, cmp.differing,
-                     cmp.compared, how, unpaired);
+  const bool same_contact = a.contact == b.contact;
+  PairFacts p;
+  p.names = same_contact ? fmt::format("{} and {} ({})", name(a.algorithm), name(b.algorithm),
+                                       name(a.contact))
+                         : fmt::format("{} {} and {} {}", name(a.algorithm), name(a.contact),
+                                       name(b.algorithm), name(b.contact));
+  p.coincide = cmp.coincide();
+  // Without friction, the Lagrange-multiplier variants of one study column are one method.
+  p.same_method = p.coincide && same_contact && a.algorithm != b.algorithm &&
+                  same_study_column(a.algorithm, b.algorithm) &&
+                  !schema::traits(a.algorithm).penalty_based;
+  p.compared = cmp.compared;
+  p.differing = cmp.differing;
+  p.only_one = cmp.only_one;
+  p.states_differ = cmp.states_differ;
+  if (cmp.max_relative > kCoincidenceRelative)
+    p.max_difference_percent = cmp.max_relative * 100;
+  p.where_max = cmp.where_max;
+  return p;
 }
 
-/// "MPC is the study's IMC; mortar was not in the study.": the study's other names and what
-/// it did not have.
-std::string study_names_note() {
-  std::string out;
-  for (const Algorithm a : schema::values<Algorithm>()) {
-    if (study_name(a) != schema::to_string(a)) {
-      out += fmt::format("{}{} is the study's {}", out.empty() ? "" : "; ", schema::to_string(a),
-                         study_name(a));
-    }
-  }
-  for (const ContactKind c : contacts_in_study(false))
-    out += fmt::format("{}{} was not in the study", out.empty() ? "" : "; ", schema::to_string(c));
-  return out.empty() ? out : out + ".";
-}
-
-std::string joined(const std::vector<std::string>& names, const char* separator) {
-  std::string out;
-  for (const auto& n : names)
-    out += (out.empty() ? "" : separator) + n;
-  return out;
-}
-
-/// Where the study graded against a printed exact value other than ours (the Steuermann rows:
-/// its 9.9773 against the physical 10.1956), ANSYS's fine-mesh value re-graded by Eq. 46
-/// against the physical value, e.g. " (phys. g)"; empty elsewhere.
+/// Where the study graded against a printed exact value other than ours (the Steuermann rows),
+/// ANSYS's fine-mesh value re-graded by Eq. 46 against the physical value: " (phys. g)".
 std::string ansys_physical_regrade(const ResultsIndex& index, const StudyReference& study,
-                                   const GradeTableRow& r, schema::Element element,
+                                   const StudyRowKey& r, schema::Element element,
                                    const Option& option, const schema::RowVerdict* row) {
-  if (row == nullptr || !r.quantity)
+  if (row == nullptr)
     return {};
   const auto exact = index.exact_of(*row);
   const auto match = study.find_value(r.problem, *r.quantity, element, option.algorithm,
                                       option.contact, kFinestMesh);
-  if (!exact || *exact == 0.0 || match.value == nullptr || !match.value->exact)
+  if (!exact || *exact == 0.0 || match.value == nullptr || !match.value->exact ||
+      std::abs(*match.value->exact - *exact) <= 1e-4 * std::abs(*exact))
     return {};
-  if (std::abs(*match.value->exact - *exact) <= 1e-4 * std::abs(*exact))
-    return {};  // the study's exact value is ours
   const double error = grading::error_percent(match.value->value, *exact);
   return fmt::format(" (phys. {})", schema::to_string(grading::grade_of_error(error)));
 }
 
-/// Our cell of one option class, beside the study's grade; counts the comparison.
-std::string table_cell(const ResultsIndex& index, const StudyReference& study,
-                       const GradeTableRow& r, const OptionClass& cls, GradeTable& table,
-                       bool& in_study_any) {
-  const schema::RowVerdict* row = class_row(index, cls, {r.problem, *r.quantity, table.element});
-  std::string text = format_grade_cell(index, row);
-  const Option& first = cls.members.front();
-  if (!schema::traits(first.contact).in_study)
-    return text;
-  const StudyGrade* g =
-      study.find_grade(r.problem, r.study_row, table.element, first.algorithm, first.contact);
-  text += fmt::format(" │ ANSYS {}", g != nullptr ? g->cell() : std::string(kMissing));
-  text += ansys_physical_regrade(index, study, r, table.element, first, row);
-  in_study_any = in_study_any || g != nullptr;
-  if (g != nullptr && row != nullptr && row->grade) {
-    ++table.cells_compared;
-    const int ours = grade_rank(*row->grade), theirs = grade_rank(g->grade);
-    table.cells_same += ours == theirs ? 1 : 0;
-    table.cells_better += ours < theirs ? 1 : 0;
-    table.cells_worse += ours > theirs ? 1 : 0;
+void count(AnsysComparison& c, schema::Grade ours, schema::Grade theirs, const std::string& where,
+           const std::optional<double>& error) {
+  ++c.compared;
+  const int o = grade_rank(ours), t = grade_rank(theirs);
+  c.same += o == t ? 1 : 0;
+  c.better += o < t ? 1 : 0;
+  if (o > t) {
+    ++c.worse;
+    c.worse_cells.push_back(
+        fmt::format("{}: {}", where, error ? format_percent(*error) : std::string(kMissing)));
   }
-  return text;
 }
 
-void add_notes(const ResultsIndex& index, const StudyReference& study,
-               const std::vector<Slot>& slots, const std::string& study_table, bool in_study_any,
-               const std::vector<std::string>& rows_absent,
-               const std::vector<std::string>& groups_absent, GradeTable& table) {
-  auto& notes = table.notes;
-  notes.push_back(fmt::format(
-      "Each cell: our grade (Eq. 46 on the fine mesh F), \", c\" when converging, then │ the "
-      "study's ANSYS grade from its Table {}{}. {}",
-      study_table, in_study_any ? "" : " (none of these cells is in the study)",
-      study_names_note()));
-  notes.push_back(
-      "Markers: — not in this results file; (M) graded on the medium mesh because F is missing "
-      "or failed; * not all of C, M, F present, so no convergence verdict; ! contact iterations "
-      "did not converge on some mesh (its value is the last iterate).");
-  notes.push_back(
-      "Exact values: our grades use the physically consistent exact value of each row. Where "
-      "the study printed another (the Steuermann rows: Eq. 32 without the plane-strain factor "
-      "1 − ν²; the appendix tables give both values and the shift), its ANSYS grade is shown as "
-      "the study gave it, followed by \"(phys. …)\": ANSYS's fine-mesh value re-graded by "
-      "Eq. 46 against the physical value, so that both columns rest on the same reference.");
-  if (table.cells_compared > 0) {
-    notes.push_back(fmt::format(
-        "Against the study: of {} cells graded by both, ours is the same in {}, better in {} and "
-        "worse in {}.",
-        table.cells_compared, table.cells_same, table.cells_better, table.cells_worse));
+/// Builds the cells of one table; a cell compared with ANSYS is graded on extrapolated
+/// stresses where the row has a twin.
+class CellBuilder {
+ public:
+  CellBuilder(const ResultsIndex& index, const StudyReference& study, GradeTableFacts& facts)
+      : index_(index), study_(study), facts_(facts), rows_(row_facts(index)) {
+    for (const auto& f : rows_)
+      by_row_[f.row] = &f;
   }
-  for (const auto& [a, b] : stated_pairs(study)) {
-    const auto cmp = compare_options(index, a, b, slots);
-    if (cmp.compared > 0)
-      notes.push_back(pair_statement(a, b, cmp));
+
+  std::string cell(const StudyRowKey& r, const OptionClass& cls) {
+    const Slot slot{r.problem, *r.quantity, facts_.element};
+    const schema::RowVerdict* row = class_row(index_, cls, slot);
+    const Option& first = cls.members.front();
+    std::string spr = format_grade_cell(index_, row) + marks(row);
+    if (!schema::traits(first.contact).in_study)
+      return spr;
+    const schema::RowVerdict* twin = row ? index_.extrapolated_twin(*row) : nullptr;
+    std::string text = spr;
+    if (twin != nullptr) {
+      const bool twin_luck =
+          twin->errors[0] && twin->errors[1] && twin->errors[2] &&
+          grading::luck_of_one_mesh(*twin->errors[0], *twin->errors[1], *twin->errors[2]);
+      facts_.luck += twin_luck ? 1 : 0;
+      text =
+          fmt::format("{}{} · spr {}", format_grade_cell(index_, twin), twin_luck ? " ‡" : "", spr);
+    }
+    const StudyGrade* g =
+        study_.find_grade(r.problem, r.study_row, facts_.element, first.algorithm, first.contact);
+    text += fmt::format(" │ ANSYS {}", g != nullptr ? g->cell() : std::string(kMissing));
+    text += ansys_physical_regrade(index_, study_, r, facts_.element, first, row);
+    facts_.in_study_any = facts_.in_study_any || g != nullptr;
+    if (g != nullptr && row != nullptr && row->grade) {
+      const std::string where = r.label_md + " " + cls.label();
+      count(facts_.patch, *row->grade, g->grade, where, row->errors[2]);
+      const schema::RowVerdict* printed = twin && twin->grade ? twin : row;
+      facts_.extrapolated = facts_.extrapolated || printed == twin;
+      count(facts_.as_printed, *printed->grade, g->grade, where, printed->errors[2]);
+    }
+    return text;
   }
-  if (!rows_absent.empty()) {
-    notes.push_back(fmt::format("Rows of the study's Table {} not in this results file: {}.",
-                                study_table, joined(rows_absent, ", ")));
+
+ private:
+  /// " ✗" when the F case is not credible, " ‡" when the grade is the luck of one mesh.
+  std::string marks(const schema::RowVerdict* row) {
+    const auto it = by_row_.find(row);
+    if (row == nullptr || it == by_row_.end())
+      return {};
+    facts_.not_credible += it->second->credible ? 0 : 1;
+    facts_.luck += it->second->luck ? 1 : 0;
+    return std::string(it->second->credible ? "" : " ✗") + (it->second->luck ? " ‡" : "");
   }
-  if (!groups_absent.empty()) {
-    notes.push_back(
-        fmt::format("Columns with no case in this results file: {}.", joined(groups_absent, "; ")));
-  }
+
+  const ResultsIndex& index_;
+  const StudyReference& study_;
+  GradeTableFacts& facts_;
+  std::vector<RowFacts> rows_;
+  std::map<const schema::RowVerdict*, const RowFacts*> by_row_;
+};
+
+TemplateData comparison_data(const AnsysComparison& c) {
+  TemplateData d;
+  d.set("compared", std::to_string(c.compared));
+  d.set("same", std::to_string(c.same));
+  d.set("better", std::to_string(c.better));
+  d.set("worse", std::to_string(c.worse));
+  d.set("worse_cells", text_or_false(joined(c.worse_cells, "; ")));
+  return d;
+}
+
+TemplateData table_data(const GradeTableFacts& t) {
+  TemplateData d;
+  d.set("study_table", t.study_table);
+  d.set("element", std::string(schema::to_string(t.element)));
+  d.set("study_element", std::string(study_name(t.element)));
+  d.set("table", t.table.render());
+  d.set("twins", t.extrapolated);
+  d.set("in_study_any", t.in_study_any);
+  d.set("has_compared", t.as_printed.compared > 0);
+  d.set("as_printed", comparison_data(t.as_printed));
+  d.set("patch", comparison_data(t.patch));
+  d.set("has_worse", t.as_printed.worse > 0);
+  d.set("not_credible", std::to_string(t.not_credible));
+  d.set("luck", std::to_string(t.luck));
+  d.set("pairs", template_list(t.pairs, [](const PairFacts& p) {
+          TemplateData e;
+          e.set("names", p.names);
+          e.set("coincide", p.coincide);
+          e.set("same_method", p.same_method);
+          e.set("compared", std::to_string(p.compared));
+          e.set("differing", std::to_string(p.differing));
+          e.set("only_one", text_or_false(p.only_one > 0 ? std::to_string(p.only_one) : ""));
+          e.set("states_differ",
+                text_or_false(p.states_differ > 0 ? std::to_string(p.states_differ) : ""));
+          e.set("max_difference",
+                text_or_false(p.max_difference_percent
+                                  ? fmt::format("{:.2g} %", *p.max_difference_percent)
+                                  : ""));
+          e.set("where_max", p.where_max);
+          e.set("resolution", fmt::format("{:g} %", kCoincidenceRelative * 100));
+          return e;
+        }));
+  d.set("rows_absent", text_or_false(joined(t.rows_absent, ", ")));
+  d.set("groups_absent", text_or_false(joined(t.groups_absent, "; ")));
+  return d;
 }
 
 }  // namespace
 
-std::vector<GradeTableRow> grade_table_rows(const ResultsIndex& index,
-                                            const StudyReference& study) {
-  std::vector<GradeTableRow> rows;
+std::vector<StudyRowKey> grade_table_rows(const ResultsIndex& index, const StudyReference& study) {
+  std::vector<StudyRowKey> rows;
   for (const auto& p : index.results().problems) {
     for (const auto& d : p.quantities) {
       if (!d.study_row.empty())
@@ -284,93 +301,74 @@ std::string format_grade_cell(const ResultsIndex& index, const schema::RowVerdic
     if (!ResultsIndex::complete(*row))
       text += "*";
   }
-  if (index.any_not_converged(*row))
-    text += "!";
-  return text;
+  return index.any_not_converged(*row) ? text + "!" : text;
 }
 
-std::optional<std::string> GradeTable::cell(const std::string& row_label,
-                                            const std::string& column) const {
-  for (const auto& r : rows) {
-    if (r.empty() || r[0] != row_label)
-      continue;
-    for (std::size_t j = 0; j < columns.size() && j < r.size(); ++j) {
-      if (columns[j] == column)
-        return r[j];
-    }
-  }
-  return std::nullopt;
-}
-
-std::string GradeTable::markdown() const {
-  MarkdownTable table(columns);
-  for (const auto& r : rows)
-    table.add_row(r);
-  std::string out = fmt::format("### {}\n\n{}\n", title, table.render());
-  for (const auto& n : notes)
-    out += fmt::format("- {}\n", n);
-  return out + "\n";
-}
-
-std::optional<GradeTable> build_grade_table(const ResultsIndex& index, const StudyReference& study,
-                                            schema::Element element) {
+std::optional<GradeTableFacts> build_grade_table(const ResultsIndex& index,
+                                                 const StudyReference& study,
+                                                 schema::Element element) {
   std::vector<Slot> slots;
-  std::vector<GradeTableRow> rows_present;
-  std::vector<std::string> rows_absent;
+  std::vector<StudyRowKey> present;
+  GradeTableFacts facts;
+  facts.element = element;
   for (const auto& r : grade_table_rows(index, study)) {
     if (r.quantity && index.has(r.problem, *r.quantity, element)) {
       slots.push_back({r.problem, *r.quantity, element});
-      rows_present.push_back(r);
+      present.push_back(r);
     } else {
-      rows_absent.push_back(r.label_md);
+      facts.rows_absent.push_back(r.label_md);
     }
   }
   if (slots.empty())
     return std::nullopt;
+  facts.study_table = study.grade_table(element).empty() ? "2" : study.grade_table(element);
 
-  GradeTable table;
-  table.element = element;
-  std::string study_table = study.grade_table(element);
-  if (study_table.empty())
-    study_table = "2";
-  table.title = fmt::format(
-      "Table {}′ — accuracy and convergence of {} elements (the study's Table "
-      "{}, {})",
-      study_table, schema::to_string(element), study_table, study_name(element));
-  table.columns.push_back("Problem");
-
+  std::vector<std::string> header{"Problem"};
   std::vector<OptionClass> classes;
-  std::vector<std::string> groups_absent;
   for (const auto& group : column_groups(study)) {
     const auto group_classes = coincidence_classes(index, group.candidates, slots);
     if (group_classes.empty())
-      groups_absent.push_back(group.name);
+      facts.groups_absent.push_back(group.name);
     for (const auto& cls : group_classes) {
       classes.push_back(cls);
-      table.columns.push_back(cls.label());
+      header.push_back(cls.label());
     }
   }
-
-  bool in_study_any = false;
-  for (const auto& r : rows_present) {
-    std::vector<std::string> cells{r.label_md};
+  facts.table = MarkdownTable(header);
+  CellBuilder cells(index, study, facts);
+  for (const auto& r : present) {
+    std::vector<std::string> row{r.label_md};
     for (const auto& cls : classes)
-      cells.push_back(table_cell(index, study, r, cls, table, in_study_any));
-    table.rows.push_back(std::move(cells));
+      row.push_back(cells.cell(r, cls));
+    facts.table.add_row(std::move(row));
   }
-  add_notes(index, study, slots, study_table, in_study_any, rows_absent, groups_absent, table);
-  return table;
+  for (const auto& [a, b] : stated_pairs(study)) {
+    const auto cmp = compare_options(index, a, b, slots);
+    if (cmp.compared > 0)
+      facts.pairs.push_back(pair_facts(a, b, cmp));
+  }
+  return facts;
 }
 
 std::string grade_tables_section(const ResultsIndex& index, const StudyReference& study) {
-  std::string out;
+  std::vector<GradeTableFacts> tables;
   for (const auto element : schema::values<schema::Element>()) {
-    if (auto table = build_grade_table(index, study, element))
-      out += table->markdown();
+    if (auto t = build_grade_table(index, study, element))
+      tables.push_back(std::move(*t));
   }
-  if (out.empty())
-    return out;
-  return "## Accuracy and convergence: Tables 2a and 2b\n\n" + out;
+  if (tables.empty())
+    return {};
+  TemplateData d;
+  d.set("tables", template_list(tables, table_data));
+  std::vector<std::string> renamed;
+  for (const Algorithm a : schema::values<Algorithm>()) {
+    if (study_name(a) != schema::to_string(a))
+      renamed.push_back(fmt::format("{} is the study's {}", schema::to_string(a), study_name(a)));
+  }
+  for (const ContactKind c : contacts_in_study(false))
+    renamed.push_back(fmt::format("{} was not in the study", schema::to_string(c)));
+  d.set("study_names", joined(renamed, "; "));
+  return tidy_markdown(render_template(templates::grade_tables, d));
 }
 
 }  // namespace cs::reports

@@ -1,16 +1,18 @@
 #pragma once
-// The equivalents of the study's Tables 2a (4Q) and 2b (8Q): accuracy and convergence per
-// problem (H_p twice: contact and horizontal stress) and option set, each cell our grade
-// beside the study's ANSYS grade, e.g. "e, c │ ANSYS e, c".
+// The equivalents of the study's Tables 2a (4Q) and 2b (8Q): per Table 2 row (a problem's
+// quantity with a `study_row`) and option column, our grade beside the study's ANSYS grade.
 //
-// Rows are the problems' quantities that the study's Table 2 grades (their definitions'
-// `study_row`), in battery order. Columns follow the study's: one per study column (AL, PM;
-// LMP, PLM; MPC, the study's IMC), split by contact type where the study's Table 2 splits it
-// (AL, PM (ss) and (ns)), and one per contact type the study did not have (mortar). Within
-// each, our option sets are merged into one column only where their results coincide
-// (option_classes.hpp); otherwise each gets its own column beside the same study grade. Rows
-// and columns with no data are left out (and named in a note); a missing cell inside the
-// table is "—".
+// ANSYS prints extrapolated nodal stresses, so where a cell is compared with ANSYS our grade is
+// that of the row's extrapolated twin (ResultsIndex::extrapolated_twin), and the
+// patch-recovered grade sits beside it: "g, c · spr e, c │ ANSYS e, c". The counts of cells
+// better or worse than ANSYS come from those extrapolated grades (patch recovery where no
+// extrapolated case ran). A cell whose F case fails the interface checks (RowFacts::credible)
+// is marked ✗, a grade that is the luck of one mesh ‡.
+//
+// Columns follow the study's (AL, PM split by contact type; LMP, PLM; MPC, the study's IMC),
+// then one per contact type it did not have (mortar); our option sets share a column only
+// where their results coincide (option_classes.hpp). Rows and columns with no data are left
+// out and named.
 
 #include <optional>
 #include <string>
@@ -18,45 +20,60 @@
 
 #include "reports/results/results_index.hpp"
 #include "reports/results/study_reference.hpp"
+#include "reports/tables/markdown_table.hpp"
 
 namespace cs::reports {
 
-/// One row of the study's Table 2: a problem's quantity with the study's row key.
-struct GradeTableRow {
+/// The key of one row of the study's Table 2: a problem's quantity and the study's row name.
+struct StudyRowKey {
   schema::ProblemId problem = schema::ProblemId::P_p;
-  /// The graded quantity; nullopt for a row of the study's Table 2 whose problem is not in the
-  /// results (named as absent only).
+  /// The graded quantity; nullopt for a row of the study whose problem is not in the results.
   std::optional<schema::Quantity> quantity;
   std::string study_row;  ///< "main", or for H_p "contact" / "horizontal" (ansys_grades.csv)
   std::string label_md;   ///< e.g. "H<sub>p</sub> (contact)"
 };
 
-/// The rows of Table 2 in battery order: those the results' problems define (quantities with
-/// a `study_row`), and those of the study's Table 2 whose problem is not in the results.
-std::vector<GradeTableRow> grade_table_rows(const ResultsIndex& index, const StudyReference& study);
+/// The rows of Table 2 in battery order: those the results' problems define, and those of the
+/// study's Table 2 whose problem is not in the results.
+std::vector<StudyRowKey> grade_table_rows(const ResultsIndex& index, const StudyReference& study);
 
-/// One built table, cells as text: rows[i][0] is the row label, rows[i][j] is under columns[j].
-struct GradeTable {
-  schema::Element element = schema::Element::Q4;
-  std::string title;  ///< Markdown heading text
-  std::vector<std::string> columns;
-  std::vector<std::vector<std::string>> rows;
-  std::vector<std::string> notes;  ///< legend, coincidence statements, omissions
-  int cells_compared = 0;          ///< cells with our grade and the study's
-  int cells_same = 0, cells_better = 0, cells_worse = 0;
-
-  /// The cell under `column` in the row labelled `row_label`, or nullopt.
-  std::optional<std::string> cell(const std::string& row_label, const std::string& column) const;
-  std::string markdown() const;
+/// Our grades against ANSYS's over the cells that have both.
+struct AnsysComparison {
+  int compared = 0, same = 0, better = 0, worse = 0;
+  std::vector<std::string> worse_cells;  ///< "H<sub>a</sub> LMP ss: +2.76 %"
 };
 
-/// Table 2a/2b for one element, or nullopt when no Table 2 row of that element was run.
-std::optional<GradeTable> build_grade_table(const ResultsIndex& index, const StudyReference& study,
-                                            schema::Element element);
+/// How two of our option sets that the study groups compare (option_classes.hpp).
+struct PairFacts {
+  std::string names;  ///< "AL and PM (ss)"
+  bool coincide = false, same_method = false;
+  int compared = 0, differing = 0, only_one = 0, states_differ = 0;
+  std::optional<double> max_difference_percent;  ///< when above the coincidence resolution
+  std::string where_max;
+};
 
-/// Our part of a cell: "e, c", "g", "s (M)*", "u!", "failed" or "—" (row == nullptr).
-/// Markers: (M) graded on the medium mesh because F is missing; * not all of C, M, F present,
-/// no convergence verdict; ! some mesh did not converge (values are the last iterate).
+/// One Table 2′ (one element) and what it shows.
+struct GradeTableFacts {
+  schema::Element element = schema::Element::Q4;
+  std::string study_table;  ///< "2a"
+  MarkdownTable table{{}};
+  bool extrapolated = false;       ///< some compared cell has an extrapolated grade
+  AnsysComparison as_printed;      ///< extrapolated grade (patch where none) against ANSYS
+  AnsysComparison patch;           ///< patch-recovered grade against ANSYS
+  int not_credible = 0, luck = 0;  ///< cells so marked
+  bool in_study_any = false;
+  std::vector<PairFacts> pairs;
+  std::vector<std::string> rows_absent, groups_absent;
+};
+
+/// Table 2a′/2b′ for one element, or nullopt when no Table 2 row of that element was run.
+std::optional<GradeTableFacts> build_grade_table(const ResultsIndex& index,
+                                                 const StudyReference& study,
+                                                 schema::Element element);
+
+/// A row's grade cell: "e, c", "g", "s (M)*", "u!", "failed" or "—" (row == nullptr).
+/// Markers: (M) graded on the medium mesh because F is missing; * not all of C, M, F present;
+/// ! some mesh did not converge (values are the last iterate).
 std::string format_grade_cell(const ResultsIndex& index, const schema::RowVerdict* row);
 
 /// Rank of a grade, best first: e 0, g 1, s 2, u 3.

@@ -1,11 +1,13 @@
 #include "reports/tables/interface_table.hpp"
 
-#include <cmath>
+#include <algorithm>
+#include <array>
 #include <map>
 
 #include <fmt/format.h>
 
 #include "grading/interface_check_rules.hpp"
+#include "reports/render/template_text.hpp"
 #include "reports/tables/markdown_table.hpp"
 
 namespace cs::reports {
@@ -53,10 +55,11 @@ std::string summary_table(const ResultsIndex& index) {
   return table.render();
 }
 
-std::string failing_table(const ResultsIndex& index, std::size_t& n_failing) {
-  // (problem, element, option, check) -> meshes and worst value, in document order.
-  std::map<std::string, Failing> failing;
-  std::vector<std::string> order;
+/// The (problem, element, option, check) pairs that fail, in document order, with the meshes
+/// on which they fail and the worst value.
+MarkdownTable failing_table(const ResultsIndex& index) {
+  std::map<std::array<std::string, 4>, Failing> failing;
+  std::vector<std::array<std::string, 4>> order;
   for (const auto& c : index.results().cases) {
     if (!covered(c))
       continue;
@@ -65,10 +68,12 @@ std::string failing_table(const ResultsIndex& index, std::size_t& n_failing) {
       if (!v || !grading::fails(check, *v))
         continue;
       const std::string variant = variant_of(c.spec);
-      const std::string key = fmt::format(
-          "{} | {} | {} {}{}{} | {}", schema::label(c.spec.problem),
-          schema::to_string(c.spec.element), schema::to_string(c.spec.algorithm),
-          schema::to_string(c.spec.contact), variant.empty() ? "" : " ", variant, check.name);
+      const std::array<std::string, 4> key{
+          std::string(schema::label(c.spec.problem)),
+          std::string(schema::to_string(c.spec.element)),
+          fmt::format("{} {}{}{}", schema::to_string(c.spec.algorithm),
+                      schema::to_string(c.spec.contact), variant.empty() ? "" : " ", variant),
+          std::string(check.name)};
       auto [it, inserted] = failing.try_emplace(key);
       if (inserted)
         order.push_back(key);
@@ -77,46 +82,32 @@ std::string failing_table(const ResultsIndex& index, std::size_t& n_failing) {
       it->second.worst = std::max(it->second.worst, *v);
     }
   }
-  n_failing = order.size();
-  if (order.empty())
-    return {};
-  std::string out =
-      "| Problem | Element | Option | Check | Meshes | Worst |\n| :-- | :-: | :-: | :-- | :-: | "
-      ":-: |\n";
-  for (std::size_t i = 0; i < order.size() && i < kListed; ++i) {
-    const Failing& f = failing.at(order[i]);
-    out += fmt::format("| {} | {} | {:.3g} |\n", order[i], f.meshes, f.worst);
+  MarkdownTable table({"Problem", "Element", "Option", "Check", "Meshes", "Worst"});
+  for (const auto& key : order) {
+    const Failing& f = failing.at(key);
+    table.add_row({key[0], key[1], key[2], key[3], f.meshes, fmt::format("{:.3g}", f.worst)});
   }
-  if (order.size() > kListed)
-    out += fmt::format("\n… and {} more (all in results.json, `interface` of each case).\n",
-                       order.size() - kListed);
-  return out;
+  return table;
 }
 
 }  // namespace
 
 std::string interface_section(const ResultsIndex& index) {
-  bool any = false;
-  for (const auto& c : index.results().cases)
-    any = any || covered(c);
-  if (!any)
+  const auto& cases = index.results().cases;
+  if (std::none_of(cases.begin(), cases.end(), covered))
     return {};
-  std::size_t n_failing = 0;
-  const std::string failing = failing_table(index, n_failing);
-  std::string out =
-      fmt::format(
-          "## Interface checks\n\n"
-          "Beside the graded peak, every case's contact interface is checked as a reviewer "
-          "would check any contact solution: the contact forces must carry the whole applied "
-          "load; a frictionless contact cannot pull; the pressure must vanish beyond the exact "
-          "contact patch (allowing one element for the discrete edge); and penetration must "
-          "stay below {:g} of the element size (the study's default FTOLN). Values per case are "
-          "in results.json (`interface`).\n\n",
-          schema::kPenetrationTolerance) +
-      summary_table(index) + "\n";
-  if (n_failing == 0)
-    return out + "No option set fails a check.\n\n";
-  return out + fmt::format("{} (option set, check) pairs fail:\n\n", n_failing) + failing + "\n";
+  const MarkdownTable failing = failing_table(index);
+  MarkdownTable listed(failing.header());
+  for (std::size_t i = 0; i < failing.n_rows() && i < kListed; ++i)
+    listed.add_row(failing.rows()[i]);
+  TemplateData d;
+  d.set("tolerance", fmt::format("{:g}", schema::kPenetrationTolerance));
+  d.set("summary", summary_table(index));
+  d.set("n_failing", text_or_false(failing.n_rows() > 0 ? std::to_string(failing.n_rows()) : ""));
+  d.set("failing", listed.render());
+  d.set("more", text_or_false(
+                    failing.n_rows() > kListed ? std::to_string(failing.n_rows() - kListed) : ""));
+  return tidy_markdown(render_template(templates::interface_table, d));
 }
 
 }  // namespace cs::reports

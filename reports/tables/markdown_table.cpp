@@ -46,6 +46,30 @@ std::string MarkdownTable::render() const {
   return out;
 }
 
+std::optional<std::string> MarkdownTable::cell(const std::string& row_label,
+                                               const std::string& column) const {
+  for (const auto& r : rows_) {
+    if (r.empty() || r[0] != row_label)
+      continue;
+    for (std::size_t j = 0; j < header_.size() && j < r.size(); ++j) {
+      if (header_[j] == column)
+        return r[j];
+    }
+  }
+  return std::nullopt;
+}
+
+std::string tidy_markdown(const std::string& markdown) {
+  std::string out;
+  int newlines = 0;
+  for (char c : markdown) {
+    newlines = c == '\n' ? newlines + 1 : 0;
+    if (newlines <= 2)
+      out += c;
+  }
+  return out;
+}
+
 std::string format_value(double v) {
   return fmt::format("{:.4f}", v);
 }

@@ -14,6 +14,10 @@ class MarkdownTable {
   explicit MarkdownTable(std::vector<std::string> header) : header_(std::move(header)) {}
   void add_row(std::vector<std::string> cells) { rows_.push_back(std::move(cells)); }
   std::size_t n_rows() const { return rows_.size(); }
+  const std::vector<std::string>& header() const { return header_; }
+  const std::vector<std::vector<std::string>>& rows() const { return rows_; }
+  /// The cell under `column` in the first row whose first cell is `row_label`, or nullopt.
+  std::optional<std::string> cell(const std::string& row_label, const std::string& column) const;
   /// The table as Markdown, ending with a newline; '|' inside cells is escaped.
   std::string render() const;
 
@@ -21,6 +25,9 @@ class MarkdownTable {
   std::vector<std::string> header_;
   std::vector<std::vector<std::string>> rows_;
 };
+
+/// `markdown` with every run of blank lines (left by a template's skipped sections) cut to one.
+std::string tidy_markdown(const std::string& markdown);
 
 /// A normalized stress as the study prints it: 4 decimals ("1.2732").
 std::string format_value(double v);

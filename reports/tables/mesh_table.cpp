@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include "reports/render/template_text.hpp"
 #include "reports/tables/markdown_table.hpp"
 
 namespace cs::reports {
@@ -73,18 +74,15 @@ std::string mesh_table_section(const ResultsIndex& index, const StudyReference& 
   }
   if (table.n_rows() == 0)
     return {};
-  return fmt::format(
-      "## Meshes: Table 1′\n\n"
-      "Elements of the indented body, ours (counted in the cases run) beside the study's Table "
-      "1, and our element size at the contact over a (b for S). {} of {} counts differ from "
-      "the study's{}. The study shows its coarse meshes (its Figure 3) but not their node "
-      "positions; where our structured layout cannot hit its count exactly we build the "
-      "nearest one. Each level halves h.\n\n{}\n",
-      differing.count, compared,
-      differing.count == 0 ? std::string()
-                           : fmt::format(", by at most {:.2f} %, on {}", differing.largest_percent,
-                                         differing.problems),
-      table.render());
+  TemplateData d;
+  d.set("differing", std::to_string(differing.count));
+  d.set("compared", std::to_string(compared));
+  d.set("largest",
+        text_or_false(differing.count == 0 ? ""
+                                           : fmt::format("{:.2f} %", differing.largest_percent)));
+  d.set("problems", differing.problems);
+  d.set("table", table.render());
+  return tidy_markdown(render_template(templates::mesh_table, d));
 }
 
 }  // namespace cs::reports

@@ -9,6 +9,7 @@
 
 #include "grading/divergence.hpp"
 #include "report_test_support.hpp"
+#include "reports/facts/row_facts.hpp"
 #include "reports/findings/anomalies_section.hpp"
 #include "reports/tables/divergence_table.hpp"
 #include "reports/tables/markdown_table.hpp"
@@ -102,6 +103,26 @@ TEST(StrictDivergence, TheIssuesSequencesDoNotDiverge) {
   EXPECT_TRUE(sqrt_growth.diverges);
   EXPECT_NEAR(*sqrt_growth.exponent, 0.5, 1e-12);
   EXPECT_EQ(strict_failure_reason({s, s * std::sqrt(2.0), 2.0 * s}, sqrt_growth), "");
+}
+
+// Requirement: the divergence table's counts are those of the row facts (grading's Eq. 47 and
+// strict verdict, once per complete singular row), and the table has a row per singular option
+// set present.
+TEST(DivergenceTable, CountsComeFromTheRowFacts) {
+  const Loaded data(sample_json());
+  const DivergenceTableFacts t = build_divergence_table(data.index, study());
+  int eq47 = 0, strict = 0, complete = 0;
+  for (const auto& d : divergence_facts(data.index)) {
+    ++complete;
+    eq47 += d.eq47 ? 1 : 0;
+    strict += d.strict ? 1 : 0;
+  }
+  ASSERT_GT(complete, 0);
+  EXPECT_EQ(t.eq47, eq47);
+  EXPECT_EQ(t.eq47_fails, complete - eq47);
+  EXPECT_EQ(t.strict, strict);
+  EXPECT_EQ(t.strict_fails, complete - strict);
+  EXPECT_EQ(static_cast<int>(t.table.n_rows()), complete + t.undecided);
 }
 
 }  // namespace

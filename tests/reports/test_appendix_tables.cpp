@@ -2,6 +2,7 @@
 // printed ANSYS value, exact values above each group, missing and failed cases marked.
 
 #include <algorithm>
+#include <set>
 
 #include <gtest/gtest.h>
 
@@ -24,8 +25,14 @@ using testing::study;
 
 constexpr MeshLevel C = MeshLevel::C, M = MeshLevel::M, F = MeshLevel::F;
 
-const AppendixTable* find_table(const std::vector<AppendixTable>& tables, ProblemId problem,
-                                Quantity quantity, Element element, ContactKind contact) {
+std::optional<std::string> cell(const AppendixTableFacts& t, MeshLevel mesh,
+                                const std::string& column) {
+  return t.table.cell(std::string(schema::to_string(mesh)), column);
+}
+
+const AppendixTableFacts* find_table(const std::vector<AppendixTableFacts>& tables,
+                                     ProblemId problem, Quantity quantity, Element element,
+                                     ContactKind contact) {
   for (const auto& t : tables) {
     if (t.problem == problem && t.quantity == quantity && t.element == element &&
         t.contact == contact)
@@ -37,18 +44,18 @@ const AppendixTable* find_table(const std::vector<AppendixTable>& tables, Proble
 TEST(AppendixTables, OurValueBesideTheStudysValue) {
   const Loaded data(sample_json());
   const auto tables = build_appendix_tables(data.index, study());
-  const AppendixTable* t =
+  const AppendixTableFacts* t =
       find_table(tables, ProblemId::H_p, Quantity::sigma_c, Element::Q4, ContactKind::ss);
   ASSERT_NE(t, nullptr);
   // Ours 1.2730 against 4/pi = 1.27324: -0.02 %; the study's Table 7a F row: 1.2737.
-  EXPECT_EQ(t->cell(F, "AL = PM"), "1.2730 (−0.02 %)");
-  EXPECT_EQ(t->cell(F, "ANSYS AL, PM"), "1.2737");
-  EXPECT_EQ(t->cell(C, "ANSYS LMP, PLM"), "1.3124");
+  EXPECT_EQ(cell(*t, F, "AL = PM"), "1.2730 (−0.02 %)");
+  EXPECT_EQ(cell(*t, F, "ANSYS AL, PM"), "1.2737");
+  EXPECT_EQ(cell(*t, C, "ANSYS LMP, PLM"), "1.3124");
   // MPC is the study's IMC; its fine case did not converge ("!").
-  EXPECT_EQ(t->cell(F, "MPC"), "1.5200 (+19.4 %)!");
-  EXPECT_EQ(t->cell(F, "ANSYS IMC"), "1.7387");
-  EXPECT_EQ(t->cell(M, "h"), "0.0625");
-  EXPECT_NE(t->title.find("the study's Table 7a"), std::string::npos);
+  EXPECT_EQ(cell(*t, F, "MPC"), "1.5200 (+19.4 %)!");
+  EXPECT_EQ(cell(*t, F, "ANSYS IMC"), "1.7387");
+  EXPECT_EQ(cell(*t, M, "h"), "0.0625");
+  EXPECT_EQ(t->study_tables, (std::set<std::string>{"7a"}));
 }
 
 TEST(AppendixTables, TheStudysEitherColumnsAndTheSurfaceToSurfaceTable) {
@@ -56,56 +63,59 @@ TEST(AppendixTables, TheStudysEitherColumnsAndTheSurfaceToSurfaceTable) {
   const auto tables = build_appendix_tables(data.index, study());
   // P_p ss: the study's AL, PM ss values are in the sentence above Table 3a (1.0000), its
   // LMP, PLM column is "either node-to-surface or surface-to-surface" (Table 3a).
-  const AppendixTable* t =
+  const AppendixTableFacts* t =
       find_table(tables, ProblemId::P_p, Quantity::sigma_z_max, Element::Q4, ContactKind::ss);
   ASSERT_NE(t, nullptr);
-  EXPECT_EQ(t->cell(F, "ANSYS AL, PM"), "1.0000");
-  EXPECT_EQ(t->cell(F, "LMP"), "1.0019 (+0.19 %)");
-  EXPECT_EQ(t->cell(F, "ANSYS LMP, PLM"), "1.0019");
-  EXPECT_EQ(t->cell(F, "ANSYS IMC"), "2.7767");
-  EXPECT_NE(t->title.find("3a"), std::string::npos);
-  EXPECT_NE(t->title.find("3text"), std::string::npos);
+  EXPECT_EQ(cell(*t, F, "ANSYS AL, PM"), "1.0000");
+  EXPECT_EQ(cell(*t, F, "LMP"), "1.0019 (+0.19 %)");
+  EXPECT_EQ(cell(*t, F, "ANSYS LMP, PLM"), "1.0019");
+  EXPECT_EQ(cell(*t, F, "ANSYS IMC"), "2.7767");
+  EXPECT_EQ(t->study_tables, (std::set<std::string>{"3a", "3text"}));
 }
 
 TEST(AppendixTables, MissingAndFailedCasesAreMarkedNotDropped) {
   const Loaded data(sample_json());
   const auto tables = build_appendix_tables(data.index, study());
-  const AppendixTable* t =
+  const AppendixTableFacts* t =
       find_table(tables, ProblemId::H_p, Quantity::sigma_c, Element::Q8, ContactKind::ss);
   ASSERT_NE(t, nullptr);
-  ASSERT_EQ(t->rows.size(), 3u);  // C, M and F all shown
-  EXPECT_EQ(t->cell(F, "AL"), "—");
-  EXPECT_EQ(t->cell(F, "PM"), "failed");
-  EXPECT_EQ(t->cell(M, "AL"), "1.2810 (+0.61 %)");
-  EXPECT_EQ(t->cell(F, "ANSYS AL, PM"), "1.2761");
-  const bool noted = std::any_of(t->notes.begin(), t->notes.end(), [](const std::string& n) {
-    return n.find("not in this results file") != std::string::npos;
-  });
-  EXPECT_TRUE(noted);
+  ASSERT_EQ(t->table.n_rows(), 3u);  // C, M and F all shown
+  EXPECT_EQ(cell(*t, F, "AL"), "—");
+  EXPECT_EQ(cell(*t, F, "PM"), "failed");
+  EXPECT_EQ(cell(*t, M, "AL"), "1.2810 (+0.61 %)");
+  EXPECT_EQ(cell(*t, F, "ANSYS AL, PM"), "1.2761");
+  EXPECT_TRUE(t->missing);
+  EXPECT_TRUE(t->failed);
   // Problems not run have no table at all.
   EXPECT_EQ(find_table(tables, ProblemId::H_a, Quantity::sigma_c, Element::Q4, ContactKind::ss),
             nullptr);
   // Mortar: ours only.
-  const AppendixTable* m =
+  const AppendixTableFacts* m =
       find_table(tables, ProblemId::H_p, Quantity::sigma_c, Element::Q4, ContactKind::mortar);
   ASSERT_NE(m, nullptr);
-  EXPECT_EQ(std::count_if(m->columns.begin(), m->columns.end(),
+  EXPECT_EQ(std::count_if(m->table.header().begin(), m->table.header().end(),
                           [](const std::string& c) { return c.rfind("ANSYS", 0) == 0; }),
             0);
-  EXPECT_NE(m->title.find("not in the study"), std::string::npos);
+  EXPECT_TRUE(m->study_tables.empty());
 }
 
-TEST(AppendixTables, ExactValueLineShowsOursAndTheStudysPrintedValue) {
+// Requirement: above each group the exact value is ours, beside the study's printed one and
+// its signed shift from ours; a singular quantity has none.
+TEST(AppendixTables, ExactValueIsOursBesideTheStudysPrintedValue) {
   const Loaded data(sample_json());
-  const std::string s = exact_value_line(data.index, study(), ProblemId::S_1_3, Quantity::sigma_c);
-  EXPECT_NE(s.find("11.2424"), std::string::npos) << s;
-  EXPECT_NE(s.find("the study printed 10.9571"), std::string::npos) << s;
-  EXPECT_NE(s.find("−2.54 % from ours"), std::string::npos) << s;  // (10.9571 - 11.2424) / 11.2424
-  const std::string h = exact_value_line(data.index, study(), ProblemId::H_p, Quantity::sigma_c);
-  EXPECT_NE(h.find("1.2732"), std::string::npos) << h;
-  const std::string f =
-      exact_value_line(data.index, study(), ProblemId::F_p, Quantity::sigma_c_star);
-  EXPECT_NE(f.find("→ ∞"), std::string::npos) << f;
+  const auto s = exact_value_facts(data.index, study(), ProblemId::S_1_3, Quantity::sigma_c);
+  ASSERT_TRUE(s.exact && s.printed && s.printed_shift);
+  EXPECT_NEAR(*s.exact, 11.2424, 5e-5);  // the study's 4 printed decimals
+  EXPECT_DOUBLE_EQ(*s.printed, 10.9571);
+  EXPECT_NEAR(*s.printed_shift, (10.9571 - *s.exact) / *s.exact * 100, 1e-12);
+  EXPECT_LT(*s.printed_shift, 0.0);  // −2.54 %: signed
+  const auto h = exact_value_facts(data.index, study(), ProblemId::H_p, Quantity::sigma_c);
+  ASSERT_TRUE(h.exact);
+  EXPECT_NEAR(*h.exact, 1.2732, 5e-5);
+  const auto f = exact_value_facts(data.index, study(), ProblemId::F_p, Quantity::sigma_c_star);
+  EXPECT_TRUE(f.singular);
+  const std::string md = appendix_section(data.index, study());
+  EXPECT_NE(md.find("−2.54 %"), std::string::npos);
 }
 
 TEST(StudyReference, MapsOurOptionsOntoTheStudysKeys) {

@@ -16,11 +16,9 @@
 #include "report_test_support.hpp"
 #include "reports/figures/cross_code_figure.hpp"
 #include "reports/report_writer.hpp"
-#include "reports/tables/cross_code_appendix.hpp"
-#include "reports/tables/cross_code_cost.hpp"
-#include "reports/tables/cross_code_grade_table.hpp"
 #include "reports/tables/cross_code_rows.hpp"
 #include "reports/tables/cross_code_section.hpp"
+#include "reports/tables/cross_code_tables.hpp"
 #include "suites/executor_factory.hpp"
 #include "suites/problem_catalog.hpp"
 #include "suites/row_verdict.hpp"
@@ -145,11 +143,11 @@ TEST(CrossCodeGradeTable, GradesSideBySideWithTheStudysCell) {
   const ResultsIndex index(doc);
   const auto table = build_cross_code_grade_table(index, study(), Element::Q4);
   ASSERT_TRUE(table.has_value());
-  ASSERT_EQ(table->rows.size(), 1U);
+  ASSERT_EQ(table->n_rows(), 1U);
   const StudyGrade* ansys = study().find_grade(ProblemId::H_p, "contact", Element::Q4,
                                                schema::Algorithm::PM, schema::ContactKind::ss);
   ASSERT_NE(ansys, nullptr);
-  const auto cell = table->cell(table->rows[0][0], "PM ss");
+  const auto cell = table->cell(table->rows()[0][0], "PM ss");
   ASSERT_TRUE(cell.has_value());
   EXPECT_EQ(*cell, fmt::format("e, c │ g, c │ ANSYS {}", ansys->cell()));
   EXPECT_FALSE(build_cross_code_grade_table(index, study(), Element::Q8).has_value());
@@ -166,7 +164,7 @@ TEST(CrossCodeGradeTable, TimeoutOnTheFineMeshIsShownAsSuch) {
   const ResultsIndex index(doc);
   const auto table = build_cross_code_grade_table(index, study(), Element::Q4);
   ASSERT_TRUE(table.has_value());
-  const auto cell = table->cell(table->rows[0][0], "PM ss");
+  const auto cell = table->cell(table->rows()[0][0], "PM ss");
   ASSERT_TRUE(cell.has_value());
   EXPECT_NE(cell->find("│ g (M)*, timeout (F) │"), std::string::npos) << *cell;
   EXPECT_EQ(cross_code_grade_tally(index, study()).at("calculix").by_class.at("no grade"), 1);
@@ -193,9 +191,8 @@ TEST(CrossCodeCost, RatiosOfTheSameCases) {
   EXPECT_EQ(c.total_both_converged.pairs, 2);
   EXPECT_DOUBLE_EQ(c.total_both_converged.ours_seconds, 3.0);
   ASSERT_EQ(c.lines.size(), 3U);  // H_p C, M, F
-  EXPECT_NE(c.markdown().find("| all cases | 3 | 2 | 7 | 70 | 10 | 30 | 90 | 3 |"),
-            std::string::npos)
-      << c.markdown();
+  const std::string md = cost_table(c).render();
+  EXPECT_NE(md.find("| all cases | 3 | 2 | 7 | 70 | 10 | 30 | 90 | 3 |"), std::string::npos) << md;
 }
 
 // Requirement: the appendix gives each solver's value and error per mesh, 4 decimals, and
@@ -205,20 +202,36 @@ TEST(CrossCodeAppendix, ValuesPerMeshAndSolver) {
   const ResultsIndex index(doc);
   const auto tables = build_cross_code_appendix(index, study());
   ASSERT_EQ(tables.size(), 1U);
-  const auto& t = tables[0];
-  ASSERT_EQ(t.rows.size(), 1U);
+  const auto& t = tables[0].second;
+  ASSERT_EQ(t.n_rows(), 1U);
   const auto col = [&](const std::string& name) {
-    for (std::size_t j = 0; j < t.columns.size(); ++j) {
-      if (t.columns[j] == name)
-        return t.rows[0][j];
-    }
-    return std::string("no column ") + name;
+    return t.cell(t.rows()[0][0], name).value_or("no column " + name);
   };
   EXPECT_EQ(col("Exact"), fmt::format("{:.4f}", kHertzExact));
   EXPECT_EQ(col("C CalculiX").substr(0, 6), fmt::format("{:.4f}", kHertzExact * 1.08));
   EXPECT_NE(col("C CalculiX").find("+8.00 %"), std::string::npos);
   EXPECT_EQ(col("F CalculiX"), "timeout");
   EXPECT_EQ(col("F ours").substr(0, 6), fmt::format("{:.4f}", kHertzExact * 1.005));
+}
+
+// Requirement: an error is printed with its sign: an under-estimate of the peak reads "−52.3 %",
+// never "+52.3 %".
+TEST(CrossCodeAppendix, ErrorsAreSigned) {
+  std::vector<CaseResult> cases;
+  for (const auto m : kMeshes) {
+    cases.push_back(hertz_case(SolverKind::builtin, m, 1.0));
+    cases.push_back(hertz_case(SolverKind::calculix, m, -52.26));
+  }
+  const auto doc = document(cases);
+  const ResultsIndex index(doc);
+  const auto tables = build_cross_code_appendix(index, study());
+  ASSERT_EQ(tables.size(), 1U);
+  const auto& t = tables[0].second;
+  const std::string cell = t.cell(t.rows()[0][0], "F CalculiX").value_or("");
+  EXPECT_NE(cell.find("(−52.3 %)"), std::string::npos) << cell;
+  const std::string md = cross_code_section(index, study(), {}, {});
+  EXPECT_EQ(md.find("+52.3"), std::string::npos);
+  EXPECT_NE(md.find("−52.3 %"), std::string::npos);
 }
 
 // Requirement: the figure has one curve per solver with a fine-mesh pressure and the exact
@@ -302,7 +315,7 @@ TEST(CrossCodeSection, RealRunOfBothSolversOnTheCoarseMesh) {
   EXPECT_NEAR(theirs->value, kHertzExact, 0.1 * kHertzExact);
   EXPECT_NE(ours->value, theirs->value);  // two solvers, two answers
   bool found = false;
-  for (const auto& row : tables[0].rows) {
+  for (const auto& row : tables[0].second.rows()) {
     if (row[0] != "sigma_c Q4 PM ns")
       continue;
     found = true;

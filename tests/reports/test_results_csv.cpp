@@ -1,9 +1,12 @@
 // results.csv: one row per case and quantity, with the study's value where it printed one.
 
+#include <algorithm>
 #include <sstream>
 
 #include <gtest/gtest.h>
 
+#include "grading/convergence.hpp"
+#include "grading/divergence.hpp"
 #include "report_test_support.hpp"
 #include "reports/results/results_csv.hpp"
 
@@ -64,6 +67,57 @@ TEST(ResultsCsv, CasesWithoutQuantitiesKeepARowAndReasonsAreQuoted) {
     }
   }
   EXPECT_EQ(rows, 1);
+}
+
+/// The fields of a CSV line (no quoted commas in the lines this test reads).
+std::vector<std::string> fields_of(const std::string& line) {
+  std::vector<std::string> out;
+  std::istringstream in(line);
+  for (std::string f; std::getline(in, f, ',');)
+    out.push_back(f);
+  if (!line.empty() && line.back() == ',')
+    out.emplace_back();
+  return out;
+}
+
+// Requirement: every line repeats the verdicts of the row its case belongs to, computed by the
+// grading layer: the study's c and the noise-aware trend for a nonsingular row, Eq. 47 and the
+// strict verdict for a singular one.
+TEST(ResultsCsv, CarriesTheRowsVerdicts) {
+  const Loaded data(sample_json());
+  const auto lines = lines_of(results_csv(data.index, study()));
+  const auto header = fields_of(lines[0]);
+  const auto column = [&](const std::string& name) {
+    return static_cast<std::size_t>(std::find(header.begin(), header.end(), name) - header.begin());
+  };
+  ASSERT_LT(column("strict_divergence"), header.size());
+  int nonsingular = 0, singular = 0;
+  for (const schema::RowVerdict* r : data.index.baseline_rows()) {
+    const schema::CaseResult* c = data.index.case_of(*r, schema::MeshLevel::F);
+    if (c == nullptr || !ResultsIndex::complete(*r))
+      continue;
+    const std::string prefix = schema::case_id(c->spec) + ",";
+    for (const auto& l : lines) {
+      const auto f = fields_of(l);
+      if (l.rfind(prefix, 0) != 0 || f[column("quantity")] != schema::to_string(r->quantity))
+        continue;
+      if (data.index.singular(r->spec.problem)) {
+        const auto d = grading::divergence_verdict(*r->values[0], *r->values[1], *r->values[2]);
+        EXPECT_EQ(f[column("eq47")], d.eq47 ? "true" : "false") << l;
+        EXPECT_EQ(f[column("strict_divergence")], d.diverges ? "true" : "false") << l;
+        EXPECT_EQ(f[column("trend")], "") << l;
+        ++singular;
+      } else {
+        const auto t = grading::assess_convergence(*r->errors[0], *r->errors[1], *r->errors[2]);
+        EXPECT_EQ(f[column("trend")], schema::to_string(t.trend)) << l;
+        EXPECT_EQ(f[column("converging")], r->converging.value_or(false) ? "true" : "false") << l;
+        EXPECT_EQ(f[column("eq47")], "") << l;
+        ++nonsingular;
+      }
+    }
+  }
+  EXPECT_GT(nonsingular, 0);
+  EXPECT_GT(singular, 0);
 }
 
 }  // namespace
