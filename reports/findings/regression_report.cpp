@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include "reports/render/template_text.hpp"
 #include "reports/results/results_index.hpp"
 #include "reports/tables/grade_tables.hpp"
 #include "reports/tables/markdown_table.hpp"
@@ -156,10 +157,6 @@ Regression compare_results(const schema::ResultsDocument& baseline,
 }
 
 std::string regression_markdown(const Regression& r) {
-  std::string out = fmt::format("# Regression report\n\nBaseline: `{}`  \nCurrent: `{}`\n\n",
-                                r.old_source, r.new_source);
-  const auto worse_rows = std::count_if(r.row_changes.begin(), r.row_changes.end(),
-                                        [](const RowVerdictChange& c) { return c.worse(); });
   std::vector<const QuantityDrift*> drifted;
   for (const auto& q : r.quantities) {
     if (drift_magnitude(q) > kIdenticalRelative)
@@ -168,70 +165,71 @@ std::string regression_markdown(const Regression& r) {
   std::sort(drifted.begin(), drifted.end(), [](const QuantityDrift* a, const QuantityDrift* b) {
     return drift_magnitude(*a) > drift_magnitude(*b);
   });
-  out += fmt::format(
-      "## Summary\n\n- {} case quantities in both files: {} drifted, {} identical (|drift| ≤ "
-      "{:g}).\n- Case grades: {} worse, {} better. Status changes: {}.\n- Row verdicts (Table 2 "
-      "grade, converging, diverging): {} changed, {} of them for the worse.\n- Cases only in the "
-      "current file: {}; only in the baseline: {}.\n",
-      r.quantities.size(), drifted.size(), r.quantities.size() - drifted.size(), kIdenticalRelative,
-      r.grades_worse, r.grades_better, r.status_changes, r.row_changes.size(), worse_rows,
-      r.only_in_new.size(), r.only_in_old.size());
-  if (!drifted.empty()) {
-    out += fmt::format("- Largest drift: `{}` {} ({}).\n", drifted.front()->case_id,
-                       name(drifted.front()->quantity), drift_text(*drifted.front()));
-  }
-  out += "\n";
-
-  MarkdownTable grades({"Case", "Quantity", "Grade", "Baseline", "Current", "Drift"});
-  for (const auto& q : r.quantities) {
-    if (q.old_grade == q.new_grade && q.old_status == q.new_status)
-      continue;
-    std::string change = fmt::format("{} → {}", name(q.old_grade), name(q.new_grade));
-    if (q.grade_worse())
-      change = "**worse** " + change;
-    if (q.grade_better())
-      change = "better " + change;
-    if (q.old_status != q.new_status)
-      change += fmt::format(" (status {} → {})", name(q.old_status), name(q.new_status));
-    grades.add_row({"`" + q.case_id + "`", name(q.quantity), change, format_value(q.old_value),
-                    format_value(q.new_value), drift_text(q)});
-  }
-  out += "## Grade and status changes per case\n\n";
-  out += grades.n_rows() > 0 ? grades.render() + "\n" : "None.\n\n";
-
-  MarkdownTable rows({"Row", "Grade", "Converging", "Diverging (Eq. 47)"});
-  for (const auto& c : r.row_changes) {
-    rows.add_row(
-        {(c.worse() ? "**worse** `" : "`") + c.row_id + "`",
-         fmt::format("{} → {}", grade_text(c.old_grade), grade_text(c.new_grade)),
-         fmt::format("{} → {}", flag(c.old_converging, "c"), flag(c.new_converging, "c")),
-         fmt::format("{} → {}", flag(c.old_diverging, "yes"), flag(c.new_diverging, "yes"))});
-  }
-  out += "## Row verdict changes (Table 2 grade on the finest mesh, converging, diverging)\n\n";
-  out += rows.n_rows() > 0 ? rows.render() + "\n" : "None.\n\n";
-
-  MarkdownTable drift({"Case", "Quantity", "Baseline", "Current", "Drift (relative)", "Grade"});
-  for (const auto* q : drifted) {
-    drift.add_row({"`" + q->case_id + "`", name(q->quantity), format_value(q->old_value),
-                   format_value(q->new_value), drift_text(*q),
-                   q->old_grade == q->new_grade
-                       ? name(q->new_grade)
-                       : fmt::format("{} → {}", name(q->old_grade), name(q->new_grade))});
-  }
-  out += "## Value drift, largest first\n\n";
-  out += drift.n_rows() > 0 ? drift.render() + "\n" : "None: every common value is identical.\n\n";
-
-  auto list = [](const std::vector<std::string>& ids) {
-    std::string text;
-    for (const auto& id : ids)
-      text += fmt::format("- `{}`\n", id);
-    return text.empty() ? std::string("None.\n") : text;
+  const auto grade_change = [](const QuantityDrift& q) {
+    return q.old_grade == q.new_grade ? name(q.new_grade)
+                                      : fmt::format("{} → {}", name(q.old_grade), name(q.new_grade));
   };
-  out += "## Cases only in the current file\n\n" + list(r.only_in_new) + "\n";
-  out += "## Cases only in the baseline\n\n" + list(r.only_in_old) + "\n";
-  if (!r.quantities_only_in_one.empty())
-    out += "## Quantities only in one file\n\n" + list(r.quantities_only_in_one) + "\n";
-  return out;
+  const auto drift_data = [&](const QuantityDrift* q) {
+    TemplateData d;
+    d.set("case", q->case_id);
+    d.set("quantity", name(q->quantity));
+    d.set("old", format_value(q->old_value));
+    d.set("new", format_value(q->new_value));
+    d.set("drift", drift_text(*q));
+    d.set("grade", grade_change(*q));
+    d.set("worse", q->grade_worse());
+    d.set("better", q->grade_better());
+    d.set("status", q->old_status != q->new_status);
+    d.set("old_status", name(q->old_status));
+    d.set("new_status", name(q->new_status));
+    return d;
+  };
+  std::vector<const QuantityDrift*> changed;
+  for (const auto& q : r.quantities) {
+    if (q.old_grade != q.new_grade || q.old_status != q.new_status)
+      changed.push_back(&q);
+  }
+  const auto ids = [](const std::vector<std::string>& list) {
+    return template_list(list, [](const std::string& id) { return TemplateData("id", id); });
+  };
+  TemplateData d;
+  d.set("old_source", r.old_source);
+  d.set("new_source", r.new_source);
+  d.set("n_common", std::to_string(r.quantities.size()));
+  d.set("n_drifted", std::to_string(drifted.size()));
+  d.set("n_identical", std::to_string(r.quantities.size() - drifted.size()));
+  d.set("identical", fmt::format("{:g}", kIdenticalRelative));
+  d.set("grades_worse", std::to_string(r.grades_worse));
+  d.set("grades_better", std::to_string(r.grades_better));
+  d.set("status_changes", std::to_string(r.status_changes));
+  d.set("row_changes", std::to_string(r.row_changes.size()));
+  d.set("rows_worse", std::to_string(std::count_if(r.row_changes.begin(), r.row_changes.end(),
+                                                   [](const RowVerdictChange& c) { return c.worse(); })));
+  d.set("n_only_in_new", std::to_string(r.only_in_new.size()));
+  d.set("n_only_in_old", std::to_string(r.only_in_old.size()));
+  if (!drifted.empty())
+    d.set("largest", drift_data(drifted.front()));
+  d.set("has_changed", !changed.empty());
+  d.set("changed", template_list(changed, drift_data));
+  d.set("has_rows", !r.row_changes.empty());
+  d.set("rows", template_list(r.row_changes, [](const RowVerdictChange& c) {
+          TemplateData t;
+          t.set("row", c.row_id);
+          t.set("worse", c.worse());
+          t.set("grade", fmt::format("{} → {}", grade_text(c.old_grade), grade_text(c.new_grade)));
+          t.set("converging", fmt::format("{} → {}", flag(c.old_converging, "c"), flag(c.new_converging, "c")));
+          t.set("diverging", fmt::format("{} → {}", flag(c.old_diverging, "yes"), flag(c.new_diverging, "yes")));
+          return t;
+        }));
+  d.set("has_drifted", !drifted.empty());
+  d.set("drifted", template_list(drifted, drift_data));
+  d.set("only_in_new", ids(r.only_in_new));
+  d.set("has_only_in_new", !r.only_in_new.empty());
+  d.set("only_in_old", ids(r.only_in_old));
+  d.set("has_only_in_old", !r.only_in_old.empty());
+  d.set("only_in_one", ids(r.quantities_only_in_one));
+  d.set("has_only_in_one", !r.quantities_only_in_one.empty());
+  return render_template(templates::regression_report, d);
 }
 
 }  // namespace cs::reports
