@@ -15,12 +15,14 @@ namespace {
 using schema::Algorithm;
 using schema::ContactKind;
 using schema::Element;
+using Fields = kainjow::mustache::object;
 
 /// 3-point Gauss-Legendre quadrature of f over [a, b]: exact for polynomials of degree <= 5.
 template <typename F>
 double gauss3(F f, double a, double b) {
   const double x = std::sqrt(0.6), mid = 0.5 * (a + b), half = 0.5 * (b - a);
-  return half * (5.0 / 9.0 * f(mid - half * x) + 8.0 / 9.0 * f(mid) + 5.0 / 9.0 * f(mid + half * x));
+  return half *
+         (5.0 / 9.0 * f(mid - half * x) + 8.0 / 9.0 * f(mid) + 5.0 / 9.0 * f(mid + half * x));
 }
 
 /// The quadratic Lagrange shape function of node 0 (t = 0), 1 (t = 1) or 2 (t = 1/2).
@@ -48,9 +50,8 @@ const RowFacts* find(const std::vector<RowFacts>& rows, const RowFacts& like, El
 AlPmFacts al_pm(const ResultsIndex& index, const std::vector<RowFacts>& rows) {
   AlPmFacts out;
   for (const auto& f : rows) {
-    const RowFacts* pm = f.option.algorithm == Algorithm::AL
-                             ? find(rows, f, f.element, Algorithm::PM)
-                             : nullptr;
+    const RowFacts* pm =
+        f.option.algorithm == Algorithm::AL ? find(rows, f, f.element, Algorithm::PM) : nullptr;
     out.rows += pm ? 1 : 0;
     out.coinciding += pm && coincide(*f.row, *pm->row) ? 1 : 0;
   }
@@ -63,9 +64,10 @@ AlPmFacts al_pm(const ResultsIndex& index, const std::vector<RowFacts>& rows) {
           std::max(out.largest_penetration.value_or(0.0), *c.interface->max_penetration_over_h);
     schema::CaseSpec twin = c.spec;
     twin.algorithm = Algorithm::PM;
-    out.same_iterations += std::any_of(
-        index.results().cases.begin(), index.results().cases.end(),
-        [&](const schema::CaseResult& d) { return d.spec == twin && d.iterations == c.iterations; });
+    out.same_iterations += std::any_of(index.results().cases.begin(), index.results().cases.end(),
+                                       [&](const schema::CaseResult& d) {
+                                         return d.spec == twin && d.iterations == c.iterations;
+                                       });
   }
   return out;
 }
@@ -77,8 +79,7 @@ std::optional<bool> peak_on_axis(const schema::CaseResult* c) {
   const auto& p = c->profile;
   std::size_t best = 0;
   for (std::size_t i = 0; i < p.x_over_a.size(); ++i) {
-    if (std::isfinite(p.sigma_z_over_p[i]) &&
-        !(p.sigma_z_over_p[i] <= p.sigma_z_over_p[best]))
+    if (std::isfinite(p.sigma_z_over_p[i]) && !(p.sigma_z_over_p[i] <= p.sigma_z_over_p[best]))
       best = i;
   }
   return p.x_over_a[best] == 0.0;
@@ -131,15 +132,19 @@ double quadratic_edge_axisymmetric_abs_weight(int node, double h) {
 
 double corner_weighted_linear_gap(bool axisymmetric, double h) {
   // r = r_e + t h: the r_e part integrates N_c t to 0, so r = t h gives the whole.
-  return h * gauss3([&](double t) { return lagrange2(0, t) * t * h * (axisymmetric ? t * h : 1.0); },
-                    0.0, 1.0);
+  return h *
+         gauss3([&](double t) { return lagrange2(0, t) * t * h * (axisymmetric ? t * h : 1.0); },
+                0.0, 1.0);
 }
 
 double bernstein_axisymmetric_weight(int node, double h) {
-  return h * h * gauss3([&](double t) {
-           const std::array<double, 3> b{(1.0 - t) * (1.0 - t), t * t, 2.0 * t * (1.0 - t)};
-           return b[static_cast<std::size_t>(node)] * t;
-         }, 0.0, 1.0);
+  return h * h *
+         gauss3(
+             [&](double t) {
+               const std::array<double, 3> b{(1.0 - t) * (1.0 - t), t * t, 2.0 * t * (1.0 - t)};
+               return b[static_cast<std::size_t>(node)] * t;
+             },
+             0.0, 1.0);
 }
 
 double linear_edge_axisymmetric_weight(int node, double h) {
@@ -173,68 +178,62 @@ AnomalyFacts anomaly_facts(const ResultsIndex& index, const std::vector<RowFacts
 std::string anomalies_section(const ResultsIndex& index) {
   const std::vector<RowFacts> rows = row_facts(index);
   const AnomalyFacts a = anomaly_facts(index, rows);
-  TemplateData d;
-  const bool al_pm = a.al_pm.coinciding > 0;
-  d.set("al_pm", al_pm);
-  d.set("al_pm_rows", std::to_string(a.al_pm.rows));
-  d.set("al_pm_coinciding", std::to_string(a.al_pm.coinciding));
-  d.set("al_cases", std::to_string(a.al_pm.cases));
-  d.set("same_iterations", std::to_string(a.al_pm.same_iterations));
-  d.set("has_penetration", a.al_pm.largest_penetration.has_value());
-  d.set("penetration", fmt::format("{:.3g}", a.al_pm.largest_penetration.value_or(0.0)));
-  // The axis weights, h = 1 (in units of h^2 and h^3).
-  d.set("w_axis", fmt::format("{:.3g}", clean(quadratic_edge_axisymmetric_weight(0, 1.0))));
-  d.set("w_mid", fmt::format("{:.4g}", quadratic_edge_axisymmetric_weight(2, 1.0)));
-  d.set("w_far", fmt::format("{:.4g}", quadratic_edge_axisymmetric_weight(1, 1.0)));
-  d.set("w_q4", fmt::format("{:.4g}", linear_edge_axisymmetric_weight(0, 1.0)));
-  d.set("w_abs", fmt::format("{:.4g}", quadratic_edge_axisymmetric_abs_weight(0, 1.0)));
-  d.set("gap_axi", fmt::format("{:.4g}", corner_weighted_linear_gap(true, 1.0)));
-  d.set("gap_plane", fmt::format("{:.3g}", clean(corner_weighted_linear_gap(false, 1.0))));
-  for (int node : {0, 1, 2})
-    d.set(fmt::format("b{}", node), fmt::format("{:.4g}", bernstein_axisymmetric_weight(node, 1.0)));
+  if (a.al_pm.coinciding == 0 && a.axis_rows.empty() && !a.weighted_force_balance && a.luck.empty())
+    return {};
+  const auto g = [](const char* format, double v) { return fmt::format(fmt::runtime(format), v); };
+  // The axis weights at h = 1, in units of h^2 (h^3 for the gap).
+  Fields d{{"w_axis", g("{:.3g}", clean(quadratic_edge_axisymmetric_weight(0, 1.0)))},
+           {"w_mid", g("{:.4g}", quadratic_edge_axisymmetric_weight(2, 1.0))},
+           {"w_far", g("{:.4g}", quadratic_edge_axisymmetric_weight(1, 1.0))},
+           {"w_q4", g("{:.4g}", linear_edge_axisymmetric_weight(0, 1.0))},
+           {"w_abs", g("{:.4g}", quadratic_edge_axisymmetric_abs_weight(0, 1.0))},
+           {"gap_axi", g("{:.4g}", corner_weighted_linear_gap(true, 1.0))},
+           {"gap_plane", g("{:.3g}", clean(corner_weighted_linear_gap(false, 1.0)))},
+           {"b0", g("{:.4g}", bernstein_axisymmetric_weight(0, 1.0))},
+           {"b1", g("{:.4g}", bernstein_axisymmetric_weight(1, 1.0))},
+           {"b2", g("{:.4g}", bernstein_axisymmetric_weight(2, 1.0))}};
+  if (a.al_pm.coinciding > 0) {
+    Fields p{{"rows", std::to_string(a.al_pm.rows)},
+             {"coinciding", std::to_string(a.al_pm.coinciding)},
+             {"cases", std::to_string(a.al_pm.cases)},
+             {"same_iterations", std::to_string(a.al_pm.same_iterations)}};
+    if (a.al_pm.largest_penetration)
+      p["penetration"] = g("{:.3g}", *a.al_pm.largest_penetration);
+    d["al_pm"] = p;
+  }
   int on_axis = 0, profiles = 0;
   for (const auto& r : a.axis_rows) {
     profiles += r.peak_on_axis ? 1 : 0;
     on_axis += r.peak_on_axis.value_or(false) ? 1 : 0;
   }
-  d.set("axis", !a.axis_rows.empty());
-  d.set("axis_rows", template_list(a.axis_rows, [](const AxisPenaltyRow& r) {
-          TemplateData t;
-          t.set("row", fmt::format("{} {}", schema::label(r.pm_q8->problem),
-                                   schema::label(r.pm_q8->quantity)));
-          t.set("pm_q8", format_error_resolved(*r.pm_q8->errors[2]));
-          t.set("lmp_q8", optional_percent(r.lmp_q8));
-          t.set("pm_q4", optional_percent(r.pm_q4));
-          return t;
-        }));
-  d.set("on_axis", fmt::format("{} of {}", on_axis, profiles));
-  d.set("basis", a.weighted_force_balance.has_value());
-  if (a.weighted_force_balance) {
-    d.set("force_balance", fmt::format("{:.2g}", a.weighted_force_balance->first));
-    d.set("force_balance_case", a.weighted_force_balance->second);
-  }
-  d.set("fa", a.fa_q8_lmp_ss.has_value());
-  if (const auto& v = a.fa_q8_lmp_ss) {
-    d.set("fa_values", fmt::format("{} / {} / {}", format_value((*v)[0]), format_value((*v)[1]),
-                                   format_value((*v)[2])));
-    d.set("fa_ratios", fmt::format("{:.3f} and {:.3f}", (*v)[1] / (*v)[0], (*v)[2] / (*v)[1]));
-    d.set("sqrt2", fmt::format("{:.3f}", std::sqrt(2.0)));
-  }
-  d.set("luck", !a.luck.empty());
-  d.set("n_luck", std::to_string(a.luck.size()));
-  d.set("n_luck_c", std::to_string(std::count_if(a.luck.begin(), a.luck.end(),
-                                                 [](const RowFacts* f) { return f->study_c; })));
-  d.set("luck_rows", template_list(a.luck, [](const RowFacts* f) {
-          TemplateData t;
-          t.set("row", row_name(*f));
-          t.set("errors", errors_text(*f));
-          t.set("grade", f->grade ? std::string(schema::to_string(*f->grade)) : kMissing);
-          t.set("c", f->study_c ? "c" : "");
-          t.set("credible", f->credible ? "yes" : "no");
-          return t;
-        }));
-  if (!al_pm && a.axis_rows.empty() && !a.weighted_force_balance && a.luck.empty())
-    return {};
+  d["axis_rows"] = template_list(a.axis_rows, [](const AxisPenaltyRow& r) -> TemplateData {
+    return Fields{{"row", fmt::format("{} {}", schema::label(r.pm_q8->problem),
+                                      schema::label(r.pm_q8->quantity))},
+                  {"pm_q8", format_error_resolved(*r.pm_q8->errors[2])},
+                  {"lmp_q8", optional_percent(r.lmp_q8)},
+                  {"pm_q4", optional_percent(r.pm_q4)}};
+  });
+  d["on_axis"] = fmt::format("{} of {}", on_axis, profiles);
+  d["has_axis"] = !a.axis_rows.empty();
+  d["has_luck"] = !a.luck.empty();
+  if (const auto& w = a.weighted_force_balance)
+    d["basis"] = Fields{{"force_balance", g("{:.2g}", w->first)}, {"case", w->second}};
+  if (const auto& v = a.fa_q8_lmp_ss)
+    d["fa"] =
+        Fields{{"values", fmt::format("{} / {} / {}", format_value((*v)[0]), format_value((*v)[1]),
+                                      format_value((*v)[2]))},
+               {"ratios", fmt::format("{:.3f} and {:.3f}", (*v)[1] / (*v)[0], (*v)[2] / (*v)[1])},
+               {"sqrt2", g("{:.3f}", std::sqrt(2.0))}};
+  d["n_luck"] = std::to_string(a.luck.size());
+  d["n_luck_c"] = std::to_string(
+      std::count_if(a.luck.begin(), a.luck.end(), [](const RowFacts* f) { return f->study_c; }));
+  d["luck"] = template_list(a.luck, [](const RowFacts* f) -> TemplateData {
+    return Fields{{"row", row_name(*f)},
+                  {"errors", errors_text(*f)},
+                  {"grade", f->grade ? std::string(schema::to_string(*f->grade)) : kMissing},
+                  {"c", f->study_c ? "c" : ""},
+                  {"credible", f->credible ? "yes" : "no"}};
+  });
   return render_template(templates::anomalies_section, d);
 }
 

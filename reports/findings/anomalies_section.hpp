@@ -37,9 +37,9 @@ double linear_edge_axisymmetric_weight(int node, double h);
 
 /// AL against PM on the baseline rows and cases.
 struct AlPmFacts {
-  int rows = 0;        ///< AL rows with a PM twin
-  int coinciding = 0;  ///< of them, equal to the printed digits on every mesh (coincide())
-  int cases = 0;       ///< AL cases
+  int rows = 0;             ///< AL rows with a PM twin
+  int coinciding = 0;       ///< of them, equal to the printed digits on every mesh (coincide())
+  int cases = 0;            ///< AL cases
   int same_iterations = 0;  ///< of them, as many iterations as their PM twin
   std::optional<double> largest_penetration;  ///< over h, of any AL case
 };
@@ -59,7 +59,7 @@ struct AnomalyFacts {
   /// axisymmetry, and its case id.
   std::optional<std::pair<double, std::string>> weighted_force_balance;
   std::optional<std::array<double, 3>> fa_q8_lmp_ss;  ///< F_a sigma_c* on C, M, F
-  std::vector<const RowFacts*> luck;                   ///< rows graded by the luck of one mesh
+  std::vector<const RowFacts*> luck;                  ///< rows graded by the luck of one mesh
 };
 
 /// `rows` must be row_facts(index) and outlive the result.

@@ -184,7 +184,8 @@ std::string option_of(const ExtentSeries& s) {
                      s.option.label());
 }
 
-TemplateData series_rows(const ResultsIndex& index, const std::vector<const ExtentSeries*>& series) {
+TemplateData series_rows(const ResultsIndex& index,
+                         const std::vector<const ExtentSeries*>& series) {
   TemplateData list{TemplateData::type::list};
   for (const ExtentSeries* s : series) {
     std::optional<double> previous;
@@ -203,8 +204,9 @@ TemplateData series_rows(const ResultsIndex& index, const std::vector<const Exte
               v ? fmt::format("{} ({})", format_value(*v), percent_cell(percent_of(v, exact)))
                 : std::string(kMissing));
       }
-      d.set("limit", lim ? fmt::format("{} ({})", format_value(*lim), percent_cell(percent_of(lim, exact)))
-                         : (row->estimate ? row->estimate->note : std::string(kMissing)));
+      d.set("limit",
+            lim ? fmt::format("{} ({})", format_value(*lim), percent_cell(percent_of(lim, exact)))
+                : (row->estimate ? row->estimate->note : std::string(kMissing)));
       d.set("f_minus_limit", percent_cell(lim && f ? percent_of(f, lim) : std::nullopt));
       d.set("change", percent_cell(previous && f ? percent_of(f, previous) : std::nullopt));
       previous = f;
@@ -270,7 +272,8 @@ ExtentFacts facts_of(const ResultsIndex& index, schema::ProblemId problem,
   const auto ks = extents_of(series);
   f.half_space = half_space_extent(series);
   if (f.half_space) {
-    const auto i = static_cast<std::size_t>(std::find(ks.begin(), ks.end(), *f.half_space) - ks.begin());
+    const auto i =
+        static_cast<std::size_t>(std::find(ks.begin(), ks.end(), *f.half_space) - ks.begin());
     f.change_after_half_space = largest_change_from(series, ks, i).value_or(0.0);
     if (!singular)
       f.grades_extent = widest_extent_of_most_options(series, *f.half_space);
@@ -320,7 +323,9 @@ TemplateData problem_data(const ResultsIndex& index, const ExtentFacts& f,
           return t;
         }));
   const auto num = [](const std::optional<double>& v) { return v ? extent_label(*v) : kMissing; };
-  const auto pct = [](const std::optional<double>& v) { return fmt::format("{:.3f}", v.value_or(0.0)); };
+  const auto pct = [](const std::optional<double>& v) {
+    return fmt::format("{:.3f}", v.value_or(0.0));
+  };
   d.set("has_half_space", f.half_space.has_value());
   d.set("half_space", num(f.half_space));
   d.set("change_after", pct(f.change_after_half_space));

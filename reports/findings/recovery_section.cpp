@@ -150,10 +150,12 @@ std::string recovery_section(const ResultsIndex& index) {
   d.set("has_divergence", both > 0);
   d.set("divergence_same", fmt::format("{} of {}", same, both));
   std::vector<RecoveryPair> differing = graded_pairs(index);
-  std::erase_if(differing, [](const RecoveryPair& p) { return *p.spr->grade == *p.extrapolated->grade; });
+  std::erase_if(differing,
+                [](const RecoveryPair& p) { return *p.spr->grade == *p.extrapolated->grade; });
   d.set("n_differing", std::to_string(differing.size()));
   d.set("has_differing", !differing.empty());
-  d.set("differing", template_list(differing, [&](const RecoveryPair& p) { return pair_data(index, p); }));
+  d.set("differing",
+        template_list(differing, [&](const RecoveryPair& p) { return pair_data(index, p); }));
   return render_template(templates::recovery_section, d);
 }
 

@@ -14,6 +14,7 @@ namespace cs::reports {
 namespace {
 
 using schema::RowVerdict;
+using Fields = kainjow::mustache::object;
 
 /// Baseline rows, then the variant rows no section of their own shows (a rigid target,
 /// overrides), in document order.
@@ -42,8 +43,8 @@ double median(std::vector<double> v) {
 }
 
 std::optional<grading::ConvergenceAssessment> trend_of(const std::optional<double>& a,
-                                                      const std::optional<double>& b,
-                                                      const std::optional<double>& c) {
+                                                       const std::optional<double>& b,
+                                                       const std::optional<double>& c) {
   if (!a || !b || !c)
     return std::nullopt;
   return grading::assess_convergence(*a, *b, *c);
@@ -140,27 +141,25 @@ std::string percent(int part, int whole) {
 }
 
 TemplateData summary_data(const EstimateSummary& s) {
-  TemplateData d;
-  d.set("problem", std::string(schema::label(s.problem)));
-  d.set("rows", std::to_string(s.rows));
-  d.set("asymptotic", std::to_string(s.asymptotic));
-  d.set("bounded", fmt::format("{} of {}", s.bounded, s.with_exact));
-  d.set("median_gci", s.median_gci ? fmt::format("{:.3g} %", *s.median_gci) : kMissing);
-  return d;
+  return Fields{{"problem", std::string(schema::label(s.problem))},
+                {"rows", std::to_string(s.rows)},
+                {"asymptotic", std::to_string(s.asymptotic)},
+                {"bounded", fmt::format("{} of {}", s.bounded, s.with_exact)},
+                {"median_gci", s.median_gci ? fmt::format("{:.3g} %", *s.median_gci) : kMissing}};
 }
 
 TemplateData vf_data(const VfRow& v) {
-  TemplateData d;
-  d.set("row", row_label(*v.row));
-  for (std::size_t m = 0; m < 3; ++m) {
-    const auto& e = v.row->errors[m];
-    d.set(std::string(1, "cmf"[m]), e ? format_error_resolved(*e) : std::string(kMissing));
-  }
-  d.set("vf", vf_cell(v));
-  d.set("trend_cmf", trend_cell(v.trend_cmf));
-  d.set("trend_mfvf", trend_cell(v.trend_mfvf));
-  d.set("claim", claim_cell(v.claim));
-  return d;
+  const auto error = [&](std::size_t m) {
+    return v.row->errors[m] ? format_error_resolved(*v.row->errors[m]) : std::string(kMissing);
+  };
+  return Fields{{"row", row_label(*v.row)},
+                {"c", error(0)},
+                {"m", error(1)},
+                {"f", error(2)},
+                {"vf", vf_cell(v)},
+                {"trend_cmf", trend_cell(v.trend_cmf)},
+                {"trend_mfvf", trend_cell(v.trend_mfvf)},
+                {"claim", claim_cell(v.claim)}};
 }
 
 std::string csv_number(const std::optional<double>& v) {
@@ -274,38 +273,37 @@ std::string refinement_section(const ResultsIndex& index) {
     bounded += s.bounded;
     with_exact += s.with_exact;
   }
-  TemplateData d;
-  d.set("round_off", std::to_string(f.round_off));
-  d.set("rows", std::to_string(rows));
-  d.set("asymptotic", std::to_string(asymptotic));
-  d.set("bounded", std::to_string(bounded));
-  d.set("with_exact", std::to_string(with_exact));
-  d.set("bounded_share", percent(bounded, with_exact));
-  // Roache's factor 1.25 is meant to cover the exact value about 95 % of the time.
-  d.set("band_understates", with_exact > 0 && bounded < 0.95 * with_exact);
-  d.set("problems", template_list(f.problems, summary_data));
   std::vector<VfRow> shown;
   std::copy_if(f.vf_rows.begin(), f.vf_rows.end(), std::back_inserter(shown),
                [](const VfRow& v) { return v.claim != RefinementClaim::not_applicable; });
-  d.set("has_vf", !f.vf_rows.empty() || f.singular_vf > 0);
-  d.set("n_vf", std::to_string(f.vf_rows.size()));
-  d.set("applies", std::to_string(f.claim.applies));
-  d.set("holds", std::to_string(f.claim.holds));
-  d.set("judged", std::to_string(f.claim.holds + f.claim.fails));
-  d.set("vf_not_converged", std::to_string(f.claim.vf_not_converged));
-  d.set("has_vf_not_converged", f.claim.vf_not_converged > 0);
-  d.set("vf_rows", template_list(shown, vf_data));
-  d.set("has_shown", !shown.empty());
-  d.set("has_mpc", f.mpc.rows > 0);
-  d.set("mpc_rows", std::to_string(f.mpc.rows));
-  d.set("mpc_improved", std::to_string(f.mpc.improved));
-  d.set("mpc_not_converged", std::to_string(f.mpc.not_converged));
-  d.set("mpc_median_f", fmt::format("{:.3g}", f.mpc.median_f));
-  d.set("mpc_median_vf", fmt::format("{:.3g}", f.mpc.median_vf));
-  d.set("mpc_mostly", f.mpc.improved * 2 > f.mpc.rows);
-  d.set("has_singular_vf", f.singular_vf > 0);
-  d.set("singular_vf", std::to_string(f.singular_vf));
-  d.set("singular_vf_diverges", std::to_string(f.singular_vf_diverges));
+  const auto n = [](int v) { return std::to_string(v); };
+  Fields d{{"round_off", n(f.round_off)},
+           {"rows", n(rows)},
+           {"asymptotic", n(asymptotic)},
+           {"bounded", n(bounded)},
+           {"with_exact", n(with_exact)},
+           {"bounded_share", percent(bounded, with_exact)},
+           // Roache's factor 1.25 is meant to cover the exact value about 95 % of the time.
+           {"band_understates", with_exact > 0 && bounded < 0.95 * with_exact},
+           {"problems", template_list(f.problems, summary_data)},
+           {"has_vf", !f.vf_rows.empty() || f.singular_vf > 0},
+           {"n_vf", n(static_cast<int>(f.vf_rows.size()))},
+           {"applies", n(f.claim.applies)},
+           {"holds", n(f.claim.holds)},
+           {"judged", n(f.claim.holds + f.claim.fails)},
+           {"vf_not_converged", n(f.claim.vf_not_converged)},
+           {"has_vf_not_converged", f.claim.vf_not_converged > 0},
+           {"vf_rows", template_list(shown, vf_data)},
+           {"has_shown", !shown.empty()}};
+  if (f.mpc.rows > 0)
+    d["mpc"] = Fields{{"rows", n(f.mpc.rows)},
+                      {"improved", n(f.mpc.improved)},
+                      {"not_converged", n(f.mpc.not_converged)},
+                      {"median_f", fmt::format("{:.3g}", f.mpc.median_f)},
+                      {"median_vf", fmt::format("{:.3g}", f.mpc.median_vf)},
+                      {"mostly", f.mpc.improved * 2 > f.mpc.rows}};
+  if (f.singular_vf > 0)
+    d["singular"] = Fields{{"n", n(f.singular_vf)}, {"diverges", n(f.singular_vf_diverges)}};
   return render_template(templates::refinement_section, d);
 }
 

@@ -68,7 +68,7 @@ struct MpcRefinement {
 /// The section's facts.
 struct RefinementFacts {
   std::vector<EstimateSummary> problems;
-  int round_off = 0;  ///< rows left out: exact to round-off on every mesh
+  int round_off = 0;           ///< rows left out: exact to round-off on every mesh
   std::vector<VfRow> vf_rows;  ///< every row with a VF case, in document order
   ClaimCounts claim;
   MpcRefinement mpc;

@@ -17,6 +17,8 @@ namespace {
 /// Drifts smaller than this (relative) are reported as "identical": round-off of the writer.
 constexpr double kIdenticalRelative = 1e-12;
 
+using Fields = kainjow::mustache::object;
+
 std::string flag(const std::optional<bool>& v, const char* yes) {
   if (!v)
     return kMissing;
@@ -166,23 +168,22 @@ std::string regression_markdown(const Regression& r) {
     return drift_magnitude(*a) > drift_magnitude(*b);
   });
   const auto grade_change = [](const QuantityDrift& q) {
-    return q.old_grade == q.new_grade ? name(q.new_grade)
-                                      : fmt::format("{} → {}", name(q.old_grade), name(q.new_grade));
+    return q.old_grade == q.new_grade
+               ? name(q.new_grade)
+               : fmt::format("{} → {}", name(q.old_grade), name(q.new_grade));
   };
-  const auto drift_data = [&](const QuantityDrift* q) {
-    TemplateData d;
-    d.set("case", q->case_id);
-    d.set("quantity", name(q->quantity));
-    d.set("old", format_value(q->old_value));
-    d.set("new", format_value(q->new_value));
-    d.set("drift", drift_text(*q));
-    d.set("grade", grade_change(*q));
-    d.set("worse", q->grade_worse());
-    d.set("better", q->grade_better());
-    d.set("status", q->old_status != q->new_status);
-    d.set("old_status", name(q->old_status));
-    d.set("new_status", name(q->new_status));
-    return d;
+  const auto drift_data = [&](const QuantityDrift* q) -> TemplateData {
+    return Fields{{"case", q->case_id},
+                  {"quantity", name(q->quantity)},
+                  {"old", format_value(q->old_value)},
+                  {"new", format_value(q->new_value)},
+                  {"drift", drift_text(*q)},
+                  {"grade", grade_change(*q)},
+                  {"worse", q->grade_worse()},
+                  {"better", q->grade_better()},
+                  {"status", q->old_status != q->new_status},
+                  {"old_status", name(q->old_status)},
+                  {"new_status", name(q->new_status)}};
   };
   std::vector<const QuantityDrift*> changed;
   for (const auto& q : r.quantities) {
@@ -192,43 +193,43 @@ std::string regression_markdown(const Regression& r) {
   const auto ids = [](const std::vector<std::string>& list) {
     return template_list(list, [](const std::string& id) { return TemplateData("id", id); });
   };
-  TemplateData d;
-  d.set("old_source", r.old_source);
-  d.set("new_source", r.new_source);
-  d.set("n_common", std::to_string(r.quantities.size()));
-  d.set("n_drifted", std::to_string(drifted.size()));
-  d.set("n_identical", std::to_string(r.quantities.size() - drifted.size()));
-  d.set("identical", fmt::format("{:g}", kIdenticalRelative));
-  d.set("grades_worse", std::to_string(r.grades_worse));
-  d.set("grades_better", std::to_string(r.grades_better));
-  d.set("status_changes", std::to_string(r.status_changes));
-  d.set("row_changes", std::to_string(r.row_changes.size()));
-  d.set("rows_worse", std::to_string(std::count_if(r.row_changes.begin(), r.row_changes.end(),
-                                                   [](const RowVerdictChange& c) { return c.worse(); })));
-  d.set("n_only_in_new", std::to_string(r.only_in_new.size()));
-  d.set("n_only_in_old", std::to_string(r.only_in_old.size()));
+  const auto n = [](std::size_t v) { return std::to_string(v); };
+  Fields d{{"old_source", r.old_source},
+           {"new_source", r.new_source},
+           {"n_common", n(r.quantities.size())},
+           {"n_drifted", n(drifted.size())},
+           {"n_identical", n(r.quantities.size() - drifted.size())},
+           {"identical", fmt::format("{:g}", kIdenticalRelative)},
+           {"grades_worse", n(r.grades_worse)},
+           {"grades_better", n(r.grades_better)},
+           {"status_changes", n(r.status_changes)},
+           {"row_changes", n(r.row_changes.size())},
+           {"rows_worse", n(std::count_if(r.row_changes.begin(), r.row_changes.end(),
+                                          [](const RowVerdictChange& c) { return c.worse(); }))},
+           {"n_only_in_new", n(r.only_in_new.size())},
+           {"n_only_in_old", n(r.only_in_old.size())},
+           {"has_changed", !changed.empty()},
+           {"changed", template_list(changed, drift_data)},
+           {"has_rows", !r.row_changes.empty()},
+           {"has_drifted", !drifted.empty()},
+           {"drifted", template_list(drifted, drift_data)},
+           {"only_in_new", ids(r.only_in_new)},
+           {"has_only_in_new", !r.only_in_new.empty()},
+           {"only_in_old", ids(r.only_in_old)},
+           {"has_only_in_old", !r.only_in_old.empty()},
+           {"only_in_one", ids(r.quantities_only_in_one)},
+           {"has_only_in_one", !r.quantities_only_in_one.empty()}};
   if (!drifted.empty())
-    d.set("largest", drift_data(drifted.front()));
-  d.set("has_changed", !changed.empty());
-  d.set("changed", template_list(changed, drift_data));
-  d.set("has_rows", !r.row_changes.empty());
-  d.set("rows", template_list(r.row_changes, [](const RowVerdictChange& c) {
-          TemplateData t;
-          t.set("row", c.row_id);
-          t.set("worse", c.worse());
-          t.set("grade", fmt::format("{} → {}", grade_text(c.old_grade), grade_text(c.new_grade)));
-          t.set("converging", fmt::format("{} → {}", flag(c.old_converging, "c"), flag(c.new_converging, "c")));
-          t.set("diverging", fmt::format("{} → {}", flag(c.old_diverging, "yes"), flag(c.new_diverging, "yes")));
-          return t;
-        }));
-  d.set("has_drifted", !drifted.empty());
-  d.set("drifted", template_list(drifted, drift_data));
-  d.set("only_in_new", ids(r.only_in_new));
-  d.set("has_only_in_new", !r.only_in_new.empty());
-  d.set("only_in_old", ids(r.only_in_old));
-  d.set("has_only_in_old", !r.only_in_old.empty());
-  d.set("only_in_one", ids(r.quantities_only_in_one));
-  d.set("has_only_in_one", !r.quantities_only_in_one.empty());
+    d["largest"] = drift_data(drifted.front());
+  d["rows"] = template_list(r.row_changes, [](const RowVerdictChange& c) -> TemplateData {
+    const auto change = [](const std::string& a, const std::string& b) { return a + " → " + b; };
+    return Fields{
+        {"row", c.row_id},
+        {"worse", c.worse()},
+        {"grade", change(grade_text(c.old_grade), grade_text(c.new_grade))},
+        {"converging", change(flag(c.old_converging, "c"), flag(c.new_converging, "c"))},
+        {"diverging", change(flag(c.old_diverging, "yes"), flag(c.new_diverging, "yes"))}};
+  });
   return render_template(templates::regression_report, d);
 }
 

@@ -79,8 +79,7 @@ const SweepPoint* point_at(const SweepSeries& s, double v) {
 
 bool graded_at_most(const SweepPoint* p, Quantity q, Grade worst) {
   const auto e = p ? SweepSeries::error(*p, q) : std::nullopt;
-  return e && SweepSeries::converged(*p) &&
-         !schema::is_worse(grading::grade_of_error(*e), worst);
+  return e && SweepSeries::converged(*p) && !schema::is_worse(grading::grade_of_error(*e), worst);
 }
 
 /// The swept values at which every curve is graded `worst` or better (converged).
@@ -223,9 +222,9 @@ TemplateData al_pm(const std::vector<SweepSeries>& series, const std::vector<dou
 /// Can any FKN reproduce the study's AL error on S(1/3) (sigma_c, Q4, ss, mesh F)? A crossing is
 /// interpolated in log FKN: the errors change with the order of magnitude of FKN.
 TemplateData study_al(const std::vector<SweepSeries>& series, const StudyReference& study) {
-  const auto match = study.find_value(schema::ProblemId::S_1_3, Quantity::sigma_c,
-                                      schema::Element::Q4, Algorithm::AL, schema::ContactKind::ss,
-                                      schema::MeshLevel::F);
+  const auto match =
+      study.find_value(schema::ProblemId::S_1_3, Quantity::sigma_c, schema::Element::Q4,
+                       Algorithm::AL, schema::ContactKind::ss, schema::MeshLevel::F);
   if (match.value == nullptr || !match.value->exact)
     return TemplateData(false);
   const double target = grading::error_percent(match.value->value, *match.value->exact);
@@ -248,8 +247,8 @@ TemplateData study_al(const std::vector<SweepSeries>& series, const StudyReferen
       const double ep = prev ? *SweepSeries::error(*prev, Quantity::sigma_c) : *e;
       if (prev && (ep - target) * (*e - target) <= 0 && ep != *e) {
         const double t = (target - ep) / (*e - ep);
-        crossings.push_back(fmt::format("{:.2g}", std::exp(std::log(prev->value) +
-                                                           t * std::log(p.value / prev->value))));
+        crossings.push_back(fmt::format(
+            "{:.2g}", std::exp(std::log(prev->value) + t * std::log(p.value / prev->value))));
       }
       prev = &p;
     }
@@ -281,7 +280,8 @@ TemplateData fkn_convergence(const ResultsIndex& index, const std::vector<Curve>
     for (const auto& c : cs) {
       schema::CaseSpec spec = c.series->base;
       spec.overrides["fkn"] = v;
-      const auto it = rows.find(schema::case_key(spec) + "/" + std::string(schema::to_string(c.quantity)));
+      const auto it =
+          rows.find(schema::case_key(spec) + "/" + std::string(schema::to_string(c.quantity)));
       if (it == rows.end() || !ResultsIndex::complete(*it->second))
         continue;
       some = true;
@@ -311,7 +311,8 @@ TemplateData fkn(const ResultsIndex& index, const std::vector<SweepSeries>& seri
   std::vector<Curve> never;
   std::copy_if(cs.begin(), cs.end(), std::back_inserter(never),
                [&](const Curve& c) { return values_where_all({c}, values, Grade::e).empty(); });
-  d.set("never_e", template_list(never, [](const Curve& c) { return TemplateData("row", c.label()); }));
+  d.set("never_e",
+        template_list(never, [](const Curve& c) { return TemplateData("row", c.label()); }));
   d.set("convergence", fkn_convergence(index, cs, values));
   std::vector<std::string> not_converged;
   for (double v : values) {
@@ -350,8 +351,10 @@ TemplateData fkn(const ResultsIndex& index, const std::vector<SweepSeries>& seri
                     const int it = most_iterations(series, v, a);
                     const int nc = count_not_converged(
                         series, v, [a](const SweepSeries& s) { return s.base.algorithm == a; });
-                    return TemplateData(it < 0 ? std::string(kMissing)
-                                               : fmt::format("{}{}", it, nc > 0 ? fmt::format(" ({} n.c.)", nc) : ""));
+                    return TemplateData(
+                        it < 0
+                            ? std::string(kMissing)
+                            : fmt::format("{}{}", it, nc > 0 ? fmt::format(" ({} n.c.)", nc) : ""));
                   }));
           return row;
         }));
@@ -446,7 +449,8 @@ void set_answers(TemplateData& d, const ResultsIndex& index, const std::string& 
   } else if (key == "E_ratio") {
     d.set("e_ratio", e_ratio(series));
   } else if (key == "ftoln") {
-    const auto al = curves(series, [](const SweepSeries& s) { return s.base.algorithm == Algorithm::AL; });
+    const auto al =
+        curves(series, [](const SweepSeries& s) { return s.base.algorithm == Algorithm::AL; });
     d.set("spread", spread(al.empty() ? all : al, "FTOLN", values));
   } else {
     d.set("spread", spread(all, key == "p_over_E" ? "p/E" : key, values));
@@ -488,7 +492,8 @@ std::string sweep_section(const ResultsIndex& index, const StudyReference& study
     d.set("n_series", std::to_string(series.size()));
     set_answers(d, index, key, series, values, study);
     d.set("figure", figure_data(figures, key));
-    d.set("header", template_list(values, [](double v) { return TemplateData(format_swept_value(v)); }));
+    d.set("header",
+          template_list(values, [](double v) { return TemplateData(format_swept_value(v)); }));
     d.set("rows", table_rows(series, values));
     keys.push_back(d);
   }
