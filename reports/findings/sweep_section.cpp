@@ -137,7 +137,7 @@ TemplateData table_rows(const std::vector<SweepSeries>& series, const std::vecto
                 if (!e)
                   return TemplateData(p ? std::string(to_string(p->result->status)) : kMissing);
                 return TemplateData(fmt::format(
-                    "{} {}, {} it{}", format_percent(*e),
+                    "{} {}, {} it{}", format_error_resolved(*e),
                     schema::to_string(grading::grade_of_error(*e)), p->result->iterations,
                     SweepSeries::converged(*p) ? "" : " (not converged)"));
               }));
