@@ -203,6 +203,8 @@ ReportOutcome write_report(const schema::ResultsDocument& results, const ReportO
                                      strip_heading(page.markdown));
   output.write_text("report.md", report_markdown(index, study, content, problems, appendices));
   output.write_text("results.csv", results_csv(index, study));
+  if (const std::string estimates = estimates_csv(index); !estimates.empty())
+    output.write_text("estimates.csv", estimates);
   if (baseline)
     output.write_text("regression.md", regression_markdown(compare_results(*baseline, results)));
 

@@ -3,7 +3,8 @@
 // directory: report.md (summary and findings, Tables 2a/2b, appendix tables, with several solvers
 // the cross-code section, figures, the flat-punch divergence table, other option sets, the recovery
 // comparison and, with Google Benchmark JSON of bench_contact_algorithms, the benchmarks),
-// figures/*.png, results.csv, and with a baseline, regression.md.
+// figures/*.png, results.csv, estimates.csv (per-row error estimates), and with a baseline,
+// regression.md.
 //
 // The layout of the folder follows the report: results/ (the index over a results document,
 // the study's reference data, the CSV export), tables/ (Tables 2a/2b, the appendix tables, the

@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include "reports/render/template_text.hpp"
 #include "reports/tables/grade_tables.hpp"
 #include "reports/tables/markdown_table.hpp"
 
@@ -171,42 +172,53 @@ std::optional<double> half_space_extent(const std::vector<const ExtentSeries*>& 
   return std::nullopt;
 }
 
-std::string series_table(const ResultsIndex& index,
+std::vector<std::string> mesh_errors(const schema::RowVerdict& row, std::optional<double> exact) {
+  std::vector<std::string> cells;
+  for (std::size_t m = 0; m < 3; ++m)
+    cells.push_back(percent_cell(percent_of(row.values[m], exact)));
+  return cells;
+}
+
+std::string option_of(const ExtentSeries& s) {
+  return fmt::format("{} {} {}", schema::label(s.quantity), schema::to_string(s.element),
+                     s.option.label());
+}
+
+TemplateData series_rows(const ResultsIndex& index,
                          const std::vector<const ExtentSeries*>& series) {
-  MarkdownTable table({"Quantity", "Element", "Option", "extent", "C", "M", "F", "Richardson limit",
-                       "F − limit", "change of F from the previous extent"});
+  TemplateData list{TemplateData::type::list};
   for (const ExtentSeries* s : series) {
     std::optional<double> previous;
     for (const auto& [k, row] : s->by_extent) {
       const auto exact = index.exact_of(*row);
       const auto lim = richardson(*row);
-      std::vector<std::string> cells{std::string(schema::label(s->quantity)),
-                                     std::string(schema::to_string(s->element)), s->option.label(),
-                                     extent_label(k)};
+      const auto f = fine_value(*row);
+      TemplateData d;
+      d.set("quantity", std::string(schema::label(s->quantity)));
+      d.set("element", std::string(schema::to_string(s->element)));
+      d.set("option", s->option.label());
+      d.set("extent", extent_label(k));
       for (std::size_t m = 0; m < 3; ++m) {
         const auto v = row->values[m];
-        cells.push_back(
-            v ? fmt::format("{} ({})", format_value(*v), percent_cell(percent_of(v, exact)))
-              : std::string(kMissing));
+        d.set(std::string(1, "cmf"[m]),
+              v ? fmt::format("{} ({})", format_value(*v), percent_cell(percent_of(v, exact)))
+                : std::string(kMissing));
       }
-      cells.push_back(
-          lim ? fmt::format("{} ({})", format_value(*lim), percent_cell(percent_of(lim, exact)))
-              : (row->estimate ? row->estimate->note : std::string(kMissing)));
-      const auto f = fine_value(*row);
-      cells.push_back(percent_cell(lim && f ? percent_of(f, lim) : std::nullopt));
-      cells.push_back(percent_cell(previous && f ? percent_of(f, previous) : std::nullopt));
+      d.set("limit",
+            lim ? fmt::format("{} ({})", format_value(*lim), percent_cell(percent_of(lim, exact)))
+                : (row->estimate ? row->estimate->note : std::string(kMissing)));
+      d.set("f_minus_limit", percent_cell(lim && f ? percent_of(f, lim) : std::nullopt));
+      d.set("change", percent_cell(previous && f ? percent_of(f, previous) : std::nullopt));
       previous = f;
-      table.add_row(cells);
+      list.push_back(d);
     }
   }
-  return table.render();
+  return list;
 }
 
-/// How the error at the study's extent splits: the block (limit at 1 against the limit at the
-/// largest extent), the discretization (F against the limit at 1), and what is left at the
-/// largest extent (its limit against the exact value).
-std::string error_split(const ResultsIndex& index, const std::vector<const ExtentSeries*>& series) {
-  std::string out;
+std::vector<ErrorSplit> error_splits(const ResultsIndex& index,
+                                     const std::vector<const ExtentSeries*>& series) {
+  std::vector<ErrorSplit> out;
   for (const ExtentSeries* s : series) {
     if (s->by_extent.size() < 2 || !s->by_extent.contains(1.0))
       continue;
@@ -216,54 +228,22 @@ std::string error_split(const ResultsIndex& index, const std::vector<const Exten
     const auto lim1 = richardson(study), lim_max = richardson(*widest), f1 = fine_value(study);
     if (!exact || !lim1 || !lim_max || !f1)
       continue;
-    out += fmt::format(
-        "- {} {} {}: F-mesh error at the study's extent {}; of it the block accounts for {} (the "
-        "limit at extent 1 against the limit at {}), the discretization for {} (F against the "
-        "limit at extent 1); at extent {} the limit is {} from the exact value.\n",
-        schema::label(s->quantity), schema::to_string(s->element), s->option.label(),
-        percent_cell(percent_of(f1, exact)), percent_cell(100.0 * (*lim1 - *lim_max) / *exact),
-        extent_label(k_max), percent_cell(100.0 * (*f1 - *lim1) / *exact), extent_label(k_max),
-        percent_cell(percent_of(lim_max, exact)));
+    out.push_back({option_of(*s), *percent_of(f1, exact), 100.0 * (*lim1 - *lim_max) / *exact,
+                   100.0 * (*f1 - *lim1) / *exact, *percent_of(lim_max, exact), k_max});
   }
   return out;
 }
 
-/// "S, half-space": every option's grade at the half-space extent beside its grade at the study's
-/// geometry, both against the physical exact value.
-std::string half_space_grades(const ResultsIndex& index,
-                              const std::vector<const ExtentSeries*>& series, double k) {
-  MarkdownTable table({"Quantity", "Element", "Option", "study geometry (extent 1): F error",
-                       "grade", fmt::format("half-space (extent {}): F error", extent_label(k)),
-                       "grade"});
-  for (const ExtentSeries* s : series) {
-    const auto at = s->by_extent.find(k);
-    const auto base = s->by_extent.find(1.0);
-    if (at == s->by_extent.end() || base == s->by_extent.end())
-      continue;
-    const auto exact = index.exact_of(*base->second);
-    table.add_row({std::string(schema::label(s->quantity)),
-                   std::string(schema::to_string(s->element)), s->option.label(),
-                   percent_cell(percent_of(fine_value(*base->second), exact)),
-                   format_grade_cell(index, base->second),
-                   percent_cell(percent_of(fine_value(*at->second), exact)),
-                   format_grade_cell(index, at->second)});
-  }
-  return table.n_rows() == 0 ? std::string() : table.render();
-}
-
-/// The extent at which the half-space grades are given: of the extents at or beyond `from`, the
-/// one with the most series (options), the widest among equals (every option is run at the
-/// widest all-options extent, a few only further out).
+/// Of the extents at or beyond `from`, the one with the most series, the widest among equals
+/// (every option is run at the widest all-options extent, a few only further out).
 double widest_extent_of_most_options(const std::vector<const ExtentSeries*>& series, double from) {
   double best = from;
   std::size_t most = 0;
   for (double k : extents_of(series)) {
-    if (k < from)
-      continue;
     const auto n = static_cast<std::size_t>(
         std::count_if(series.begin(), series.end(),
                       [k](const ExtentSeries* s) { return s->by_extent.contains(k); }));
-    if (n >= most) {
+    if (k >= from && n >= most) {
       most = n;
       best = k;
     }
@@ -271,7 +251,6 @@ double widest_extent_of_most_options(const std::vector<const ExtentSeries*>& ser
   return best;
 }
 
-/// The widest extent at which some series has rows with both normals.
 std::optional<double> widest_compared_extent(const std::vector<const ExtentSeries*>& series) {
   std::optional<double> widest;
   for (const ExtentSeries* s : series) {
@@ -283,98 +262,128 @@ std::optional<double> widest_compared_extent(const std::vector<const ExtentSerie
   return widest;
 }
 
-/// "C, M, F" errors of a row against the exact value, e.g. "+0.07, −0.11, −0.11 %".
-std::string mesh_errors(const schema::RowVerdict& row, std::optional<double> exact) {
-  std::vector<std::string> cells;
-  for (std::size_t m = 0; m < 3; ++m)
-    cells.push_back(percent_cell(percent_of(row.values[m], exact)));
-  return fmt::format("{}", fmt::join(cells, ", "));
-}
-
-/// Every option at extent k graded twice: gaps along the target's normal (the default) and
-/// along the block's own normal (`half_space_gap=1`), against the same exact value.
-std::string gap_normal_part(const ResultsIndex& index, schema::ProblemId problem,
-                            const std::vector<const ExtentSeries*>& series) {
-  const auto k = widest_compared_extent(series);
-  if (!k)
-    return {};
-  MarkdownTable table({"Quantity", "Element", "Option", "target's normal: C, M, F errors", "grade",
-                       "block's normal: C, M, F errors", "grade"});
-  for (const ExtentSeries* s : series) {
-    const auto plain = s->by_extent.find(*k);
-    const auto block = s->block_normal.find(*k);
-    if (plain == s->by_extent.end() || block == s->block_normal.end())
-      continue;
-    const auto exact = index.exact_of(*plain->second);
-    table.add_row({std::string(schema::label(s->quantity)),
-                   std::string(schema::to_string(s->element)), s->option.label(),
-                   mesh_errors(*plain->second, exact), format_grade_cell(index, plain->second),
-                   mesh_errors(*block->second, exact), format_grade_cell(index, block->second)});
-  }
-  return fmt::format(
-      "\n\"{0}, half-space gap\": at extent {1}, each option with its gaps measured along the "
-      "target's normal (the default) and along the block's own normal (`--set "
-      "half_space_gap=1`), the linearization of the half-space theory behind the exact value. On "
-      "the punch's rounded edge the target's normal is tilted by up to (a − b)/r_e, so the "
-      "default also sees that tilt times the block surface's tangential displacement, which "
-      "points inwards under the punch and is proportional to (1 − 2ν)(1 + ν) p/E. That term is "
-      "of first order in the load and absent from the small-strain theory: it is a floor that "
-      "refinement does not remove. Both columns are graded against the same exact value.\n\n{2}",
-      schema::label(problem), extent_label(*k), table.render());
-}
-
-std::string problem_part(const ResultsIndex& index, schema::ProblemId problem,
-                         const std::vector<const ExtentSeries*>& series) {
-  const schema::ProblemRecord* record = index.problem(problem);
-  const auto exact = index.exact_of(*series.front()->by_extent.begin()->second);
-  std::string out = fmt::format("### {}{}\n\n", schema::label(problem),
-                                record != nullptr ? " — " + record->description : std::string());
+ExtentFacts facts_of(const ResultsIndex& index, schema::ProblemId problem,
+                     const std::vector<const ExtentSeries*>& series) {
+  ExtentFacts f;
+  f.problem = problem;
   const bool singular = index.singular(problem);
-  if (singular) {
-    out +=
-        "A singular problem: its peak grows without bound under refinement, so there is no "
-        "limit to split; the table shows how the fine-mesh peak moves with the extent.\n\n";
-  } else {
-    out += fmt::format("Errors against the exact value {} ({}).\n\n", format_value(exact),
-                       record != nullptr ? record->exact_source : std::string());
-  }
-  out += series_table(index, series) + "\n";
   if (!singular)
-    out += error_split(index, series);
-  const auto k = half_space_extent(series);
+    f.splits = error_splits(index, series);
   const auto ks = extents_of(series);
-  if (k) {
-    out += fmt::format(
-        "\nFrom extent {} on, no fine-mesh value changes by {} % or more ({} % at most): at this "
-        "extent the block stands for a half-space.\n",
-        extent_label(*k), kHalfSpaceChangePercent,
-        fmt::format("{:.3f}",
-                    largest_change_from(
-                        series, ks,
-                        static_cast<std::size_t>(std::find(ks.begin(), ks.end(), *k) - ks.begin()))
-                        .value_or(0.0)));
-    const double k_grades = widest_extent_of_most_options(series, *k);
-    if (!singular) {
-      const std::string grades = half_space_grades(index, series, k_grades);
-      if (!grades.empty()) {
-        out += fmt::format(
-            "\n\"{}, half-space\": each option graded at extent {} (the widest extent run with "
-            "the most options, at or beyond the half-space extent {}), against the same exact "
-            "value as the study geometry beside it.\n\n{}",
-            schema::label(problem), extent_label(k_grades), extent_label(*k), grades);
-      }
-    }
+  f.half_space = half_space_extent(series);
+  if (f.half_space) {
+    const auto i =
+        static_cast<std::size_t>(std::find(ks.begin(), ks.end(), *f.half_space) - ks.begin());
+    f.change_after_half_space = largest_change_from(series, ks, i).value_or(0.0);
+    if (!singular)
+      f.grades_extent = widest_extent_of_most_options(series, *f.half_space);
   } else if (ks.size() >= 2) {
-    out += fmt::format(
-        "\nBetween the two widest extents run, {} and {}, a fine-mesh value still changes by "
-        "{} % (the criterion is below {} %): no extent run here stands for a half-space.\n",
-        extent_label(ks[ks.size() - 2]), extent_label(ks.back()),
-        fmt::format("{:.3f}", change_after(series, ks[ks.size() - 2]).value_or(0.0)),
-        kHalfSpaceChangePercent);
+    f.second_widest = ks[ks.size() - 2];
+    f.widest = ks.back();
+    f.last_change = change_after(series, ks[ks.size() - 2]).value_or(0.0);
   }
   if (!singular)
-    out += gap_normal_part(index, problem, series);
-  return out + "\n";
+    f.gap_extent = widest_compared_extent(series);
+  return f;
+}
+
+/// One template row per series for which `cells` gives one, labelled with its option.
+template <typename Cells>
+TemplateData pair_rows(const std::vector<const ExtentSeries*>& series, Cells&& cells) {
+  TemplateData list{TemplateData::type::list};
+  for (const ExtentSeries* s : series) {
+    if (auto d = cells(*s)) {
+      d->set("quantity", std::string(schema::label(s->quantity)));
+      d->set("element", std::string(schema::to_string(s->element)));
+      d->set("option", s->option.label());
+      list.push_back(*d);
+    }
+  }
+  return list;
+}
+
+TemplateData problem_data(const ResultsIndex& index, const ExtentFacts& f,
+                          const std::vector<const ExtentSeries*>& series) {
+  const schema::ProblemRecord* record = index.problem(f.problem);
+  TemplateData d;
+  d.set("label", std::string(schema::label(f.problem)));
+  d.set("description", record ? " — " + record->description : std::string());
+  d.set("singular", index.singular(f.problem));
+  d.set("exact", format_value(index.exact_of(*series.front()->by_extent.begin()->second)));
+  d.set("exact_source", record ? record->exact_source : std::string());
+  d.set("series", series_rows(index, series));
+  d.set("splits", template_list(f.splits, [](const ErrorSplit& s) {
+          TemplateData t;
+          t.set("option", s.option);
+          t.set("f_error", format_error_resolved(s.f_error));
+          t.set("block", format_error_resolved(s.block));
+          t.set("discretization", format_error_resolved(s.discretization));
+          t.set("remaining", format_error_resolved(s.remaining));
+          t.set("widest", extent_label(s.widest));
+          return t;
+        }));
+  const auto num = [](const std::optional<double>& v) { return v ? extent_label(*v) : kMissing; };
+  const auto pct = [](const std::optional<double>& v) {
+    return fmt::format("{:.3f}", v.value_or(0.0));
+  };
+  d.set("has_half_space", f.half_space.has_value());
+  d.set("half_space", num(f.half_space));
+  d.set("change_after", pct(f.change_after_half_space));
+  d.set("threshold", fmt::format("{:g}", kHalfSpaceChangePercent));
+  d.set("no_half_space", f.last_change.has_value());
+  d.set("second_widest", num(f.second_widest));
+  d.set("widest", num(f.widest));
+  d.set("last_change", pct(f.last_change));
+  d.set("grades_extent", num(f.grades_extent));
+  if (f.grades_extent) {
+    const double k = *f.grades_extent;
+    d.set("grades", pair_rows(series, [&](const ExtentSeries& s) -> std::optional<TemplateData> {
+            if (!s.by_extent.contains(k) || !s.by_extent.contains(1.0))
+              return std::nullopt;
+            const schema::RowVerdict *base = s.by_extent.at(1.0), *at = s.by_extent.at(k);
+            const auto exact = index.exact_of(*base);
+            TemplateData t;
+            t.set("study", percent_cell(percent_of(fine_value(*base), exact)));
+            t.set("study_grade", format_grade_cell(index, base));
+            t.set("wide", percent_cell(percent_of(fine_value(*at), exact)));
+            t.set("wide_grade", format_grade_cell(index, at));
+            return t;
+          }));
+  }
+  d.set("has_grades", d.get("grades") && !d.get("grades")->is_empty_list());
+  d.set("gap_extent", num(f.gap_extent));
+  if (f.gap_extent) {
+    const double k = *f.gap_extent;
+    d.set("gap_rows", pair_rows(series, [&](const ExtentSeries& s) -> std::optional<TemplateData> {
+            if (!s.by_extent.contains(k) || !s.block_normal.contains(k))
+              return std::nullopt;
+            const schema::RowVerdict *plain = s.by_extent.at(k), *block = s.block_normal.at(k);
+            const auto exact = index.exact_of(*plain);
+            TemplateData t;
+            t.set("target", fmt::format("{}", fmt::join(mesh_errors(*plain, exact), ", ")));
+            t.set("target_grade", format_grade_cell(index, plain));
+            t.set("block", fmt::format("{}", fmt::join(mesh_errors(*block, exact), ", ")));
+            t.set("block_grade", format_grade_cell(index, block));
+            return t;
+          }));
+  }
+  d.set("has_gap", d.get("gap_rows") && !d.get("gap_rows")->is_empty_list());
+  return d;
+}
+
+std::vector<std::pair<ExtentFacts, std::vector<const ExtentSeries*>>> by_problem(
+    const ResultsIndex& index, const std::vector<ExtentSeries>& all) {
+  std::vector<std::pair<ExtentFacts, std::vector<const ExtentSeries*>>> out;
+  for (const schema::ProblemRecord* p : index.problems()) {
+    std::vector<const ExtentSeries*> series;
+    for (const auto& s : all) {
+      if (s.problem == p->id)
+        series.push_back(&s);
+    }
+    if (!series.empty())
+      out.emplace_back(facts_of(index, p->id, series), series);
+  }
+  return out;
 }
 
 }  // namespace
@@ -383,29 +392,23 @@ bool in_extent_study(const schema::CaseSpec& s) {
   return in_plain_extent_study(s) || in_gap_study(s);
 }
 
+std::vector<ExtentFacts> extent_facts(const ResultsIndex& index) {
+  std::vector<ExtentFacts> out;
+  for (auto& [facts, series] : by_problem(index, collect_series(index)))
+    out.push_back(facts);
+  return out;
+}
+
 std::string extent_section(const ResultsIndex& index) {
   const std::vector<ExtentSeries> all = collect_series(index);
   if (all.empty())
     return {};
-  std::string parts;
-  for (const schema::ProblemRecord* p : index.problems()) {
-    std::vector<const ExtentSeries*> series;
-    for (const auto& s : all) {
-      if (s.problem == p->id)
-        series.push_back(&s);
-    }
-    if (!series.empty())
-      parts += problem_part(index, p->id, series);
-  }
-  return "## The block's extent: finite block or half-space\n\n"
-         "The study's blocks are finite (8b deep on rollers for the Steuermann problems); the "
-         "exact solutions are for a half-space. Here the same problems are run with the block "
-         "enlarged (`--set extent=K`: width and depth K times the study's, the mesh within half "
-         "the study's extent unchanged and the rest stretched outwards). Each cell: our value "
-         "(its % error). The Richardson limit of C, M, F (when the three are in the asymptotic "
-         "range) removes the discretization error, so its change with the extent is the "
-         "block's part of the error.\n\n" +
-         parts;
+  TemplateData problems{TemplateData::type::list};
+  for (const auto& [facts, series] : by_problem(index, all))
+    problems.push_back(problem_data(index, facts, series));
+  TemplateData d;
+  d.set("problems", problems);
+  return render_template(templates::extent_section, d);
 }
 
 }  // namespace cs::reports

@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "grading/accuracy.hpp"
+#include "reports/render/template_text.hpp"
 #include "reports/tables/grade_tables.hpp"
 #include "reports/tables/markdown_table.hpp"
 
@@ -54,17 +55,6 @@ double median(std::vector<double> v) {
   return n % 2 == 1 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 
-/// An unsigned percentage: "0.40 %".
-std::string magnitude(double percent) {
-  return fmt::format("{:.2f} %", percent);
-}
-
-std::string converging_text(const std::optional<bool>& c) {
-  if (!c)
-    return kMissing;
-  return *c ? "c" : "—";
-}
-
 /// "+0.45 % (e)" on the fine mesh; "+0.45 % (e, on M)" where the row is graded on another.
 std::string error_cell(const RowVerdict& row, schema::MeshLevel mesh) {
   const std::string where =
@@ -73,43 +63,40 @@ std::string error_cell(const RowVerdict& row, schema::MeshLevel mesh) {
                      schema::to_string(*row.grade), where);
 }
 
-/// One line per element: how many rows, the median |error| both ways, grades better/worse.
-std::string summary_lines(const std::vector<RecoveryComparison>& comparisons) {
-  std::string out;
-  for (const auto& c : comparisons) {
-    out += fmt::format(
-        "- {}: {} option set(s) graded both ways; median |error| {} with patch recovery, {} "
-        "extrapolated; the grade is better with patch recovery in {}, worse in {}, the same in "
-        "{}.",
-        schema::to_string(c.element), c.compared, magnitude(c.median_spr),
-        magnitude(c.median_extrapolated), c.better, c.worse, c.compared - c.better - c.worse);
-    if (c.differing_with_pressure > 0) {
-      out += fmt::format(
-          " Where the grades differ, the patch-recovered value is the closer to the contact "
-          "pressure in {} of {}.",
-          c.spr_closer_to_pressure, c.differing_with_pressure);
-    }
-    out += "\n";
-  }
-  return out;
+std::string converging_text(const std::optional<bool>& c) {
+  return c ? (*c ? "c" : "—") : kMissing;
 }
 
-/// The singular rows: Eq. 47 verdicts both ways.
-std::string divergence_line(const ResultsIndex& index) {
-  int both = 0, same = 0;
-  for (const RowVerdict* row : index.baseline_rows()) {
-    const RowVerdict* twin = index.extrapolated_twin(*row);
-    if (twin == nullptr || !row->diverging || !twin->diverging)
-      continue;
-    ++both;
-    same += *row->diverging == *twin->diverging ? 1 : 0;
-  }
-  if (both == 0)
-    return {};
-  return fmt::format(
-      "- Flat punch (Eq. 47): the divergence verdict is the same both ways in {} of {} option "
-      "set(s).\n",
-      same, both);
+TemplateData comparison_data(const RecoveryComparison& c) {
+  TemplateData d;
+  d.set("element", std::string(schema::to_string(c.element)));
+  d.set("compared", std::to_string(c.compared));
+  d.set("median_spr", fmt::format("{:.2f}", c.median_spr));
+  d.set("median_extrapolated", fmt::format("{:.2f}", c.median_extrapolated));
+  d.set("better", std::to_string(c.better));
+  d.set("worse", std::to_string(c.worse));
+  d.set("same", std::to_string(c.compared - c.better - c.worse));
+  d.set("has_pressure", c.differing_with_pressure > 0);
+  d.set("with_pressure", std::to_string(c.differing_with_pressure));
+  d.set("spr_closer", std::to_string(c.spr_closer_to_pressure));
+  return d;
+}
+
+TemplateData pair_data(const ResultsIndex& index, const RecoveryPair& p) {
+  const schema::ProblemRecord* info = index.problem(p.spr->spec.problem);
+  std::string name(schema::label(p.spr->spec.problem));
+  if (info != nullptr && info->quantities.size() > 1)
+    name += fmt::format(" {}", schema::label(p.spr->quantity));
+  TemplateData d;
+  d.set("problem", name);
+  d.set("element", std::string(schema::to_string(p.spr->spec.element)));
+  d.set("option", Option{p.spr->spec.algorithm, p.spr->spec.contact}.label());
+  d.set("spr", error_cell(*p.spr, p.mesh));
+  d.set("extrapolated", error_cell(*p.extrapolated, p.mesh));
+  d.set("pressure", p.pressure_error ? format_percent(*p.pressure_error) : kMissing);
+  d.set("converging",
+        converging_text(p.spr->converging) + " / " + converging_text(p.extrapolated->converging));
+  return d;
 }
 
 }  // namespace
@@ -149,43 +136,27 @@ std::vector<RecoveryComparison> compare_recoveries(const ResultsIndex& index) {
 }
 
 std::string recovery_section(const ResultsIndex& index) {
-  if (!index.has_extrapolated_twins())
-    return {};
-  const auto pairs = graded_pairs(index);
-  std::string out =
-      "## Nodal stress recovery: patch recovery beside extrapolation\n\n"
-      "Every graded value above is a nodal stress recovered by superconvergent patch recovery "
-      "(our default). This run also recovered each analysis's stresses the way commercial codes "
-      "print them, and the study graded them: extrapolated from the Gauss points and averaged. "
-      "Both come from the same displacement solution; the contact pressure of that solution, "
-      "shown beside, tells which recovery is right where they disagree.\n\n";
-  out += summary_lines(compare_recoveries(index)) + divergence_line(index) + "\n";
-
-  MarkdownTable table({"Problem", "Element", "Option", "Patch recovery", "Extrapolated",
-                       "Contact pressure", "Converging (patch / extrapolated)"});
-  int differing = 0;
-  for (const auto& p : pairs) {
-    if (*p.spr->grade == *p.extrapolated->grade)
+  TemplateData d;
+  d.set("has_twins", index.has_extrapolated_twins());
+  d.set("elements", template_list(compare_recoveries(index), comparison_data));
+  int both = 0, same = 0;  // the flat punch: Eq. 47 both ways
+  for (const RowVerdict* row : index.baseline_rows()) {
+    const RowVerdict* twin = index.extrapolated_twin(*row);
+    if (twin == nullptr || !row->diverging || !twin->diverging)
       continue;
-    ++differing;
-    const schema::ProblemRecord* info = index.problem(p.spr->spec.problem);
-    std::string name(schema::label(p.spr->spec.problem));
-    if (info != nullptr && info->quantities.size() > 1)
-      name += fmt::format(" {}", schema::label(p.spr->quantity));
-    const Option option{p.spr->spec.algorithm, p.spr->spec.contact};
-    table.add_row(
-        {name, std::string(schema::to_string(p.spr->spec.element)), option.label(),
-         error_cell(*p.spr, p.mesh), error_cell(*p.extrapolated, p.mesh),
-         p.pressure_error ? format_percent(*p.pressure_error) : std::string(kMissing),
-         converging_text(p.spr->converging) + " / " + converging_text(p.extrapolated->converging)});
+    ++both;
+    same += *row->diverging == *twin->diverging ? 1 : 0;
   }
-  if (differing == 0)
-    return out + "The two recoveries give the same grade for every option set.\n\n";
-  out += fmt::format(
-      "The {} option set(s) whose grade differs, with the error on the graded mesh (F unless "
-      "the cell names another) and that mesh's contact-pressure error:\n\n",
-      differing);
-  return out + table.render() + "\n";
+  d.set("has_divergence", both > 0);
+  d.set("divergence_same", fmt::format("{} of {}", same, both));
+  std::vector<RecoveryPair> differing = graded_pairs(index);
+  std::erase_if(differing,
+                [](const RecoveryPair& p) { return *p.spr->grade == *p.extrapolated->grade; });
+  d.set("n_differing", std::to_string(differing.size()));
+  d.set("has_differing", !differing.empty());
+  d.set("differing",
+        template_list(differing, [&](const RecoveryPair& p) { return pair_data(index, p); }));
+  return render_template(templates::recovery_section, d);
 }
 
 }  // namespace cs::reports

@@ -27,7 +27,8 @@ struct RecoveryComparison {
 /// Per element (Q4, Q8) with at least one option set graded both ways.
 std::vector<RecoveryComparison> compare_recoveries(const ResultsIndex& index);
 
-/// The section's Markdown; empty when no baseline row has an extrapolated twin.
+/// The section's Markdown; one line saying how to get it when no baseline row has an
+/// extrapolated twin. Words: templates/recovery_section.mustache.
 std::string recovery_section(const ResultsIndex& index);
 
 }  // namespace cs::reports

@@ -2,18 +2,19 @@
 
 #include <algorithm>
 #include <cmath>
-#include <vector>
 
 #include <fmt/format.h>
 
 #include "grading/accuracy.hpp"
 #include "reports/findings/variant_rows.hpp"
+#include "reports/render/template_text.hpp"
 #include "reports/tables/markdown_table.hpp"
 
 namespace cs::reports {
 namespace {
 
 using schema::RowVerdict;
+using Fields = kainjow::mustache::object;
 
 /// Baseline rows, then the variant rows no section of their own shows (a rigid target,
 /// overrides), in document order.
@@ -27,38 +28,10 @@ std::vector<const RowVerdict*> all_rows(const ResultsIndex& index) {
 /// "H<sub>p</sub> sigma_c Q4 LMP ss", with the variant ("rigid") when there is one.
 std::string row_label(const RowVerdict& row) {
   const std::string variant = variant_of(row.spec);
-  return fmt::format("{} {} {} {} {}{}", schema::label(row.spec.problem),
+  return fmt::format("{} {} {} {}{}", schema::label(row.spec.problem),
                      schema::to_string(row.quantity), schema::to_string(row.spec.element),
-                     schema::to_string(row.spec.algorithm), schema::to_string(row.spec.contact),
+                     Option{row.spec.algorithm, row.spec.contact}.label(),
                      variant.empty() ? "" : " (" + variant + ")");
-}
-
-std::string number_cell(const std::optional<double>& v, const char* format) {
-  return v ? fmt::format(fmt::runtime(format), *v) : std::string(kMissing);
-}
-
-std::string percent_cell(const std::optional<double>& v) {
-  return v ? format_percent(*v) : std::string(kMissing);
-}
-
-/// "asymptotic", or the estimator's reason for no estimate.
-std::string estimate_verdict(const schema::ErrorEstimate& e) {
-  return e.asymptotic ? "asymptotic" : "not asymptotic: " + e.note;
-}
-
-std::string converging_cell(const std::optional<bool>& converging) {
-  if (!converging)
-    return kMissing;
-  return *converging ? "c" : "not c";
-}
-
-std::string divergence_cell(const std::optional<schema::DivergenceVerdict>& d) {
-  if (!d)
-    return kMissing;
-  const std::string alpha = d->exponent ? fmt::format(" (α {:.2f})", *d->exponent) : "";
-  if (d->diverges)
-    return "diverges" + alpha;
-  return (d->eq47 ? "Eq. 47 only" : "does not diverge") + alpha;
 }
 
 double median(std::vector<double> v) {
@@ -69,38 +42,33 @@ double median(std::vector<double> v) {
   return n % 2 == 1 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 
-/// The estimates beside Table 2′, with the count of rows whose GCI band holds the exact value.
-std::string estimates_table(const ResultsIndex& index) {
-  MarkdownTable table(
-      {"row", "F value", "F error", "p", "Richardson limit", "its error", "GCI", "verdict"});
-  int asymptotic = 0, bounded = 0, counted = 0;
-  for (const RowVerdict* row : all_rows(index)) {
-    if (!row->estimate)
-      continue;
-    const schema::ErrorEstimate& e = *row->estimate;
-    const std::optional<double> exact = index.exact_of(*row);
-    std::optional<double> limit_error;
-    if (exact && e.richardson && *exact != 0.0)
-      limit_error = grading::error_percent(*e.richardson, *exact);
-    table.add_row({row_label(*row), format_value(row->values[2]), percent_cell(row->errors[2]),
-                   number_cell(e.observed_order, "{:.2f}"), format_value(e.richardson),
-                   percent_cell(limit_error),
-                   e.gci_percent ? fmt::format("{:.3g} %", *e.gci_percent) : std::string(kMissing),
-                   estimate_verdict(e)});
-    asymptotic += e.asymptotic ? 1 : 0;
-    if (const auto b = exact ? gci_bounds_error(*row, *exact) : std::nullopt) {
-      ++counted;
-      bounded += *b ? 1 : 0;
-    }
+std::optional<grading::ConvergenceAssessment> trend_of(const std::optional<double>& a,
+                                                       const std::optional<double>& b,
+                                                       const std::optional<double>& c) {
+  if (!a || !b || !c)
+    return std::nullopt;
+  return grading::assess_convergence(*a, *b, *c);
+}
+
+std::string trend_cell(const std::optional<grading::ConvergenceAssessment>& t) {
+  return t ? std::string(schema::label(t->trend)) : std::string(kMissing);
+}
+
+/// The VF error, marked unless its case converged.
+std::string vf_cell(const VfRow& v) {
+  const auto& e = v.row->refinement->error;
+  const std::string value = e ? format_error_resolved(*e) : std::string(kMissing);
+  switch (v.vf) {
+    case MeshState::converged:
+      return value;
+    case MeshState::not_converged:
+      return value + " (not converged)";
+    case MeshState::failed:
+      return "failed";
+    case MeshState::missing:
+      return kMissing;
   }
-  if (table.n_rows() == 0)
-    return {};
-  return fmt::format(
-             "Of {} rows with C, M and F values, {} are in the asymptotic range (differences of "
-             "one sign that shrink). The exact value lies within the GCI band of the F value in "
-             "{} of those {}.\n\n",
-             table.n_rows(), asymptotic, bounded, counted) +
-         table.render() + "\n";
+  return kMissing;
 }
 
 std::string claim_cell(RefinementClaim claim) {
@@ -108,104 +76,133 @@ std::string claim_cell(RefinementClaim claim) {
     case RefinementClaim::not_applicable:
       return "n/a";
     case RefinementClaim::holds:
-      return "yes: converges over M-F-VF";
+      return "holds";
     case RefinementClaim::fails:
-      return "no";
+      return "fails";
+    case RefinementClaim::vf_not_converged:
+      return "open: VF not converged";
     case RefinementClaim::no_vf:
-      return "VF missing";
+      return "open: no VF";
   }
-  return {};
+  return kMissing;
 }
 
-/// One row of the side-by-side table: errors (or values, singular) per mesh and the verdicts.
-std::vector<std::string> refinement_cells(const RowVerdict& row) {
-  const schema::RefinementVerdict& vf = *row.refinement;
-  const bool singular = row.divergence.has_value() || vf.divergence.has_value();
-  std::vector<std::string> cells{row_label(row)};
-  for (std::size_t m = 0; m < 3; ++m)
-    cells.push_back(singular ? format_value(row.values[m]) : percent_cell(row.errors[m]));
-  cells.push_back(singular ? format_value(vf.value) : percent_cell(vf.error));
-  if (singular) {
-    cells.push_back(divergence_cell(row.divergence));
-    cells.push_back(divergence_cell(vf.divergence));
-  } else {
-    cells.push_back(converging_cell(row.converging));
-    cells.push_back(converging_cell(vf.converging));
+void add_estimate(EstimateSummary& s, std::vector<double>& gci, const ResultsIndex& index,
+                  const RowVerdict& row) {
+  ++s.rows;
+  if (!row.estimate->asymptotic)
+    return;
+  ++s.asymptotic;
+  if (row.estimate->gci_percent)
+    gci.push_back(*row.estimate->gci_percent);
+  const auto exact = index.exact_of(row);
+  if (const auto b = exact ? gci_bounds_error(row, *exact) : std::nullopt) {
+    ++s.with_exact;
+    s.bounded += *b ? 1 : 0;
   }
-  cells.push_back(number_cell(vf.pair_order, "{:.2f}"));
-  cells.push_back(claim_cell(refinement_claim(row)));
-  return cells;
 }
 
-std::string claim_summary(const std::vector<const RowVerdict*>& rows) {
-  int applies = 0, holds = 0, fails = 0;
-  for (const RowVerdict* row : rows) {
-    const RefinementClaim c = refinement_claim(*row);
-    applies += c == RefinementClaim::not_applicable ? 0 : 1;
-    holds += c == RefinementClaim::holds ? 1 : 0;
-    fails += c == RefinementClaim::fails ? 1 : 0;
+void add_vf(RefinementFacts& f, const ResultsIndex& index, const RowVerdict& row) {
+  VfRow v{&row, index.state(row, schema::MeshLevel::VF), {}, {}, {}};
+  if (index.singular(row.spec.problem)) {
+    const bool counted = v.vf == MeshState::converged && row.refinement->divergence;
+    f.singular_vf += counted ? 1 : 0;
+    f.singular_vf_diverges += counted && row.refinement->divergence->diverges ? 1 : 0;
+    return;
   }
-  if (applies == 0) {
-    return "The study's \"further mesh refinement would lead to converging results\" applies to "
-           "no row run on VF here: every such row graded s or better is already c over C-M-F, "
-           "or is graded u.\n\n";
-  }
-  return fmt::format(
-      "The study's \"It is probable that in instances not demarked by c's with satisfactory or "
-      "better results, further mesh refinement would lead to converging results\" applies to "
-      "{} of the rows run on VF (graded s or better on F, not c over C-M-F). It holds for {} of "
-      "them (c over M-F-VF) and fails for {}{}.\n\n",
-      applies, holds, fails,
-      applies > holds + fails ? fmt::format("; {} lack a VF value", applies - holds - fails) : "");
+  v.trend_cmf = trend_of(row.errors[0], row.errors[1], row.errors[2]);
+  v.trend_mfvf = trend_of(row.errors[1], row.errors[2], row.refinement->error);
+  v.claim = refinement_claim(row, v.vf);
+  f.claim.applies += v.claim == RefinementClaim::not_applicable ? 0 : 1;
+  f.claim.holds += v.claim == RefinementClaim::holds ? 1 : 0;
+  f.claim.fails += v.claim == RefinementClaim::fails ? 1 : 0;
+  f.claim.vf_not_converged += v.claim == RefinementClaim::vf_not_converged ? 1 : 0;
+  f.vf_rows.push_back(v);
 }
 
-std::string mpc_summary(const ResultsIndex& index) {
-  const MpcRefinement m = mpc_refinement(index);
-  if (m.rows == 0)
-    return {};
-  return fmt::format(
-      "MPC (the study's IMC) with refinement: in {} of {} MPC rows with F and VF values the "
-      "error shrinks from F to VF; the median |error| goes from {:.3g} % on F to {:.3g} % on "
-      "VF. The study's \"this performance could be improved with further mesh refinement\" "
-      "{}.\n\n",
-      m.improved, m.rows, m.median_f, m.median_vf,
-      m.improved * 2 > m.rows ? "holds for most of these rows"
-                              : "does not hold for most of these rows");
+void add_mpc(RefinementFacts& f, std::vector<double>& on_f, std::vector<double>& on_vf) {
+  for (const VfRow& v : f.vf_rows) {
+    const RowVerdict& r = *v.row;
+    if (r.spec.algorithm != schema::Algorithm::MPC || !r.errors[2] || !r.refinement->error)
+      continue;
+    if (v.vf != MeshState::converged) {
+      ++f.mpc.not_converged;
+      continue;
+    }
+    ++f.mpc.rows;
+    on_f.push_back(std::abs(*r.errors[2]));
+    on_vf.push_back(std::abs(*r.refinement->error));
+    f.mpc.improved += on_vf.back() < on_f.back() ? 1 : 0;
+  }
 }
 
-std::string refinement_table(const ResultsIndex& index) {
-  std::vector<const RowVerdict*> rows;
-  for (const RowVerdict* row : all_rows(index)) {
-    if (row->refinement)
-      rows.push_back(row);
-  }
-  if (rows.empty()) {
-    return "No case of this run is on the fourth mesh VF (h/8); `bash ci/refine.sh` runs "
-           "them and adds the C-M-F and M-F-VF verdicts side by side here.\n\n";
-  }
-  MarkdownTable table(
-      {"row", "C", "M", "F", "VF", "C-M-F", "M-F-VF", "p F→VF", "further refinement converges?"});
-  for (const RowVerdict* row : rows)
-    table.add_row(refinement_cells(*row));
-  return fmt::format(
-             "### The fourth mesh VF (h/8)\n\n"
-             "{} rows have a VF case. Per mesh: the % error (singular rows: the value); "
-             "the verdicts over C-M-F and over M-F-VF (c: converging by the study's "
-             "rule; singular rows: the strict divergence verdict and α of |s| ~ h^-α); "
-             "p F→VF = log2(|e_F| / |e_VF|).\n\n",
-             rows.size()) +
-         claim_summary(rows) + mpc_summary(index) + table.render() + "\n";
+std::string percent(int part, int whole) {
+  return whole == 0 ? std::string(kMissing) : fmt::format("{:.0f} %", 100.0 * part / whole);
+}
+
+TemplateData summary_data(const EstimateSummary& s) {
+  return Fields{{"problem", std::string(schema::label(s.problem))},
+                {"rows", std::to_string(s.rows)},
+                {"asymptotic", std::to_string(s.asymptotic)},
+                {"bounded", fmt::format("{} of {}", s.bounded, s.with_exact)},
+                {"median_gci", s.median_gci ? fmt::format("{:.3g} %", *s.median_gci) : kMissing}};
+}
+
+TemplateData vf_data(const VfRow& v) {
+  const auto error = [&](std::size_t m) {
+    return v.row->errors[m] ? format_error_resolved(*v.row->errors[m]) : std::string(kMissing);
+  };
+  return Fields{{"row", row_label(*v.row)},
+                {"c", error(0)},
+                {"m", error(1)},
+                {"f", error(2)},
+                {"vf", vf_cell(v)},
+                {"trend_cmf", trend_cell(v.trend_cmf)},
+                {"trend_mfvf", trend_cell(v.trend_mfvf)},
+                {"claim", claim_cell(v.claim)}};
+}
+
+std::string csv_number(const std::optional<double>& v) {
+  return v ? fmt::format("{:.10g}", *v) : std::string();
+}
+
+std::string csv_line(const ResultsIndex& index, const RowVerdict& row) {
+  const schema::ErrorEstimate& e = *row.estimate;
+  const auto exact = index.exact_of(row);
+  std::optional<double> limit_error;
+  if (exact && e.richardson && *exact != 0.0)
+    limit_error = grading::error_percent(*e.richardson, *exact);
+  const auto bounded = exact ? gci_bounds_error(row, *exact) : std::nullopt;
+  std::string out = fmt::format(
+      "{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}", row.id, csv_number(row.values[0]),
+      csv_number(row.values[1]), csv_number(row.values[2]), csv_number(row.errors[2]),
+      at_round_off(row) ? 1 : 0, e.asymptotic ? 1 : 0, e.note, csv_number(e.observed_order),
+      csv_number(e.richardson), csv_number(limit_error), csv_number(e.gci_percent),
+      bounded ? (*bounded ? "1" : "0") : "", csv_number(exact), variant_of(row.spec));
+  if (!row.refinement)
+    return out + ",,,,,\n";
+  const MeshState vf = index.state(row, schema::MeshLevel::VF);
+  const auto trend = trend_of(row.errors[1], row.errors[2], row.refinement->error);
+  constexpr const char* kState[] = {"missing", "failed", "not_converged", "converged"};
+  return out + fmt::format(",{},{},{},{},{}\n", csv_number(row.refinement->value),
+                           csv_number(row.refinement->error), kState[static_cast<int>(vf)],
+                           trend ? schema::to_string(trend->trend) : "",
+                           claim_cell(refinement_claim(row, vf)));
 }
 
 }  // namespace
 
-RefinementClaim refinement_claim(const RowVerdict& row) {
-  if (!row.grade || !row.converging || *row.converging ||
-      schema::is_worse(*row.grade, schema::Grade::s))
+RefinementClaim refinement_claim(const RowVerdict& row, MeshState vf) {
+  if (!row.errors[2] || !row.converging || *row.converging ||
+      schema::is_worse(grading::grade_of_error(*row.errors[2]), schema::Grade::s))
     return RefinementClaim::not_applicable;
-  if (!row.refinement || !row.refinement->converging)
+  if (!row.refinement || vf == MeshState::missing)
     return RefinementClaim::no_vf;
-  return *row.refinement->converging ? RefinementClaim::holds : RefinementClaim::fails;
+  if (vf != MeshState::converged || !row.refinement->error || !row.errors[1])
+    return RefinementClaim::vf_not_converged;
+  const schema::Trend t =
+      grading::assess_convergence(*row.errors[1], *row.errors[2], *row.refinement->error).trend;
+  return t == schema::Trend::not_converging ? RefinementClaim::fails : RefinementClaim::holds;
 }
 
 std::optional<bool> gci_bounds_error(const RowVerdict& row, double exact) {
@@ -215,35 +212,99 @@ std::optional<bool> gci_bounds_error(const RowVerdict& row, double exact) {
   return error <= *row.estimate->gci_percent;
 }
 
-MpcRefinement mpc_refinement(const ResultsIndex& index) {
-  MpcRefinement out;
-  std::vector<double> f, vf;
-  for (const RowVerdict* row : all_rows(index)) {
-    if (row->spec.algorithm != schema::Algorithm::MPC || !row->refinement ||
-        !row->refinement->error || !row->errors[2])
-      continue;
-    ++out.rows;
-    f.push_back(std::abs(*row->errors[2]));
-    vf.push_back(std::abs(*row->refinement->error));
-    out.improved += vf.back() < f.back() ? 1 : 0;
+bool at_round_off(const RowVerdict& row) {
+  return std::all_of(row.errors.begin(), row.errors.end(), [](const std::optional<double>& e) {
+    return e && std::abs(*e) < schema::kErrorNoiseFloorPercent;
+  });
+}
+
+RefinementFacts refinement_facts(const ResultsIndex& index) {
+  RefinementFacts f;
+  for (const schema::ProblemRecord* p : index.problems()) {
+    EstimateSummary s;
+    s.problem = p->id;
+    std::vector<double> gci;
+    for (const RowVerdict* row : all_rows(index)) {
+      if (row->spec.problem != p->id || !row->estimate)
+        continue;
+      if (at_round_off(*row))
+        ++f.round_off;
+      else
+        add_estimate(s, gci, index, *row);
+    }
+    if (!gci.empty())
+      s.median_gci = median(gci);
+    if (s.rows > 0)
+      f.problems.push_back(s);
   }
-  out.median_f = median(f);
-  out.median_vf = median(vf);
-  return out;
+  for (const RowVerdict* row : all_rows(index)) {
+    if (row->refinement)
+      add_vf(f, index, *row);
+  }
+  std::vector<double> on_f, on_vf;
+  add_mpc(f, on_f, on_vf);
+  f.mpc.median_f = median(on_f);
+  f.mpc.median_vf = median(on_vf);
+  return f;
+}
+
+std::string estimates_csv(const ResultsIndex& index) {
+  std::string out =
+      "row_id,value_C,value_M,value_F,error_F_percent,round_off,asymptotic,note,order,"
+      "richardson,richardson_error_percent,gci_percent,exact_in_gci_band,exact,variant,"
+      "value_VF,error_VF_percent,status_VF,trend_MFVF,further_refinement_claim\n";
+  bool any = false;
+  for (const RowVerdict* row : all_rows(index)) {
+    if (row->estimate)
+      out += csv_line(index, *row);
+    any = any || row->estimate;
+  }
+  return any ? out : std::string();
 }
 
 std::string refinement_section(const ResultsIndex& index) {
-  const std::string estimates = estimates_table(index);
-  if (estimates.empty())
+  const RefinementFacts f = refinement_facts(index);
+  if (f.problems.empty() && f.round_off == 0)
     return {};
-  return "## Error estimates and refinement\n\n"
-         "Beside each row of Table 2′ (and each variant row), from its values on C, M, F (h "
-         "halving): the observed order p = log2(|f_C − f_M| / |f_M − f_F|), the Richardson limit "
-         "f_F + (f_F − f_M)/(2^p − 1) with its error against the exact value, and Roache's grid "
-         "convergence index GCI = 1.25 |(f_F − f_M)/f_F| / (2^p − 1) of the F value. There is "
-         "no estimate when the sequence is oscillatory, its differences do not shrink, or they "
-         "are at round-off.\n\n" +
-         estimates + refinement_table(index);
+  int rows = 0, asymptotic = 0, bounded = 0, with_exact = 0;
+  for (const auto& s : f.problems) {
+    rows += s.rows;
+    asymptotic += s.asymptotic;
+    bounded += s.bounded;
+    with_exact += s.with_exact;
+  }
+  std::vector<VfRow> shown;
+  std::copy_if(f.vf_rows.begin(), f.vf_rows.end(), std::back_inserter(shown),
+               [](const VfRow& v) { return v.claim != RefinementClaim::not_applicable; });
+  const auto n = [](int v) { return std::to_string(v); };
+  Fields d{{"round_off", n(f.round_off)},
+           {"rows", n(rows)},
+           {"asymptotic", n(asymptotic)},
+           {"bounded", n(bounded)},
+           {"with_exact", n(with_exact)},
+           {"bounded_share", percent(bounded, with_exact)},
+           // Roache's factor 1.25 is meant to cover the exact value about 95 % of the time.
+           {"band_understates", with_exact > 0 && bounded < 0.95 * with_exact},
+           {"problems", template_list(f.problems, summary_data)},
+           {"has_vf", !f.vf_rows.empty() || f.singular_vf > 0},
+           {"n_vf", n(static_cast<int>(f.vf_rows.size()))},
+           {"applies", n(f.claim.applies)},
+           {"holds", n(f.claim.holds)},
+           {"judged", n(f.claim.holds + f.claim.fails)},
+           {"vf_not_converged", n(f.claim.vf_not_converged)},
+           {"has_vf_not_converged", f.claim.vf_not_converged > 0},
+           {"vf_rows", template_list(shown, vf_data)},
+           {"has_shown", !shown.empty()}};
+  if (f.mpc.rows > 0)
+    d["mpc"] = Fields{{"rows", n(f.mpc.rows)},
+                      {"improved", n(f.mpc.improved)},
+                      {"not_converged", n(f.mpc.not_converged)},
+                      {"median_f", fmt::format("{:.3g}", f.mpc.median_f)},
+                      {"median_vf", fmt::format("{:.3g}", f.mpc.median_vf)},
+                      {"mostly", f.mpc.improved * 2 > f.mpc.rows}};
+  if (f.singular_vf > 0)
+    d["singular"] = Fields{{"n", n(f.singular_vf)}, {"diverges", n(f.singular_vf_diverges)}};
+  return render_template(templates::refinement_section, d);
 }
 
 }  // namespace cs::reports

@@ -1,43 +1,88 @@
 #pragma once
-// "Error estimates and refinement": beside each Table 2′ row (graded on F), the observed order
-// p, the Richardson limit and Roache's grid convergence index (safety factor 1.25) from the C,
-// M, F values, or why there is none (oscillatory, not shrinking, round-off); and, for the rows
-// also run on the fourth mesh VF (h/8, `bash ci/refine.sh`), the convergence verdicts over
-// C-M-F and M-F-VF side by side, the answer per row to the study's "further mesh refinement
-// would lead to converging results", and whether MPC (the study's IMC) improves with
-// refinement. Every sentence is computed from the results file.
+// "Error estimates and refinement": the Richardson/GCI estimates of every row with C, M and F
+// values (grading/richardson.hpp; rows exact to round-off left out), how often the GCI band
+// holds the exact value, and, for rows also run on the fourth mesh VF (h/8, `bash
+// ci/refine.sh`), whether the study's "further mesh refinement would lead to converging
+// results" holds. Only a VF case that converged counts. Per-row data: estimates_csv(). Words:
+// templates/refinement_section.mustache.
 
 #include <optional>
 #include <string>
+#include <vector>
 
+#include "grading/convergence.hpp"
 #include "reports/results/results_index.hpp"
 
 namespace cs::reports {
 
 /// The study's claim about a row: "It is probable that in instances not demarked by c's with
 /// satisfactory or better results, further mesh refinement would lead to converging results".
-/// It applies to a nonsingular row graded s or better on F whose C-M-F sequence is not
-/// converging; it holds when the M-F-VF sequence converges, and fails when it does not.
-enum class RefinementClaim { not_applicable, holds, fails, no_vf };
+/// It applies to a nonsingular row graded s or better on F (Eq. 46) without the study's c over
+/// C-M-F. It holds when the noise-aware trend over M-F-VF (grading::assess_convergence) is
+/// converging or settled, fails otherwise; a VF case that is missing or did not converge leaves
+/// it open, and is never counted either way.
+enum class RefinementClaim { not_applicable, holds, fails, vf_not_converged, no_vf };
 
-/// The claim's answer for one row (no_vf: it applies but the row has no VF value).
-RefinementClaim refinement_claim(const schema::RowVerdict& row);
+/// The claim for one row, given how its VF case ended.
+RefinementClaim refinement_claim(const schema::RowVerdict& row, MeshState vf);
 
 /// Whether the GCI band of the F value contains the exact value:
 /// |f_F - exact| / |f_F| * 100 <= GCI. Empty without an estimate or an exact value.
 std::optional<bool> gci_bounds_error(const schema::RowVerdict& row, double exact);
 
-/// MPC rows with errors on F and VF: how many, how many have |e_VF| < |e_F|, and the median
-/// |error| (percent) on each mesh.
-struct MpcRefinement {
-  int rows = 0;
-  int improved = 0;
-  double median_f = 0.0;
-  double median_vf = 0.0;
-};
-MpcRefinement mpc_refinement(const ResultsIndex& index);
+/// True when every error of the row on C, M and F is below schema::kErrorNoiseFloorPercent: the
+/// row is exact to round-off and has no estimate worth showing.
+bool at_round_off(const schema::RowVerdict& row);
 
-/// The section's Markdown; empty when no row has three or more meshes.
+/// The estimates of one problem's rows (round-off rows left out).
+struct EstimateSummary {
+  schema::ProblemId problem{};
+  int rows = 0;        ///< rows with C, M and F values
+  int asymptotic = 0;  ///< of them, with an estimate (differences of one sign that shrink)
+  int bounded = 0;     ///< of the asymptotic ones with an exact value, GCI band holds it
+  int with_exact = 0;
+  std::optional<double> median_gci;  ///< percent, over the asymptotic rows
+};
+
+/// What VF says of one row.
+struct VfRow {
+  const schema::RowVerdict* row = nullptr;
+  MeshState vf = MeshState::missing;
+  std::optional<grading::ConvergenceAssessment> trend_cmf, trend_mfvf;
+  RefinementClaim claim = RefinementClaim::not_applicable;
+};
+
+/// Counts of the study's claim over the rows with a VF case (see RefinementClaim).
+struct ClaimCounts {
+  int applies = 0, holds = 0, fails = 0, vf_not_converged = 0;
+};
+
+/// MPC rows with a converged VF case and errors on F and VF: how many, how many have
+/// |e_VF| < |e_F|, the median |error| (percent) on each mesh; and the MPC rows left out because
+/// their VF case did not converge.
+struct MpcRefinement {
+  int rows = 0, improved = 0, not_converged = 0;
+  double median_f = 0.0, median_vf = 0.0;
+};
+
+/// The section's facts.
+struct RefinementFacts {
+  std::vector<EstimateSummary> problems;
+  int round_off = 0;           ///< rows left out: exact to round-off on every mesh
+  std::vector<VfRow> vf_rows;  ///< every row with a VF case, in document order
+  ClaimCounts claim;
+  MpcRefinement mpc;
+  int singular_vf = 0;           ///< singular rows with a converged VF case
+  int singular_vf_diverges = 0;  ///< of them, strict divergence over M-F-VF
+};
+RefinementFacts refinement_facts(const ResultsIndex& index);
+
+/// estimates.csv: one line per row with C, M and F values (round-off rows included, marked):
+/// values, F error, order, Richardson limit and its error, GCI, whether its band holds the exact
+/// value, and the VF value, status, trend and claim; empty when no row has C, M and F values.
+std::string estimates_csv(const ResultsIndex& index);
+
+/// The section's Markdown; empty when no row has C, M and F values.
 std::string refinement_section(const ResultsIndex& index);
 
 }  // namespace cs::reports

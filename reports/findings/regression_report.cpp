@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include "reports/render/template_text.hpp"
 #include "reports/results/results_index.hpp"
 #include "reports/tables/grade_tables.hpp"
 #include "reports/tables/markdown_table.hpp"
@@ -15,6 +16,8 @@ namespace {
 
 /// Drifts smaller than this (relative) are reported as "identical": round-off of the writer.
 constexpr double kIdenticalRelative = 1e-12;
+
+using Fields = kainjow::mustache::object;
 
 std::string flag(const std::optional<bool>& v, const char* yes) {
   if (!v)
@@ -156,10 +159,6 @@ Regression compare_results(const schema::ResultsDocument& baseline,
 }
 
 std::string regression_markdown(const Regression& r) {
-  std::string out = fmt::format("# Regression report\n\nBaseline: `{}`  \nCurrent: `{}`\n\n",
-                                r.old_source, r.new_source);
-  const auto worse_rows = std::count_if(r.row_changes.begin(), r.row_changes.end(),
-                                        [](const RowVerdictChange& c) { return c.worse(); });
   std::vector<const QuantityDrift*> drifted;
   for (const auto& q : r.quantities) {
     if (drift_magnitude(q) > kIdenticalRelative)
@@ -168,70 +167,70 @@ std::string regression_markdown(const Regression& r) {
   std::sort(drifted.begin(), drifted.end(), [](const QuantityDrift* a, const QuantityDrift* b) {
     return drift_magnitude(*a) > drift_magnitude(*b);
   });
-  out += fmt::format(
-      "## Summary\n\n- {} case quantities in both files: {} drifted, {} identical (|drift| ≤ "
-      "{:g}).\n- Case grades: {} worse, {} better. Status changes: {}.\n- Row verdicts (Table 2 "
-      "grade, converging, diverging): {} changed, {} of them for the worse.\n- Cases only in the "
-      "current file: {}; only in the baseline: {}.\n",
-      r.quantities.size(), drifted.size(), r.quantities.size() - drifted.size(), kIdenticalRelative,
-      r.grades_worse, r.grades_better, r.status_changes, r.row_changes.size(), worse_rows,
-      r.only_in_new.size(), r.only_in_old.size());
-  if (!drifted.empty()) {
-    out += fmt::format("- Largest drift: `{}` {} ({}).\n", drifted.front()->case_id,
-                       name(drifted.front()->quantity), drift_text(*drifted.front()));
-  }
-  out += "\n";
-
-  MarkdownTable grades({"Case", "Quantity", "Grade", "Baseline", "Current", "Drift"});
-  for (const auto& q : r.quantities) {
-    if (q.old_grade == q.new_grade && q.old_status == q.new_status)
-      continue;
-    std::string change = fmt::format("{} → {}", name(q.old_grade), name(q.new_grade));
-    if (q.grade_worse())
-      change = "**worse** " + change;
-    if (q.grade_better())
-      change = "better " + change;
-    if (q.old_status != q.new_status)
-      change += fmt::format(" (status {} → {})", name(q.old_status), name(q.new_status));
-    grades.add_row({"`" + q.case_id + "`", name(q.quantity), change, format_value(q.old_value),
-                    format_value(q.new_value), drift_text(q)});
-  }
-  out += "## Grade and status changes per case\n\n";
-  out += grades.n_rows() > 0 ? grades.render() + "\n" : "None.\n\n";
-
-  MarkdownTable rows({"Row", "Grade", "Converging", "Diverging (Eq. 47)"});
-  for (const auto& c : r.row_changes) {
-    rows.add_row(
-        {(c.worse() ? "**worse** `" : "`") + c.row_id + "`",
-         fmt::format("{} → {}", grade_text(c.old_grade), grade_text(c.new_grade)),
-         fmt::format("{} → {}", flag(c.old_converging, "c"), flag(c.new_converging, "c")),
-         fmt::format("{} → {}", flag(c.old_diverging, "yes"), flag(c.new_diverging, "yes"))});
-  }
-  out += "## Row verdict changes (Table 2 grade on the finest mesh, converging, diverging)\n\n";
-  out += rows.n_rows() > 0 ? rows.render() + "\n" : "None.\n\n";
-
-  MarkdownTable drift({"Case", "Quantity", "Baseline", "Current", "Drift (relative)", "Grade"});
-  for (const auto* q : drifted) {
-    drift.add_row({"`" + q->case_id + "`", name(q->quantity), format_value(q->old_value),
-                   format_value(q->new_value), drift_text(*q),
-                   q->old_grade == q->new_grade
-                       ? name(q->new_grade)
-                       : fmt::format("{} → {}", name(q->old_grade), name(q->new_grade))});
-  }
-  out += "## Value drift, largest first\n\n";
-  out += drift.n_rows() > 0 ? drift.render() + "\n" : "None: every common value is identical.\n\n";
-
-  auto list = [](const std::vector<std::string>& ids) {
-    std::string text;
-    for (const auto& id : ids)
-      text += fmt::format("- `{}`\n", id);
-    return text.empty() ? std::string("None.\n") : text;
+  const auto grade_change = [](const QuantityDrift& q) {
+    return q.old_grade == q.new_grade
+               ? name(q.new_grade)
+               : fmt::format("{} → {}", name(q.old_grade), name(q.new_grade));
   };
-  out += "## Cases only in the current file\n\n" + list(r.only_in_new) + "\n";
-  out += "## Cases only in the baseline\n\n" + list(r.only_in_old) + "\n";
-  if (!r.quantities_only_in_one.empty())
-    out += "## Quantities only in one file\n\n" + list(r.quantities_only_in_one) + "\n";
-  return out;
+  const auto drift_data = [&](const QuantityDrift* q) -> TemplateData {
+    return Fields{{"case", q->case_id},
+                  {"quantity", name(q->quantity)},
+                  {"old", format_value(q->old_value)},
+                  {"new", format_value(q->new_value)},
+                  {"drift", drift_text(*q)},
+                  {"grade", grade_change(*q)},
+                  {"worse", q->grade_worse()},
+                  {"better", q->grade_better()},
+                  {"status", q->old_status != q->new_status},
+                  {"old_status", name(q->old_status)},
+                  {"new_status", name(q->new_status)}};
+  };
+  std::vector<const QuantityDrift*> changed;
+  for (const auto& q : r.quantities) {
+    if (q.old_grade != q.new_grade || q.old_status != q.new_status)
+      changed.push_back(&q);
+  }
+  const auto ids = [](const std::vector<std::string>& list) {
+    return template_list(list, [](const std::string& id) { return TemplateData("id", id); });
+  };
+  const auto n = [](std::size_t v) { return std::to_string(v); };
+  Fields d{{"old_source", r.old_source},
+           {"new_source", r.new_source},
+           {"n_common", n(r.quantities.size())},
+           {"n_drifted", n(drifted.size())},
+           {"n_identical", n(r.quantities.size() - drifted.size())},
+           {"identical", fmt::format("{:g}", kIdenticalRelative)},
+           {"grades_worse", n(r.grades_worse)},
+           {"grades_better", n(r.grades_better)},
+           {"status_changes", n(r.status_changes)},
+           {"row_changes", n(r.row_changes.size())},
+           {"rows_worse", n(std::count_if(r.row_changes.begin(), r.row_changes.end(),
+                                          [](const RowVerdictChange& c) { return c.worse(); }))},
+           {"n_only_in_new", n(r.only_in_new.size())},
+           {"n_only_in_old", n(r.only_in_old.size())},
+           {"has_changed", !changed.empty()},
+           {"changed", template_list(changed, drift_data)},
+           {"has_rows", !r.row_changes.empty()},
+           {"has_drifted", !drifted.empty()},
+           {"drifted", template_list(drifted, drift_data)},
+           {"only_in_new", ids(r.only_in_new)},
+           {"has_only_in_new", !r.only_in_new.empty()},
+           {"only_in_old", ids(r.only_in_old)},
+           {"has_only_in_old", !r.only_in_old.empty()},
+           {"only_in_one", ids(r.quantities_only_in_one)},
+           {"has_only_in_one", !r.quantities_only_in_one.empty()}};
+  if (!drifted.empty())
+    d["largest"] = drift_data(drifted.front());
+  d["rows"] = template_list(r.row_changes, [](const RowVerdictChange& c) -> TemplateData {
+    const auto change = [](const std::string& a, const std::string& b) { return a + " → " + b; };
+    return Fields{
+        {"row", c.row_id},
+        {"worse", c.worse()},
+        {"grade", change(grade_text(c.old_grade), grade_text(c.new_grade))},
+        {"converging", change(flag(c.old_converging, "c"), flag(c.new_converging, "c"))},
+        {"diverging", change(flag(c.old_diverging, "yes"), flag(c.new_diverging, "yes"))}};
+  });
+  return render_template(templates::regression_report, d);
 }
 
 }  // namespace cs::reports

@@ -5,13 +5,14 @@
 #include <functional>
 #include <limits>
 #include <map>
-#include <set>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "grading/accuracy.hpp"
 #include "reports/figures/sweep_figure.hpp"
 #include "reports/findings/sweep_series.hpp"
+#include "reports/render/template_text.hpp"
 #include "reports/tables/markdown_table.hpp"
 
 namespace cs::reports {
@@ -24,131 +25,129 @@ using schema::Quantity;
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
 std::string values_text(const std::vector<double>& values) {
-  if (values.empty())
-    return "none";
-  std::string out;
+  std::vector<std::string> parts;
   for (double v : values)
-    out += (out.empty() ? "" : ", ") + format_swept_value(v);
-  return out;
+    parts.push_back(format_swept_value(v));
+  return parts.empty() ? "none" : fmt::format("{}", fmt::join(parts, ", "));
 }
 
 /// "1e-3 to 1e4" when `chosen` is a contiguous run of `all`, else the list.
 std::string window_text(const std::vector<double>& chosen, const std::vector<double>& all) {
-  if (chosen.size() < 2)
-    return values_text(chosen);
-  const auto first = std::find(all.begin(), all.end(), chosen.front());
-  const bool contiguous = first != all.end() && all.end() - first >= std::ssize(chosen) &&
+  const auto first = chosen.empty() ? all.end() : std::find(all.begin(), all.end(), chosen.front());
+  const bool contiguous = chosen.size() >= 2 && all.end() - first >= std::ssize(chosen) &&
                           std::equal(chosen.begin(), chosen.end(), first);
   return contiguous ? fmt::format("{} to {}", format_swept_value(chosen.front()),
                                   format_swept_value(chosen.back()))
                     : values_text(chosen);
 }
 
-std::string series_label(const SweepSeries& s, Quantity q) {
-  return fmt::format("{} {} {} {} {}", schema::to_string(s.base.problem), schema::to_string(q),
-                     schema::to_string(s.base.mesh), schema::to_string(s.base.element),
-                     s.option_label());
-}
-
-const schema::QuantityResult* quantity_at(const SweepPoint& p, Quantity q) {
-  for (const auto& r : p.result->quantities) {
-    if (r.quantity == q)
-      return &r;
-  }
-  return nullptr;
-}
-
-/// Every (series, quantity) pair of a key, optionally filtered by the series.
+/// One quantity of one series.
 struct Curve {
   const SweepSeries* series;
   Quantity quantity;
+  std::string label() const {
+    const auto& b = series->base;
+    return fmt::format("{} {} {} {} {}", schema::to_string(b.problem), schema::to_string(quantity),
+                       schema::to_string(b.mesh), schema::to_string(b.element),
+                       series->option_label());
+  }
 };
 
-std::vector<Curve> curves(const std::vector<SweepSeries>& series,
-                          const std::function<bool(const SweepSeries&)>& keep) {
+using Keep = std::function<bool(const SweepSeries&)>;
+
+/// Every (series, quantity) pair the kept series have; the contact half-width (it moves by
+/// whole nodes) is left out where `stresses_only`.
+std::vector<Curve> curves(const std::vector<SweepSeries>& series, const Keep& keep,
+                          bool stresses_only = false) {
   std::vector<Curve> out;
   for (const auto& s : series) {
     if (s.points.empty() || (keep && !keep(s)))
       continue;
-    for (const auto& q : s.points.front().result->quantities)
-      out.push_back({&s, q.quantity});
+    for (const auto& q : s.points.front().result->quantities) {
+      if (!stresses_only || q.quantity != Quantity::contact_half_width)
+        out.push_back({&s, q.quantity});
+    }
   }
   return out;
+}
+
+const SweepPoint* point_at(const SweepSeries& s, double v) {
+  const auto it = std::find_if(s.points.begin(), s.points.end(),
+                               [v](const SweepPoint& p) { return p.value == v; });
+  return it == s.points.end() ? nullptr : &*it;
+}
+
+bool graded_at_most(const SweepPoint* p, Quantity q, Grade worst) {
+  const auto e = p ? SweepSeries::error(*p, q) : std::nullopt;
+  return e && SweepSeries::converged(*p) && !schema::is_worse(grading::grade_of_error(*e), worst);
+}
+
+/// The swept values at which every curve is graded `worst` or better (converged).
+std::vector<double> values_where_all(const std::vector<Curve>& cs, const std::vector<double>& all,
+                                     Grade worst) {
+  std::vector<double> out;
+  for (double v : all) {
+    if (!cs.empty() && std::all_of(cs.begin(), cs.end(), [&](const Curve& c) {
+          return graded_at_most(point_at(*c.series, v), c.quantity, worst);
+        }))
+      out.push_back(v);
+  }
+  return out;
+}
+
+int count_not_converged(const std::vector<SweepSeries>& series, double v, const Keep& keep) {
+  int n = 0;
+  for (const auto& s : series) {
+    const SweepPoint* p = keep(s) ? point_at(s, v) : nullptr;
+    n += p && !SweepSeries::converged(*p) ? 1 : 0;
+  }
+  return n;
+}
+
+/// The most iterations of the cases of one algorithm at a value, or -1.
+int most_iterations(const std::vector<SweepSeries>& series, double v, Algorithm a) {
+  int most = -1;
+  for (const auto& s : series) {
+    if (const SweepPoint* p = s.base.algorithm == a ? point_at(s, v) : nullptr)
+      most = std::max(most, p->result->iterations);
+  }
+  return most;
 }
 
 bool penalty_based(const SweepSeries& s) {
   return schema::traits(s.base.algorithm).penalty_based;
 }
 
-/// The swept values at which every curve satisfies `ok` (a value a curve lacks fails it).
-std::vector<double> values_where_all(const std::vector<Curve>& cs, const std::vector<double>& all,
-                                     const std::function<bool(const SweepPoint&, Quantity)>& ok) {
-  std::vector<double> out;
-  for (double v : all) {
-    bool every = !cs.empty();
-    for (const auto& c : cs) {
-      const auto it = std::find_if(c.series->points.begin(), c.series->points.end(),
-                                   [v](const SweepPoint& p) { return p.value == v; });
-      every = every && it != c.series->points.end() && ok(*it, c.quantity);
-    }
-    if (every)
-      out.push_back(v);
-  }
-  return out;
+/// The rows of one key's table: per curve on the finest mesh swept, per value the signed error,
+/// grade and iterations, or the status of a case without an error.
+TemplateData table_rows(const std::vector<SweepSeries>& series, const std::vector<double>& values) {
+  return template_list(
+      curves(series, [&](const SweepSeries& s) { return on_finest_mesh(s, series); }),
+      [&](const Curve& c) {
+        const auto& b = c.series->base;
+        TemplateData d;
+        d.set("problem", std::string(schema::to_string(b.problem)));
+        d.set("quantity", std::string(schema::to_string(c.quantity)));
+        d.set("mesh", std::string(schema::to_string(b.mesh)));
+        d.set("element", std::string(schema::to_string(b.element)));
+        d.set("option", c.series->option_label());
+        d.set("cells", template_list(values, [&](double v) {
+                const SweepPoint* p = point_at(*c.series, v);
+                const auto e = p ? SweepSeries::error(*p, c.quantity) : std::nullopt;
+                if (!e)
+                  return TemplateData(p ? std::string(to_string(p->result->status)) : kMissing);
+                return TemplateData(fmt::format(
+                    "{} {}, {} it{}", format_error_resolved(*e),
+                    schema::to_string(grading::grade_of_error(*e)), p->result->iterations,
+                    SweepSeries::converged(*p) ? "" : " (not converged)"));
+              }));
+        return d;
+      });
 }
 
-bool graded_at_most(const SweepPoint& p, Quantity q, Grade worst) {
-  const auto* r = quantity_at(p, q);
-  return SweepSeries::converged(p) && r != nullptr && std::isfinite(r->error_percent) &&
-         static_cast<int>(r->grade) <= static_cast<int>(worst);
-}
-
-/// The table of a key: one row per curve, one column per value: error, grade, iterations.
-std::string key_table(const std::vector<SweepSeries>& series, const std::vector<double>& values) {
-  std::vector<std::string> header{"Problem", "Quantity", "Mesh", "Element", "Option"};
-  for (double v : values)
-    header.push_back(format_swept_value(v));
-  MarkdownTable table(header);
-  const auto finest = [&](const SweepSeries& s) { return on_finest_mesh(s, series); };
-  for (const auto& c : curves(series, finest)) {
-    const SweepSeries& s = *c.series;
-    std::vector<std::string> row{std::string(schema::to_string(s.base.problem)),
-                                 std::string(schema::to_string(c.quantity)),
-                                 std::string(schema::to_string(s.base.mesh)),
-                                 std::string(schema::to_string(s.base.element)), s.option_label()};
-    for (double v : values) {
-      const auto it = std::find_if(s.points.begin(), s.points.end(),
-                                   [v](const SweepPoint& p) { return p.value == v; });
-      const auto* q = it == s.points.end() ? nullptr : quantity_at(*it, c.quantity);
-      if (q == nullptr || !std::isfinite(q->error_percent)) {
-        row.push_back(it == s.points.end() ? kMissing : std::string(to_string(it->result->status)));
-        continue;
-      }
-      row.push_back(fmt::format("{} {}, {} it{}", format_percent(q->error_percent),
-                                schema::to_string(q->grade), it->result->iterations,
-                                SweepSeries::converged(*it) ? "" : " (not converged)"));
-    }
-    table.add_row(std::move(row));
-  }
-  return table.render();
-}
-
-std::string figure_link(const FigureSet& figures, const std::string& key) {
-  for (const auto& f : figures.figures) {
-    if (f.file != sweep_figure_file(key))
-      continue;
-    if (f.produced)
-      return fmt::format("![{}]({})\n\n*{}.*\n\n", f.caption_md, f.file, f.caption_md);
-    return fmt::format("(The figure of {} could not be drawn: {}.)\n\n", key, f.error);
-  }
-  if (!figures.unavailable.empty())
-    return fmt::format("(No figure: {}.)\n\n", figures.unavailable);
-  return "";
-}
-
-/// The largest spread (max - min, percentage points) of the error over the values, per curve,
-/// and the curve that has it.
-std::pair<double, const Curve*> largest_spread(const std::vector<Curve>& cs) {
+/// The largest spread (max - min, percentage points) of a curve's converged errors.
+TemplateData spread(const std::vector<Curve>& cs, const std::string& key,
+                    const std::vector<double>& values) {
   double worst = -1;
   const Curve* at = nullptr;
   for (const auto& c : cs) {
@@ -164,147 +163,77 @@ std::pair<double, const Curve*> largest_spread(const std::vector<Curve>& cs) {
       at = &c;
     }
   }
-  return {worst, at};
+  TemplateData d;
+  d.set("key", key);
+  d.set("has_spread", at != nullptr);
+  d.set("values", window_text(values, values));
+  d.set("spread", fmt::format("{:.3g}", worst));
+  d.set("curve", at ? at->label() : std::string());
+  d.set("nothing", worst <= kSamePoints);
+  d.set("same_points", fmt::format("{:g}", kSamePoints));
+  return d;
 }
 
-std::string spread_answer(const std::vector<Curve>& cs, const std::string& key,
-                          const std::vector<double>& values) {
-  const auto [spread, at] = largest_spread(cs);
-  if (at == nullptr)
-    return fmt::format("- No converged case has an error to compare over {}.\n", key);
-  return fmt::format(
-      "- Over {} = {}, the largest change of an error is {:.3g} percentage points ({}); {}.\n", key,
-      window_text(values, values), spread, series_label(*at->series, at->quantity),
-      spread <= kSamePoints ? "it changes nothing"
-                            : fmt::format("below {} points it changes nothing", kSamePoints));
-}
-
-int count_not_converged(const std::vector<SweepSeries>& series, double v,
-                        const std::function<bool(const SweepSeries&)>& keep) {
-  int n = 0;
-  for (const auto& s : series) {
-    if (!keep(s))
-      continue;
-    for (const auto& p : s.points)
-      n += p.value == v && !SweepSeries::converged(p) ? 1 : 0;
-  }
-  return n;
-}
-
-/// The most iterations of the cases of one algorithm at a value, or -1.
-int most_iterations(const std::vector<SweepSeries>& series, double v, Algorithm a) {
-  int most = -1;
-  for (const auto& s : series) {
-    if (s.base.algorithm != a)
-      continue;
-    for (const auto& p : s.points) {
-      if (p.value == v)
-        most = std::max(most, p.result->iterations);
-    }
-  }
-  return most;
-}
-
-std::string iterations_table(const std::vector<SweepSeries>& series,
-                             const std::vector<double>& values) {
-  std::vector<std::string> header{"Algorithm"};
-  for (double v : values)
-    header.push_back(format_swept_value(v));
-  MarkdownTable table(header);
-  for (const auto a : schema::values<Algorithm>()) {
-    if (most_iterations(series, values.front(), a) < 0)
-      continue;
-    std::vector<std::string> row{std::string(schema::to_string(a))};
-    for (double v : values) {
-      const int it = most_iterations(series, v, a);
-      const int nc = count_not_converged(
-          series, v, [a](const SweepSeries& s) { return s.base.algorithm == a; });
-      row.push_back(it < 0 ? kMissing
-                           : fmt::format("{}{}", it, nc > 0 ? fmt::format(" ({} n.c.)", nc) : ""));
-    }
-    table.add_row(std::move(row));
-  }
-  return "Most iterations of any swept case per algorithm (n.c.: cases not converged):\n\n" +
-         table.render() + "\n";
-}
-
-/// AL against PM: the largest |e_AL - e_PM| at each value over the pairs of series that differ
-/// only in the algorithm.
-std::string al_pm_answer(const std::vector<SweepSeries>& series,
-                         const std::vector<double>& values) {
+/// AL against PM: the largest |e_AL - e_PM| per value over the series pairs that differ only in
+/// the algorithm, and whether their iteration counts differ.
+TemplateData al_pm(const std::vector<SweepSeries>& series, const std::vector<double>& values) {
   std::map<double, double> gap;
   std::map<double, bool> iterations_differ;
-  bool any_pair = false;
   for (const auto& al : series) {
-    if (al.base.algorithm != Algorithm::AL)
-      continue;
     schema::CaseSpec pm_spec = al.base;
     pm_spec.algorithm = Algorithm::PM;
     const auto pm = std::find_if(series.begin(), series.end(), [&](const SweepSeries& s) {
       return schema::case_id(s.base) == schema::case_id(pm_spec);
     });
-    if (pm == series.end())
+    if (al.base.algorithm != Algorithm::AL || pm == series.end())
       continue;
-    any_pair = true;
     for (const auto& a : al.points) {
-      for (const auto& p : pm->points) {
-        if (p.value != a.value)
-          continue;
-        for (const auto& q : a.result->quantities) {
-          const auto ea = SweepSeries::error(a, q.quantity);
-          const auto ep = SweepSeries::error(p, q.quantity);
-          if (ea && ep)
-            gap[a.value] = std::max(gap[a.value], std::abs(*ea - *ep));
-        }
-        iterations_differ[a.value] =
-            iterations_differ[a.value] || a.result->iterations != p.result->iterations;
+      const SweepPoint* p = point_at(*pm, a.value);
+      for (const auto& q : p ? a.result->quantities : std::vector<schema::QuantityResult>{}) {
+        const auto ea = SweepSeries::error(a, q.quantity), ep = SweepSeries::error(*p, q.quantity);
+        if (ea && ep)
+          gap[a.value] = std::max(gap[a.value], std::abs(*ea - *ep));
       }
+      iterations_differ[a.value] |= p && a.result->iterations != p->result->iterations;
     }
   }
-  if (!any_pair)
-    return "";
-  std::vector<double> apart, same;
+  std::vector<double> apart, same, it_apart;
   double widest = 0, widest_at = 0;
-  for (double v : values) {
-    if (!gap.contains(v))
-      continue;
-    (gap[v] > kSamePoints ? apart : same).push_back(v);
-    if (gap[v] > widest) {
-      widest = gap[v];
-      widest_at = v;
-    }
+  for (const auto& [v, g] : gap) {
+    (g > kSamePoints ? apart : same).push_back(v);
+    if (g > widest)
+      std::tie(widest, widest_at) = std::make_pair(g, v);
   }
-  if (apart.empty())
-    return fmt::format(
-        "- AL and PM do not separate: at every FKN swept their errors agree to {} percentage "
-        "points (the penetration never exceeds FTOLN, so AL never augments).\n",
-        kSamePoints);
-  std::vector<double> it_apart;
   for (double v : values) {
     if (iterations_differ[v])
       it_apart.push_back(v);
   }
-  return fmt::format(
-      "- AL and PM separate at FKN = {} (by up to {:.3g} percentage points, at FKN = {}), where "
-      "the penetration exceeds FTOLN and AL augments (their iteration counts differ at FKN = "
-      "{}); they agree to {} points at FKN = {}.\n",
-      values_text(apart), widest, format_swept_value(widest_at), values_text(it_apart), kSamePoints,
-      values_text(same));
+  TemplateData d;
+  d.set("same_points", fmt::format("{:g}", kSamePoints));
+  d.set("separate", !apart.empty());
+  d.set("apart", values_text(apart));
+  d.set("widest", fmt::format("{:.3g}", widest));
+  d.set("widest_at", format_swept_value(widest_at));
+  d.set("it_apart", values_text(it_apart));
+  d.set("same", values_text(same));
+  return gap.empty() ? TemplateData(false) : d;
 }
 
-/// Can any FKN reproduce the study's AL error on S(1/3) (sigma_c, Q4, ss, mesh F)?
-std::string study_al_answer(const std::vector<SweepSeries>& series, const StudyReference& study) {
+/// Can any FKN reproduce the study's AL error on S(1/3) (sigma_c, Q4, ss, mesh F)? A crossing is
+/// interpolated in log FKN: the errors change with the order of magnitude of FKN.
+TemplateData study_al(const std::vector<SweepSeries>& series, const StudyReference& study) {
   const auto match =
       study.find_value(schema::ProblemId::S_1_3, Quantity::sigma_c, schema::Element::Q4,
                        Algorithm::AL, schema::ContactKind::ss, schema::MeshLevel::F);
   if (match.value == nullptr || !match.value->exact)
-    return "";
+    return TemplateData(false);
   const double target = grading::error_percent(match.value->value, *match.value->exact);
-  std::string out;
+  TemplateData list{TemplateData::type::list};
   for (const auto& s : series) {
-    if (s.base.problem != schema::ProblemId::S_1_3 || s.base.algorithm != Algorithm::AL ||
-        s.base.element != schema::Element::Q4 || s.base.contact != schema::ContactKind::ss ||
-        s.base.mesh != schema::MeshLevel::F || !s.base.overrides.empty())
+    const auto& b = s.base;
+    if (b.problem != schema::ProblemId::S_1_3 || b.algorithm != Algorithm::AL ||
+        b.element != schema::Element::Q4 || b.contact != schema::ContactKind::ss ||
+        b.mesh != schema::MeshLevel::F || !b.overrides.empty())
       continue;
     std::vector<std::string> crossings;
     double lo = kInf, hi = -kInf;
@@ -315,60 +244,32 @@ std::string study_al_answer(const std::vector<SweepSeries>& series, const StudyR
         continue;
       lo = std::min(lo, *e);
       hi = std::max(hi, *e);
-      if (prev != nullptr) {
-        const double ep = *SweepSeries::error(*prev, Quantity::sigma_c);
-        if ((ep - target) * (*e - target) <= 0 && ep != *e) {
-          // Interpolated in log FKN: the errors change with the order of magnitude of FKN.
-          const double t = (target - ep) / (*e - ep);
-          const double x =
-              std::exp(std::log(prev->value) + t * (std::log(p.value) - std::log(prev->value)));
-          crossings.push_back(fmt::format("{:.2g}", x));
-        }
+      const double ep = prev ? *SweepSeries::error(*prev, Quantity::sigma_c) : *e;
+      if (prev && (ep - target) * (*e - target) <= 0 && ep != *e) {
+        const double t = (target - ep) / (*e - ep);
+        crossings.push_back(fmt::format(
+            "{:.2g}", std::exp(std::log(prev->value) + t * std::log(p.value / prev->value))));
       }
       prev = &p;
     }
     if (hi < lo)
       continue;
-    out += fmt::format(
-        "- The study's AL error on S(1/3) (σ̄<sub>c</sub>, 4Q, ss, mesh F: {} against {}: {}) "
-        "{}: our AL ss Q4 error ranges from {} to {} over the FKN swept.\n",
-        match.value->printed, match.value->exact_printed, format_percent(target),
-        crossings.empty() ? "is reproduced by no swept FKN"
-                          : fmt::format("is reproduced near FKN = {} (interpolated in log FKN)",
-                                        fmt::join(crossings, ", ")),
-        format_percent(lo), format_percent(hi));
+    TemplateData d;
+    d.set("printed", match.value->printed);
+    d.set("exact", match.value->exact_printed);
+    d.set("target", format_percent(target));
+    d.set("reproduced", !crossings.empty());
+    d.set("crossings", fmt::format("{}", fmt::join(crossings, ", ")));
+    d.set("lo", format_percent(lo));
+    d.set("hi", format_percent(hi));
+    list.push_back(d);
   }
-  return out;
+  return list;
 }
 
-std::string fkn_answers(const ResultsIndex& index, const std::vector<SweepSeries>& series,
-                        const std::vector<double>& values, const StudyReference& study) {
-  const auto keep = [&](const SweepSeries& s) {
-    return penalty_based(s) && on_finest_mesh(s, series);
-  };
-  // The stress rows: the contact half-width is graded apart (it moves by whole nodes).
-  auto cs = curves(series, keep);
-  std::erase_if(cs, [](const Curve& c) { return c.quantity == Quantity::contact_half_width; });
-  if (cs.empty())
-    return "- No AL or PM case was swept.\n";
-  std::string out;
-  const auto e = values_where_all(
-      cs, values, [](const SweepPoint& p, Quantity q) { return graded_at_most(p, q, Grade::e); });
-  const auto eg = values_where_all(
-      cs, values, [](const SweepPoint& p, Quantity q) { return graded_at_most(p, q, Grade::g); });
-  out += fmt::format(
-      "- Every swept AL/PM stress row ({} of them, on the finest mesh swept; the contact "
-      "half-width is graded apart) is e at FKN = {}, and e or g at FKN = {}.\n",
-      cs.size(), window_text(e, values), window_text(eg, values));
-  for (const auto& c : cs) {
-    const auto own = values_where_all({c}, values, [](const SweepPoint& p, Quantity q) {
-      return graded_at_most(p, q, Grade::e);
-    });
-    if (own.empty()) {
-      out += fmt::format("  - {} is e at no swept FKN.\n", series_label(*c.series, c.quantity));
-    }
-  }
-  // c: from the rows of the swept option sets (those run on C, M and F).
+/// Whether every swept AL/PM row run on C, M and F converges (the study's c), per value.
+TemplateData fkn_convergence(const ResultsIndex& index, const std::vector<Curve>& cs,
+                             const std::vector<double>& values) {
   std::map<std::string, const schema::RowVerdict*> rows;
   for (const auto& r : index.results().rows)
     rows[r.id] = &r;
@@ -390,90 +291,112 @@ std::string fkn_answers(const ResultsIndex& index, const std::vector<SweepSeries
     if (some && every)
       converging.push_back(v);
   }
-  out += any_row ? fmt::format(
-                       "- Of the rows swept on C, M and F, every one converges (c) at "
-                       "FKN = {}.\n",
-                       window_text(converging, values))
-                 : "- Convergence (c) needs the C, M and F meshes: no swept row has all three.\n";
-  // Iterations, the cases that do not converge, and the range of a default.
+  return any_row ? TemplateData("window", window_text(converging, values)) : TemplateData(false);
+}
+
+TemplateData fkn(const ResultsIndex& index, const std::vector<SweepSeries>& series,
+                 const std::vector<double>& values, const StudyReference& study) {
+  const auto cs = curves(
+      series, [&](const SweepSeries& s) { return penalty_based(s) && on_finest_mesh(s, series); },
+      true);
+  TemplateData d;
+  d.set("any", !cs.empty());
+  if (cs.empty())
+    return d;
+  const auto e = values_where_all(cs, values, Grade::e);
+  const auto eg = values_where_all(cs, values, Grade::g);
+  d.set("n_rows", std::to_string(cs.size()));
+  d.set("e", window_text(e, values));
+  d.set("eg", window_text(eg, values));
+  std::vector<Curve> never;
+  std::copy_if(cs.begin(), cs.end(), std::back_inserter(never),
+               [&](const Curve& c) { return values_where_all({c}, values, Grade::e).empty(); });
+  d.set("never_e",
+        template_list(never, [](const Curve& c) { return TemplateData("row", c.label()); }));
+  d.set("convergence", fkn_convergence(index, cs, values));
   std::vector<std::string> not_converged;
   for (double v : values) {
     if (const int n = count_not_converged(series, v, penalty_based); n > 0)
       not_converged.push_back(fmt::format("{} at FKN = {}", n, format_swept_value(v)));
   }
-  out += fmt::format(
-      "- AL iterations (most of any swept case) go from {} at FKN = {} to {} at FKN = {}; {}.\n",
-      most_iterations(series, values.front(), Algorithm::AL), format_swept_value(values.front()),
-      most_iterations(series, values.back(), Algorithm::AL), format_swept_value(values.back()),
-      not_converged.empty()
-          ? std::string("every AL/PM case converges")
-          : fmt::format("AL/PM cases that do not converge: {}", fmt::join(not_converged, ", ")));
+  d.set("it_first", std::to_string(most_iterations(series, values.front(), Algorithm::AL)));
+  d.set("v_first", format_swept_value(values.front()));
+  d.set("it_last", std::to_string(most_iterations(series, values.back(), Algorithm::AL)));
+  d.set("v_last", format_swept_value(values.back()));
+  d.set("all_converge", not_converged.empty());
+  d.set("not_converged", fmt::format("{}", fmt::join(not_converged, ", ")));
   if (!eg.empty()) {
+    TemplateData def;
     const double lo = eg.front();
+    def.set("fkn", format_swept_value(lo));
+    def.set("al_it", std::to_string(most_iterations(series, lo, Algorithm::AL)));
     const int lmp = most_iterations(series, lo, Algorithm::LMP);
-    std::optional<double> first_nc_above;
-    for (double v : values) {
-      if (v > lo && !first_nc_above && count_not_converged(series, v, penalty_based) > 0)
-        first_nc_above = v;
-    }
-    out += fmt::format(
-        "- A default FKN: the smallest swept FKN at which every swept AL/PM row is e or g is {}; "
-        "there AL takes at most {} iterations{}{}. The default is the smallest such FKN: larger "
-        "ones buy accuracy only on rows already e or g, cost iterations and approach the "
-        "ill-conditioning{}.\n",
-        format_swept_value(lo), most_iterations(series, lo, Algorithm::AL),
-        lmp >= 0 ? fmt::format(" (LMP, which enforces contact exactly, {})", lmp) : "",
-        e.empty() ? ""
-                  : fmt::format("; every row is e from FKN = {}", format_swept_value(e.front())),
-        first_nc_above ? fmt::format(" (a case stops converging at FKN = {})",
-                                     format_swept_value(*first_nc_above))
-                       : "");
+    def.set("has_lmp", lmp >= 0);
+    def.set("lmp_it", std::to_string(lmp));
+    def.set("has_e", !e.empty());
+    def.set("e_from", e.empty() ? std::string() : format_swept_value(e.front()));
+    const auto nc = std::find_if(values.begin(), values.end(), [&](double v) {
+      return v > lo && count_not_converged(series, v, penalty_based) > 0;
+    });
+    def.set("has_nc", nc != values.end());
+    def.set("nc_at", nc != values.end() ? format_swept_value(*nc) : std::string());
+    d.set("default", def);
   }
-  out += al_pm_answer(series, values);
-  out += study_al_answer(series, study);
-  return out + "\n" + iterations_table(series, values);
+  d.set("al_pm", al_pm(series, values));
+  d.set("study_al", study_al(series, study));
+  d.set("algorithms", template_list(schema::values<Algorithm>(), [&](Algorithm a) {
+          TemplateData row("name", std::string(schema::to_string(a)));
+          row.set("present", most_iterations(series, values.front(), a) >= 0);
+          row.set("cells", template_list(values, [&](double v) {
+                    const int it = most_iterations(series, v, a);
+                    const int nc = count_not_converged(
+                        series, v, [a](const SweepSeries& s) { return s.base.algorithm == a; });
+                    return TemplateData(
+                        it < 0
+                            ? std::string(kMissing)
+                            : fmt::format("{}{}", it, nc > 0 ? fmt::format(" ({} n.c.)", nc) : ""));
+                  }));
+          return row;
+        }));
+  return d;
 }
 
-std::string pinball_answers(const std::vector<SweepSeries>& series,
-                            const std::vector<double>& values) {
-  std::string out;
-  for (const auto& c : curves(series, [&series](const SweepSeries& s) {
-         return s.base.algorithm == Algorithm::MPC && on_finest_mesh(s, series);
-       })) {
-    if (c.quantity == Quantity::contact_half_width)
-      continue;  // graded apart
+/// What the pinball does to MPC: its error at each value, and where it failed.
+TemplateData pinball(const std::vector<SweepSeries>& series) {
+  const auto mpc = curves(
+      series,
+      [&](const SweepSeries& s) {
+        return s.base.algorithm == Algorithm::MPC && on_finest_mesh(s, series);
+      },
+      true);
+  return template_list(mpc, [](const Curve& c) {
     std::vector<double> failed;
     std::vector<std::string> cells;
     for (const auto& p : c.series->points) {
       const auto e = SweepSeries::error(p, c.quantity);
-      if (!SweepSeries::converged(p) || !e)
-        failed.push_back(p.value);
-      else
+      if (SweepSeries::converged(p) && e)
         cells.push_back(fmt::format("{} at {}", format_percent(*e), format_swept_value(p.value)));
+      else
+        failed.push_back(p.value);
     }
-    out += fmt::format("- {}: {}{}.\n", series_label(*c.series, c.quantity),
-                       cells.empty() ? std::string("no converged case")
-                                     : fmt::format("{}", fmt::join(cells, ", ")),
-                       failed.empty() ? ""
-                                      : fmt::format("; not converged or failed at pinball = {}",
-                                                    values_text(failed)));
-  }
-  if (out.empty())
-    return "- No MPC case was swept: MPC is the algorithm the pinball decides (it ties every "
-           "point within it).\n" +
-           spread_answer(curves(series, nullptr), "pinball", values);
-  return "- MPC ties every point within the pinball at the start: its error at each pinball "
-         "swept (the others' contact search only):\n" +
-         out;
+    TemplateData d("row", c.label());
+    d.set("errors", cells.empty() ? std::string("no converged case")
+                                  : fmt::format("{}", fmt::join(cells, ", ")));
+    d.set("has_failed", !failed.empty());
+    d.set("failed", values_text(failed));
+    return d;
+  });
 }
 
-std::string e_ratio_answers(const std::vector<SweepSeries>& series) {
-  std::string out;
+/// From which E ratio on every stress error stays within kSettledPoints of its value at the
+/// largest ratio swept.
+TemplateData e_ratio(const std::vector<SweepSeries>& series) {
   double latest = 0;
-  for (const auto& c : curves(series, nullptr)) {
+  TemplateData rows{TemplateData::type::list};
+  for (const auto& c : curves(series, nullptr, true)) {
     const auto& pts = c.series->points;
     const auto last = SweepSeries::error(pts.back(), c.quantity);
-    if (!last || c.quantity == Quantity::contact_half_width)
+    if (!last)
       continue;
     double settled = pts.back().value;
     for (auto it = pts.rbegin(); it != pts.rend(); ++it) {
@@ -483,55 +406,71 @@ std::string e_ratio_answers(const std::vector<SweepSeries>& series) {
       settled = it->value;
     }
     latest = std::max(latest, settled);
-    out += fmt::format("  - {}: from E ratio {} on ({} at {}).\n",
-                       series_label(*c.series, c.quantity), format_swept_value(settled),
-                       format_percent(*last), format_swept_value(pts.back().value));
+    TemplateData d("row", c.label());
+    d.set("from", format_swept_value(settled));
+    d.set("last", format_percent(*last));
+    d.set("at", format_swept_value(pts.back().value));
+    rows.push_back(d);
   }
-  if (out.empty())
-    return "- No swept case has an error.\n";
-  const double smallest = swept_values(series).front();
-  return fmt::format(
-             "- The stiff-indenter model stops mattering (every stress error within {} "
-             "percentage points of its value at the largest ratio swept) from E ratio {} on{}, "
-             "for every row swept:\n",
-             kSettledPoints, format_swept_value(latest),
-             latest == smallest ? " (already at the smallest ratio swept)" : "") +
-         out;
+  TemplateData d;
+  d.set("any", !rows.is_empty_list());
+  d.set("rows", rows);
+  d.set("settled_points", fmt::format("{:g}", kSettledPoints));
+  d.set("latest", format_swept_value(latest));
+  d.set("at_smallest", latest == swept_values(series).front());
+  return d;
 }
 
 std::string key_title(const std::string& key) {
-  if (key == "fkn")
-    return "FKN, the normal penalty stiffness";
-  if (key == "ftoln")
-    return "FTOLN, the penetration tolerance";
-  if (key == "pinball")
-    return "Pinball region";
-  if (key == "E_ratio")
-    return "E ratio, indenter over indented body";
-  if (key == "p_over_E")
-    return "Load p/E";
-  return key;
+  static const std::map<std::string, std::string> titles{
+      {"fkn", "FKN, the normal penalty stiffness"},
+      {"ftoln", "FTOLN, the penetration tolerance"},
+      {"pinball", "Pinball region"},
+      {"E_ratio", "E ratio, indenter over indented body"},
+      {"p_over_E", "Load p/E"}};
+  const auto it = titles.find(key);
+  return it == titles.end() ? key : it->second;
 }
 
-std::string key_answers(const ResultsIndex& index, const std::string& key,
-                        const std::vector<SweepSeries>& series, const std::vector<double>& values,
-                        const StudyReference& study) {
-  if (key == "fkn")
-    return fkn_answers(index, series, values, study);
-  if (key == "pinball")
-    return pinball_answers(series, values);
-  if (key == "E_ratio")
-    return e_ratio_answers(series);
-  if (key == "ftoln") {
+/// The answers of one key: those its kind asks for, else the spread of the errors.
+void set_answers(TemplateData& d, const ResultsIndex& index, const std::string& key,
+                 const std::vector<SweepSeries>& series, const std::vector<double>& values,
+                 const StudyReference& study) {
+  const auto all = curves(series, nullptr);
+  if (key == "fkn") {
+    d.set("fkn", fkn(index, series, values, study));
+  } else if (key == "pinball") {
+    const TemplateData mpc = pinball(series);
+    TemplateData p("mpc", mpc);
+    p.set("has_mpc", !mpc.is_empty_list());
+    d.set("pinball", p);
+    if (mpc.is_empty_list())
+      d.set("spread", spread(all, key, values));
+  } else if (key == "E_ratio") {
+    d.set("e_ratio", e_ratio(series));
+  } else if (key == "ftoln") {
     const auto al =
         curves(series, [](const SweepSeries& s) { return s.base.algorithm == Algorithm::AL; });
-    return spread_answer(al.empty() ? curves(series, nullptr) : al, "FTOLN", values);
+    d.set("spread", spread(al.empty() ? all : al, "FTOLN", values));
+  } else {
+    d.set("spread", spread(all, key == "p_over_E" ? "p/E" : key, values));
+    d.set("load", key == "p_over_E");
   }
-  if (key == "p_over_E")
-    return spread_answer(curves(series, nullptr), "p/E", values) +
-           "- The normalized results of this small-strain model must not depend on the load: "
-           "a change above the round-off would be a defect.\n";
-  return spread_answer(curves(series, nullptr), key, values);
+}
+
+TemplateData figure_data(const FigureSet& figures, const std::string& key) {
+  for (const auto& f : figures.figures) {
+    if (f.file != sweep_figure_file(key))
+      continue;
+    TemplateData d("produced", f.produced);
+    d.set("file", f.file);
+    d.set("caption", f.caption_md);
+    d.set("error", f.error);
+    return d;
+  }
+  TemplateData d("produced", false);
+  d.set("unavailable", figures.unavailable);
+  return figures.unavailable.empty() ? TemplateData(false) : d;
 }
 
 }  // namespace
@@ -539,26 +478,28 @@ std::string key_answers(const ResultsIndex& index, const std::string& key,
 std::string sweep_section(const ResultsIndex& index, const StudyReference& study,
                           const FigureSet& figures) {
   const auto& doc = index.results();
-  std::string body;
+  TemplateData keys{TemplateData::type::list};
   for (const auto& key : swept_keys(doc)) {
     const auto series = sweep_series(doc, key);
     const auto values = swept_values(series);
     if (values.empty())
       continue;
-    body += fmt::format("### {} ({})\n\n{} values swept: {}; {} option sets.\n\n", key_title(key),
-                        key, values.size(), values_text(values), series.size());
-    body += key_answers(index, key, series, values, study) + "\n";
-    body += figure_link(figures, key);
-    body +=
-        "Error (%), grade and iterations per swept value:\n\n" + key_table(series, values) + "\n";
+    TemplateData d;
+    d.set("title", key_title(key));
+    d.set("key", key);
+    d.set("n_values", std::to_string(values.size()));
+    d.set("values", values_text(values));
+    d.set("n_series", std::to_string(series.size()));
+    set_answers(d, index, key, series, values, study);
+    d.set("figure", figure_data(figures, key));
+    d.set("header",
+          template_list(values, [](double v) { return TemplateData(format_swept_value(v)); }));
+    d.set("rows", table_rows(series, values));
+    keys.push_back(d);
   }
-  if (body.empty())
-    return "";
-  return "## Parameter sweeps\n\nThe study used ANSYS's defaults for FKN, FTOLN and the pinball "
-         "and offered \"no commentary on the possible improvements these other options might "
-         "offer\". Here each swept parameter's effect on the error, computed from the swept "
-         "cases of this results file (`run --sweep`).\n\n" +
-         body;
+  if (keys.is_empty_list())
+    return {};
+  return render_template(templates::sweep_section, TemplateData("keys", keys));
 }
 
 }  // namespace cs::reports

@@ -1,7 +1,7 @@
-// The domain-extent section: the error at the study's extent split into the block's part and
-// the discretization's (from Richardson limits per extent), the half-space extent found by the
-// 0.05 % rule, and the "S, half-space" grades beside the study geometry's. Checked on a small
-// document whose numbers are chosen so each figure is known.
+// The domain-extent section's facts: the error at the study's extent split into the block's
+// part and the discretization's (from Richardson limits per extent), the half-space extent found
+// by the 0.05 % rule, and the "S, half-space" grades beside the study geometry's. Checked on a
+// small document whose numbers are chosen so each figure is known.
 
 #include <cmath>
 #include <string>
@@ -81,27 +81,31 @@ schema::ResultsDocument extent_document() {
   return doc;
 }
 
+// Requirement: the F error at the study's extent splits into the block's part and the
+// discretization's; the half-space extent is the first from which no F value changes by 0.05 %;
+// the half-space grades are given at the widest extent, beside the study geometry's.
 TEST(ExtentSection, SplitsTheErrorAndFindsTheHalfSpaceExtent) {
   const schema::ResultsDocument doc = extent_document();
   const ResultsIndex index(doc);
-  const std::string md = extent_section(index);
-  ASSERT_FALSE(md.empty());
-  EXPECT_EQ(md.rfind("## The block's extent", 0), 0u) << md;
+  const std::vector<ExtentFacts> facts = extent_facts(index);
+  ASSERT_EQ(facts.size(), 1u);
+  const ExtentFacts& f = facts[0];
   // LMP Q8: F error at extent 1 is -1.25 %; block (9.90 - 9.995)/10 = -0.95 %; discretization
-  // (9.875 - 9.90)/10 = -0.25 %; at extent 8 the limit is -0.05 % from exact.
-  EXPECT_NE(md.find(std::string(schema::label(schema::Quantity::sigma_c)) +
-                    " Q8 LMP ss: F-mesh error at the study's extent −1.25 %; of it the block "
-                    "accounts for −0.95 %"),
-            std::string::npos)
-      << md;
-  EXPECT_NE(md.find("the discretization for −0.25 %"), std::string::npos) << md;
-  EXPECT_NE(md.find("at extent 8 the limit is −0.05 % from the exact value"), std::string::npos)
-      << md;
+  // (9.875 - 9.90)/10 = -0.25 %; at extent 8 the limit is -0.05 % from exact. Exact arithmetic
+  // on 4-digit data: 1e-9 points.
+  ASSERT_EQ(f.splits.size(), 2u);
+  EXPECT_NEAR(f.splits[0].f_error, -1.25, 1e-9);
+  EXPECT_NEAR(f.splits[0].block, -0.95, 1e-9);
+  EXPECT_NEAR(f.splits[0].discretization, -0.25, 1e-9);
+  EXPECT_NEAR(f.splits[0].remaining, -0.05, 1e-9);
+  EXPECT_EQ(f.splits[0].widest, 8.0);
   // 9.957782 / 9.9538 - 1 = 0.040 % < 0.05 %: extent 4.
-  EXPECT_NE(md.find("From extent 4 on, no fine-mesh value changes by 0.05 % or more (0.040 %"),
-            std::string::npos)
-      << md;
-  EXPECT_NE(md.find("half-space\": each option graded at extent 8"), std::string::npos) << md;
+  ASSERT_TRUE(f.half_space && f.change_after_half_space);
+  EXPECT_EQ(*f.half_space, 4.0);
+  EXPECT_NEAR(*f.change_after_half_space, 0.040, 5e-4);
+  EXPECT_EQ(f.grades_extent, 8.0);
+  const std::string md = extent_section(index);
+  EXPECT_EQ(md.rfind("## The block's extent", 0), 0u) << md;
   // The series table: one cell per column, the quantity first.
   EXPECT_NE(md.find("| " + std::string(schema::label(schema::Quantity::sigma_c)) +
                     " | Q8 | LMP ss | 2 | 9.8500 (−1.50 %) | 9.9000 (−1.00 %) | 9.9240 (−0.76 %) | "
@@ -121,7 +125,7 @@ TEST(ExtentSection, GradesTheHalfSpaceGapBesideTheTargetNormal) {
   add_row(doc, schema::Algorithm::LMP, 8.0, {10.0286, 9.9975, 9.99985}, 10.0, true);
   const ResultsIndex index(doc);
   const std::string md = extent_section(index);
-  EXPECT_NE(md.find("\"S(1), half-space gap\": at extent 8"), std::string::npos) << md;
+  EXPECT_EQ(extent_facts(index)[0].gap_extent, 8.0);
   // target's normal at extent 8: 9.88, 9.93, 9.957782 -> -1.20, -0.70, -0.42 % (g, c).
   EXPECT_NE(md.find("| Q8 | LMP ss | −1.20 %, −0.70 %, −0.42 % | e, c | +0.29 %, −0.02 %, −1.5e-03 "
                     "% | e, c |"),
@@ -136,11 +140,8 @@ TEST(ExtentSection, GradesAtTheWidestExtentOfMostOptions) {
   schema::ResultsDocument doc = extent_document();
   add_row(doc, schema::Algorithm::LMP, 16.0, {9.88, 9.93, 9.9580}, 9.996);
   const ResultsIndex index(doc);
+  EXPECT_EQ(extent_facts(index)[0].grades_extent, 8.0);
   const std::string md = extent_section(index);
-  EXPECT_NE(md.find("half-space\": each option graded at extent 8 (the widest extent run with the "
-                    "most options"),
-            std::string::npos)
-      << md;
   EXPECT_NE(md.find("| Q8 | AL ss | −11.0 % | u, c | −0.50 % | e, c |"), std::string::npos) << md;
 }
 
@@ -153,12 +154,12 @@ TEST(ExtentSection, SaysSoWhenNoExtentIsWideEnough) {
   add_row(doc, schema::Algorithm::LMP, 1.0, {9.8, 9.85, 9.875}, 9.9);
   add_row(doc, schema::Algorithm::LMP, 2.0, {9.85, 9.9, 9.924}, 9.96);
   const ResultsIndex index(doc);
-  const std::string md = extent_section(index);
-  EXPECT_NE(md.find("Between the two widest extents run, 1 and 2, a fine-mesh value still changes "
-                    "by 0.496 %"),
-            std::string::npos)
-      << md;
-  EXPECT_EQ(md.find("half-space\": each option"), std::string::npos) << md;
+  const ExtentFacts f = extent_facts(index)[0];
+  EXPECT_FALSE(f.half_space || f.grades_extent);
+  ASSERT_TRUE(f.last_change);
+  EXPECT_EQ(f.second_widest, 1.0);
+  EXPECT_EQ(f.widest, 2.0);
+  EXPECT_NEAR(*f.last_change, 0.496, 5e-4);  // 9.924 / 9.875 - 1
 }
 
 TEST(ExtentSection, AHalfSpaceExtentHoldsForEveryLaterExtent) {
@@ -174,10 +175,9 @@ TEST(ExtentSection, AHalfSpaceExtentHoldsForEveryLaterExtent) {
   add_row(doc, schema::Algorithm::LMP, 4.0, {9.93, 9.97, 9.9800}, 9.99);
   add_row(doc, schema::Algorithm::LMP, 8.0, {9.93, 9.97, 9.9810}, 9.99);
   const ResultsIndex index(doc);
-  const std::string md = extent_section(index);
-  EXPECT_NE(md.find("From extent 4 on, no fine-mesh value changes by 0.05 % or more (0.010 %"),
-            std::string::npos)
-      << md;
+  const ExtentFacts f = extent_facts(index)[0];
+  EXPECT_EQ(f.half_space, 4.0);
+  EXPECT_NEAR(f.change_after_half_space.value_or(1.0), 0.010, 5e-4);
 }
 
 TEST(ExtentSection, EmptyWithoutExtentRows) {

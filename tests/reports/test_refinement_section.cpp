@@ -1,36 +1,45 @@
-// The "Error estimates and refinement" section's verdicts: which rows the study's "further
-// refinement would lead to converging results" applies to and whether it holds, and the GCI
-// band test.
+// The "Error estimates and refinement" section's facts: which rows the study's "further
+// refinement would lead to converging results" applies to and whether it holds (only a VF case
+// that converged counts), the GCI band test, round-off rows left out, and estimates.csv.
 
 #include <gtest/gtest.h>
 
+#include "grading/accuracy.hpp"
 #include "reports/findings/refinement_section.hpp"
 
 namespace cs::reports {
 namespace {
 
-using schema::Grade;
 using schema::RowVerdict;
 
-RowVerdict row(Grade grade, bool converging, std::optional<bool> converging_vf) {
+/// A row with errors C, M, F (percent), the study's c as given, and a VF error if any.
+RowVerdict row(std::array<double, 3> errors, bool converging, std::optional<double> vf_error) {
   RowVerdict r;
-  r.grade = grade;
+  for (std::size_t m = 0; m < 3; ++m)
+    r.errors[m] = errors[m];
   r.converging = converging;
-  if (converging_vf) {
+  if (vf_error) {
     r.refinement.emplace();
-    r.refinement->converging = converging_vf;
+    r.refinement->error = vf_error;
   }
   return r;
 }
 
-// Requirement: the claim applies only to rows graded s or better on F that are not c over
-// C-M-F; it holds when M-F-VF converges, fails when it does not, and is open without VF.
-TEST(RefinementSection, StudyClaimAppliesToUnconvergedSatisfactoryRowsOnly) {
-  EXPECT_EQ(refinement_claim(row(Grade::s, false, true)), RefinementClaim::holds);
-  EXPECT_EQ(refinement_claim(row(Grade::e, false, false)), RefinementClaim::fails);
-  EXPECT_EQ(refinement_claim(row(Grade::g, false, std::nullopt)), RefinementClaim::no_vf);
-  EXPECT_EQ(refinement_claim(row(Grade::g, true, false)), RefinementClaim::not_applicable);
-  EXPECT_EQ(refinement_claim(row(Grade::u, false, true)), RefinementClaim::not_applicable);
+// Requirement: the claim applies only to rows graded s or better on F without the study's c;
+// it holds when the trend over M-F-VF converges, fails when it does not, and stays open when
+// the VF case is missing or did not converge.
+TEST(RefinementSection, StudyClaimCountsOnlyConvergedVfCases) {
+  const auto s_row = [](std::optional<double> vf) { return row({8.0, 7.0, 6.0}, false, vf); };
+  EXPECT_EQ(refinement_claim(s_row(3.0), MeshState::converged), RefinementClaim::holds);
+  EXPECT_EQ(refinement_claim(s_row(9.0), MeshState::converged), RefinementClaim::fails);
+  EXPECT_EQ(refinement_claim(s_row(3.0), MeshState::not_converged),
+            RefinementClaim::vf_not_converged);
+  EXPECT_EQ(refinement_claim(s_row(3.0), MeshState::failed), RefinementClaim::vf_not_converged);
+  EXPECT_EQ(refinement_claim(s_row(std::nullopt), MeshState::missing), RefinementClaim::no_vf);
+  EXPECT_EQ(refinement_claim(row({8.0, 7.0, 6.0}, true, 3.0), MeshState::converged),
+            RefinementClaim::not_applicable);  // already c
+  EXPECT_EQ(refinement_claim(row({14.0, 13.0, 12.0}, false, 3.0), MeshState::converged),
+            RefinementClaim::not_applicable);  // u on F
 }
 
 // Requirement: the GCI band holds the exact value when |f_F - exact| / |f_F| <= GCI.
@@ -42,6 +51,116 @@ TEST(RefinementSection, GciBandTest) {
   EXPECT_FALSE(*gci_bounds_error(r, 1.2700));  // 0.39 % > 0.2 %
   r.estimate.reset();
   EXPECT_FALSE(gci_bounds_error(r, 1.2732).has_value());
+}
+
+constexpr double kExact = 1.0;
+
+/// A baseline row of H_p sigma_c with values on C, M, F (and VF when given, with its status).
+void add_row(schema::ResultsDocument& doc, schema::Algorithm algorithm, schema::ContactKind contact,
+             std::array<double, 3> values, std::optional<double> vf = std::nullopt,
+             schema::CaseStatus vf_status = schema::CaseStatus::converged) {
+  RowVerdict r;
+  r.spec.problem = schema::ProblemId::H_p;
+  r.spec.algorithm = algorithm;
+  r.spec.contact = contact;
+  r.quantity = schema::Quantity::sigma_c;
+  r.id = schema::case_key(r.spec) + "/sigma_c";
+  const auto add_case = [&](schema::MeshLevel mesh, double value, schema::CaseStatus status) {
+    schema::CaseResult c;
+    c.spec = r.spec;
+    c.spec.mesh = mesh;
+    c.status = status;
+    schema::QuantityResult q;
+    q.quantity = schema::Quantity::sigma_c;
+    q.value = value;
+    q.exact = kExact;
+    q.error_percent = grading::error_percent(value, kExact);
+    c.quantities.push_back(q);
+    doc.cases.push_back(c);
+  };
+  for (std::size_t m = 0; m < 3; ++m) {
+    r.values[m] = values[m];
+    r.errors[m] = grading::error_percent(values[m], kExact);
+    add_case(static_cast<schema::MeshLevel>(m), values[m], schema::CaseStatus::converged);
+  }
+  r.converging = false;
+  r.estimate = schema::ErrorEstimate{};
+  r.estimate->note = "oscillatory";
+  if (vf) {
+    r.refinement.emplace();
+    r.refinement->value = *vf;
+    r.refinement->error = grading::error_percent(*vf, kExact);
+    add_case(schema::MeshLevel::VF, *vf, vf_status);
+  }
+  doc.rows.push_back(r);
+}
+
+schema::ResultsDocument vf_document() {
+  schema::ResultsDocument doc;
+  schema::ProblemRecord p;
+  p.id = schema::ProblemId::H_p;
+  p.quantities = {{schema::Quantity::sigma_c, "peak", "peak", "1", "main"}};
+  doc.problems.push_back(p);
+  using A = schema::Algorithm;
+  using K = schema::ContactKind;
+  // s on F, not c: VF converged and closer (holds); VF converged and worse (fails); VF not
+  // converged at +85 % (open, not counted, marked).
+  add_row(doc, A::AL, K::ss, {1.08, 1.07, 1.06}, 1.03);
+  add_row(doc, A::LMP, K::ss, {1.08, 1.07, 1.06}, 1.09);
+  add_row(doc, A::MPC, K::ss, {1.08, 1.07, 1.06}, 1.85, schema::CaseStatus::not_converged);
+  // Exact to round-off on every mesh (a patch test): left out of the estimates.
+  add_row(doc, A::PM, K::ns, {1.0, 1.0, 1.0});
+  return doc;
+}
+
+// Requirement: "further refinement would converge" counts only rows whose VF case converged
+// (1 holds, 1 fails, 1 open of 3 that apply); an MPC row whose VF case did not converge is left
+// out of the MPC refinement too; a round-off row is left out of the estimates.
+TEST(RefinementSection, FactsCountOnlyConvergedVfCases) {
+  const schema::ResultsDocument doc = vf_document();
+  const ResultsIndex index(doc);
+  const RefinementFacts f = refinement_facts(index);
+  EXPECT_EQ(f.claim.applies, 3);
+  EXPECT_EQ(f.claim.holds, 1);
+  EXPECT_EQ(f.claim.fails, 1);
+  EXPECT_EQ(f.claim.vf_not_converged, 1);
+  EXPECT_EQ(f.mpc.rows, 0);
+  EXPECT_EQ(f.mpc.not_converged, 1);
+  EXPECT_EQ(f.round_off, 1);
+  ASSERT_EQ(f.problems.size(), 1u);
+  EXPECT_EQ(f.problems[0].rows, 3);
+  EXPECT_EQ(f.problems[0].asymptotic, 0);
+  ASSERT_EQ(f.vf_rows.size(), 3u);
+  EXPECT_EQ(f.vf_rows[2].vf, MeshState::not_converged);
+}
+
+// Requirement: the not-converged VF value is never shown unmarked, on the page or in the CSV;
+// the CSV has one line per row with C, M and F values, round-off rows included and marked.
+TEST(RefinementSection, MarksVfValuesOfCasesThatDidNotConverge) {
+  const schema::ResultsDocument doc = vf_document();
+  const ResultsIndex index(doc);
+  const std::string md = refinement_section(index);
+  EXPECT_NE(md.find("| +85.0 % (not converged) |"), std::string::npos) << md;
+  EXPECT_EQ(md.find("| +85.0 % |"), std::string::npos) << md;
+  const std::string csv = estimates_csv(index);
+  EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 5);  // header and 4 rows
+  EXPECT_NE(csv.find(",1.85,85,not_converged,"), std::string::npos) << csv;
+  EXPECT_NE(csv.find("H_p/Q4/PM/ns/sigma_c,1,1,1,0,1,"), std::string::npos) << csv;
+}
+
+// Requirement: a results file without VF cases says so in one line; one without C, M, F rows
+// has no section and no CSV.
+TEST(RefinementSection, OneLineWithoutVfAndNothingWithoutRows) {
+  schema::ResultsDocument doc = vf_document();
+  std::erase_if(doc.cases, [](const auto& c) { return c.spec.mesh == schema::MeshLevel::VF; });
+  for (auto& r : doc.rows)
+    r.refinement.reset();
+  const ResultsIndex index(doc);
+  EXPECT_NE(refinement_section(index).find("No VF mesh in these results"), std::string::npos);
+  const schema::ResultsDocument empty;
+  const ResultsIndex none(empty);
+  EXPECT_EQ(refinement_section(none), "");
+  EXPECT_EQ(estimates_csv(none), "");
 }
 
 }  // namespace
