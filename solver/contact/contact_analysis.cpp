@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <functional>
 #include <limits>
 
 #include <fmt/format.h>
@@ -147,29 +148,37 @@ const ConstraintSet& ContactAnalysis::constraints(ConstraintRows rows) {
   return constraints_.emplace(rows, std::move(set)).first->second;
 }
 
-std::vector<int> ContactAnalysis::candidates(const ConstraintSet& set, double pinball) const {
+bool ContactAnalysis::movable(const ConstraintSet& set, int j) const {
   const DofMap& dofs = elastic_.dof_map();
-  const Eigen::VectorXd g_start = set.g0 + set.B * dofs.prescribed_values();
+  for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator e(set.B, j); e; ++e) {
+    if (dofs.equation(static_cast<int>(e.col())) >= 0)
+      return true;
+  }
+  return false;
+}
+
+std::vector<int> ContactAnalysis::candidates(const ConstraintSet& set,
+                                             const SearchExtent& extent) const {
+  const Eigen::VectorXd g_start = set.g0 + set.B * elastic_.dof_map().prescribed_values();
   std::vector<int> rows;
   for (int j = 0; j < set.n_rows(); ++j) {
-    // Inclusive to round-off: a point exactly at the pinball radius (one element beyond a
-    // punch's corner at pinball 1) is a candidate in any units, not as round-off decides.
-    if (!(std::abs(g_start[j]) <= pinball * set.rows[j].depth_h * (1.0 + kGeometricTie)))
-      continue;
     // A row whose every DOF is prescribed cannot move: it is no contact candidate.
-    bool movable = false;
-    for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator e(set.B, j); e && !movable;
-         ++e) {
-      movable = dofs.equation(static_cast<int>(e.col())) >= 0;
-    }
-    if (movable)
+    if (within_search(g_start[j], set.rows[j].depth_h, extent) && movable(set, j))
       rows.push_back(j);
   }
   return rows;
 }
 
 ContactAnalysis::StageKey ContactAnalysis::dof_key(const StageKey& key) {
-  return {ConstraintRows::NodeToSurface, key.pinball, key.method, key.frictional};
+  return {ConstraintRows::NodeToSurface, key.pinball, key.reach, key.method, key.frictional};
+}
+
+void ContactAnalysis::evict_grown_stages(const StageKey& keep) {
+  const auto grown_other = [&](const StageKey& k) {
+    return k.reach != k.pinball && (k.pinball != keep.pinball || k.reach != keep.reach);
+  };
+  std::erase_if(row_stages_, [&](const auto& entry) { return grown_other(entry.first); });
+  std::erase_if(dof_stages_, [&](const auto& entry) { return grown_other(entry.first); });
 }
 
 ContactAnalysis::DofStage& ContactAnalysis::dof_stage(const StageKey& row_key,
@@ -180,6 +189,8 @@ ContactAnalysis::DofStage& ContactAnalysis::dof_stage(const StageKey& row_key,
     result.timings.condensation_reused = true;
     return *it->second;
   }
+  if (key.reach != key.pinball)
+    evict_grown_stages(key);
   if (!elastic_.is_assembled())
     elastic_.assemble();
   if (load_f_.size() == 0) {
@@ -200,7 +211,7 @@ ContactAnalysis::DofStage& ContactAnalysis::dof_stage(const StageKey& row_key,
   for (ConstraintRows rows : {ConstraintRows::NodeToSurface, ConstraintRows::GaussPoints,
                               ConstraintRows::NodalWeightedGaps, ConstraintRows::Mortar}) {
     const ConstraintSet& set = constraints(rows);
-    for (int j : candidates(set, key.pinball)) {
+    for (int j : candidates(set, key.extent())) {
       touch(set.B, j);
       if (key.frictional)
         touch(set.T, j);
@@ -242,7 +253,7 @@ ContactAnalysis::RowStage& ContactAnalysis::row_stage(const StageKey& key, Conta
   const ConstraintSet& set = constraints(key.rows);
   auto stage = std::make_unique<RowStage>();
   RowStage& rs = *stage;
-  rs.candidates = candidates(set, key.pinball);
+  rs.candidates = candidates(set, key.extent());
   if (rs.candidates.empty()) {
     const Eigen::VectorXd g_start = set.g0 + set.B * elastic_.dof_map().prescribed_values();
     double closest = std::numeric_limits<double>::infinity();
@@ -338,7 +349,7 @@ void ContactAnalysis::refresh_loads() {
     // needs new stages, an unchanged one only new reference values.
     for (auto& [key, rs] : row_stages_) {
       const ConstraintSet& set = constraints(key.rows);
-      if (candidates(set, key.pinball) != rs->candidates) {
+      if (candidates(set, key.extent()) != rs->candidates) {
         row_stages_.clear();
         dof_stages_.clear();
         load_f_.resize(0);
@@ -424,11 +435,23 @@ ContactResult ContactAnalysis::solve(const ContactSettings& settings,
     }
     result.timings.constraints_s = seconds_since(t0);
   }
-  const ConstraintSet& set = constraints(kind);
   const bool frictional = settings.frictional();
   if (frictional)
-    check_history(previous, kind, set);
-  const StageKey key{kind, settings.pinball, settings.condensation, frictional};
+    check_history(previous, kind, constraints(kind));
+  // The search starts at the pinball and grows while points approach (contact_search.hpp).
+  StageKey key{kind, settings.pinball, settings.pinball, settings.condensation, frictional};
+  for (SearchReview review = solve_round(settings, previous, key, result); review.grows();
+       review = solve_round(settings, previous, key, result)) {
+    key.reach = review.reach;
+  }
+  result.timings.total_s = seconds_since(start);
+  return result;
+}
+
+SearchReview ContactAnalysis::solve_round(const ContactSettings& settings,
+                                          const FrictionHistory& previous, const StageKey& key,
+                                          ContactResult& result) {
+  const ConstraintSet& set = constraints(key.rows);
   RowStage& cd = row_stage(key, result);
   const DofStage& ds = *dof_stages_.at(dof_key(key));
   result.n_constraints = set.n_rows();
@@ -438,33 +461,34 @@ ContactResult ContactAnalysis::solve(const ContactSettings& settings,
     result.status = ContactStatus::NotConverged;
     result.failure = ContactFailure::SingularSystem;
     result.reason = cd.outcome.reason;
-    result.timings.total_s = seconds_since(start);
-    return result;
+    result.displacement.resize(0);
+    result.nodes.clear();
+    return {};
   }
 
   auto t0 = Clock::now();
   const AlgorithmOutcome out =
-      frictional ? run_frictional(settings, previous, cd) : run_frictionless(settings, cd);
-  result.timings.iterations_s = seconds_since(t0);
+      key.frictional ? run_frictional(settings, previous, cd) : run_frictionless(settings, cd);
+  result.timings.iterations_s += seconds_since(t0);
   result.status = out.status;
   result.failure = out.failure;
   result.reason = out.reason;
   result.residual = out.residual;
-  result.active_set_iterations = out.iterations;
-  result.augmentations = out.augmentations;
-  if (out.has_solution()) {
-    t0 = Clock::now();
-    recover_results(settings, previous, set, cd, ds, out, result);
-    result.timings.recovery_s = seconds_since(t0);
-  }
-  result.timings.total_s = seconds_since(start);
-  return result;
+  result.active_set_iterations += out.iterations;
+  result.augmentations += out.augmentations;
+  if (!out.has_solution())
+    return {};
+  t0 = Clock::now();
+  const SearchReview review = recover_results(settings, previous, key, cd, ds, out, result);
+  result.timings.recovery_s += seconds_since(t0);
+  return review;
 }
 
-void ContactAnalysis::recover_results(const ContactSettings& settings,
-                                      const FrictionHistory& previous, const ConstraintSet& set,
-                                      const RowStage& cd, const DofStage& ds,
-                                      const AlgorithmOutcome& out, ContactResult& result) {
+SearchReview ContactAnalysis::recover_results(const ContactSettings& settings,
+                                              const FrictionHistory& previous, const StageKey& key,
+                                              const RowStage& cd, const DofStage& ds,
+                                              const AlgorithmOutcome& out, ContactResult& result) {
+  const ConstraintSet& set = constraints(key.rows);
   const Eigen::VectorXd u_free = cd.condensation.recover(ds.condensation, out.step.mu);
   result.displacement = elastic_.expand(u_free);
   if (!result.displacement.allFinite()) {
@@ -472,7 +496,7 @@ void ContactAnalysis::recover_results(const ContactSettings& settings,
     result.status = ContactStatus::NotConverged;
     result.failure = ContactFailure::NonFinite;
     result.reason = "the recovered displacement is not finite";
-    return;
+    return {};
   }
   // Row quantities over every row (candidates carry the algorithm's forces and flags; a
   // frictional outcome's first m entries are the normal rows').
@@ -484,8 +508,18 @@ void ContactAnalysis::recover_results(const ContactSettings& settings,
     active[cd.candidates[a]] = out.active.empty() ? 0 : out.active[a];
   }
   const RowState rows{gap, lambda, active, cd.candidate_of_row};
+  SearchReview review;
   if (settings.algorithm != ContactAlgorithm::MultipointConstraint && result.converged()) {
-    check_pinball(set, rows, settings.pinball, result);
+    const Eigen::VectorXd g_start = set.g0 + set.B * elastic_.dof_map().prescribed_values();
+    const std::function<bool(int)> can_move = [&](int j) { return movable(set, j); };
+    review = review_search(set, {gap, g_start, cd.candidate_of_row, can_move}, key.extent());
+    if (review.grows())
+      return review;  // solved again over the grown search: these values are not the answer
+    if (!review.miss.empty()) {
+      result.status = ContactStatus::NotConverged;
+      result.failure = ContactFailure::ContactBeyondPinball;
+      result.reason = review.miss;
+    }
   }
   const Eigen::VectorXd node_gap =
       set.nodal
@@ -502,6 +536,7 @@ void ContactAnalysis::recover_results(const ContactSettings& settings,
     result.total_normal_force += r.force;
     result.peak_shear = std::max(result.peak_shear, std::abs(r.shear));
   }
+  return review;
 }
 
 void ContactAnalysis::recover_friction(const FrictionHistory& previous, const ConstraintSet& set,

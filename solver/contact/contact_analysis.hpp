@@ -19,11 +19,14 @@
 // small dense condensation onto its rows. Changing the discretization, the algorithm, FKN,
 // FTOLN or the iteration caps reuses the factorization.
 //
-// Data flow of solve(): rows g = g0 + B u (discretization) -> candidates (|g0| <= pinball h)
-// -> condensation onto the contact DOFs, then onto the candidate rows (condensation.hpp) ->
-// algorithm (one switch) -> displacement recovery -> per-node results. Rows outside the pinball
-// never act; if one of them ends up penetrating, the result is NotConverged (ContactBeyondPinball)
-// rather than silently wrong (except for MPC, which by definition ignores them).
+// Data flow of solve(): rows g = g0 + B u (discretization) -> candidates (the search,
+// solver/contact/contact_search.hpp: |g_s| <= pinball h at first) -> condensation onto the
+// contact DOFs, then onto the candidate rows (condensation.hpp) -> algorithm (one switch) ->
+// displacement recovery -> review of the search -> per-node results. Rows outside the
+// candidates never act; one that ends up penetrating either approached during the iterations
+// (the search grows its reach and the solve starts again over the larger set) or is a true
+// geometric miss (NotConverged, ContactBeyondPinball), never silently wrong (MPC, which by
+// definition ties the rows found at the start, is not reviewed).
 //
 // Changed loads and prescribed values are picked up by the next solve (one forward solve);
 // e.g. a load-controlled rigid punch (secant iterations on a support displacement) should keep
@@ -42,6 +45,7 @@
 #include "solver/contact/constraint_set.hpp"
 #include "solver/contact/contact_options.hpp"
 #include "solver/contact/contact_result.hpp"
+#include "solver/contact/contact_search.hpp"
 #include "solver/contact/contact_surface.hpp"
 #include "solver/contact/load_step.hpp"
 #include "solver/contact/target.hpp"
@@ -103,17 +107,23 @@ class ContactAnalysis {
  private:
   struct DofStage;
   struct RowStage;
-  /// The stages of a row kind and pinball; `frictional`: the contact DOFs and rows include the
-  /// tangential twins (a separate factorization, so that frictionless solves never change).
+  /// The stages of a row kind and search extent (pinball, reach: contact_search.hpp);
+  /// `frictional`: the contact DOFs and rows include the tangential twins (a separate
+  /// factorization, so that frictionless solves never change).
   struct StageKey {
     ConstraintRows rows;
     double pinball;
+    double reach;
     CondensationMethod method;
     bool frictional;
-    auto tie() const { return std::tie(rows, pinball, method, frictional); }
+    SearchExtent extent() const { return {pinball, reach}; }
+    auto tie() const { return std::tie(rows, pinball, reach, method, frictional); }
     bool operator<(const StageKey& o) const { return tie() < o.tie(); }
   };
   DofStage& dof_stage(const StageKey& key, ContactResult& result);
+  /// Drops the stages of grown searches other than `keep`'s (a cache: at most one grown
+  /// factorization beside the pinball's is kept).
+  void evict_grown_stages(const StageKey& keep);
   RowStage& row_stage(const StageKey& key, ContactResult& result);
   /// The candidate rows and their condensation, stacked with the tangential twins if frictional.
   void fill_row_stage(const StageKey& key, const ConstraintSet& set, RowStage& rs) const;
@@ -123,27 +133,34 @@ class ContactAnalysis {
   /// twin is left empty: the support takes the shear. (Weighted rows would otherwise constrain
   /// more slips than there are free tangential DOFs, a singular system with multipliers.)
   bool tangent_held(const ContactConstraint& row) const;
+  /// One solve over the candidates of `key`; fills `result` (iteration counts and timings
+  /// add up over the rounds of a growing search). Returns the review of the search.
+  SearchReview solve_round(const ContactSettings& settings, const FrictionHistory& previous,
+                           const StageKey& key, ContactResult& result);
   AlgorithmOutcome run_frictionless(const ContactSettings& settings, const RowStage& cd) const;
   AlgorithmOutcome run_frictional(const ContactSettings& settings, const FrictionHistory& previous,
                                   const RowStage& cd) const;
   /// Displacement, row quantities and per-node results of a solution (friction included).
-  void recover_results(const ContactSettings& settings, const FrictionHistory& previous,
-                       const ConstraintSet& set, const RowStage& cd, const DofStage& ds,
-                       const AlgorithmOutcome& out, ContactResult& result);
+  /// Returns the review of the search (converged non-MPC solves; else an empty review).
+  SearchReview recover_results(const ContactSettings& settings, const FrictionHistory& previous,
+                               const StageKey& key, const RowStage& cd, const DofStage& ds,
+                               const AlgorithmOutcome& out, ContactResult& result);
   void recover_friction(const FrictionHistory& previous, const ConstraintSet& set,
                         const RowStage& cd, const AlgorithmOutcome& out, const RowState& rows,
                         ContactResult& result);
   /// Picks up changed loads and prescribed values (see solve()).
   void refresh_loads();
-  /// Rows of `set` within the pinball (|g0 + B u_prescribed| <= pinball h).
-  std::vector<int> candidates(const ConstraintSet& set, double pinball) const;
+  /// Rows of `set` within `extent` that can move (contact_search.hpp).
+  std::vector<int> candidates(const ConstraintSet& set, const SearchExtent& extent) const;
+  /// Whether row j of `set` has a free DOF.
+  bool movable(const ConstraintSet& set, int j) const;
 
   LinearStaticAnalysis& elastic_;
   ContactPair pair_;
   ContactSurface surface_;
   ContactTarget target_;
   std::map<ConstraintRows, ConstraintSet> constraints_;
-  /// Stage 1, keyed by dof_key() (pinball, method, frictional: every row kind shares it).
+  /// Stage 1, keyed by dof_key() (extent, method, frictional: every row kind shares it).
   std::map<StageKey, std::shared_ptr<DofStage>> dof_stages_;  ///< shared: see dof_stage()
   std::map<StageKey, std::unique_ptr<RowStage>> row_stages_;  ///< stage 2, per row kind
   Eigen::VectorXd load_f_;      ///< the reduced load f_f the stages were computed for

@@ -3,24 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include <fmt/format.h>
-
 namespace cs::solver {
-
-void check_pinball(const ConstraintSet& set, const RowState& rows, double pinball,
-                   ContactResult& result) {
-  for (int j = 0; j < set.n_rows(); ++j) {
-    if (rows.candidate_of_row[j] < 0 && rows.gap[j] < -kPinballPenetration * set.rows[j].depth_h) {
-      result.status = ContactStatus::NotConverged;
-      result.failure = ContactFailure::ContactBeyondPinball;
-      result.reason = fmt::format(
-          "the contact point at ({:.6g}, {:.6g}) is outside the pinball ({} h) but penetrates "
-          "the target by {:.3g}; increase the pinball",
-          set.rows[j].position.x(), set.rows[j].position.y(), pinball, -rows.gap[j]);
-      return;
-    }
-  }
-}
 
 std::vector<ContactNodeResult> node_results(const ConstraintSet& set, const RowState& rows,
                                             const Eigen::VectorXd& node_gap) {

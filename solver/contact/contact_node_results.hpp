@@ -1,7 +1,8 @@
 #pragma once
 // Per-node results of a contact solve, from the state of every constraint row: the normal
-// pressure and gap (any analysis) and the shear, slip and Coulomb state (friction), and the
-// pinball check. Used by solver/contact/contact_analysis.cpp.
+// pressure and gap (any analysis) and the shear, slip and Coulomb state (friction). Used by
+// solver/contact/contact_analysis.cpp (the review of rows outside the candidates is the
+// search's: solver/contact/contact_search.hpp).
 
 #include <vector>
 
@@ -12,10 +13,6 @@
 
 namespace cs::solver {
 
-/// A gap this far below zero (relative to the element depth) counts as a penetration of a
-/// point outside the pinball.
-inline constexpr double kPinballPenetration = 1e-10;
-
 /// A candidate whose |gap| is below this (relative to the element depth) touches the target.
 inline constexpr double kTouchingGap = 1e-10;
 
@@ -24,7 +21,7 @@ struct RowState {
   const Eigen::VectorXd& gap;                ///< g = g0 + B u
   const Eigen::VectorXd& lambda;             ///< force (0 outside the candidates)
   const std::vector<char>& active;           ///< the algorithm's last active flags
-  const std::vector<int>& candidate_of_row;  ///< -1 outside the pinball
+  const std::vector<int>& candidate_of_row;  ///< -1 outside the candidates (the search)
 };
 
 /// The tangential state of every row of a constraint set after a frictional solve.
@@ -35,11 +32,6 @@ struct FrictionRowState {
   const Eigen::VectorXd& node_slip;         ///< s per contact node (set.nodes order)
   const Eigen::VectorXd& node_slip_prev;    ///< the previous step's, same order
 };
-
-/// A row outside the pinball never acts: if it penetrates, `result` becomes NotConverged
-/// (ContactBeyondPinball) with a reason naming the point.
-void check_pinball(const ConstraintSet& set, const RowState& rows, double pinball,
-                   ContactResult& result);
 
 /// Per-node results, sorted by position. The pressure of a node is its multiplier coefficient
 /// p_a = lambda_a / w_a (weighted rows: mortar, ss with LM/MPC; the value of p_h at a corner, and

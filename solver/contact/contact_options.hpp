@@ -126,8 +126,10 @@ struct ContactSettings {
   /// FTOLN: AL augments until every penetration is <= FTOLN x h; > 0. Default 0.1 as in ANSYS.
   double ftoln = 0.1;
   /// Pinball radius as a multiple of the underlying element depth h (dimensionless, > 0):
-  /// a contact point is a candidate when its distance to the target is <= pinball x h.
-  /// Candidates are the only points that can ever close; MPC ties all of them. Default 1.
+  /// a contact point is a candidate when its distance to the target is <= pinball x h at the
+  /// start. Candidates are the only points that can close; a point that approaches from
+  /// beyond the pinball during the iterations makes the search grow on its open side
+  /// (solver/contact/contact_search.hpp). MPC ties the starting candidates only. Default 1.
   double pinball = 1.0;
   /// Cap on the active-set iterations of one solve (per augmentation for AL); >= 1.
   int max_iterations = 50;

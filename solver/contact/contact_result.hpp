@@ -34,7 +34,7 @@ enum class ContactFailure {
   AugmentationLimit,     ///< AL: the augmentation cap was reached with penetration > FTOLN h
   SingularSystem,        ///< a linear system was singular (a body held by nothing)
   NonFinite,             ///< a NaN or infinity appeared
-  ContactBeyondPinball,  ///< a point outside the pinball penetrates the target
+  ContactBeyondPinball,  ///< a geometric miss penetrates the target (contact_search.hpp)
 };
 
 /// "converged" or "not converged".
@@ -105,7 +105,7 @@ struct ContactNodeResult {
   /// radian in axisymmetry): its multiplier (weighted rows) or its share of the rows'.
   double force = 0.0;
   bool closed = false;     ///< in contact (its constraint active / tied)
-  bool candidate = false;  ///< within the pinball at the start
+  bool candidate = false;  ///< a candidate of the final search (contact_search.hpp)
   // Friction (mu > 0; zero / Open otherwise):
   double shear = 0.0;           ///< tangential traction transmitted along t (see the file comment)
   double slip = 0.0;            ///< relative tangential displacement s (mortar, ss LM: weighted)
@@ -141,7 +141,7 @@ struct ContactResult {
   int active_set_iterations = 0;  ///< linear solves of the condensed problem
   int augmentations = 0;          ///< AL multiplier updates (normal and tangential together)
   int n_constraints = 0;          ///< constraint rows (nodes or Gauss points)
-  int n_candidates = 0;           ///< rows within the pinball
+  int n_candidates = 0;           ///< candidate rows of the final search (contact_search.hpp)
   int n_contact_dofs = 0;         ///< DOFs touched by the candidate rows (condensed block)
 
   /// Per contact-surface node, sorted by position (x|r, then z).
