@@ -58,4 +58,14 @@ std::vector<schema::ProblemRecord> problem_records(const std::vector<CaseResult>
   return out;
 }
 
+std::map<ProblemId, std::map<std::string, double>> parameter_defaults(
+    const std::vector<CaseResult>& cases) {
+  std::map<ProblemId, std::map<std::string, double>> out;
+  for (const auto& c : cases) {
+    for (const auto& parameter : problem_descriptor(c.spec.problem).parameters)
+      out[c.spec.problem][parameter.name] = parameter.default_value;
+  }
+  return out;
+}
+
 }  // namespace cs::suites

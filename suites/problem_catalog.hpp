@@ -3,6 +3,8 @@
 // suites/problems/): read by `contact-suite list`, the case matrix, the case validation, the
 // builders and the results file's `problems` records.
 
+#include <map>
+#include <string>
 #include <vector>
 
 #include "suites/case_result.hpp"
@@ -27,5 +29,9 @@ bool is_frictional(ProblemId id);
 
 /// The schema records of the problems that have a case in `cases`, in battery order.
 std::vector<schema::ProblemRecord> problem_records(const std::vector<CaseResult>& cases);
+
+/// The default value of every settable parameter of the problems that have a case in `cases`.
+std::map<ProblemId, std::map<std::string, double>> parameter_defaults(
+    const std::vector<CaseResult>& cases);
 
 }  // namespace cs::suites

@@ -137,8 +137,11 @@ std::string figure_link(const FigureSet& figures, const std::string& key) {
   for (const auto& f : figures.figures) {
     if (f.file != sweep_figure_file(key))
       continue;
+    std::string notes;
+    for (const auto& n : f.notes)
+      notes += fmt::format("*Note: {}*\n\n", n);
     if (f.produced)
-      return fmt::format("![{}]({})\n\n*{}.*\n\n", f.caption_md, f.file, f.caption_md);
+      return fmt::format("![{}]({})\n\n*{}*\n\n{}", f.caption_md, f.file, f.caption_md, notes);
     return fmt::format("(The figure of {} could not be drawn: {}.)\n\n", key, f.error);
   }
   if (!figures.unavailable.empty())
