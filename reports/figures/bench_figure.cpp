@@ -106,7 +106,7 @@ FigureSet render_bench_figures(const BenchResults& bench, const std::filesystem:
   }
   if (plot.panels.empty())
     return set;
-  Figure figure{.kind = FigureKind::bench, .file = "figures/bench_time.png"};
+  Figure figure(FigureKind::bench, "figures/bench_time.png");
   figure.caption_md = fmt::format(
       "Time of the contact analysis (ms) per algorithm, grouped by contact discretization, for "
       "each problem and element at the finest mesh measured ({}); above each bar its ratio to "

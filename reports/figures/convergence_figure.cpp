@@ -13,7 +13,6 @@ namespace {
 
 using schema::ProblemId;
 
-
 /// What the legend says of a row: the guarded observed order (grading::observed_order, through
 /// RowFacts) or why there is none; for a singular row, its divergence exponent.
 std::string order_legend(const schema::RowVerdict* row, const std::vector<RowFacts>& rows,

@@ -32,10 +32,10 @@ FigureSet render_figures(const ResultsIndex& index, const std::filesystem::path&
   };
   for (const schema::ProblemRecord* p : index.problems()) {
     for (const auto element : schema::values<schema::Element>()) {
-      Figure f{.kind = FigureKind::profile,
-               .problem = p->id,
-               .file = fmt::format("figures/profile_{}_{}.png", schema::to_string(p->id),
-                                   schema::to_string(element))};
+      Figure f(FigureKind::profile,
+               fmt::format("figures/profile_{}_{}.png", schema::to_string(p->id),
+                           schema::to_string(element)),
+               p->id);
       const Plot plot = profile_plot(index, p->id, element, f);
       add(plot, std::move(f));
     }
@@ -44,11 +44,10 @@ FigureSet render_figures(const ResultsIndex& index, const std::filesystem::path&
   const std::vector<DivergenceFacts> singular = divergence_facts(index);
   for (const schema::ProblemRecord* p : index.problems()) {
     for (const auto& q : p->quantities) {
-      Figure f{.kind = FigureKind::convergence,
-               .problem = p->id,
-               .quantity = q.quantity,
-               .file = fmt::format("figures/convergence_{}_{}.png", schema::to_string(p->id),
-                                   schema::to_string(q.quantity))};
+      Figure f(FigureKind::convergence,
+               fmt::format("figures/convergence_{}_{}.png", schema::to_string(p->id),
+                           schema::to_string(q.quantity)),
+               p->id, q.quantity);
       const Plot plot = convergence_plot(index, rows, singular, *p, q, f);
       add(plot, std::move(f));
     }

@@ -268,19 +268,19 @@ std::string GnuplotWriter::run_script(const Plot& plot, const fs::path& png) {
   const int key_cols = std::clamp(panel_w / entry_px, 1, std::max(1, plot.key_columns));
   const int key_rows = static_cast<int>((entries + key_cols - 1) / key_cols);
   const bool below = plot.key == KeyPlace::below;
-  const int panel_h = plot.panel_height + (below ? kKeyRowPixels * key_rows : 0);
+  const int panel_h = plot.panel_height + (below ? kKeyRowPixels * (key_rows + 1) : 0);
   const fs::path stem = work_ / png.stem();
   std::error_code ec;
   fs::create_directories(png.parent_path(), ec);
   std::string script = fmt::format(
-      "set terminal {} size {},{} noenhanced{}\nset output {}\nset grid\n"
+      "set terminal {} size {},{} noenhanced{}\nset output {}\nset grid\nset clip two\n"
       "set style textbox opaque noborder margins 0.5, 0.5\nset key {}\n"
       "set multiplot layout {},{} title {}\n",
       gnuplot_->terminal, cols * panel_w, rows * panel_h + 40,
       gnuplot_->terminal == "pngcairo" ? " font 'Sans,10'" : "", quote(png.string()),
-      below ? fmt::format("below left vertical maxcols {} maxrows {}", key_cols,
-                          std::max(1, key_rows))
-            : "top right",
+      below ? fmt::format("below left vertical Left reverse height 1 maxcols {} maxrows {}",
+                          key_cols, std::max(1, key_rows))
+            : "top right Left reverse",
       rows, cols, text(plot.title));
   for (int i = 0; i < n; ++i)
     script += panel_script(plot.panels[i], fmt::format("{}_p{}", stem.string(), i));

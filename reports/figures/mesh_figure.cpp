@@ -13,8 +13,8 @@ namespace {
 namespace fs = std::filesystem;
 
 /// Element outlines of one body: each ring closed, a break between elements.
-std::vector<std::pair<double, double>> outlines(const ExportedModel& m, int body) {
-  std::vector<std::pair<double, double>> out;
+Points outlines(const ExportedModel& m, int body) {
+  Points out;
   for (const auto& e : m.elements) {
     if (e.body != body)
       continue;
@@ -53,7 +53,7 @@ FigureSet render_mesh_figures(const fs::path& export_dir, const fs::path& out_ro
   GnuplotWriter writer(options);
   set.unavailable = writer.unavailable();
   for (const auto& m : models) {
-    Figure f{.kind = FigureKind::mesh, .file = "figures/mesh_" + m.name + ".png"};
+    Figure f(FigureKind::mesh, "figures/mesh_" + m.name + ".png");
     f.caption_md =
         fmt::format("{}: {} elements in the indented block, {} in the indenter.", m.name,
                     m.block_elements, static_cast<int>(m.elements.size()) - m.block_elements);

@@ -20,19 +20,33 @@ enum class Mark { line, line_points, points, open_points, bars };
 /// Where each panel's key goes: below the panel (the canvas grows with it) or inside.
 enum class KeyPlace { below, inside };
 
+using Points = std::vector<std::pair<double, double>>;
+
 struct PlotSeries {
-  std::string title;  ///< empty: not in the key
-  std::string colour = "#000000";
-  Mark mark = Mark::line;
-  int dash = 1;   ///< gnuplot dash type: 1 solid, 2 dashed, 3 dotted, 4 dash-dotted
-  int point = 7;  ///< gnuplot point type
-  double width = 1.5;
-  std::vector<std::pair<double, double>> xy;  ///< a NaN point breaks the line
+  PlotSeries(std::string title, std::string colour, Mark mark = Mark::line, int dash = 1,
+             int point = 7, double width = 1.5, Points xy = {})
+      : title(std::move(title)),
+        colour(std::move(colour)),
+        mark(mark),
+        dash(dash),
+        point(point),
+        width(width),
+        xy(std::move(xy)) {}
+  std::string title;   ///< empty: not in the key
+  std::string colour;  ///< "#rrggbb"
+  Mark mark;
+  int dash;      ///< gnuplot dash type: 1 solid, 2 dashed, 3 dotted, 4 dash-dotted
+  int point;     ///< gnuplot point type
+  double width;  ///< line width
+  Points xy;     ///< a NaN point breaks the line
 };
 
 struct PlotAxis {
+  PlotAxis(std::string label = {}, Scale scale = Scale::linear,
+           std::optional<std::pair<double, double>> range = {})
+      : label(std::move(label)), scale(scale), range(range) {}
   std::string label;
-  Scale scale = Scale::linear;
+  Scale scale;
   std::optional<std::pair<double, double>> range;    ///< none: from the data
   std::vector<std::pair<double, std::string>> tics;  ///< none: automatic (1-2-5 on short logs)
   bool reversed = false;
@@ -51,6 +65,8 @@ struct PlotLabel {
 };
 
 struct PlotPanel {
+  PlotPanel(std::string title, PlotAxis x, PlotAxis y)
+      : title(std::move(title)), x(std::move(x)), y(std::move(y)) {}
   std::string title;
   PlotAxis x, y;
   std::vector<PlotSeries> series;
@@ -74,6 +90,10 @@ enum class FigureKind { profile, convergence, sweep, bench, mesh };
 
 /// One figure of the report, as the pages link it.
 struct Figure {
+  Figure() = default;
+  Figure(FigureKind kind, std::string file, std::optional<schema::ProblemId> problem = {},
+         std::optional<schema::Quantity> quantity = {})
+      : kind(kind), problem(problem), quantity(quantity), file(std::move(file)) {}
   FigureKind kind = FigureKind::profile;
   std::optional<schema::ProblemId> problem;  ///< the problem page that embeds it; none: no page
   std::optional<schema::Quantity> quantity;

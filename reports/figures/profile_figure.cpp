@@ -13,15 +13,13 @@ namespace cs::reports {
 namespace {
 
 using schema::ProblemId;
-using XY = std::vector<std::pair<double, double>>;
-
 
 /// The mesh of a curve by its dashes (C dotted, M dashed, F solid) and width.
 constexpr std::array<int, 3> kMeshDash{3, 2, 1};
 constexpr std::array<double, 3> kMeshWidth{1.3, 1.5, 2.0};
 
-XY points(const std::vector<double>& x, const std::vector<double>& y) {
-  XY out;
+Points points(const std::vector<double>& x, const std::vector<double>& y) {
+  Points out;
   for (std::size_t i = 0; i < x.size() && i < y.size(); ++i) {
     if (std::isfinite(x[i]) && std::isfinite(y[i]))
       out.emplace_back(x[i], y[i]);
@@ -31,15 +29,9 @@ XY points(const std::vector<double>& x, const std::vector<double>& y) {
 
 /// The C, M and F curves of one option class in its colour (titled by mesh) and the exact one.
 PlotPanel class_panel(const ResultsIndex& index, const OptionClass& cls, const Slot& slot,
-                      XY& exact) {
-  PlotPanel panel{cls.label(),
-                  {over_punch_width(slot.problem) ? "x / b" : "x / a"},
-                  {"-sigma_z / p"},
-                  {},
-                  {},
-                  {},
-                  0.0,
-                  false};
+                      Points& exact) {
+  PlotPanel panel{
+      cls.label(), {over_punch_width(slot.problem) ? "x / b" : "x / a"}, {"-sigma_z / p"}};
   const schema::RowVerdict* row = class_row(index, cls, slot);
   for (const auto mesh : kMeshes) {
     const schema::CaseResult* c = row ? index.case_of(*row, mesh) : nullptr;
@@ -76,11 +68,26 @@ std::optional<std::pair<double, double>> profile_range(const std::vector<PlotPan
   return std::pair(lo < 0 ? 1.15 * lo : 0.0, 1.15 * hi);
 }
 
+/// The largest spacing of any curve's points around x: a zoom narrower than it would show no
+/// point of the coarse mesh.
+double spacing_at(const std::vector<PlotPanel>& panels, double x) {
+  double widest = 0;
+  for (const auto& p : panels) {
+    for (const auto& s : p.series) {
+      const auto after =
+          std::find_if(s.xy.begin(), s.xy.end(), [x](const auto& q) { return q.first >= x; });
+      if (after != s.xy.begin() && after != s.xy.end())
+        widest = std::max(widest, after->first - std::prev(after)->first);
+    }
+  }
+  return widest;
+}
+
 /// The peak in a narrow band (the Steuermann edge) is too small to judge at the scale of the
 /// whole profile: every class's C, M and F around the exact peak, x where the exact curve is
-/// above 80 % of its peak (widened), y spanning the curves' own peaks there (within 0.5 to 1.6
-/// times the exact peak).
-std::optional<PlotPanel> peak_zoom(const std::vector<PlotPanel>& panels, const XY& exact) {
+/// above 80 % of its peak, widened to hold points of the coarsest curve, y spanning the curves'
+/// own peaks there (within 0.5 to 1.6 times the exact peak).
+std::optional<PlotPanel> peak_zoom(const std::vector<PlotPanel>& panels, const Points& exact) {
   const auto peak = std::max_element(
       exact.begin(), exact.end(), [](const auto& a, const auto& b) { return a.second < b.second; });
   if (peak == exact.end() || !(peak->second > 0))
@@ -92,21 +99,19 @@ std::optional<PlotPanel> peak_zoom(const std::vector<PlotPanel>& panels, const X
       x_hi = std::max(x_hi, x);
     }
   }
-  const double margin = std::max(0.02, 0.25 * (x_hi - x_lo));
+  const double margin =
+      std::max({0.02, 0.25 * (x_hi - x_lo), 1.5 * spacing_at(panels, peak->first)});
+  x_lo = std::max(x_lo - margin, exact.front().first);
+  x_hi += margin;
   PlotPanel zoom{"zoom at the exact peak: C dotted, M dashed, F solid",
-                 {panels.front().x.label, Scale::linear, std::pair(x_lo - margin, x_hi + margin)},
-                 {"-sigma_z / p"},
-                 {},
-                 {},
-                 {},
-                 0.0,
-                 false};
+                 {panels.front().x.label, Scale::linear, std::pair(x_lo, x_hi)},
+                 {"-sigma_z / p"}};
   double y_lo = 0.8 * peak->second, y_hi = 1.1 * peak->second;
   for (const auto& p : panels) {
     for (const auto& s : p.series) {
       double top = -INFINITY;
       for (const auto& [x, y] : s.xy)
-        top = x >= x_lo - margin && x <= x_hi + margin ? std::max(top, y) : top;
+        top = x >= x_lo && x <= x_hi ? std::max(top, y) : top;
       if (!std::isfinite(top))
         continue;
       y_lo = std::min(y_lo, std::max(0.5 * peak->second, 0.97 * top));
@@ -136,7 +141,7 @@ Plot profile_plot(const ResultsIndex& index, ProblemId problem, schema::Element 
   if (p == nullptr || p->quantities.empty())
     return plot;
   const Slot slot{problem, p->quantities.front().quantity, element};
-  XY exact;
+  Points exact;
   for (const auto& cls : coincidence_classes(index, all_options(), {slot})) {
     PlotPanel panel = class_panel(index, cls, slot, exact);
     if (!panel.series.empty())

@@ -109,7 +109,7 @@ FigureSet render_sweep_figures(const schema::ResultsDocument& doc,
     const auto panels = sweep_panels(series);
     if (panels.empty())
       continue;
-    Figure figure{.kind = FigureKind::sweep, .file = sweep_figure_file(key)};
+    Figure figure(FigureKind::sweep, sweep_figure_file(key));
     writer.draw(sweep_plot(doc, key, panels, figure), out_root, figure);
     set.figures.push_back(std::move(figure));
   }

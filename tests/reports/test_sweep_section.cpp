@@ -170,7 +170,8 @@ TEST(SweepFigure, RoundOffLeftOutAndDefaultMarked) {
                 swept_case(ProblemId::H_a, Element::Q4, Algorithm::AL, "fkn", 10, 0.0, 6),
                 swept_case(ProblemId::H_a, Element::Q4, Algorithm::AL, "fkn", 100, -0.5, 8, false)},
                {{"fkn", {1, 10, 100}}});
-  const auto panels = sweep_panels(sweep_series(doc, "fkn"));
+  const auto series_of_fkn = sweep_series(doc, "fkn");  // the panels point into it
+  const auto panels = sweep_panels(series_of_fkn);
   Figure without;
   const Plot unmarked = sweep_plot(doc, "fkn", panels, without);
   ASSERT_EQ(unmarked.panels.size(), 1u);
