@@ -64,7 +64,8 @@ int run_grade(const GradeArgs& args) {
                                     .problems = suites::problem_records(results),
                                     .cases = results,
                                     .rows = suites::make_row_verdicts(results),
-                                    .added_runs = {}};
+                                    .added_runs = {},
+                                    .parameter_defaults = suites::parameter_defaults(results)};
   const auto figures = write_run_output(doc, output, !args.no_report);
   if (!figures) {
     report_interrupted_write(args.out);

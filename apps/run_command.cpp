@@ -167,7 +167,8 @@ int run(const RunArgs& args) {
                                     .problems = suites::problem_records(results),
                                     .cases = results,
                                     .rows = suites::make_row_verdicts(results),
-                                    .added_runs = {}};
+                                    .added_runs = {},
+                                    .parameter_defaults = suites::parameter_defaults(results)};
   if (args.surface_csv)
     stage_surface_csv(results, output);
   const auto figures = write_run_output(doc, output, !args.no_report);

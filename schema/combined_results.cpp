@@ -120,6 +120,7 @@ ResultsDocument combine_results(std::vector<ResultsDocument> documents) {
       out.added_runs.emplace_back(source, doc.run);
     }
     add_problems(out.problems, doc.problems);
+    out.parameter_defaults.insert(doc.parameter_defaults.begin(), doc.parameter_defaults.end());
     for (auto& c : doc.cases)
       add_case(out, owners, std::move(c), source);
     for (auto& r : doc.rows)

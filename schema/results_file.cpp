@@ -498,6 +498,10 @@ json to_json(const ResultsDocument& doc) {
   out["problems"] = problems;
   out["cases"] = cases;
   out["rows"] = rows;
+  json defaults = json::object();
+  for (const auto& [problem, values] : doc.parameter_defaults)
+    defaults[std::string(to_string(problem))] = values;
+  out["parameter_defaults"] = defaults;
   return out;
 }
 
@@ -518,6 +522,18 @@ ResultsDocument results_from_json(const json& j, const std::string& source) {
   doc.problems = records_from<ProblemRecord>(r, "problems", problem_from_json);
   doc.cases = records_from<CaseResult>(r, "cases", case_from_json);
   doc.rows = records_from<RowVerdict>(r, "rows", row_from_json);
+  if (r.has("parameter_defaults")) {
+    const JsonFields all = r.object("parameter_defaults");
+    for (const auto& [problem, values] : r.at("parameter_defaults").items()) {
+      const JsonFields d = all.object(problem.c_str());
+      const auto id = try_parse<ProblemId>(problem);
+      if (!id)
+        all.fail_field(problem, "is not a problem");
+      auto& out = doc.parameter_defaults[*id];
+      for (const auto& [key, value] : values.items())
+        out[key] = d.number(key.c_str(), false);
+    }
+  }
   check_unique_ids(doc, source);
   return doc;
 }

@@ -4,6 +4,7 @@
 // Bump kResultsSchemaVersion on any change a reader would notice.
 
 #include <filesystem>
+#include <map>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -65,6 +66,9 @@ struct ResultsDocument {
   /// Runs combined into this document after the first (schema/combined_results.hpp), each with
   /// its source; empty for a document read from one file. Not written to results.json.
   std::vector<std::pair<std::string, RunInfo>> added_runs;
+  /// Per problem, the value of each settable parameter when a case does not set it (`--set`),
+  /// from the problem's descriptor: the sweep figures mark it. Empty in files written before.
+  std::map<ProblemId, std::map<std::string, double>> parameter_defaults;
 
   /// The record of a problem, or nullptr.
   const ProblemRecord* problem(ProblemId id) const;

@@ -131,4 +131,14 @@ void refresh_problem_records(std::vector<schema::ProblemRecord>& records) {
   }
 }
 
+std::map<ProblemId, std::map<std::string, double>> parameter_defaults(
+    const std::vector<CaseResult>& cases) {
+  std::map<ProblemId, std::map<std::string, double>> out;
+  for (const auto& c : cases) {
+    for (const auto& parameter : problem_descriptor(c.spec.problem).parameters)
+      out[c.spec.problem][parameter.name] = parameter.default_value;
+  }
+  return out;
+}
+
 }  // namespace cs::suites

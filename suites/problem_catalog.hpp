@@ -16,6 +16,9 @@
 // all of that and still admits new problems without an edit outside their own files.
 
 #include <string_view>
+
+#include <map>
+#include <string>
 #include <vector>
 
 #include "suites/case_result.hpp"
@@ -57,5 +60,9 @@ std::vector<schema::ProblemRecord> problem_records(const std::vector<CaseResult>
 /// Fills in the facts a record read from an older results file lacks (situation, length
 /// scale) from the catalogue, for the problems it knows; other records are left as they are.
 void refresh_problem_records(std::vector<schema::ProblemRecord>& records);
+
+/// The default value of every settable parameter of the problems that have a case in `cases`.
+std::map<ProblemId, std::map<std::string, double>> parameter_defaults(
+    const std::vector<CaseResult>& cases);
 
 }  // namespace cs::suites

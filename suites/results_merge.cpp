@@ -174,6 +174,7 @@ schema::ResultsDocument merge_results(const std::vector<schema::ResultsDocument>
   for (auto& c : out.cases)
     order_quantities(c);
   out.problems = problem_records(out.cases);
+  out.parameter_defaults = parameter_defaults(out.cases);
   out.rows = make_row_verdicts(out.cases);
   return out;
 }

@@ -4,6 +4,7 @@
 #include <cctype>
 #include <cmath>
 #include <fstream>
+#include <map>
 #include <set>
 #include <sstream>
 
@@ -460,6 +461,25 @@ BenchResults load_bench_files(const std::vector<std::filesystem::path>& files) {
     all.n_replaced += merge_into(all.all_options, std::move(one.all_options), source);
   }
   return all;
+}
+
+std::vector<std::vector<const ContactBenchmark*>> finest_models(const BenchResults& bench) {
+  std::map<std::tuple<int, int>, BenchModel> finest;  // (problem, element) rank -> model
+  for (const auto& b : bench.contact) {
+    if (!b.time_ms)
+      continue;
+    const auto [problem, mesh, element] = model_order(b.model);
+    const auto [it, added] = finest.try_emplace({problem, element}, b.model);
+    if (!added && std::get<1>(model_order(it->second)) < mesh)
+      it->second = b.model;
+  }
+  std::vector<std::vector<const ContactBenchmark*>> out;
+  for (const auto& [rank, model] : finest) {
+    out.emplace_back();
+    for (const auto& b : bench.contact)
+      out.back().insert(out.back().end(), b.model == model ? 1 : 0, &b);
+  }
+  return out;
 }
 
 }  // namespace cs::reports

@@ -132,6 +132,10 @@ std::string json_without_nonfinite(std::string_view text);
 /// "H<sub>p</sub>, mesh F, Q4".
 std::string model_md(const BenchModel& model);
 
+/// Per problem and element, in the report's order, the benchmarks of its finest mesh with a
+/// timed case.
+std::vector<std::vector<const ContactBenchmark*>> finest_models(const BenchResults& bench);
+
 /// Reads one parsed benchmark document; `source` names it in errors. Throws ReportError.
 BenchResults parse_bench_document(const nlohmann::json& doc, const std::string& source);
 

@@ -1,76 +1,42 @@
 #pragma once
-// The report's figures, drawn by gnuplot as PNG files under DIR/figures/ and embedded in the
-// Markdown with relative links:
-//  - the study's Figure 4: -sigma_z/p along z = 0 for C, M and F against the exact curve, for
-//    H_p and S_1_3, one panel per option set (from each case's `profile`; the exact curve from
-//    the case's optional `exact_profile`);
-//  - for every problem and quantity, log-log |error| (%) against element size h per option set,
-//    with the observed order (least-squares slope) in the legend; for the singular flat punch,
-//    the edge stress itself against h.
-// Data and scripts go to a temporary directory, removed afterwards.
+// The figures of the problem pages, under DIR/figures/:
+//  - the study's Figure 4 for every problem with surface profiles, per element:
+//    -sigma_z/p along z = 0 on C, M and F against the exact curve, one panel per option set,
+//    and a zoom at the exact peak showing C, M and F of every option set;
+//  - per problem and quantity, log-log |error| (%) against element size h per option set, the
+//    legend giving the guarded observed order of grading::observed_order (or why there is
+//    none); for the singular flat punch, the edge stress itself and its divergence exponent.
+// One colour per option set (its place in all_options()), the same in every panel and figure;
+// the mesh by the line's dashes (C dotted, M dashed, F solid).
 
 #include <filesystem>
-#include <optional>
 #include <string>
-#include <vector>
 
-#include "reports/figures/observed_order.hpp"
-#include "reports/results/results_index.hpp"
+#include "reports/facts/row_facts.hpp"
+#include "reports/figures/plot_model.hpp"
 
 namespace cs::reports {
 
-/// What a figure shows.
-enum class FigureKind {
-  profile,      ///< -sigma_z/p along z = 0 (the study's Figure 4)
-  convergence,  ///< |error| (or the singular value) against element size
-  bench,        ///< benchmark times (figures/bench_figure.hpp)
-  mesh,         ///< a model's mesh (figures/mesh_figure.hpp, the study's Figure 3)
-};
+/// The length positions and sizes are normalized by: the punch half-width b for the Steuermann
+/// problems, else the contact half-width a.
+bool over_punch_width(schema::ProblemId id);
 
-/// One figure of the report.
-struct Figure {
-  FigureKind kind = FigureKind::profile;
-  std::optional<schema::ProblemId> problem;  ///< none for the bench chart
-  std::optional<schema::Quantity> quantity;  ///< none for the bench chart
-  std::string file;  ///< relative to the report directory, e.g. "figures/profile_H_p_Q4.png"
-  std::string caption_md;
-  std::vector<std::string> notes;  ///< what the figure lacks (e.g. no exact curve)
-  bool produced = false;           ///< the PNG was written
-  std::string error;               ///< why not, when not
-};
+/// The colour of an option set: one per entry of all_options().
+std::string option_colour(const Option& option);
 
-/// The observed order of one option set on one problem, quantity and element.
-struct ObservedOrderEntry {
-  schema::ProblemId problem = schema::ProblemId::P_p;
-  schema::Quantity quantity = schema::Quantity::sigma_c;
-  schema::Element element = schema::Element::Q4;
-  std::string option_label;
-  std::optional<double> order;
-  bool singular = false;    ///< a slope of the value itself (the flat punch), not an order
-  bool relative_h = false;  ///< element_size_h missing: h taken as 1, 1/2, 1/4
-  bool round_off = false;   ///< errors at round-off (schema::kErrorNoiseFloorPercent): no order
-};
+/// The profile figure of a problem and element (empty panels: no profile); its notes in `figure`.
+Plot profile_plot(const ResultsIndex& index, schema::ProblemId problem, schema::Element element,
+                  Figure& figure);
 
-/// The figures of a report and the observed orders shown in them.
-struct FigureSet {
-  std::vector<Figure> figures;
-  std::vector<ObservedOrderEntry> orders;
-  std::string unavailable;  ///< non-empty when no figure could be drawn (e.g. no gnuplot)
-};
-
-struct FigureOptions {
-  std::string gnuplot_program = "gnuplot";  ///< the gnuplot to run (found on PATH)
-};
-
-/// The observed orders of every baseline option set (no plotting; used by render_figures).
-std::vector<ObservedOrderEntry> observed_orders(const ResultsIndex& index);
+/// The convergence figure of a problem's quantity; its notes in `figure`.
+Plot convergence_plot(const ResultsIndex& index, const std::vector<RowFacts>& rows,
+                      const std::vector<DivergenceFacts>& singular,
+                      const schema::ProblemRecord& problem, const schema::QuantityDefinition& q,
+                      Figure& figure);
 
 /// Draws every figure into `out_root`/figures/. Never throws for a plotting failure: a figure
-/// that could not be drawn carries its error, and the report says so.
+/// that could not be drawn carries its error, and the set says why when none could be.
 FigureSet render_figures(const ResultsIndex& index, const std::filesystem::path& out_root,
                          const FigureOptions& options = {});
-
-/// Section 4 of the report (empty when there is nothing to plot).
-std::string figures_section(const FigureSet& figures);
 
 }  // namespace cs::reports

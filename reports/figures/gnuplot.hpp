@@ -1,11 +1,14 @@
 #pragma once
-// Running gnuplot (Debian's gnuplot-nox) on a script file: finding it, choosing its PNG
-// terminal (pngcairo, else the libgd png), a scratch directory for its data and scripts, and
-// quoting for its single-quoted strings.
+// The one writer of the plot model (figures/plot_model.hpp): a gnuplot script and one data file
+// per series in a scratch directory (removed afterwards), run through platform/child_process on
+// Debian's gnuplot (pngcairo, else the libgd png terminal).
 
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <string_view>
+
+#include "reports/figures/plot_model.hpp"
 
 namespace cs::reports {
 
@@ -18,28 +21,28 @@ struct Gnuplot {
 /// Probes `program`: nullopt when it cannot be run or offers neither PNG terminal.
 std::optional<Gnuplot> find_gnuplot(const std::string& program = "gnuplot");
 
-/// Runs `script` with its output in `log`; returns an empty string on success, else a one-line
-/// description (exit status and the first error line of the log).
-std::string run_gnuplot(const Gnuplot& gnuplot, const std::filesystem::path& script,
-                        const std::filesystem::path& log);
+/// The plain text of a Markdown label, as gnuplot prints it: <sub>x</sub> -> _x,
+/// <sup>x</sup> -> ^x, ′ -> ', any other tag dropped ("P′<sub>p</sub>" -> "P'_p").
+std::string plain_label(std::string_view markdown);
 
-/// A temporary directory for gnuplot's data files and scripts, removed with its content when
-/// the object goes out of scope.
-class ScratchDir {
+/// Draws plots as PNG files. Never throws for a plotting failure: it returns why.
+class GnuplotWriter {
  public:
-  /// Creates a fresh directory under the system's temporary directory; throws
-  /// std::runtime_error when it cannot.
-  ScratchDir();
-  ~ScratchDir();
-  ScratchDir(const ScratchDir&) = delete;
-  ScratchDir& operator=(const ScratchDir&) = delete;
-  const std::filesystem::path& path() const { return path_; }
+  explicit GnuplotWriter(const FigureOptions& options = {});
+  ~GnuplotWriter();
+  GnuplotWriter(const GnuplotWriter&) = delete;
+  GnuplotWriter& operator=(const GnuplotWriter&) = delete;
+  /// Empty when gnuplot can draw; else a sentence saying why no figure can be drawn.
+  const std::string& unavailable() const { return unavailable_; }
+  /// Draws `plot` into `out_root`/`figure.file` and records the outcome in `figure`.
+  void draw(const Plot& plot, const std::filesystem::path& out_root, Figure& figure);
 
  private:
-  std::filesystem::path path_;
+  /// Writes the script and data of `plot`, runs gnuplot; "" on success, else why not.
+  std::string run_script(const Plot& plot, const std::filesystem::path& png);
+  std::optional<Gnuplot> gnuplot_;
+  std::filesystem::path work_;  ///< scratch directory for scripts and data, removed afterwards
+  std::string unavailable_;
 };
-
-/// `text` as a gnuplot single-quoted string literal ('' stands for a quote inside).
-std::string gnuplot_quote(const std::string& text);
 
 }  // namespace cs::reports

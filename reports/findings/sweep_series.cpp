@@ -4,6 +4,7 @@
 #include <cmath>
 #include <map>
 #include <set>
+#include <tuple>
 
 #include <fmt/format.h>
 
@@ -103,6 +104,26 @@ std::vector<double> swept_values(const std::vector<SweepSeries>& series) {
 
 std::string format_swept_value(double value) {
   return fmt::format("{:g}", value);
+}
+
+std::vector<SweepPanel> sweep_panels(const std::vector<SweepSeries>& series) {
+  using Key = std::tuple<schema::ProblemId, schema::Quantity, schema::MeshLevel, schema::Element>;
+  std::map<Key, std::size_t> slot;
+  std::vector<SweepPanel> panels;
+  for (const auto& s : series) {
+    if (s.points.empty() || !on_finest_mesh(s, series))
+      continue;
+    for (const auto& q : s.points.front().result->quantities) {
+      if (q.quantity == schema::Quantity::contact_half_width)
+        continue;  // graded apart: it moves by whole nodes
+      const Key key{s.base.problem, q.quantity, s.base.mesh, s.base.element};
+      const auto [it, fresh] = slot.try_emplace(key, panels.size());
+      if (fresh)
+        panels.push_back({s.base.problem, q.quantity, s.base.mesh, s.base.element, {}});
+      panels[it->second].series.push_back(&s);
+    }
+  }
+  return panels;
 }
 
 }  // namespace cs::reports

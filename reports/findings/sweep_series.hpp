@@ -50,4 +50,17 @@ std::vector<double> swept_values(const std::vector<SweepSeries>& series);
 /// A swept value as the report prints it: "0.001", "1e+04" -> "1e4" style via {:g}.
 std::string format_swept_value(double value);
 
+/// One panel of a sweep figure: the series of one problem, quantity, mesh and element.
+struct SweepPanel {
+  schema::ProblemId problem = schema::ProblemId::P_p;
+  schema::Quantity quantity = schema::Quantity::sigma_c;
+  schema::MeshLevel mesh = schema::MeshLevel::F;
+  schema::Element element = schema::Element::Q4;
+  std::vector<const SweepSeries*> series;
+};
+
+/// The panels of a key's series, in document order: the finest mesh swept of each problem and
+/// element, every stress quantity (not the contact half-width, graded apart).
+std::vector<SweepPanel> sweep_panels(const std::vector<SweepSeries>& series);
+
 }  // namespace cs::reports

@@ -58,8 +58,10 @@ std::string option_label(const RowFacts& f, const std::vector<const RowFacts*>& 
         t->option.contact != f.option.contact || t->element != f.element ||
         t->quantity != f.quantity || !coincide(*t->row, *f.row))
       continue;
-    skip = f.option.algorithm == schema::Algorithm::PM || f.option.algorithm == schema::Algorithm::PLM;
-    return fmt::format("{}, {} {}", schema::to_string(std::min(f.option.algorithm, *twin_algorithm)),
+    skip =
+        f.option.algorithm == schema::Algorithm::PM || f.option.algorithm == schema::Algorithm::PLM;
+    return fmt::format("{}, {} {}",
+                       schema::to_string(std::min(f.option.algorithm, *twin_algorithm)),
                        schema::to_string(std::max(f.option.algorithm, *twin_algorithm)),
                        schema::to_string(f.option.contact));
   }
@@ -166,6 +168,11 @@ std::string problem_page(const ResultsIndex& index, const schema::ProblemRecord&
           TemplateData fd;
           fd.set("file", f->file);
           fd.set("caption", f->caption_md);
+          fd.set("notes", template_list(f->notes, [](const std::string& n) {
+                   TemplateData nd;
+                   nd.set("note", n);
+                   return nd;
+                 }));
           return fd;
         }));
   return render_template(templates::problem_page, d);

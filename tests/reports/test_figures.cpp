@@ -1,60 +1,119 @@
-// Figures: PNG files drawn by gnuplot (skipped when it is not installed), the observed order
-// of convergence, and a report that says so when no figure could be drawn.
+// Figures: the plot models of the profile and convergence figures (checked on numbers, without
+// gnuplot), the PNG files gnuplot draws from them (skipped when it is not installed), and a
+// figure set that says so when no figure could be drawn.
 
 #include <cmath>
+#include <map>
+#include <set>
 
 #include <gtest/gtest.h>
 
+#include <fmt/format.h>
+
+#include "grading/convergence.hpp"
 #include "report_test_support.hpp"
 #include "reports/figures/figures.hpp"
 #include "reports/figures/gnuplot.hpp"
-#include "reports/figures/observed_order.hpp"
-#include "reports/figures/plain_label.hpp"
-#include "support/tolerance.hpp"
 
 namespace cs::reports {
 namespace {
 
 namespace fs = std::filesystem;
+using schema::Element;
+using schema::ProblemId;
 using testing::Loaded;
 using testing::sample_json;
 using testing::TempDir;
 
-TEST(ObservedOrder, LeastSquaresSlopeOfLogErrorOverLogH) {
-  // |e| = 3 h^2 exactly: slope 2 to round-off.
-  EXPECT_TRUE(cs::testing::Near(
-      *observed_order({{0.25, 0.1875}, {0.125, 0.046875}, {0.0625, 0.01171875}}), 2.0, {1e-12, 0}));
-  // Three points off a line: the least-squares slope of (ln h, ln e) = (0,0), (1,1), (2,3):
-  // 1.5, whatever the base of the logarithm.
-  const double e = std::exp(1.0);
-  EXPECT_TRUE(
-      cs::testing::Near(*observed_order({{1, 1}, {e, e}, {e * e, e * e * e}}), 1.5, {1e-12, 0}));
-  // A singular stress growing as h^-1/2: slope -0.5.
-  EXPECT_TRUE(cs::testing::Near(*observed_order({{0.25, 2.0}, {0.0625, 4.0}}), -0.5, {1e-12, 0}));
-  // Zero errors (exact results) and single points carry no order.
-  EXPECT_FALSE(observed_order({{0.25, 0.0}, {0.125, 0.0}, {0.0625, 1e-3}}).has_value());
-  EXPECT_FALSE(observed_order({{0.25, 1.0}, {0.25, 2.0}}).has_value());
+const PlotSeries* series_titled(const PlotPanel& panel, const std::string& prefix) {
+  for (const auto& s : panel.series) {
+    if (s.title.rfind(prefix, 0) == 0)
+      return &s;
+  }
+  return nullptr;
 }
 
-TEST(Figures, ObservedOrdersOfTheSample) {
+Plot sample_convergence(const Loaded& data, ProblemId id, Figure& figure) {
+  const schema::ProblemRecord& p = *data.index.problem(id);
+  return convergence_plot(data.index, row_facts(data.index), divergence_facts(data.index), p,
+                          p.quantities.front(), figure);
+}
+
+// Requirement: the legend gives grading::observed_order's guarded order (never a fitted
+// slope), says why there is none for a non-monotone sequence, and gives a singular row's
+// divergence exponent.
+TEST(ConvergenceFigure, LegendGivesTheGuardedObservedOrder) {
   const Loaded data(sample_json());
-  const auto orders = observed_orders(data.index);
-  bool found = false;
-  for (const auto& o : orders) {
-    if (o.problem == schema::ProblemId::F_p && o.element == schema::Element::Q4 &&
-        o.option_label == "AL (ss)") {
-      found = true;
-      EXPECT_TRUE(o.singular);
-      ASSERT_TRUE(o.order.has_value());
-      EXPECT_LT(*o.order, -0.4);  // 2.13, 3.02, 4.27 on h, h/2, h/4: grows about as h^-1/2
-      EXPECT_GT(*o.order, -0.6);
+  Figure figure;
+  const Plot plot = sample_convergence(data, ProblemId::H_p, figure);
+  ASSERT_FALSE(plot.panels.empty());
+  const PlotPanel& q4 = plot.panels.front();
+  // LMP = PLM (ss): 1.31, 1.29, 1.279 against 4/pi; its order is the grading layer's.
+  const double exact = 4.0 / M_PI;
+  const auto order = grading::observed_order(100 * (1.31 / exact - 1), 100 * (1.29 / exact - 1),
+                                             100 * (1.279 / exact - 1));
+  ASSERT_TRUE(order.order.has_value()) << order.note;
+  const PlotSeries* lmp = series_titled(q4, "LMP = PLM (ss)");
+  ASSERT_NE(lmp, nullptr);
+  EXPECT_EQ(lmp->title, fmt::format("LMP = PLM (ss): order {:.2f}", *order.order));
+  // MPC ss: 1.44, 1.47, 1.52, the error grows: no order, and the legend says why.
+  const PlotSeries* mpc = series_titled(q4, "MPC");
+  ASSERT_NE(mpc, nullptr);
+  EXPECT_NE(mpc->title.find("no order: "), std::string::npos) << mpc->title;
+  // Three meshes drawn at their element sizes, |error| in percent.
+  ASSERT_EQ(lmp->xy.size(), 3u);
+  EXPECT_DOUBLE_EQ(lmp->xy[0].first, 0.125);
+  EXPECT_NEAR(lmp->xy[2].second, 100 * std::abs(1.279 / exact - 1), 1e-3);  // 4 printed digits
+
+  const Plot punch = sample_convergence(data, ProblemId::F_p, figure);
+  const PlotSeries* al = series_titled(punch.panels.front(), "AL");
+  ASSERT_NE(al, nullptr);
+  EXPECT_NE(al->title.find("exponent 0."), std::string::npos) << al->title;
+}
+
+// Requirement: an exact-to-round-off error is left out of the log plot, and the figure says so.
+TEST(ConvergenceFigure, RoundOffErrorsAreLeftOutAndNoted) {
+  const Loaded data(sample_json());
+  Figure figure;
+  const Plot plot = sample_convergence(data, ProblemId::P_p, figure);  // AL ss: exact on every mesh
+  const PlotSeries* al = series_titled(plot.panels.front(), "AL");
+  ASSERT_NE(al, nullptr);
+  EXPECT_TRUE(al->xy.empty());
+  ASSERT_EQ(figure.notes.size(), 1u);
+  EXPECT_NE(figure.notes[0].find("round-off"), std::string::npos);
+}
+
+// Requirement: every problem with surface profiles gets a profile figure per element; each
+// option set has one colour in every panel, distinct from the others; the zoom shows C, M and
+// F of every option set.
+TEST(ProfileFigure, OneColourPerOptionSetAndAZoomWithEveryMesh) {
+  const Loaded data(sample_json());
+  Figure figure;
+  const Plot plot = profile_plot(data.index, ProblemId::S_1_3, Element::Q4, figure);
+  ASSERT_EQ(plot.panels.size(), 3u);  // AL ss, LMP ss, the zoom
+  std::set<std::string> colours;
+  for (std::size_t i = 0; i + 1 < plot.panels.size(); ++i) {
+    std::set<std::string> own;
+    for (const auto& s : plot.panels[i].series) {
+      if (s.title != "exact")
+        own.insert(s.colour);
     }
-    if (o.problem == schema::ProblemId::P_p && o.option_label == "AL (ss)") {
-      EXPECT_FALSE(o.order.has_value());  // exact
-      EXPECT_FALSE(o.singular);
-    }
+    ASSERT_EQ(own.size(), 1u) << plot.panels[i].title;
+    colours.insert(*own.begin());
   }
-  EXPECT_TRUE(found);
+  EXPECT_EQ(colours.size(), 2u);
+  const PlotPanel& zoom = plot.panels.back();
+  std::map<std::string, std::set<int>> dashes_by_colour;
+  for (const auto& s : zoom.series)
+    dashes_by_colour[s.colour].insert(s.dash);
+  for (const auto& c : colours)
+    EXPECT_EQ(dashes_by_colour[c], (std::set<int>{1, 2, 3})) << c;  // F solid, M dashed, C dotted
+  ASSERT_TRUE(zoom.x.range && zoom.y.range);
+
+  Figure none;
+  EXPECT_TRUE(profile_plot(data.index, ProblemId::P_p, Element::Q4, none).panels.empty());
+  Figure hertz;
+  EXPECT_FALSE(profile_plot(data.index, ProblemId::H_p, Element::Q8, hertz).panels.empty());
 }
 
 bool is_png(const fs::path& p) {
@@ -62,6 +121,7 @@ bool is_png(const fs::path& p) {
   return bytes.size() > 1000 && bytes.compare(0, 8, "\x89PNG\r\n\x1a\n") == 0;
 }
 
+// Requirement: the figures are PNG files, each tied to its problem's page.
 TEST(Figures, DrawsNonEmptyPngFiles) {
   if (!find_gnuplot())
     GTEST_SKIP() << "gnuplot with a PNG terminal is not installed";
@@ -73,6 +133,7 @@ TEST(Figures, DrawsNonEmptyPngFiles) {
   for (const auto& f : set.figures) {
     EXPECT_TRUE(f.produced) << f.file << ": " << f.error;
     EXPECT_TRUE(is_png(tmp.path() / f.file)) << f.file;
+    EXPECT_TRUE(f.problem.has_value()) << f.file;
     files.push_back(f.file);
   }
   for (const char* expected :
@@ -81,43 +142,39 @@ TEST(Figures, DrawsNonEmptyPngFiles) {
         "figures/convergence_F_p_sigma_c_star.png"}) {
     EXPECT_NE(std::find(files.begin(), files.end(), expected), files.end()) << expected;
   }
-  const std::string md = figures_section(set);
-  EXPECT_NE(md.find("![H_p sigma_c](figures/profile_H_p_Q4.png)"), std::string::npos);
-  EXPECT_NE(md.find("Q4 AL (ss): slope −"), std::string::npos);
 }
 
 // Requirement: figure titles name problems and quantities in plain text, from the vocabulary's
 // Markdown labels.
 TEST(Figures, PlainTextOfTheVocabularysLabels) {
-  EXPECT_EQ(plain_label(schema::label(schema::ProblemId::Pprime_p)), "P'_p");
-  EXPECT_EQ(plain_label(schema::label(schema::ProblemId::S_1_3)), "S(1/3)");
-  EXPECT_EQ(plain_label(schema::label(schema::ProblemId::H_a)), "H_a");
+  EXPECT_EQ(plain_label(schema::label(ProblemId::Pprime_p)), "P'_p");
+  EXPECT_EQ(plain_label(schema::label(ProblemId::S_1_3)), "S(1/3)");
+  EXPECT_EQ(plain_label(schema::label(ProblemId::H_a)), "H_a");
   EXPECT_EQ(plain_label("σ̄<sub>c</sub><sup>*</sup>"), "σ̄_c^*");
   EXPECT_EQ(plain_label("a <b>bold</b> word"), "a bold word");
 }
 
-TEST(Figures, WithoutGnuplotTheReportSaysSo) {
+TEST(Figures, WithoutGnuplotTheSetSaysSo) {
   const Loaded data(sample_json());
   TempDir tmp;
   const FigureSet set = render_figures(data.index, tmp.path(), {"/nonexistent/gnuplot"});
   EXPECT_FALSE(set.unavailable.empty());
   EXPECT_FALSE(fs::exists(tmp.path() / "figures"));
-  EXPECT_NE(figures_section(set).find("**No figures:**"), std::string::npos);
+  for (const auto& f : set.figures)
+    EXPECT_EQ(f.error, set.unavailable);
 }
 
-TEST(Figures, ProfileCaptionSaysWhenTheExactCurveIsMissing) {
+TEST(Figures, ProfileNotesSayWhenTheExactCurveIsMissing) {
   auto doc = sample_json();
   for (auto& c : doc["cases"])
     c.erase("exact_profile");
   const Loaded data(doc);
-  TempDir tmp;
-  const FigureSet set = render_figures(data.index, tmp.path(), {"/nonexistent/gnuplot"});
-  bool noted = false;
-  for (const auto& f : set.figures) {
-    for (const auto& n : f.notes)
-      noted = noted || n.find("no exact curve") != std::string::npos;
-  }
-  EXPECT_TRUE(noted);
+  Figure figure;
+  const Plot plot = profile_plot(data.index, ProblemId::H_p, Element::Q4, figure);
+  ASSERT_FALSE(plot.panels.empty());
+  EXPECT_EQ(plot.panels.back().title.rfind("zoom", 0), std::string::npos);  // nothing to zoom at
+  ASSERT_EQ(figure.notes.size(), 1u);
+  EXPECT_NE(figure.notes[0].find("no exact curve"), std::string::npos);
 }
 
 }  // namespace

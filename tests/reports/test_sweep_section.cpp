@@ -157,3 +157,43 @@ TEST(SweepSection, ERatioSettlesAndFtolnSpread) {
 
 }  // namespace
 }  // namespace cs::reports
+
+namespace cs::reports {
+namespace {
+
+// Requirement: in a sweep figure an error exact to round-off is left out of the log plot and
+// the notes say so, and the problem's default value of the key is marked "default" (or the
+// notes say the results do not record it).
+TEST(SweepFigure, RoundOffLeftOutAndDefaultMarked) {
+  auto doc =
+      document({swept_case(ProblemId::H_a, Element::Q4, Algorithm::AL, "fkn", 1, -6.0, 4),
+                swept_case(ProblemId::H_a, Element::Q4, Algorithm::AL, "fkn", 10, 0.0, 6),
+                swept_case(ProblemId::H_a, Element::Q4, Algorithm::AL, "fkn", 100, -0.5, 8, false)},
+               {{"fkn", {1, 10, 100}}});
+  const auto series_of_fkn = sweep_series(doc, "fkn");  // the panels point into it
+  const auto panels = sweep_panels(series_of_fkn);
+  Figure without;
+  const Plot unmarked = sweep_plot(doc, "fkn", panels, without);
+  ASSERT_EQ(unmarked.panels.size(), 1u);
+  EXPECT_TRUE(unmarked.panels[0].marks.empty());
+  ASSERT_EQ(without.notes.size(), 2u);
+  EXPECT_NE(without.notes[0].find("1 error(s) below"), std::string::npos) << without.notes[0];
+  EXPECT_NE(without.notes[1].find("do not record the default fkn"), std::string::npos);
+  // The line through the two drawn points; filled symbol where converged, open where not.
+  const auto& series = unmarked.panels[0].series;
+  ASSERT_EQ(series.size(), 3u);
+  EXPECT_EQ(series[0].xy, (std::vector<std::pair<double, double>>{{1, 6.0}, {100, 0.5}}));
+  EXPECT_EQ(series[1].xy.size(), 1u);
+  EXPECT_EQ(series[2].xy.size(), 1u);
+
+  doc.parameter_defaults[ProblemId::H_a]["fkn"] = 100;
+  Figure with;
+  const Plot marked = sweep_plot(doc, "fkn", panels, with);
+  ASSERT_EQ(marked.panels[0].marks.size(), 1u);
+  EXPECT_EQ(marked.panels[0].marks[0].x, 100);
+  EXPECT_EQ(marked.panels[0].marks[0].label, "default");
+  EXPECT_EQ(with.notes.size(), 1u);
+}
+
+}  // namespace
+}  // namespace cs::reports

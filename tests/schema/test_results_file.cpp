@@ -161,6 +161,23 @@ TEST(SchemaResultsFile, SweepRoundTripsAndIsChecked) {
       "R.run.sweep[1].key: \"fkn\" is swept twice");
 }
 
+// Requirement: the problems' parameter defaults round-trip, and an unknown problem or a
+// value that is not a number is refused with its path.
+TEST(SchemaResultsFile, ParameterDefaultsRoundTripAndAreChecked) {
+  ResultsDocument doc = small_document();
+  doc.parameter_defaults[ProblemId::H_p] = {{"fkn", 100.0}, {"nu", 0.25}};
+  const json once = to_json(doc);
+  const ResultsDocument back = results_from_json(once, "mem");
+  EXPECT_EQ(back.parameter_defaults, doc.parameter_defaults);
+  EXPECT_EQ(to_json(back), once);
+  expect_rejected(
+      [](json& j) {
+        j["parameter_defaults"] = {{"X_q", {{"fkn", 1}}}};
+      },
+      "X_q: is not a problem");
+  expect_rejected([](json& j) { j["parameter_defaults"] = {{"H_p", {{"fkn", "big"}}}}; }, "fkn");
+}
+
 TEST(SchemaResultsFile, FileErrorsAreSchemaErrors) {
   cs::testing::TempDir dir;
   EXPECT_THROW(read_results_file(dir.path() / "missing.json"), SchemaError);

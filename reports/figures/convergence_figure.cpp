@@ -1,0 +1,134 @@
+// The convergence figure (figures/figures.hpp): error (or the singular value) against h.
+
+#include <algorithm>
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "reports/figures/figures.hpp"
+#include "reports/tables/option_classes.hpp"
+
+namespace cs::reports {
+namespace {
+
+using schema::ProblemId;
+
+/// What the legend says of a row: the guarded observed order (grading::observed_order, through
+/// RowFacts) or why there is none; for a singular row, its divergence exponent.
+std::string order_legend(const schema::RowVerdict* row, const std::vector<RowFacts>& rows,
+                         const std::vector<DivergenceFacts>& singular) {
+  for (const auto& d : singular) {
+    if (d.row == row)
+      return d.exponent ? fmt::format("exponent {:.2f}", *d.exponent) : "no exponent";
+  }
+  for (const auto& f : rows) {
+    if (f.row != row)
+      continue;
+    if (f.order)
+      return fmt::format("order {:.2f}", *f.order);
+    return "no order: " + f.order_note.substr(0, f.order_note.find(" ("));
+  }
+  return "no order: no F value";
+}
+
+/// Grey reference lines through the median curve's coarsest point: slopes 1 and 2 for an
+/// error, -1/2 (a square-root singularity's growth) for a singular value.
+void add_reference_slopes(PlotPanel& panel, bool singular) {
+  double lo = INFINITY, hi = 0;
+  for (const auto& s : panel.series) {
+    for (const auto& [x, y] : s.xy) {
+      lo = std::min(lo, x);
+      hi = std::max(hi, x);
+    }
+  }
+  std::vector<double> start;
+  for (const auto& s : panel.series) {
+    for (const auto& [x, y] : s.xy) {
+      if (x >= hi * (1 - 1e-9))
+        start.push_back(y);
+    }
+  }
+  if (!(hi > lo) || !(lo > 0) || start.empty())
+    return;
+  std::sort(start.begin(), start.end());
+  const double y0 = start[start.size() / 2];
+  for (const double slope : singular ? std::vector{-0.5} : std::vector{1.0, 2.0}) {
+    panel.series.push_back({fmt::format("slope {:g}", slope),
+                            "#999999",
+                            Mark::line,
+                            4,
+                            7,
+                            1.0,
+                            {{hi, y0}, {lo, y0 * std::pow(lo / hi, slope)}}});
+  }
+}
+
+}  // namespace
+
+Plot convergence_plot(const ResultsIndex& index, const std::vector<RowFacts>& rows,
+                      const std::vector<DivergenceFacts>& singular, const schema::ProblemRecord& p,
+                      const schema::QuantityDefinition& q, Figure& figure) {
+  Plot plot{fmt::format("{} ({}): {} against element size", schema::label(p.id), q.definition_plain,
+                        p.singular ? "edge stress" : "|error|"),
+            {},
+            2,
+            700,
+            480,
+            KeyPlace::below,
+            2};
+  bool relative = false, round_off = false;
+  for (const auto element : schema::values<schema::Element>()) {
+    if (!index.has(p.id, q.quantity, element))
+      continue;
+    const Slot slot{p.id, q.quantity, element};
+    PlotPanel panel{
+        std::string(schema::to_string(element)),
+        {over_punch_width(p.id) ? "element size h / b" : "element size h / a", Scale::log},
+        {p.singular ? q.definition_plain : "|error| (%)", Scale::log}};
+    for (const auto& cls : coincidence_classes(index, all_options(), {slot})) {
+      const schema::RowVerdict* row = class_row(index, cls, slot);
+      const auto& contact = schema::traits(cls.members.front().contact);
+      PlotSeries s{cls.label() + ": " + order_legend(row, rows, singular),
+                   option_colour(cls.members.front()), Mark::line_points, contact.dash,
+                   contact.point};
+      for (std::size_t m = 0; m < kMeshes.size(); ++m) {
+        const schema::CaseResult* c = index.case_of(*row, kMeshes[m]);
+        const auto y = p.singular ? row->values[m] : row->errors[m];
+        const auto h = c ? finite(c->element_size_h) : std::nullopt;
+        relative = relative || (y && !(h && *h > 0));
+        if (y && std::abs(*y) < schema::kErrorNoiseFloorPercent)
+          round_off = true;  // exact to round-off: nothing to draw on a log scale
+        else if (y && std::isfinite(*y))
+          s.xy.emplace_back(h && *h > 0 ? *h : std::ldexp(1.0, -static_cast<int>(m)), std::abs(*y));
+      }
+      panel.series.push_back(std::move(s));
+    }
+    for (const auto& s : panel.series) {
+      for (const auto& [x, y] : s.xy) {
+        if (std::none_of(panel.x.tics.begin(), panel.x.tics.end(),
+                         [x](const auto& t) { return std::abs(t.first - x) <= 1e-6 * x; }))
+          panel.x.tics.emplace_back(x, fmt::format("{:.3g}", x));  // the meshes' sizes
+      }
+    }
+    add_reference_slopes(panel, p.singular);
+    plot.panels.push_back(std::move(panel));
+  }
+  figure.caption_md = fmt::format(
+      "{} — {}: {} against element size, log–log, per option set (colour: option set; dashes "
+      "and symbols: contact type). Legend: {}.",
+      schema::label(p.id), schema::label(q.quantity),
+      p.singular ? "the edge stress" : "|error| (%)",
+      p.singular ? "the exponent of the edge stress's growth (grading/divergence.hpp)"
+                 : "the observed order (grading::observed_order: the mean of the C→M and M→F "
+                   "orders, given only for a monotone sequence in its asymptotic range; else "
+                   "why not)");
+  if (relative)
+    figure.notes.push_back("element_size_h missing in some cases: h taken as 1, 1/2, 1/4.");
+  if (round_off)
+    figure.notes.push_back(fmt::format(
+        "errors below {:g} % are round-off, not discretization error: left out of the log plot.",
+        schema::kErrorNoiseFloorPercent));
+  return plot;
+}
+
+}  // namespace cs::reports

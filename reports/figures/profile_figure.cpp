@@ -1,0 +1,176 @@
+// The profile figure (figures/figures.hpp): the study's Figure 4 for any problem with profiles.
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "reports/figures/figures.hpp"
+#include "reports/tables/option_classes.hpp"
+
+namespace cs::reports {
+namespace {
+
+using schema::ProblemId;
+
+/// The mesh of a curve by its dashes (C dotted, M dashed, F solid) and width.
+constexpr std::array<int, 3> kMeshDash{3, 2, 1};
+constexpr std::array<double, 3> kMeshWidth{1.3, 1.5, 2.0};
+
+Points points(const std::vector<double>& x, const std::vector<double>& y) {
+  Points out;
+  for (std::size_t i = 0; i < x.size() && i < y.size(); ++i) {
+    if (std::isfinite(x[i]) && std::isfinite(y[i]))
+      out.emplace_back(x[i], y[i]);
+  }
+  return out;
+}
+
+/// The C, M and F curves of one option class in its colour (titled by mesh) and the exact one.
+PlotPanel class_panel(const ResultsIndex& index, const OptionClass& cls, const Slot& slot,
+                      Points& exact) {
+  PlotPanel panel{
+      cls.label(), {over_punch_width(slot.problem) ? "x / b" : "x / a"}, {"-sigma_z / p"}};
+  const schema::RowVerdict* row = class_row(index, cls, slot);
+  for (const auto mesh : kMeshes) {
+    const schema::CaseResult* c = row ? index.case_of(*row, mesh) : nullptr;
+    if (c == nullptr || c->profile.x_over_a.empty())
+      continue;
+    if (exact.empty())
+      exact = points(c->exact_profile.x_over_a, c->exact_profile.sigma_z_over_p);
+    const std::size_t m = mesh_index(mesh);
+    panel.series.push_back({std::string(schema::to_string(mesh)),
+                            option_colour(cls.members.front()), Mark::line, kMeshDash[m], 7,
+                            kMeshWidth[m], points(c->profile.x_over_a, c->profile.sigma_z_over_p)});
+  }
+  return panel;
+}
+
+/// Where any curve is above 1 % of the highest peak, widened 15 %.
+std::optional<std::pair<double, double>> profile_range(const std::vector<PlotPanel>& panels) {
+  double peak = 0, lo = INFINITY, hi = -INFINITY;
+  for (int pass = 0; pass < 2; ++pass) {
+    for (const auto& p : panels) {
+      for (const auto& s : p.series) {
+        for (const auto& [x, y] : s.xy) {
+          peak = pass == 0 ? std::max(peak, std::abs(y)) : peak;
+          if (pass == 1 && std::abs(y) > 0.01 * peak) {
+            lo = std::min(lo, x);
+            hi = std::max(hi, x);
+          }
+        }
+      }
+    }
+  }
+  if (!(hi > lo))
+    return std::nullopt;
+  return std::pair(lo < 0 ? 1.15 * lo : 0.0, 1.15 * hi);
+}
+
+/// The largest spacing of any curve's points around x: a zoom narrower than it would show no
+/// point of the coarse mesh.
+double spacing_at(const std::vector<PlotPanel>& panels, double x) {
+  double widest = 0;
+  for (const auto& p : panels) {
+    for (const auto& s : p.series) {
+      const auto after =
+          std::find_if(s.xy.begin(), s.xy.end(), [x](const auto& q) { return q.first >= x; });
+      if (after != s.xy.begin() && after != s.xy.end())
+        widest = std::max(widest, after->first - std::prev(after)->first);
+    }
+  }
+  return widest;
+}
+
+/// The peak in a narrow band (the Steuermann edge) is too small to judge at the scale of the
+/// whole profile: every class's C, M and F around the exact peak, x where the exact curve is
+/// above 80 % of its peak, widened to hold points of the coarsest curve, y spanning the curves'
+/// own peaks there (within 0.5 to 1.6 times the exact peak).
+std::optional<PlotPanel> peak_zoom(const std::vector<PlotPanel>& panels, const Points& exact) {
+  const auto peak = std::max_element(
+      exact.begin(), exact.end(), [](const auto& a, const auto& b) { return a.second < b.second; });
+  if (peak == exact.end() || !(peak->second > 0))
+    return std::nullopt;
+  double x_lo = peak->first, x_hi = peak->first;
+  for (const auto& [x, y] : exact) {
+    if (y >= 0.8 * peak->second) {
+      x_lo = std::min(x_lo, x);
+      x_hi = std::max(x_hi, x);
+    }
+  }
+  const double margin =
+      std::max({0.02, 0.25 * (x_hi - x_lo), 1.5 * spacing_at(panels, peak->first)});
+  x_lo = std::max(x_lo - margin, exact.front().first);
+  x_hi += margin;
+  PlotPanel zoom{"zoom at the exact peak: C dotted, M dashed, F solid",
+                 {panels.front().x.label, Scale::linear, std::pair(x_lo, x_hi)},
+                 {"-sigma_z / p"}};
+  double y_lo = 0.8 * peak->second, y_hi = 1.1 * peak->second;
+  for (const auto& p : panels) {
+    for (const auto& s : p.series) {
+      double top = -INFINITY;
+      for (const auto& [x, y] : s.xy)
+        top = x >= x_lo && x <= x_hi ? std::max(top, y) : top;
+      if (!std::isfinite(top))
+        continue;
+      y_lo = std::min(y_lo, std::max(0.5 * peak->second, 0.97 * top));
+      y_hi = std::max(y_hi, std::min(1.6 * peak->second, 1.03 * top));
+      zoom.series.push_back(s);
+      zoom.series.back().title = s.dash == 1 ? p.title : "";
+    }
+  }
+  zoom.y.range = std::pair(y_lo, y_hi);
+  zoom.series.push_back({"exact", "#000000", Mark::line, 1, 7, 1.0, exact});
+  return zoom;
+}
+
+}  // namespace
+
+Plot profile_plot(const ResultsIndex& index, ProblemId problem, schema::Element element,
+                  Figure& figure) {
+  Plot plot{fmt::format("{} {}: -sigma_z/p on z = 0, meshes C (dotted), M (dashed), F (solid)",
+                        schema::label(problem), schema::to_string(element)),
+            {},
+            3,
+            520,
+            380,
+            KeyPlace::below,
+            4};
+  const schema::ProblemRecord* p = index.problem(problem);
+  if (p == nullptr || p->quantities.empty())
+    return plot;
+  const Slot slot{problem, p->quantities.front().quantity, element};
+  Points exact;
+  for (const auto& cls : coincidence_classes(index, all_options(), {slot})) {
+    PlotPanel panel = class_panel(index, cls, slot, exact);
+    if (!panel.series.empty())
+      plot.panels.push_back(std::move(panel));
+  }
+  if (plot.panels.empty())
+    return plot;
+  if (exact.empty())
+    figure.notes.push_back("no exact curve: the results carry no `exact_profile` for these cases.");
+  const auto zoom = p->singular ? std::nullopt : peak_zoom(plot.panels, exact);
+  const auto shared = profile_range(plot.panels);  // one x-range: the panels compare at a glance
+  for (auto& panel : plot.panels) {
+    panel.x.range = shared;
+    if (!exact.empty())
+      panel.series.push_back({"exact", "#000000", Mark::line, 1, 7, 1.0, exact});
+  }
+  if (zoom)
+    plot.panels.push_back(*zoom);
+  figure.caption_md = fmt::format(
+      "{} {} (the study's Figure 4): −σ<sub>z</sub>/p along z = 0 on the C (dotted), M (dashed) "
+      "and F (solid) meshes{}, one panel per option set, each in its own colour in every panel{}; "
+      "x over {}.",
+      schema::label(problem), schema::to_string(element),
+      exact.empty() ? "" : " against the exact curve (black)",
+      plot.panels.back().title.starts_with("zoom")
+          ? "; the last panel zooms at the exact peak with every option set's C, M and F"
+          : "",
+      over_punch_width(problem) ? "the punch half-width b" : "the contact half-width a");
+  return plot;
+}
+
+}  // namespace cs::reports
