@@ -13,7 +13,8 @@ packages=(
   libkainjow-mustache-dev                 # the report's prose templates (Mustache)
   libgtest-dev libgmock-dev libbenchmark-dev
   gnuplot-nox                             # figures of the report
-  python3 python3-meshio                  # independent VTU reader used by a test
+  python3 python3-meshio                  # independent VTU and MSH reader used by tests
+  python3-getfem                          # the third graded code (adapters/getfem/)
   calculix-ccx                            # the second solver graded by the suite (ccx 2.20)
 )
 # Optional groups: `--slurm` adds a single-node Slurm cluster (ci/slurm-smoke.sh);
