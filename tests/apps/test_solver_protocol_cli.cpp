@@ -12,6 +12,8 @@
 //    run still writes results.json;
 //  - a manifest with an unknown key or family is refused with exit 2 and one line.
 
+#include <algorithm>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -139,6 +141,33 @@ TEST(SolverProtocolCli, EveryFailureIsTheCaseStatusWithItsReason) {
     EXPECT_EQ(cases.at(id).at("status"), want.first) << id;
     EXPECT_NE(cases.at(id).at("reason").get<std::string>().find(want.second), std::string::npos)
         << id << ": " << cases.at(id).at("reason");
+  }
+}
+
+bool getfem_available() {
+  return std::system("/usr/bin/python3 -c 'import getfem' >/dev/null 2>&1") == 0;
+}
+
+// GetFEM through its committed adapter (adapters/getfem/) on the smallest case: the patch test
+// is exact for every method, so the common and own bases reproduce sigma_z = -p to GetFEM's
+// Newton tolerance (residual 1e-9: 1e-6 % leaves a margin of three decades).
+TEST(SolverProtocolCli, GetfemSolvesThePatchTest) {
+  if (!getfem_available())
+    GTEST_SKIP() << "python3-getfem is not installed";
+  TempDir dir;
+  const fs::path out = dir.path() / "out";
+  const auto r = run_cli({"run", "--solver", "getfem", "--solver-options", "nodal_al", "--problems",
+                          "P_p", "--meshes", "C", "--elements", "Q4", "--target", "rigid", "--jobs",
+                          "1", "--no-report", "--out", out.string()});
+  ASSERT_EQ(r.exit_code, 0) << r.err << r.out;
+  const auto cases = cases_by_id(out / "results.json");
+  for (const std::string id :
+       {"P_p/C/Q4/AL/ns/rigid/@getfem:nodal_al", "P_p/C/Q4/AL/ns/rigid/own/@getfem:nodal_al"}) {
+    ASSERT_TRUE(cases.contains(id)) << id;
+    EXPECT_EQ(cases.at(id).at("status"), "converged");
+    EXPECT_NEAR(cases.at(id).at("quantities").at("sigma_z_max").at("error_percent").get<double>(),
+                0.0, 1e-6)
+        << id;
   }
 }
 
