@@ -1,5 +1,6 @@
 #include "suites/case_directory.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <stdexcept>
@@ -38,14 +39,37 @@ int gmsh_line_type(const solver::Mesh& mesh) {
   return mesh.type == solver::ElementType::Q8 ? 8 : 1;
 }
 
-/// Physical groups: the bodies (dimension 2), the edge sets (1), the node sets (0); each set is
-/// one entity of its dimension whose tag is its physical tag (1, 2, ... per dimension).
+/// The node sets written as point groups (dimension 0), by their group name: a node set that
+/// is exactly the nodes of the edge set of its name is not repeated (readers such as meshio
+/// key groups by name alone); one that differs from it is called "<name>:nodes".
+std::vector<std::pair<std::string, const std::vector<int>*>> point_groups(
+    const solver::Mesh& mesh) {
+  std::vector<std::pair<std::string, const std::vector<int>*>> out;
+  for (const auto& [name, nodes] : mesh.node_sets) {
+    const auto edges = mesh.edge_sets.find(name);
+    if (edges == mesh.edge_sets.end()) {
+      out.emplace_back(name, &nodes);
+      continue;
+    }
+    std::vector<int> a = nodes, b = solver::nodes_of_sides(mesh, edges->second);
+    std::sort(a.begin(), a.end());
+    std::sort(b.begin(), b.end());
+    b.erase(std::unique(b.begin(), b.end()), b.end());
+    if (a != b)
+      out.emplace_back(name + ":nodes", &nodes);
+  }
+  return out;
+}
+
+/// Physical groups: the bodies (dimension 2), the edge sets (1), the node sets (0,
+/// point_groups); each set is one entity of its dimension whose tag is its physical tag.
 std::string physical_names(const solver::Mesh& mesh) {
-  const std::size_t n = mesh.body_names.size() + mesh.edge_sets.size() + mesh.node_sets.size();
+  const auto points = point_groups(mesh);
+  const std::size_t n = mesh.body_names.size() + mesh.edge_sets.size() + points.size();
   std::string out = fmt::format("$PhysicalNames\n{}\n", n);
   int tag = 0;
-  for (const auto& name : mesh.node_sets)
-    out += fmt::format("0 {} \"{}\"\n", ++tag, name.first);
+  for (const auto& group : points)
+    out += fmt::format("0 {} \"{}\"\n", ++tag, group.first);
   tag = 0;
   for (const auto& name : mesh.edge_sets)
     out += fmt::format("1 {} \"{}\"\n", ++tag, name.first);
@@ -57,14 +81,15 @@ std::string physical_names(const solver::Mesh& mesh) {
 
 /// The entities carry no geometry beyond a bounding box (the mesh's): points at the origin.
 std::string entities(const solver::Mesh& mesh) {
-  std::string out = fmt::format("$Entities\n{} {} {} 0\n", mesh.node_sets.size(),
-                                mesh.edge_sets.size(), mesh.body_names.size());
+  const std::size_t n_points = point_groups(mesh).size();
+  std::string out = fmt::format("$Entities\n{} {} {} 0\n", n_points, mesh.edge_sets.size(),
+                                mesh.body_names.size());
   Eigen::Vector2d lo = mesh.nodes.front(), hi = mesh.nodes.front();
   for (const auto& x : mesh.nodes)
     lo = lo.cwiseMin(x), hi = hi.cwiseMax(x);
   const std::string box =
       fmt::format("{} {} 0 {} {} 0", num(lo.x()), num(lo.y()), num(hi.x()), num(hi.y()));
-  for (std::size_t t = 1; t <= mesh.node_sets.size(); ++t)
+  for (std::size_t t = 1; t <= n_points; ++t)
     out += fmt::format("{} 0 0 0 1 {}\n", t, t);
   for (std::size_t t = 1; t <= mesh.edge_sets.size(); ++t)
     out += fmt::format("{} {} 1 {} 0\n", t, box, t);
@@ -88,11 +113,11 @@ std::string elements_section(const solver::Mesh& mesh) {
   std::string blocks;
   int n_blocks = 0, n_elements = 0, tag = mesh.n_elements();
   int entity = 0;
-  for (const auto& [name, nodes] : mesh.node_sets) {
-    blocks += fmt::format("0 {} 15 {}\n", ++entity, nodes.size());
-    for (int node : nodes)
+  for (const auto& [name, nodes] : point_groups(mesh)) {
+    blocks += fmt::format("0 {} 15 {}\n", ++entity, nodes->size());
+    for (int node : *nodes)
       blocks += fmt::format("{} {}\n", ++tag, node + 1);
-    ++n_blocks, n_elements += static_cast<int>(nodes.size());
+    ++n_blocks, n_elements += static_cast<int>(nodes->size());
   }
   entity = 0;
   for (const auto& [name, sides] : mesh.edge_sets) {
@@ -311,8 +336,8 @@ std::string case_json(const CaseSpec& spec, const ProblemSetup& setup, const std
                {"n_elements", model.mesh.n_elements()},
                {"node_sets", json::array()},
                {"edge_sets", json::array()}};
-  for (const auto& s : model.mesh.node_sets)
-    j["mesh"]["node_sets"].push_back(s.first);
+  for (const auto& group : point_groups(model.mesh))
+    j["mesh"]["node_sets"].push_back(group.first);
   for (const auto& s : model.mesh.edge_sets)
     j["mesh"]["edge_sets"].push_back(s.first);
   j["scales"] = {{"p", setup.p},

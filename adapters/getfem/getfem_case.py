@@ -152,11 +152,13 @@ class Case:
 
 
 def node_sets(case):
-    """Node ids of every node set and edge set."""
+    """Node ids of every node set by name: an edge set's nodes, unless a point group of the
+    name (or "<name>:nodes", a node set that differs from its edge set) says otherwise."""
     out = {}
-    for (dim, name), rows in case.groups.items():
-        if dim in (0, 1):
-            out[name] = sorted({n for r in rows for n in r})
+    for dim in (1, 0):
+        for (d, name), rows in case.groups.items():
+            if d == dim:
+                out[name.removesuffix(":nodes")] = sorted({n for r in rows for n in r})
     return out
 
 
