@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "adapters/calculix/calculix_options.hpp"
+#include "adapters/protocol/solver_registry.hpp"
 #include "suites/case_spec.hpp"
 #include "suites/problem_catalog.hpp"
 #include "suites/problems/problem_builders.hpp"
@@ -62,7 +63,45 @@ bool is_common(const std::string& name) {
   return false;
 }
 
-void print_text() {
+/// The codes registered by a manifest (docs/solver-protocol.md), with their options.
+void print_external_solvers(const std::vector<std::filesystem::path>& dirs) {
+  fmt::print("\nRegistered codes (--solver NAME; case ids end in /@NAME:OPTION):\n");
+  for (const auto& code :
+       adapters::protocol::discover_solvers(adapters::protocol::solver_directories(dirs))) {
+    std::string supports;
+    for (auto s : code.supports)
+      supports += (supports.empty() ? "" : " ") + std::string(adapters::protocol::to_string(s));
+    fmt::print("  {:<10} {} [{}] ({})\n", code.name, code.description, supports,
+               code.folder.string());
+    for (const auto& o : code.options)
+      fmt::print("    {:<22} {:<20} {:<6} {}\n", code.name + ":" + o.label,
+                 adapters::protocol::to_string(o.family), o.discretization, o.description);
+  }
+}
+
+nlohmann::json external_solvers_json(const std::vector<std::filesystem::path>& dirs) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const auto& code :
+       adapters::protocol::discover_solvers(adapters::protocol::solver_directories(dirs))) {
+    nlohmann::json options = nlohmann::json::array();
+    for (const auto& o : code.options)
+      options.push_back({{"label", o.label},
+                         {"family", adapters::protocol::to_string(o.family)},
+                         {"discretization", o.discretization},
+                         {"description", o.description}});
+    nlohmann::json supports = nlohmann::json::array();
+    for (auto s : code.supports)
+      supports.push_back(adapters::protocol::to_string(s));
+    out.push_back({{"name", code.name},
+                   {"description", code.description},
+                   {"folder", code.folder.string()},
+                   {"supports", supports},
+                   {"options", options}});
+  }
+  return out;
+}
+
+void print_text(const std::vector<std::filesystem::path>& dirs) {
   using namespace cs::suites;
   fmt::print("Problems (the study's battery), with the parameters particular to each:\n");
   for (auto id : schema::values<ProblemId>()) {
@@ -111,9 +150,10 @@ void print_text() {
     fmt::print("  {:<7} -> {:<52} {}{}\n", m.study_option, m.calculix, m.fidelity,
                m.note.empty() ? "" : " (" + m.note + ")");
   }
+  print_external_solvers(dirs);
 }
 
-void print_json() {
+void print_json(const std::vector<std::filesystem::path>& dirs) {
   using namespace cs::suites;
   nlohmann::json problems = nlohmann::json::array();
   for (auto id : schema::values<ProblemId>()) {
@@ -139,7 +179,8 @@ void print_json() {
                            {"targets", names<schema::TargetKind>()},
                            {"recoveries", names<schema::Recovery>()},
                            {"solvers", names<schema::SolverKind>()},
-                           {"calculix_mapping", calculix_mapping()}};
+                           {"calculix_mapping", calculix_mapping()},
+                           {"external_solvers", external_solvers_json(dirs)}};
   fmt::print("{}\n", out.dump(2));
 }
 
@@ -148,8 +189,14 @@ void print_json() {
 void add_list_command(CLI::App& app) {
   auto* list = app.add_subcommand("list", "List the problems, their parameters and the options");
   auto json = std::make_shared<bool>(false);
+  auto dirs = std::make_shared<std::vector<std::string>>();
   list->add_flag("--json", *json, "Print as one JSON object");
-  list->callback([json] { *json ? print_json() : print_text(); });
+  list->add_option("--solver-dir", *dirs,
+                   "A further folder of external codes (see `run --solver-dir`)");
+  list->callback([json, dirs] {
+    const std::vector<std::filesystem::path> d(dirs->begin(), dirs->end());
+    *json ? print_json(d) : print_text(d);
+  });
 }
 
 }  // namespace cs::apps

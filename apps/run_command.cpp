@@ -10,6 +10,7 @@
 
 #include <fmt/core.h>
 
+#include "adapters/protocol/solver_registry.hpp"
 #include "apps/case_selection_options.hpp"
 #include "apps/ci_report_files.hpp"
 #include "apps/invocation.hpp"
@@ -22,6 +23,7 @@
 #include "schema/results_file.hpp"
 #include "suites/case_matrix.hpp"
 #include "suites/executor_factory.hpp"
+#include "suites/external_executor.hpp"
 #include "suites/import_csv.hpp"
 #include "suites/problem_catalog.hpp"
 #include "suites/problem_executor.hpp"
@@ -40,6 +42,9 @@ struct RunArgs {
   SelectionArgs selection;
   std::string solver{schema::to_string(schema::SolverKind::builtin)};
   double ccx_time_limit = 600.0;
+  std::vector<std::string> solver_dirs;
+  std::vector<std::string> solver_options;
+  double time_limit = 0.0;
   int jobs = 0;
   std::string out = "out";
   std::string shard;
@@ -51,13 +56,55 @@ struct RunArgs {
   std::string command_line;
 };
 
+std::vector<std::filesystem::path> solver_dirs(const RunArgs& args) {
+  return {args.solver_dirs.begin(), args.solver_dirs.end()};
+}
+
+/// The cases of an external code: each model of the selection (its problems, meshes, elements,
+/// target and parameters; --algorithms and --contacts do not apply) once per option of the code
+/// (or of --solver-options) and per stress basis (--recovery, default spr = common and own).
+std::vector<suites::CaseSpec> external_cases(const RunArgs& args, suites::CaseSelection sel) {
+  if (!args.selection.algorithms.empty() || !args.selection.contacts.empty())
+    throw UsageError("--algorithms and --contacts do not apply to " + args.solver +
+                     ": its options are chosen by --solver-options");
+  const auto code = adapters::protocol::find_solver(
+      args.solver, adapters::protocol::solver_directories(solver_dirs(args)));
+  std::vector<const adapters::protocol::SolverOption*> options;
+  for (const auto& label : suites::split_list_option(args.solver_options, "--solver-options"))
+    options.push_back(&code.option(label));
+  if (options.empty())
+    for (const auto& o : code.options)
+      options.push_back(&o);
+  std::vector<schema::Recovery> recoveries = sel.recoveries;
+  if (recoveries.empty())
+    recoveries = {schema::Recovery::spr, schema::Recovery::own};
+  sel.algorithms = {schema::Algorithm::LMP};
+  sel.contacts = {schema::ContactKind::ss};
+  sel.recoveries.clear();
+  std::vector<suites::CaseSpec> out;
+  for (const auto& model : suites::make_case_matrix(sel))
+    for (const auto* option : options)
+      for (const auto recovery : recoveries)
+        out.push_back(suites::external_case(model, code, *option, recovery));
+  return out;
+}
+
 std::vector<suites::CaseSpec> selected_cases(const RunArgs& args,
                                              std::vector<schema::SweepAxis>& sweep) {
   suites::CaseSelection sel = make_selection(args.selection);
   sweep = sel.sweeps;
+  if (!schema::try_parse<schema::SolverKind>(args.solver)) {
+    auto cases = external_cases(args, sel);
+    validate_cases(cases);
+    return cases;
+  }
   sel.solver = schema::parse<schema::SolverKind>(args.solver);
-  if (sel.solver == schema::SolverKind::imported)
-    throw UsageError("--solver imported: imported results are graded by `grade`, not run");
+  if (sel.solver == schema::SolverKind::imported || sel.solver == schema::SolverKind::external)
+    throw UsageError("--solver " + args.solver +
+                     ": name the code (builtin, calculix or a "
+                     "registered code, see `contact-suite list`)");
+  if (!args.solver_options.empty())
+    throw UsageError("--solver-options: only for an external code's options");
   auto cases = suites::make_case_matrix(sel);
   validate_cases(cases);
   return cases;
@@ -103,6 +150,8 @@ int run(const RunArgs& args) {
   const auto all_cases = selected_cases(args, sweep);
   suites::ExecutorOptions exec;
   exec.calculix_time_limit_seconds = args.ccx_time_limit;
+  exec.solver_dirs = solver_dirs(args);
+  exec.external_time_limit_seconds = args.time_limit;
   suites::require_solvers(all_cases, exec);  // e.g. ccx missing: exit 2 before anything runs
   std::optional<schema::ShardInfo> shard;
   auto cases = all_cases;
@@ -196,9 +245,18 @@ void add_run_command(CLI::App& app, int& exit_code) {
   auto* cmd = app.add_subcommand("run", "Run the study's case matrix (or a subset) and report");
   add_selection_options(*cmd, args->selection);
   cmd->add_option("--solver", args->solver,
-                  "Who solves the cases: builtin (ours) or calculix (ccx through its adapter; "
-                  "see docs/calculix.md for how the options map)")
+                  "Who solves the cases: builtin (ours), calculix (ccx through its adapter; "
+                  "see docs/calculix.md for how the options map) or a code registered by its "
+                  "manifest (docs/solver-protocol.md; `contact-suite list` shows them)")
       ->capture_default_str();
+  cmd->add_option("--solver-dir", args->solver_dirs,
+                  "A folder of external codes (each a folder with manifest.json), or one code's "
+                  "folder; searched after adapters/ and CONTACT_SUITE_SOLVER_DIRS");
+  cmd->add_option("--solver-options", args->solver_options,
+                  "An external code's options to run, by their own labels (default: all)");
+  cmd->add_option("--time-limit", args->time_limit,
+                  "Seconds one external code's case may take (default: its manifest's)")
+      ->check(CLI::Range(0.1, 86400.0));
   cmd->add_option("--ccx-time-limit", args->ccx_time_limit,
                   "Seconds one CalculiX case may take before it is `timeout`")
       ->check(CLI::Range(1.0, 86400.0))

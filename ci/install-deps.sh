@@ -14,10 +14,11 @@ packages=(
   libpugixml-dev                          # JUnit XML of run and gate (--junit)
   libgtest-dev libgmock-dev libbenchmark-dev
   gnuplot-nox                             # figures of the report
-  python3 python3-meshio                  # independent VTU reader used by a test
   libxml2-utils                           # xmllint: validates --junit output (tests/ci/junit.xsd)
   python3-dev pybind11-dev                # the Python module contact_suite (python/)
   python3-numpy python3-pytest            # its arrays and its tests
+  python3 python3-meshio                  # independent VTU and MSH reader used by tests
+  python3-getfem                          # the third graded code (adapters/getfem/)
   calculix-ccx                            # the second solver graded by the suite (ccx 2.20)
 )
 # Optional groups: `--slurm` adds a single-node Slurm cluster (ci/slurm-smoke.sh);

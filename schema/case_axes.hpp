@@ -242,8 +242,10 @@ constexpr AxisEntry entry(TargetKind v) {
 /// How the graded nodal stresses are recovered:
 ///   spr: superconvergent patch recovery (the default: O(h^2) at a loaded surface for Q4);
 ///   extrapolated: extrapolated from the Gauss points and averaged, the nodal stresses
-///     commercial codes print (the study's ANSYS values), O(h) at a loaded surface for Q4.
-enum class Recovery : std::uint8_t { spr, extrapolated };
+///     commercial codes print (the study's ANSYS values), O(h) at a loaded surface for Q4;
+///   own: another code's own nodal stresses, as its users read them (the `own` basis; an
+///     external code's spr is the `common` basis: our patch recovery of its displacements).
+enum class Recovery : std::uint8_t { spr, extrapolated, own };
 constexpr std::string_view axis_name(Recovery) {
   return "stress recovery";
 }
@@ -253,13 +255,17 @@ constexpr AxisEntry entry(Recovery v) {
       return {"spr", "", "patch-recovered"};
     case Recovery::extrapolated:
       return {"extrapolated", "", "extrapolated"};
+    case Recovery::own:
+      return {"own", "", "the code's own"};
   }
   return {};
 }
 
-/// Which solver produced a case: ours, CalculiX through its adapter, or results imported from
-/// any other code (whose name the case records beside this kind, see CaseSpec::solver_name).
-enum class SolverKind : std::uint8_t { builtin, calculix, imported };
+/// Which solver produced a case: ours, CalculiX through its adapter, results imported from
+/// any other code (whose name the case records beside this kind, see CaseSpec::solver_name), or
+/// an external code run through the solver protocol (docs/solver-protocol.md), named by its
+/// manifest and one of its options (CaseSpec::solver_name, CaseSpec::solver_option).
+enum class SolverKind : std::uint8_t { builtin, calculix, imported, external };
 constexpr std::string_view axis_name(SolverKind) {
   return "solver";
 }
@@ -271,6 +277,8 @@ constexpr AxisEntry entry(SolverKind v) {
       return {"calculix", "ccx", "CalculiX"};
     case SolverKind::imported:
       return {"imported", "", "imported"};
+    case SolverKind::external:
+      return {"external", "", "external"};
   }
   return {};
 }

@@ -59,10 +59,20 @@ void parse_options(std::string_view id, const std::vector<std::string_view>& fie
           fmt::format("case id '{}': '{}' is not a solver suffix (the built-in "
                       "solver's cases have none)",
                       id, fields[i]));
-    spec.solver =
-        solver == to_string(SolverKind::calculix) ? SolverKind::calculix : SolverKind::imported;
-    if (spec.solver == SolverKind::imported)
-      spec.solver_name = std::string(solver);
+    const auto colon = solver.find(':');
+    if (colon != std::string_view::npos) {
+      spec.solver = SolverKind::external;
+      spec.solver_name = std::string(solver.substr(0, colon));
+      spec.solver_option = std::string(solver.substr(colon + 1));
+      if (spec.solver_name.empty() || spec.solver_option.empty())
+        throw SchemaError(fmt::format(
+            "case id '{}': '{}' is not a solver suffix (@<code>:<option>)", id, fields[i]));
+    } else {
+      spec.solver =
+          solver == to_string(SolverKind::calculix) ? SolverKind::calculix : SolverKind::imported;
+      if (spec.solver == SolverKind::imported)
+        spec.solver_name = std::string(solver);
+    }
     ++i;
   }
   if (i < fields.size())
@@ -87,6 +97,8 @@ std::string options_suffix(const CaseSpec& spec) {
 std::string solver_label(const CaseSpec& spec) {
   if (spec.solver == SolverKind::imported)
     return spec.solver_name;
+  if (spec.solver == SolverKind::external)
+    return spec.solver_name + ":" + spec.solver_option;
   return std::string(to_string(spec.solver));
 }
 

@@ -20,19 +20,24 @@ struct CaseSpec {
   TargetKind target = TargetKind::Discretized;
   Recovery recovery = Recovery::spr;
   SolverKind solver = SolverKind::builtin;
-  /// The name of the code for imported results (e.g. "abaqus-2024"); empty otherwise.
+  /// The name of the code for imported results (e.g. "abaqus-2024") and external codes
+  /// ("getfem"); empty otherwise.
   std::string solver_name{};
+  /// An external code's own option label (e.g. "nitsche"); empty otherwise. The algorithm and
+  /// contact fields then hold the option's family and discretization as the manifest states.
+  std::string solver_option{};
   std::map<std::string, double> overrides;
 
   friend bool operator==(const CaseSpec&, const CaseSpec&) = default;
 };
 
-/// The solver as results.json and the report name it: "builtin", "calculix", or the imported
-/// code's own name.
+/// The solver as results.json and the report name it: "builtin", "calculix", the imported
+/// code's own name, or an external code's "<name>:<option>" (e.g. "getfem:nitsche").
 std::string solver_label(const CaseSpec& spec);
 
 /// A stable identifier of a case: "H_p/F/Q4/LMP/ss" (+ "/rigid", "/extrapolated", "/k=v"
-/// overrides, and "/@calculix" or "/@<name>" for a solver other than ours).
+/// overrides, and "/@calculix", "/@<name>" (imported) or "/@<name>:<option>" (external) for a
+/// solver other than ours).
 std::string case_id(const CaseSpec& spec);
 
 /// The case a case id names: the inverse of case_id() on its canonical form. The five fields

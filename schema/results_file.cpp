@@ -94,10 +94,20 @@ CaseSpec spec_from_json(const JsonFields& r) {
   s.target = r.name<TargetKind>("target");
   s.recovery = r.name<Recovery>("recovery");
   const std::string solver = r.string("solver");
-  if (const auto kind = try_parse<SolverKind>(solver); kind && *kind != SolverKind::imported) {
+  const auto colon = solver.find(':');
+  if (const auto kind = try_parse<SolverKind>(solver);
+      kind && *kind != SolverKind::imported && *kind != SolverKind::external) {
     s.solver = *kind;
-  } else if (solver.empty() || solver == "imported") {
-    r.fail_field("solver", "is empty or \"imported\": name the code the results came from");
+  } else if (solver.empty() || solver == "imported" || solver == "external") {
+    r.fail_field("solver",
+                 "is empty, \"imported\" or \"external\": name the code the results "
+                 "came from");
+  } else if (colon != std::string::npos) {
+    if (colon == 0 || colon + 1 == solver.size())
+      r.fail_field("solver", "is not <code>:<option>");
+    s.solver = SolverKind::external;
+    s.solver_name = solver.substr(0, colon);
+    s.solver_option = solver.substr(colon + 1);
   } else {
     s.solver = SolverKind::imported;
     s.solver_name = solver;

@@ -56,9 +56,24 @@ ccx::CalculixOptions calculix_options(const CaseSpec& spec, const ProblemSetup& 
   return out;
 }
 
+/// The sampled surface's stresses on the case's basis: CalculiX's own extrapolated nodal
+/// stresses (recovery own), or our recovery of its nodal displacements (spr: the common basis;
+/// extrapolated).
+std::vector<solver::SurfaceStressSample> surface_of(const ProblemSetup& setup,
+                                                    const ccx::CalculixResult& run,
+                                                    const CaseSpec& spec) {
+  if (spec.recovery == Recovery::own)
+    return surface_of_nodal_stresses(setup, run.nodal_stress);
+  Eigen::VectorXd u = Eigen::VectorXd::Zero(2 * setup.model.mesh.n_nodes());
+  for (std::size_t n = 0; n < run.displacement.size() && 2 * n + 1 < std::size_t(u.size()); ++n)
+    u.segment<2>(2 * static_cast<Eigen::Index>(n)) = run.displacement[n];
+  const auto field = solver::recover_stresses(setup.model, u, recovery_options(spec));
+  return solver::surface_stresses(setup.model, field, kSampledSurface);
+}
+
 /// Fills the values of a converged run: quantities, profiles.
 void fill_values(const ProblemSetup& setup, const ccx::CalculixResult& run, CaseResult& result) {
-  const auto surface = surface_of_nodal_stresses(setup, run.nodal_stress);
+  const auto surface = surface_of(setup, run, result.spec);
   std::vector<ContactPressureSample> pressures;
   pressures.reserve(run.contact.size());
   for (const auto& n : run.contact)

@@ -13,9 +13,10 @@
 //      removed when the case converged and kept otherwise (its path ends the reason);
 //   3. status: converged / not converged / failed / timeout as CalculiX's (run_status.hpp),
 //      with its reason; a crash of ccx is that case's status, never an exception;
-//   4. values (converged only): CalculiX's nodal stresses (extrapolated from its integration
-//      points and averaged: the `recovery` axis does not change them) and its contact pressures
-//      (CPRESS) sampled by sample_quantities() exactly as the built-in solver's are.
+//   4. values (converged only), on the case's stress basis: recovery `own` = CalculiX's nodal
+//      stresses (extrapolated from its integration points and averaged); spr (the `common`
+//      basis) and extrapolated = our recovery of CalculiX's nodal displacements; its contact
+//      pressures (CPRESS); sampled by sample_quantities() exactly as the built-in solver's are.
 // wall_seconds is charged by the runner; peak_rss_mb is ccx's peak resident memory (the
 // runner keeps the larger of it and this process's).
 

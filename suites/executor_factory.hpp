@@ -5,6 +5,8 @@
 //
 //   builtin   -> ProblemExecutor (suites/problem_executor.hpp), the built-in solver;
 //   calculix  -> CalculixExecutor (suites/calculix_executor.hpp), ccx through the adapter;
+//   external  -> ExternalExecutor (suites/external_executor.hpp), a code registered by its
+//                manifest (adapters/protocol/), found by the case's solver_name;
 //   imported  -> SuiteInputError: imported results are graded from a file, not run.
 //
 // Grading, rows, the gate and the report read the CaseResult and never learn which ran.
@@ -27,6 +29,13 @@ struct ExecutorOptions {
   /// Where CalculiX cases get their directories; empty: one temporary directory per process
   /// (calculix_run_directory()).
   std::filesystem::path calculix_work_root;
+  /// Folders searched for external codes' manifests after the project's adapters/ and
+  /// CONTACT_SUITE_SOLVER_DIRS (adapters/protocol/solver_registry.hpp).
+  std::vector<std::filesystem::path> solver_dirs;
+  /// Wall-clock limit of one external code's run in seconds; 0: its manifest's.
+  double external_time_limit_seconds = 0.0;
+  /// Where external codes' cases get their run directories; empty: a temporary directory.
+  std::filesystem::path external_work_root;
 };
 
 /// The executor of the group `representative` belongs to, for the solver it names. Throws

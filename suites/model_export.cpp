@@ -137,7 +137,9 @@ std::string contact_pair_csv(const solver::ContactPair& pair) {
                      target_surface(pair));
 }
 
-std::string_view rule_name(SamplePoint where) {
+}  // namespace
+
+std::string_view sample_rule_name(SamplePoint where) {
   switch (where) {
     case SamplePoint::MaxOnSurface:
       return "max_on_surface";
@@ -159,7 +161,7 @@ std::string_view rule_name(SamplePoint where) {
   return "";
 }
 
-std::string_view component_name(StressComponent c) {
+std::string_view stress_component_name(StressComponent c) {
   switch (c) {
     case StressComponent::SigmaZ:
       return "sigma_z";
@@ -170,8 +172,6 @@ std::string_view component_name(StressComponent c) {
   }
   return "";
 }
-
-}  // namespace
 
 void require_exchangeable(const CaseSpec& spec) {
   if (spec.target == TargetKind::Rigid)
@@ -241,7 +241,7 @@ std::string cases_csv_rows(const CaseSpec& spec, const ProblemSetup& setup,
   std::string out;
   for (const QuantityRule& rule : setup.quantities) {
     out += fmt::format("{},{},{},{},{},{}\n", options, schema::to_string(rule.quantity),
-                       component_name(rule.component), rule_name(rule.where),
+                       stress_component_name(rule.component), sample_rule_name(rule.where),
                        std::isfinite(rule.exact) ? num(rule.exact) : "inf",
                        rule.study_exact ? num(*rule.study_exact) : "");
   }

@@ -11,6 +11,7 @@
 // CalculiX deck); y is our z (pointing into the indented body).
 
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "suites/case_spec.hpp"
@@ -38,6 +39,12 @@ struct ExportFile {
 /// boundary.csv, loads.csv, materials.csv, contact_pair.csv and mesh.vtu (no I/O here: the
 /// command writes them into its output transaction).
 std::vector<ExportFile> model_files(const ProblemSetup& setup);
+
+/// The name of a sampling rule in the exchange formats: "max_on_surface", "at_axis", ...
+std::string_view sample_rule_name(SamplePoint where);
+
+/// The name of a stress component in the exchange formats: "sigma_z", "sigma_x", "tau_xz".
+std::string_view stress_component_name(StressComponent c);
 
 /// The header of cases.csv.
 std::string cases_csv_header();

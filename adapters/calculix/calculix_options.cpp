@@ -100,10 +100,10 @@ std::vector<OptionMapping> calculix_option_mapping() {
        "ns adds CalculiX's tension sigma_inf = 0.25 % p at large clearance"},
       {name(schema::Algorithm::AL), "PRESSURE-OVERCLOSURE=LINEAR, K = FKN E / h", "approximated",
        "CalculiX has no augmented Lagrangian: the penalty alone, without augmentation"},
-      {name(schema::Algorithm::LMP), "PRESSURE-OVERCLOSURE=HARD", "approximated",
+      {name(schema::Algorithm::LMP), "penalty (HARD, K = 50 E)", "approximated",
        "for node/surface-to-surface pairs ccx reduces HARD to a penalty with K = 50 E (its "
        "default); its Lagrange-multiplier contact is mortar (not supported in 2D)"},
-      {name(schema::Algorithm::PLM), "PRESSURE-OVERCLOSURE=HARD", "approximated",
+      {name(schema::Algorithm::PLM), "penalty (HARD, K = 50 E)", "approximated",
        "as LMP (no friction: they coincide)"},
       {name(schema::Algorithm::MPC), "-", "not supported",
        "*TIE and PRESSURE-OVERCLOSURE=TIED tie tangentially too (TIED needs friction data); "

@@ -1,0 +1,150 @@
+#include "adapters/protocol/result_files.hpp"
+
+#include <charconv>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+namespace cs::adapters::protocol {
+namespace {
+
+/// A failure while reading one file: its message is the case's reason.
+struct ReadFailure {
+  std::string message;
+};
+
+std::vector<std::string> split_csv_line(const std::string& line) {
+  std::vector<std::string> out;
+  std::string field;
+  std::istringstream in(line);
+  while (std::getline(in, field, ','))
+    out.push_back(field);
+  if (!line.empty() && line.back() == ',')
+    out.emplace_back();
+  return out;
+}
+
+std::string trimmed(std::string s) {
+  while (!s.empty() && (s.back() == '\r' || s.back() == ' '))
+    s.pop_back();
+  std::size_t start = 0;
+  while (start < s.size() && s[start] == ' ')
+    ++start;
+  return s.substr(start);
+}
+
+double parse_number(const std::string& text, const std::string& where) {
+  const std::string t = trimmed(text);
+  double v = 0.0;
+  const auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), v);
+  if (t.empty() || ec != std::errc() || end != t.data() + t.size())
+    throw ReadFailure{fmt::format("{}: '{}' is not a number", where, t)};
+  if (!std::isfinite(v))
+    throw ReadFailure{fmt::format("{}: value {} is not finite", where, t)};
+  return v;
+}
+
+/// Reads a CSV with the exact header `header`; calls row(values, where) per data line, the
+/// first value the node index (id - 1, checked against n_nodes).
+template <class Row>
+void read_node_csv(const std::filesystem::path& file, const std::string& header, int n_nodes,
+                   Row row) {
+  std::ifstream in(file);
+  if (!in)
+    throw ReadFailure{fmt::format("{} is missing", file.filename().string())};
+  std::string line;
+  const std::string name = file.filename().string();
+  if (!std::getline(in, line) || trimmed(line) != header)
+    throw ReadFailure{fmt::format("{}: the header is not '{}'", name, header)};
+  const std::size_t n_columns = split_csv_line(header).size();
+  for (int number = 2; std::getline(in, line); ++number) {
+    if (trimmed(line).empty())
+      continue;
+    const std::string where = fmt::format("{} line {}", name, number);
+    const auto fields = split_csv_line(trimmed(line));
+    if (fields.size() != n_columns)
+      throw ReadFailure{fmt::format("{}: {} values, expected {}", where, fields.size(), n_columns)};
+    const double id = parse_number(fields[0], where);
+    if (id != std::floor(id) || id < 1 || id > n_nodes)
+      throw ReadFailure{fmt::format("{}: node id {} is not in 1..{}", where, fields[0], n_nodes)};
+    std::vector<double> values;
+    for (std::size_t k = 1; k < fields.size(); ++k)
+      values.push_back(parse_number(fields[k], where));
+    row(static_cast<int>(id) - 1, values, where);
+  }
+}
+
+void read_status(const std::filesystem::path& file, ResultFiles& out) {
+  std::ifstream in(file);
+  if (!in)
+    return;
+  nlohmann::json j;
+  try {
+    j = nlohmann::json::parse(in);
+  } catch (const nlohmann::json::exception& e) {
+    throw ReadFailure{fmt::format("status.json is not valid JSON ({})", e.what())};
+  }
+  try {
+    if (j.contains("converged"))
+      out.converged = j.at("converged").get<bool>();
+    out.iterations = j.value("iterations", 0);
+    out.n_equations = j.value("n_equations", 0LL);
+    out.reason = j.value("reason", std::string());
+    out.solver_version = j.value("solver_version", std::string());
+  } catch (const nlohmann::json::exception& e) {
+    throw ReadFailure{fmt::format("status.json: a value of the wrong type ({})", e.what())};
+  }
+}
+
+void read_all(const std::filesystem::path& dir, int n_nodes, const std::vector<int>& required,
+              ResultFiles& out) {
+  read_status(dir / "status.json", out);
+  out.displacement = Eigen::VectorXd::Zero(2 * n_nodes);
+  std::vector<bool> seen(static_cast<std::size_t>(n_nodes), false);
+  read_node_csv(dir / "displacements.csv", "node_id,ux,uz", n_nodes,
+                [&](int n, const std::vector<double>& v, const std::string& where) {
+                  if (seen[n])
+                    throw ReadFailure{fmt::format("{}: node {} is given twice", where, n + 1)};
+                  seen[n] = true;
+                  out.displacement[2 * n] = v[0];
+                  out.displacement[2 * n + 1] = v[1];
+                });
+  for (int n : required)
+    if (!seen[n])
+      throw ReadFailure{fmt::format("displacements.csv: node {} is missing", n + 1)};
+  if (std::filesystem::exists(dir / "stresses.csv")) {
+    out.stresses_given = true;
+    out.stress.assign(n_nodes, Eigen::Vector4d::Zero());
+    out.has_stress.assign(n_nodes, false);
+    read_node_csv(dir / "stresses.csv", "node_id,sigma_x,sigma_z,tau_xz,sigma_out_of_plane",
+                  n_nodes, [&](int n, const std::vector<double>& v, const std::string&) {
+                    out.stress[n] = {v[0], v[1], v[2], v[3]};
+                    out.has_stress[n] = true;
+                  });
+  }
+  if (std::filesystem::exists(dir / "contact_pressure.csv")) {
+    out.contact_pressure_given = true;
+    read_node_csv(dir / "contact_pressure.csv", "node_id,pressure", n_nodes,
+                  [&](int n, const std::vector<double>& v, const std::string&) {
+                    out.contact_pressure.push_back({n, v[0]});
+                  });
+  }
+}
+
+}  // namespace
+
+ResultFiles read_result_files(const std::filesystem::path& case_dir, int n_nodes,
+                              const std::vector<int>& required_nodes) {
+  ResultFiles out;
+  try {
+    read_all(case_dir, n_nodes, required_nodes, out);
+  } catch (const ReadFailure& f) {
+    out.error = f.message;
+  }
+  return out;
+}
+
+}  // namespace cs::adapters::protocol

@@ -1,0 +1,265 @@
+#include "suites/external_executor.hpp"
+
+#include <stdlib.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <set>
+#include <system_error>
+
+#include <fmt/format.h>
+
+#include "platform/child_process.hpp"
+#include "solver/mesh/mesh_sets.hpp"
+#include "solver/stress_recovery.hpp"
+#include "suites/case_directory.hpp"
+#include "suites/problem_executor.hpp"
+#include "suites/suite_error.hpp"
+#include "suites/surface_sampling.hpp"
+
+namespace cs::suites {
+namespace {
+
+namespace fs = std::filesystem;
+namespace protocol = adapters::protocol;
+using protocol::Support;
+
+/// The process's run root for external codes, created on first use.
+const fs::path& default_work_root() {
+  static const fs::path root = [] {
+    std::string pattern = (fs::temp_directory_path() / "contact-suite-ext.XXXXXX").string();
+    if (mkdtemp(pattern.data()) == nullptr)
+      throw std::system_error(errno, std::generic_category(),
+                              "cannot create a run directory from " + pattern);
+    return fs::path(pattern);
+  }();
+  return root;
+}
+
+/// Names and modification times of everything under `dir` (not following links).
+std::map<std::string, fs::file_time_type> listing(const fs::path& dir) {
+  std::map<std::string, fs::file_time_type> out;
+  std::error_code ec;
+  for (fs::recursive_directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec))
+    out[fs::relative(it->path(), dir, ec).string()] = it->last_write_time(ec);
+  return out;
+}
+
+/// The first entry added or changed between two listings, or "".
+std::string first_change(const std::map<std::string, fs::file_time_type>& before,
+                         const std::map<std::string, fs::file_time_type>& after) {
+  for (const auto& [name, time] : after) {
+    const auto it = before.find(name);
+    if (it == before.end() || it->second != time)
+      return name;
+  }
+  return {};
+}
+
+/// Why `spec` cannot run on `code`, or "".
+std::string unsupported(const CaseSpec& spec, const ProblemSetup& setup,
+                        const protocol::SolverManifest& code) {
+  const bool axi = setup.model.analysis == solver::AnalysisType::Axisymmetric;
+  if (!code.supports_all({axi ? Support::axisymmetric : Support::plane_strain}))
+    return axi ? "axisymmetric analysis" : "plane-strain analysis";
+  if (!code.supports_all(
+          {spec.target == TargetKind::Rigid ? Support::rigid_target : Support::meshed_target}))
+    return spec.target == TargetKind::Rigid ? "a rigid target" : "a meshed target";
+  if (!code.supports_all({spec.element == Element::Q8 ? Support::Q8 : Support::Q4}))
+    return fmt::format("{} elements", to_string(spec.element));
+  if (!setup.load_steps.empty())
+    return "a load path (friction)";
+  return {};
+}
+
+std::vector<int> deformable_nodes(const ProblemSetup& setup) {
+  const solver::Mesh& mesh = setup.model.mesh;
+  const bool rigid = std::holds_alternative<solver::RigidProfile>(setup.pair.target);
+  std::set<int> nodes;
+  for (int e = 0; e < mesh.n_elements(); ++e) {
+    if (rigid && mesh.element_body[e] != 0)
+      continue;
+    for (int k = 0; k < mesh.n_element_nodes(); ++k)
+      nodes.insert(mesh.elements[e][k]);
+  }
+  return {nodes.begin(), nodes.end()};
+}
+
+}  // namespace
+
+Algorithm study_algorithm(protocol::OptionFamily family) {
+  switch (family) {
+    case protocol::OptionFamily::penalty:
+      return Algorithm::PM;
+    case protocol::OptionFamily::augmented_lagrangian:
+    case protocol::OptionFamily::nitsche:
+      return Algorithm::AL;
+    case protocol::OptionFamily::lagrange_multiplier:
+      return Algorithm::LMP;
+    case protocol::OptionFamily::mpc:
+      return Algorithm::MPC;
+  }
+  return Algorithm::AL;
+}
+
+CaseSpec external_case(const CaseSpec& model_case, const protocol::SolverManifest& code,
+                       const protocol::SolverOption& option, Recovery recovery) {
+  CaseSpec spec = model_case;
+  spec.solver = SolverKind::external;
+  spec.solver_name = code.name;
+  spec.solver_option = option.label;
+  spec.algorithm = study_algorithm(option.family);
+  spec.contact = schema::parse<ContactKind>(option.discretization);
+  spec.recovery = recovery;
+  return spec;
+}
+
+/// One run of the code: its result files, the child's account and the directory.
+struct ExternalExecutor::Run {
+  std::string key;      ///< the case id less its recovery
+  std::string failure;  ///< why there are no values ("" if there are)
+  bool not_converged = false;
+  protocol::ResultFiles files;
+  platform::ChildResult child;
+};
+
+ExternalExecutor::ExternalExecutor(const CaseSpec& representative, ExternalRunOptions options)
+    : setup_(std::make_unique<ProblemSetup>(build_problem(representative))),
+      options_(std::move(options)) {
+  if (options_.time_limit_seconds <= 0.0)
+    options_.time_limit_seconds = options_.manifest.time_limit_seconds;
+}
+
+ExternalExecutor::~ExternalExecutor() = default;
+
+const ExternalExecutor::Run& ExternalExecutor::run_code(const CaseSpec& spec) {
+  CaseSpec key_spec = spec;
+  key_spec.recovery = Recovery::spr;
+  const std::string key = case_id(key_spec);
+  if (last_ && last_->key == key)
+    return *last_;
+  last_ = std::make_unique<Run>();
+  Run& run = *last_;
+  run.key = key;
+  const protocol::SolverManifest& code = options_.manifest;
+  const fs::path root = options_.work_root.empty() ? default_work_root() : options_.work_root;
+  fs::create_directories(root);
+  std::string pattern = (root / (plain_file_name(key) + ".XXXXXX")).string();
+  if (mkdtemp(pattern.data()) == nullptr) {
+    run.failure = "cannot create a run directory under " + root.string();
+    return run;
+  }
+  const fs::path run_dir = pattern, case_dir = run_dir / "case";
+  fs::create_directory(case_dir);
+  write_case_directory(case_dir, spec, *setup_, spec.solver_option);
+
+  platform::ChildOptions child;
+  child.argv = protocol::expand_command(code.command, code.folder, case_dir, spec.solver_option);
+  child.working_directory = case_dir;
+  child.stdout_path = case_dir / "solver.out";
+  child.stderr_path = case_dir / "solver.err";
+  child.time_limit_seconds = options_.time_limit_seconds;
+  child.environment = {{"OMP_NUM_THREADS", "1"}, {"PYTHONDONTWRITEBYTECODE", "1"}};
+  const auto adapter_before = listing(code.folder);
+  run.child = platform::run_child(child);
+
+  std::set<std::string> beside;
+  for (const auto& entry : fs::directory_iterator(run_dir))
+    if (entry.path().filename() != "case")
+      beside.insert(entry.path().filename().string());
+  const std::string adapter_change = first_change(adapter_before, listing(code.folder));
+  const auto keep = fmt::format(" (files kept in {})", case_dir.string());
+  if (!run.child.succeeded()) {
+    run.failure = fmt::format("{} {}", code.name, run.child.describe()) + keep;
+  } else if (!beside.empty()) {
+    run.failure = fmt::format("{} wrote outside the case directory: {}", code.name,
+                              (run_dir / *beside.begin()).string()) +
+                  keep;
+  } else if (!adapter_change.empty()) {
+    run.failure = fmt::format("{} wrote outside the case directory: {}", code.name,
+                              (code.folder / adapter_change).string()) +
+                  keep;
+  } else {
+    run.files = protocol::read_result_files(case_dir, setup_->model.mesh.n_nodes(),
+                                            deformable_nodes(*setup_));
+    if (!run.files.error.empty())
+      run.failure = run.files.error + keep;
+    else if (run.files.converged && !*run.files.converged)
+      run.not_converged = true;
+  }
+  if (run.failure.empty() && !run.not_converged) {
+    std::error_code ignored;
+    fs::remove_all(run_dir, ignored);
+  } else if (run.not_converged) {
+    run.files.reason += keep;
+  }
+  return run;
+}
+
+CaseResult ExternalExecutor::run(const CaseSpec& spec) {
+  CaseResult result;
+  result.spec = spec;
+  result.n_elements = setup_->mesh_info.n_block_elements;
+  result.element_size_h = setup_->mesh_info.h_contact / setup_->length_unit;
+  result.status = CaseStatus::failed;
+  const protocol::SolverManifest& code = options_.manifest;
+  std::string why;
+  try {
+    const protocol::SolverOption& option = code.option(spec.solver_option);
+    if (spec.solver != SolverKind::external || spec.solver_name != code.name)
+      why = "the case is not for " + code.name;
+    else if (spec.algorithm != study_algorithm(option.family) ||
+             to_string(spec.contact) != option.discretization)
+      why = fmt::format("option '{}' is {} {}: its case id must read {}/{}", option.label,
+                        protocol::to_string(option.family), option.discretization,
+                        to_string(study_algorithm(option.family)), option.discretization);
+  } catch (const protocol::ManifestError& e) {
+    why = e.what();
+  }
+  if (why.empty()) {
+    if (const std::string gap = unsupported(spec, *setup_, code); !gap.empty())
+      why = fmt::format("not supported by {}: {}", code.name, gap);
+  }
+  if (!why.empty()) {
+    result.reason = why;
+    mark_missing(*setup_, result);
+    return result;
+  }
+  const Run& run = run_code(spec);
+  result.peak_rss_mb = run.child.peak_rss_mb;
+  result.iterations = run.files.iterations;
+  result.n_equations = run.files.n_equations;
+  if (!run.failure.empty()) {
+    result.status = run.child.timed_out ? CaseStatus::timeout : CaseStatus::failed;
+    result.reason = run.failure;
+    mark_missing(*setup_, result);
+    return result;
+  }
+  if (spec.recovery == Recovery::own && !run.files.stresses_given) {
+    result.reason = code.name + " wrote no stresses.csv: it has no `own` basis";
+    mark_missing(*setup_, result);
+    return result;
+  }
+  result.status = run.not_converged ? CaseStatus::not_converged : CaseStatus::converged;
+  result.reason = run.files.reason;
+  std::vector<solver::SurfaceStressSample> surface;
+  if (spec.recovery == Recovery::own) {
+    std::vector<solver::Stress> nodal(run.files.stress.size());
+    for (std::size_t n = 0; n < nodal.size(); ++n)
+      nodal[n] = solver::Stress::from(run.files.stress[n]);
+    surface = surface_of_nodal_stresses(*setup_, nodal);
+  } else {
+    const auto field =
+        solver::recover_stresses(setup_->model, run.files.displacement, recovery_options(spec));
+    surface = solver::surface_stresses(setup_->model, field, kSampledSurface);
+  }
+  std::vector<ContactPressureSample> pressures;
+  for (const auto& p : run.files.contact_pressure)
+    pressures.push_back({setup_->model.mesh.nodes[p.node].x(), p.pressure});
+  sample_quantities(*setup_, surface, pressures, result);
+  result.exact_profile = exact_profile(*setup_);
+  return result;
+}
+
+}  // namespace cs::suites

@@ -1,0 +1,200 @@
+// The solver protocol end to end (docs/solver-protocol.md): a stand-in code registered by one
+// folder (tests/apps/data/patch_code: a manifest and a script that solves the uniform patch test
+// exactly) is run and graded by `contact-suite run --solver patchcode --solver-dir DIR`, with
+// no edit anywhere else; every way a code can fail becomes that case's status and reason.
+//
+// Requirements:
+//  - a new code is one folder: `list` shows it with its options, `run` runs it and grades both
+//    stress bases (common: our patch recovery of its displacements; own: its stresses) to
+//    machine precision, the case ids carrying its own option labels;
+//  - a non-zero exit, a time-out, NaN, a missing node, an unparsable value and a file written
+//    outside the case directory each make that case failed (timeout) with the reason, and the
+//    run still writes results.json;
+//  - a manifest with an unknown key or family is refused with exit 2 and one line.
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <string>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "cli_support.hpp"
+
+namespace cs::apps::testing {
+namespace {
+
+namespace fs = std::filesystem;
+
+/// A solver folder holding a copy of the stand-in with `manifest` (the committed one if empty).
+void make_code_folder(const fs::path& dir, const std::string& manifest = "") {
+  const fs::path source = fs::path(CONTACT_SUITE_SOURCE_DIR) / "tests/apps/data/patch_code";
+  fs::create_directories(dir);
+  fs::copy_file(source / "patch_solver.py", dir / "patch_solver.py");
+  if (manifest.empty())
+    fs::copy_file(source / "manifest.json", dir / "manifest.json");
+  else
+    std::ofstream(dir / "manifest.json") << manifest;
+}
+
+std::map<std::string, nlohmann::json> cases_by_id(const fs::path& results) {
+  std::ifstream in(results);
+  const auto doc = nlohmann::json::parse(in);
+  std::map<std::string, nlohmann::json> out;
+  for (const auto& c : doc.at("cases"))
+    out[c.at("id").get<std::string>()] = c;
+  return out;
+}
+
+TEST(SolverProtocolCli, ListShowsARegisteredCode) {
+  TempDir dir;
+  make_code_folder(dir.path() / "patch_code");
+  const auto r = run_cli({"list", "--solver-dir", dir.path().string()});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("patchcode:exact"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("lagrange_multiplier"), std::string::npos) << r.out;
+}
+
+TEST(SolverProtocolCli, StandInCodeIsRunAndGradedOnBothBases) {
+  TempDir dir;
+  make_code_folder(dir.path() / "codes" / "patch_code");
+  const fs::path out = dir.path() / "out";
+  const auto r = run_cli({"run",
+                          "--solver",
+                          "patchcode",
+                          "--solver-dir",
+                          (dir.path() / "codes").string(),
+                          "--solver-options",
+                          "exact",
+                          "--problems",
+                          "P_p",
+                          "--meshes",
+                          "C,M",
+                          "--elements",
+                          "Q4,Q8",
+                          "--target",
+                          "rigid",
+                          "--jobs",
+                          "1",
+                          "--no-report",
+                          "--out",
+                          out.string()});
+  ASSERT_EQ(r.exit_code, 0) << r.err << r.out;
+  const auto cases = cases_by_id(out / "results.json");
+  ASSERT_EQ(cases.size(), 8u);  // 2 meshes x 2 elements x 2 bases
+  for (const std::string basis : {"", "/own"}) {
+    const std::string id = "P_p/M/Q8/LMP/ns/rigid" + basis + "/@patchcode:exact";
+    ASSERT_TRUE(cases.contains(id)) << id;
+    const auto& c = cases.at(id);
+    EXPECT_EQ(c.at("status"), "converged") << c.dump();
+    const auto& q = c.at("quantities").at("sigma_z_max");
+    // The exact field: both bases reproduce sigma_z = -p to rounding (machine precision x
+    // the recovery's few hundred operations).
+    EXPECT_NEAR(q.at("error_percent").get<double>(), 0.0, 1e-9) << c.dump();
+  }
+}
+
+TEST(SolverProtocolCli, EveryFailureIsTheCaseStatusWithItsReason) {
+  TempDir dir;
+  make_code_folder(dir.path() / "patch_code");
+  const fs::path out = dir.path() / "out";
+  const auto r = run_cli({"run",
+                          "--solver",
+                          "patchcode",
+                          "--solver-dir",
+                          (dir.path() / "patch_code").string(),
+                          "--solver-options",
+                          "exit3,nan,missing_node,unparsable,outside,sleep,no_stresses",
+                          "--problems",
+                          "P_p",
+                          "--meshes",
+                          "C",
+                          "--elements",
+                          "Q4",
+                          "--target",
+                          "rigid",
+                          "--time-limit",
+                          "2",
+                          "--jobs",
+                          "1",
+                          "--no-report",
+                          "--out",
+                          out.string()});
+  ASSERT_EQ(r.exit_code, 1) << r.err << r.out;  // cases failed, results written
+  const auto cases = cases_by_id(out / "results.json");
+  const std::map<std::string, std::pair<std::string, std::string>> expected{
+      {"PM/ns/rigid/@patchcode:exit3", {"failed", "exited with status 3"}},
+      {"PM/ns/rigid/@patchcode:nan", {"failed", "is not finite"}},
+      {"PM/ns/rigid/@patchcode:missing_node", {"failed", "is missing"}},
+      {"PM/ns/rigid/@patchcode:unparsable", {"failed", "'1.2.3' is not a number"}},
+      {"PM/ns/rigid/@patchcode:outside", {"failed", "wrote outside the case directory"}},
+      {"PM/ns/rigid/@patchcode:sleep", {"timeout", "timed out"}},
+      {"AL/ss/rigid/own/@patchcode:no_stresses", {"failed", "no stresses.csv"}},
+      {"AL/ss/rigid/@patchcode:no_stresses", {"converged", ""}},
+  };
+  for (const auto& [tail, want] : expected) {
+    const std::string id = "P_p/C/Q4/" + tail;
+    ASSERT_TRUE(cases.contains(id)) << id;
+    EXPECT_EQ(cases.at(id).at("status"), want.first) << id;
+    EXPECT_NE(cases.at(id).at("reason").get<std::string>().find(want.second), std::string::npos)
+        << id << ": " << cases.at(id).at("reason");
+  }
+}
+
+bool getfem_available() {
+  return std::system("/usr/bin/python3 -c 'import getfem' >/dev/null 2>&1") == 0;
+}
+
+// GetFEM through its committed adapter (adapters/getfem/) on the smallest case: the patch test
+// is exact for every method, so the common and own bases reproduce sigma_z = -p to GetFEM's
+// Newton tolerance (residual 1e-9: 1e-6 % leaves a margin of three decades).
+TEST(SolverProtocolCli, GetfemSolvesThePatchTest) {
+  if (!getfem_available())
+    GTEST_SKIP() << "python3-getfem is not installed";
+  TempDir dir;
+  const fs::path out = dir.path() / "out";
+  const auto r = run_cli({"run", "--solver", "getfem", "--solver-options", "nodal_al", "--problems",
+                          "P_p", "--meshes", "C", "--elements", "Q4", "--target", "rigid", "--jobs",
+                          "1", "--no-report", "--out", out.string()});
+  ASSERT_EQ(r.exit_code, 0) << r.err << r.out;
+  const auto cases = cases_by_id(out / "results.json");
+  for (const std::string id :
+       {"P_p/C/Q4/AL/ns/rigid/@getfem:nodal_al", "P_p/C/Q4/AL/ns/rigid/own/@getfem:nodal_al"}) {
+    ASSERT_TRUE(cases.contains(id)) << id;
+    EXPECT_EQ(cases.at(id).at("status"), "converged");
+    EXPECT_NEAR(cases.at(id).at("quantities").at("sigma_z_max").at("error_percent").get<double>(),
+                0.0, 1e-6)
+        << id;
+  }
+}
+
+TEST(SolverProtocolCli, BadManifestIsExit2AndOneLine) {
+  const std::string good = R"({"name": "x", "command": ["true"], "version_command": ["true"],
+    "options": [{"label": "a", "family": "penalty", "discretization": "ns"}],
+    "supports": ["plane_strain"]})";
+  const std::map<std::string, std::string> bad{
+      {"unknown key", R"({"name": "x", "colour": "red", "command": ["true"],
+        "version_command": ["true"], "options": [{"label": "a", "family": "penalty",
+        "discretization": "ns"}], "supports": ["plane_strain"]})"},
+      {"unknown family", R"({"name": "x", "command": ["true"], "version_command": ["true"],
+        "options": [{"label": "a", "family": "hard", "discretization": "ns"}],
+        "supports": ["plane_strain"]})"},
+  };
+  for (const auto& [what, manifest] : bad) {
+    TempDir dir;
+    make_code_folder(dir.path() / "x", manifest);
+    const auto r = run_cli({"list", "--solver-dir", dir.path().string()});
+    EXPECT_EQ(r.exit_code, 2) << what << ": " << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << what << ": " << r.err;
+    EXPECT_NE(r.err.find("manifest.json"), std::string::npos) << what << ": " << r.err;
+  }
+  TempDir dir;
+  make_code_folder(dir.path() / "x", good);
+  EXPECT_EQ(run_cli({"list", "--solver-dir", dir.path().string()}).exit_code, 0);
+}
+
+}  // namespace
+}  // namespace cs::apps::testing
