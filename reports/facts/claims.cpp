@@ -190,17 +190,23 @@ ClaimEvidence trend_multiplier(const std::vector<RowFacts>& rows) {
   return c;
 }
 
-/// Trend 3: MPC is uniformly unsatisfactory. Evidence rows only; the patch tests apart (n2).
+/// Trend 3: MPC is uniformly unsatisfactory; the patch tests apart (n2). A row that fails its
+/// interface checks, did not converge or is the luck of one mesh is not a satisfactory result
+/// whatever its grade: it counts for the claim (n_excluded of n_hold), never as g or better.
 ClaimEvidence mpc_unsatisfactory(const std::vector<RowFacts>& rows) {
   ClaimEvidence c{.key = "mpc_unsatisfactory"};
   for (const auto& f : rows) {
     if (f.option.algorithm != Algorithm::MPC)
       continue;
-    if (!f.evidence()) {
+    if (!f.evidence() && !patch_test(f.problem)) {
+      ++c.n;
+      ++c.n_hold;
       ++c.n_excluded;
       continue;
     }
     if (patch_test(f.problem)) {
+      if (!f.evidence())
+        continue;
       ++c.n2;
       c.n2_hold += good_or_better(f) ? 0 : 1;
       continue;
@@ -362,8 +368,17 @@ std::string to_string(ClaimVerdict v) {
   return {};
 }
 
-std::vector<ClaimEvidence> study_claims(const ResultsIndex& index, const std::vector<RowFacts>& rows,
+std::vector<ClaimEvidence> study_claims(const ResultsIndex& index,
+                                        const std::vector<RowFacts>& all_rows,
                                         const std::vector<DivergenceFacts>& singular) {
+  // The study's claims are about its own battery: problems beyond it (equal moduli, friction,
+  // conformal fits) neither support nor refute them.
+  std::vector<RowFacts> rows;
+  for (const auto& f : all_rows) {
+    const schema::ProblemRecord* p = index.problem(f.problem);
+    if (p != nullptr && !p->study_tables.empty())
+      rows.push_back(f);
+  }
   return {same_results(rows, Algorithm::AL, Algorithm::PM, "al_equals_pm"),
           same_results(rows, Algorithm::LMP, Algorithm::PLM, "lmp_equals_plm"),
           ss_equals_ns(rows),

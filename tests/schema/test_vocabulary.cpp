@@ -39,8 +39,8 @@ TEST(SchemaVocabulary, EveryAxisRoundTrips) {
   expect_round_trip<Algorithm>(5);
   expect_round_trip<ContactKind>(3);
   expect_round_trip<TargetKind>(2);
-  expect_round_trip<Recovery>(2);
-  expect_round_trip<SolverKind>(3);
+  expect_round_trip<Recovery>(3);
+  expect_round_trip<SolverKind>(4);
   expect_round_trip<Quantity>(9);
   expect_round_trip<Grade>(4);
   expect_round_trip<CaseStatus>(4);
