@@ -145,7 +145,7 @@ double group_cost(const suites::CaseSpec& spec) {
 
 int run(const RunArgs& args) {
   platform::check_output_directory(args.out);  // refused before any input is read
-  require_writable(args.ci);  // before anything runs: a bad path costs nothing
+  require_writable(args.ci);                   // before anything runs: a bad path costs nothing
   std::vector<schema::SweepAxis> sweep;
   const auto all_cases = selected_cases(args, sweep);
   suites::ExecutorOptions exec;

@@ -5,12 +5,12 @@
 
 #include <pybind11/stl.h>
 
-#include "python/bindings.hpp"
-#include "schema/row_verdict.hpp"
 #include "grading/accuracy.hpp"
 #include "grading/convergence.hpp"
 #include "grading/divergence.hpp"
 #include "grading/richardson.hpp"
+#include "python/bindings.hpp"
+#include "schema/row_verdict.hpp"
 
 namespace cs::python {
 namespace {
@@ -41,8 +41,8 @@ void bind_records(py::module_& m) {
 
 void bind_grading(py::module_& m) {
   bind_records(m);
-  m.def("error_percent", py::vectorize(&grading::error_percent), py::kw_only(), "value"_a, "exact"_a,
-        "Signed percentage error 100 (value - exact) / |exact| [%]; scalars or arrays.");
+  m.def("error_percent", py::vectorize(&grading::error_percent), py::kw_only(), "value"_a,
+        "exact"_a, "Signed percentage error 100 (value - exact) / |exact| [%]; scalars or arrays.");
   m.def(
       "grade",
       [](double error_percent) {
@@ -54,8 +54,8 @@ void bind_grading(py::module_& m) {
         "error_f"_a,
         "The study's 'c' (Table 2) on the errors [%] of meshes C, M, F: they do not grow and the "
         "fine one is below the coarse one; differences below 0.01 % count as equal.");
-  m.def("is_diverging", &grading::eq47_diverging, py::kw_only(), "value_c"_a, "value_m"_a, "value_f"_a,
-        "Eq. 47 on the values of meshes C, M, F: |s_C - s_M| < |s_M - s_F|.");
+  m.def("is_diverging", &grading::eq47_diverging, py::kw_only(), "value_c"_a, "value_m"_a,
+        "value_f"_a, "Eq. 47 on the values of meshes C, M, F: |s_C - s_M| < |s_M - s_F|.");
   m.def("divergence_verdict", &grading::divergence_verdict, py::kw_only(), "value_c"_a, "value_m"_a,
         "value_f"_a,
         "Eq. 47 and the strict verdict: magnitudes growing with one sign and a growth exponent "

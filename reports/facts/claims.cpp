@@ -114,9 +114,11 @@ ClaimEvidence ss_equals_ns(const std::vector<RowFacts>& rows) {
   const auto index = by_key(rows);
   double largest = 0.0;
   for (const auto& f : rows) {
-    if (f.option.contact != ContactKind::ss || family_of(f.option.algorithm) == OptionFamily::penalty)
+    if (f.option.contact != ContactKind::ss ||
+        family_of(f.option.algorithm) == OptionFamily::penalty)
       continue;
-    const auto twin = index.find({f.problem, f.quantity, f.element, f.option.algorithm, ContactKind::ns});
+    const auto twin =
+        index.find({f.problem, f.quantity, f.element, f.option.algorithm, ContactKind::ns});
     if (twin == index.end())
       continue;
     if (!f.evidence() || !twin->second->evidence()) {
@@ -128,20 +130,23 @@ ClaimEvidence ss_equals_ns(const std::vector<RowFacts>& rows) {
     if (f.grade == twin->second->grade)
       ++c.n_hold;
     else
-      add_example(c, fmt::format("{} vs ns {}", row_name(f), format_error_resolved(*twin->second->errors[2])));
+      add_example(c, fmt::format("{} vs ns {}", row_name(f),
+                                 format_error_resolved(*twin->second->errors[2])));
   }
   c.figure = largest;
   c.verdict = verdict_of(c.n_hold, c.n);
   return c;
 }
 
-/// Trend 1: AL (and PM) ss Q4 is good or excellent except for S(1/3), S(1/7); ns is worse.
-ClaimEvidence trend_penalty(const std::vector<RowFacts>& rows) {
-  ClaimEvidence c{.key = "trend_penalty"};
+/// A Table 2 trend: the selected evidence rows are g or better on F (n_hold of n), and each one's
+/// twin (`twin_of` gives its key) has the larger |F error| (n2_hold of n2).
+template <class Select, class Twin>
+ClaimEvidence trend_claim(const std::vector<RowFacts>& rows, const char* key, Select select,
+                          Twin twin_of) {
+  ClaimEvidence c{.key = key};
   const auto index = by_key(rows);
   for (const auto& f : rows) {
-    if (f.option.algorithm != Algorithm::AL || f.option.contact != ContactKind::ss ||
-        f.element != Element::Q4 || small_radius(f.problem))
+    if (!select(f))
       continue;
     if (!f.evidence()) {
       ++c.n_excluded;
@@ -152,42 +157,41 @@ ClaimEvidence trend_penalty(const std::vector<RowFacts>& rows) {
       ++c.n_hold;
     else
       add_example(c, row_name(f));
-    const auto ns = index.find({f.problem, f.quantity, f.element, Algorithm::AL, ContactKind::ns});
-    if (ns == index.end() || !ns->second->evidence())
+    const auto twin = index.find(twin_of(f));
+    if (twin == index.end() || !twin->second->evidence())
       continue;
     ++c.n2;
-    if (std::abs(*ns->second->errors[2]) > std::abs(*f.errors[2]))
+    if (std::abs(*twin->second->errors[2]) > std::abs(*f.errors[2]))
       ++c.n2_hold;
   }
   c.verdict = both_parts(verdict_of(c.n_hold, c.n), verdict_of(c.n2_hold, c.n2, kRefined));
   return c;
 }
 
+/// Trend 1: AL (and PM) ss Q4 is good or excellent except for S(1/3), S(1/7); ns is worse.
+ClaimEvidence trend_penalty(const std::vector<RowFacts>& rows) {
+  return trend_claim(
+      rows, "trend_penalty",
+      [](const RowFacts& f) {
+        return f.option.algorithm == Algorithm::AL && f.option.contact == ContactKind::ss &&
+               f.element == Element::Q4 && !small_radius(f.problem);
+      },
+      [](const RowFacts& f) {
+        return TwinKey{f.problem, f.quantity, f.element, Algorithm::AL, ContactKind::ns};
+      });
+}
+
 /// Trend 2: LMP, PLM with Q4 good or excellent except with mismatched nodes; Q8 worse.
 ClaimEvidence trend_multiplier(const std::vector<RowFacts>& rows) {
-  ClaimEvidence c{.key = "trend_multiplier"};
-  const auto index = by_key(rows);
-  for (const auto& f : rows) {
-    if (f.option.algorithm != Algorithm::LMP || f.element != Element::Q4 || mismatched(f.problem))
-      continue;
-    if (!f.evidence()) {
-      ++c.n_excluded;
-      continue;
-    }
-    ++c.n;
-    if (good_or_better(f))
-      ++c.n_hold;
-    else
-      add_example(c, row_name(f));
-    const auto q8 = index.find({f.problem, f.quantity, Element::Q8, f.option.algorithm, f.option.contact});
-    if (q8 == index.end() || !q8->second->evidence())
-      continue;
-    ++c.n2;
-    if (std::abs(*q8->second->errors[2]) > std::abs(*f.errors[2]))
-      ++c.n2_hold;
-  }
-  c.verdict = both_parts(verdict_of(c.n_hold, c.n), verdict_of(c.n2_hold, c.n2, kRefined));
-  return c;
+  return trend_claim(
+      rows, "trend_multiplier",
+      [](const RowFacts& f) {
+        return f.option.algorithm == Algorithm::LMP && f.element == Element::Q4 &&
+               !mismatched(f.problem);
+      },
+      [](const RowFacts& f) {
+        return TwinKey{f.problem, f.quantity, Element::Q8, f.option.algorithm, f.option.contact};
+      });
 }
 
 /// Trend 3: MPC is uniformly unsatisfactory; the patch tests apart (n2). A row that fails its
@@ -262,7 +266,8 @@ ClaimEvidence element_order(const std::vector<RowFacts>& rows) {
   for (const auto& f : rows) {
     if (f.element != Element::Q4)
       continue;
-    const auto q8 = index.find({f.problem, f.quantity, Element::Q8, f.option.algorithm, f.option.contact});
+    const auto q8 =
+        index.find({f.problem, f.quantity, Element::Q8, f.option.algorithm, f.option.contact});
     if (q8 == index.end())
       continue;
     if (!f.evidence() || !q8->second->evidence()) {
@@ -275,7 +280,8 @@ ClaimEvidence element_order(const std::vector<RowFacts>& rows) {
     if (f.grade == q8->second->grade)
       ++c.n_hold;
     else
-      add_example(c, fmt::format("{} vs Q8 {}", row_name(f), format_error_resolved(*q8->second->errors[2])));
+      add_example(c, fmt::format("{} vs Q8 {}", row_name(f),
+                                 format_error_resolved(*q8->second->errors[2])));
     c.n2 += std::abs(*q8->second->errors[2]) > std::abs(*f.errors[2]) ? 1 : 0;
   }
   c.verdict = verdict_of(c.n_hold, c.n, kRefined);

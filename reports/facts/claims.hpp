@@ -21,8 +21,8 @@ std::string to_string(ClaimVerdict v);
 struct ClaimEvidence {
   std::string key;  ///< the template section, e.g. "al_equals_pm"
   ClaimVerdict verdict = ClaimVerdict::not_testable;
-  int n = 0;        ///< the rows, pairs or models examined
-  int n_hold = 0;   ///< of them, those for which the claim holds
+  int n = 0;           ///< the rows, pairs or models examined
+  int n_hold = 0;      ///< of them, those for which the claim holds
   int n_excluded = 0;  ///< rows left out: not credible, luck of one mesh, or not converged
   std::optional<double> figure;   ///< a claim's deciding figure (a ratio, a difference)
   std::optional<double> figure2;  ///< a second figure where the claim has two parts
@@ -31,7 +31,8 @@ struct ClaimEvidence {
 };
 
 /// Every claim of the study, in the ledger's order.
-std::vector<ClaimEvidence> study_claims(const ResultsIndex& index, const std::vector<RowFacts>& rows,
+std::vector<ClaimEvidence> study_claims(const ResultsIndex& index,
+                                        const std::vector<RowFacts>& rows,
                                         const std::vector<DivergenceFacts>& singular);
 
 }  // namespace cs::reports

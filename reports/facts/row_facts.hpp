@@ -33,16 +33,16 @@ struct RowFacts {
   schema::Quantity quantity = schema::Quantity::sigma_c;
   schema::Element element = schema::Element::Q4;
   Option option;
-  std::array<std::optional<double>, 3> errors;  ///< signed percent, C, M, F
-  std::optional<schema::Grade> grade;           ///< Eq. 46 on F
-  bool study_c = false;                         ///< the study's convergence flag
+  std::array<std::optional<double>, 3> errors;          ///< signed percent, C, M, F
+  std::optional<schema::Grade> grade;                   ///< Eq. 46 on F
+  bool study_c = false;                                 ///< the study's convergence flag
   std::optional<grading::ConvergenceAssessment> trend;  ///< all three meshes present
   std::optional<double> order;                          ///< guarded observed order
   std::string order_note;                               ///< why there is no order
-  bool fine_converged = false;  ///< the F case's contact iterations converged
-  bool credible = true;         ///< the F case passes the interface checks
+  bool fine_converged = false;         ///< the F case's contact iterations converged
+  bool credible = true;                ///< the F case passes the interface checks
   std::vector<CheckFailure> failures;  ///< the F case's failed interface checks
-  bool luck = false;                  ///< e or g on F after an error above 100 % on C or M
+  bool luck = false;                   ///< e or g on F after an error above 100 % on C or M
   /// The same option set graded with extrapolated nodal stresses (as ANSYS prints them).
   std::optional<double> extrapolated_error;
 

@@ -14,11 +14,14 @@ namespace {
 using schema::ProblemId;
 
 /// The situations in the report's order: the study's, then those beyond it.
-constexpr std::array kSituationOrder = {
-    schema::Situation::matched_patch,  schema::Situation::mismatched_patch,
-    schema::Situation::mismatched_patch_equal_moduli, schema::Situation::smooth_curved,
-    schema::Situation::rounded_punch,  schema::Situation::conformal_fit,
-    schema::Situation::frictional,     schema::Situation::flat_punch};
+constexpr std::array kSituationOrder = {schema::Situation::matched_patch,
+                                        schema::Situation::mismatched_patch,
+                                        schema::Situation::mismatched_patch_equal_moduli,
+                                        schema::Situation::smooth_curved,
+                                        schema::Situation::rounded_punch,
+                                        schema::Situation::conformal_fit,
+                                        schema::Situation::frictional,
+                                        schema::Situation::flat_punch};
 
 /// The problems of a situation, as their records say (a record without one is in none).
 std::vector<ProblemId> problems_of(const ResultsIndex& index, schema::Situation situation) {
@@ -35,9 +38,8 @@ bool graded_in_verdict(const ResultsIndex& index, ProblemId problem, schema::Qua
   const schema::ProblemRecord* record = index.problem(problem);
   if (!record)
     return false;
-  const bool has_study_rows =
-      std::any_of(record->quantities.begin(), record->quantities.end(),
-                  [](const auto& d) { return !d.study_row.empty(); });
+  const bool has_study_rows = std::any_of(record->quantities.begin(), record->quantities.end(),
+                                          [](const auto& d) { return !d.study_row.empty(); });
   const schema::QuantityDefinition* d = record->definition(q);
   return d && (!has_study_rows || !d->study_row.empty()) &&
          q != schema::Quantity::contact_half_width;
@@ -63,7 +65,8 @@ void add_row(OptionCell& cell, const RowFacts& f) {
   cell.n_not_converged += f.fine_converged ? 0 : 1;
 }
 
-std::vector<OptionCell> make_cells(const ResultsIndex& index, const std::vector<ProblemId>& problems,
+std::vector<OptionCell> make_cells(const ResultsIndex& index,
+                                   const std::vector<ProblemId>& problems,
                                    const std::vector<RowFacts>& rows,
                                    const std::vector<DivergenceFacts>& singular) {
   std::map<CellKey, OptionCell> cells;

@@ -19,14 +19,14 @@ struct OptionCell {
   OptionFamily family = OptionFamily::penalty;
   schema::ContactKind contact = schema::ContactKind::ss;
   schema::Element element = schema::Element::Q4;
-  std::vector<const RowFacts*> rows;          ///< nonsingular situations
+  std::vector<const RowFacts*> rows;                  ///< nonsingular situations
   std::vector<const DivergenceFacts*> singular_rows;  ///< the flat punch
-  std::optional<double> worst_error;          ///< signed, the largest |F error|
-  std::optional<schema::Grade> worst_grade;   ///< of worst_error
-  std::optional<double> min_error, max_error;  ///< signed range of the F errors
-  double largest_m_to_f_change = 0.0;          ///< max |e_F - e_M| over its rows (points)
+  std::optional<double> worst_error;                  ///< signed, the largest |F error|
+  std::optional<schema::Grade> worst_grade;           ///< of worst_error
+  std::optional<double> min_error, max_error;         ///< signed range of the F errors
+  double largest_m_to_f_change = 0.0;                 ///< max |e_F - e_M| over its rows (points)
   int n_not_credible = 0, n_luck = 0, n_not_converged = 0;
-  bool evidence = false;  ///< every row is evidence (RowFacts::evidence)
+  bool evidence = false;         ///< every row is evidence (RowFacts::evidence)
   int n_eq47 = 0, n_strict = 0;  ///< the flat punch: rows passing each divergence verdict
 };
 
@@ -36,8 +36,8 @@ struct SituationVerdict {
   std::string title;  ///< its label, capitalized: "Smooth curved contact (Hertz)"
   bool singular = false;
   std::vector<schema::ProblemId> problems;
-  std::vector<OptionCell> cells;  ///< every option set present
-  std::vector<const OptionCell*> best;  ///< evidence cells of the best grade (ties)
+  std::vector<OptionCell> cells;         ///< every option set present
+  std::vector<const OptionCell*> best;   ///< evidence cells of the best grade (ties)
   std::vector<const OptionCell*> avoid;  ///< u, not credible, or failing divergence
   std::optional<schema::Grade> best_grade;
   std::optional<double> best_min, best_max;  ///< signed F error range over `best`

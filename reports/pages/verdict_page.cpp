@@ -35,13 +35,12 @@ TemplateData matrix(const std::vector<SituationVerdict>& situations, Element ele
   }
   TemplateData m;
   m.set("element", std::string(schema::to_string(element)));
-  m.set("columns", template_list(situations, [](const SituationVerdict& s) {
-          return TemplateData(s.title);
-        }));
+  m.set("columns",
+        template_list(situations, [](const SituationVerdict& s) { return TemplateData(s.title); }));
   m.set("rows", template_list(options, [&](const auto& option) {
           TemplateData row;
-          row.set("option", family_label(option.first) + " " +
-                                std::string(schema::to_string(option.second)));
+          row.set("option",
+                  family_label(option.first) + " " + std::string(schema::to_string(option.second)));
           row.set("cells", template_list(situations, [&](const SituationVerdict& s) {
                     for (const auto& c : s.cells) {
                       if (c.element == element && c.family == option.first &&
@@ -138,7 +137,8 @@ std::string verdict_cell(const OptionCell& c) {
   return out;
 }
 
-std::string verdict_page(const ResultsIndex& index, const std::vector<SituationVerdict>& situations) {
+std::string verdict_page(const ResultsIndex& index,
+                         const std::vector<SituationVerdict>& situations) {
   TemplateData d;
   TemplateData matrices{TemplateData::type::list};
   for (const Element e : schema::values<Element>()) {
