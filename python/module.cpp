@@ -1,5 +1,7 @@
-// The Python module `contact_suite`: the suite's exact solutions, its results reader and its
-// grading rules, for solver teams who test in Python.
+// The compiled part of the Python package `contact_suite` (contact_suite._core, whose names the
+// package exports): the suite's exact solutions, its results reader and its grading rules, for
+// solver teams who test in Python. The package's case-directory reader and results writer are
+// plain Python (python/contact_suite/).
 //
 //   import contact_suite as cs
 //   c = cs.hertz_plane_contact(R=100.0, E=1000.0, nu=0.25, P=2.0)
@@ -8,7 +10,7 @@
 
 #include "python/bindings.hpp"
 
-PYBIND11_MODULE(contact_suite, m) {
+PYBIND11_MODULE(_core, m) {
   m.doc() =
       "contact-suite: exact solutions of frictionless and frictional contact problems (the "
       "oracles), the reader of results.json, and the grading rules of the study (Eq. 46, "

@@ -10,6 +10,7 @@
 
 #include <fmt/format.h>
 
+#include "adapters/protocol/code_environment.hpp"
 #include "platform/child_process.hpp"
 #include "solver/mesh/mesh_sets.hpp"
 #include "solver/stress_recovery.hpp"
@@ -160,7 +161,7 @@ const ExternalExecutor::Run& ExternalExecutor::run_code(const CaseSpec& spec) {
   child.stdout_path = case_dir / "solver.out";
   child.stderr_path = case_dir / "solver.err";
   child.time_limit_seconds = options_.time_limit_seconds;
-  child.environment = {{"OMP_NUM_THREADS", "1"}, {"PYTHONDONTWRITEBYTECODE", "1"}};
+  child.environment = protocol::code_environment();
   const auto adapter_before = listing(code.folder);
   run.child = platform::run_child(child);
 
