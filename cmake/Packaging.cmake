@@ -11,6 +11,11 @@ include(GNUInstallDirs)
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/data/study
         DESTINATION ${CMAKE_INSTALL_DATADIR}/contact-suite/data COMPONENT command
         FILES_MATCHING PATTERN "*.csv" PATTERN "README.md")
+# The external codes' adapters that run through the solver protocol (a manifest and a script
+# each; adapters/protocol/solver_registry.hpp finds them at PREFIX/share/contact-suite/adapters).
+install(FILES ${PROJECT_SOURCE_DIR}/adapters/getfem/manifest.json
+              ${PROJECT_SOURCE_DIR}/adapters/getfem/getfem_case.py
+        DESTINATION ${CMAKE_INSTALL_DATADIR}/contact-suite/adapters/getfem COMPONENT command)
 install(FILES ${PROJECT_SOURCE_DIR}/README.md DESTINATION ${CMAKE_INSTALL_DATADIR}/doc/contact-suite COMPONENT docs)
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/docs/ DESTINATION ${CMAKE_INSTALL_DATADIR}/doc/contact-suite/docs
         COMPONENT docs FILES_MATCHING PATTERN "*.md")

@@ -30,12 +30,26 @@ std::vector<fs::path> manifest_folders(const fs::path& dir) {
   return out;
 }
 
+/// The project's adapters: PREFIX/share/contact-suite/adapters next to an installed (or
+/// unpacked) program PREFIX/bin/contact-suite, else the source tree's adapters/.
+fs::path project_adapters() {
+  std::error_code ec;
+  const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
+  if (!ec) {
+    const fs::path installed =
+        exe.parent_path().parent_path() / "share" / "contact-suite" / "adapters";
+    if (fs::is_directory(installed, ec))
+      return installed;
+  }
+  return CONTACT_SUITE_ADAPTERS_DIR;
+}
+
 }  // namespace
 
 std::vector<fs::path> solver_directories(const std::vector<fs::path>& extra) {
   std::vector<fs::path> out;
-  if (const std::string built_in = CONTACT_SUITE_ADAPTERS_DIR; !built_in.empty())
-    out.emplace_back(built_in);
+  if (const fs::path built_in = project_adapters(); !built_in.empty())
+    out.push_back(built_in);
   if (const char* env = std::getenv("CONTACT_SUITE_SOLVER_DIRS")) {
     std::string list = env;
     for (std::size_t start = 0; start <= list.size();) {

@@ -1,7 +1,9 @@
 #pragma once
 // Where external codes are found: every folder holding a manifest.json (solver_manifest.hpp)
 // directly under one of the solver directories, which are, in order:
-//   1. the project's own adapters/ (CONTACT_SUITE_ADAPTERS_DIR, fixed when the tool is built);
+//   1. the project's own adapters: PREFIX/share/contact-suite/adapters next to an installed
+//      program PREFIX/bin/contact-suite (where `cmake --install` and the .deb put them), else
+//      the source tree's adapters/ (CONTACT_SUITE_ADAPTERS_DIR, fixed when the tool is built);
 //   2. each folder of the environment variable CONTACT_SUITE_SOLVER_DIRS (':'-separated);
 //   3. each folder given on the command line (--solver-dir).
 // A solver directory may also be a code's own folder (it holds manifest.json itself). A new

@@ -41,7 +41,7 @@ class _Missing(ValueError):
     pass
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
 class Body:
     """One body of the mesh (a physical group of dimension 2).
 
@@ -67,7 +67,7 @@ class Body:
         return self.role == "deformable"
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
 class Constraint:
     """A prescribed displacement component on a set of nodes.
 
@@ -92,7 +92,7 @@ class Constraint:
         return 2 * self.nodes + (0 if self.component == "x" else 1)
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
 class RigidProfile:
     """A rigid target's analytic profile; signed_distance() is > 0 outside the rigid region.
 
@@ -129,7 +129,7 @@ class RigidProfile:
         return np.where(s <= a, h, np.where(h >= 0.0, np.hypot(s - a, h), s - a))
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
 class ContactPair:
     """The contact pair: `contact_surface` (an edge set of the deformable body) against a target:
     target_kind "rigid" with `profile`, or "meshed" with `target_surface` (an edge set).
@@ -142,7 +142,7 @@ class ContactPair:
     frictionless: bool = True
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
 class LoadControl:
     """How the problem is loaded.
 
@@ -161,7 +161,7 @@ class LoadControl:
     depth_guess: float = math.nan
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
 class Case:
     """One case directory, read (see the module's conventions).
 

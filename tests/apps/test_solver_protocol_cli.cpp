@@ -171,6 +171,46 @@ TEST(SolverProtocolCli, GetfemSolvesThePatchTest) {
   }
 }
 
+// The integral augmented Lagrangian's contact pressure is its multiplier where the brick's
+// contact test holds: on H_p C Q4 (a = 1 lies on a node, sides 0.25 a) the contact edge is read
+// halfway between the last loaded node (x = a) and the next, 1.125 a, as for the nodal brick;
+// the raw multiplier, oscillating about zero past the edge, read 2.0 a.
+TEST(SolverProtocolCli, GetfemIntegralContactHalfWidth) {
+  if (!getfem_available())
+    GTEST_SKIP() << "python3-getfem is not installed";
+  TempDir dir;
+  const fs::path out = dir.path() / "out";
+  const auto r = run_cli({"run",
+                          "--solver",
+                          "getfem",
+                          "--solver-options",
+                          "integral_al,nodal_al",
+                          "--problems",
+                          "H_p",
+                          "--meshes",
+                          "C",
+                          "--elements",
+                          "Q4",
+                          "--target",
+                          "rigid",
+                          "--recovery",
+                          "spr",
+                          "--jobs",
+                          "1",
+                          "--no-report",
+                          "--out",
+                          out.string()});
+  ASSERT_EQ(r.exit_code, 0) << r.err << r.out;
+  const auto cases = cases_by_id(out / "results.json");
+  for (const std::string id :
+       {"H_p/C/Q4/AL/ss/rigid/@getfem:integral_al", "H_p/C/Q4/AL/ns/rigid/@getfem:nodal_al"}) {
+    ASSERT_TRUE(cases.contains(id)) << id;
+    EXPECT_EQ(cases.at(id).at("quantities").at("contact_half_width").at("value").get<double>(),
+              1.125)
+        << id;
+  }
+}
+
 TEST(SolverProtocolCli, BadManifestIsExit2AndOneLine) {
   const std::string good = R"({"name": "x", "command": ["true"], "version_command": ["true"],
     "options": [{"label": "a", "family": "penalty", "discretization": "ns"}],
