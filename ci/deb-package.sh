@@ -23,11 +23,13 @@ start=$(date +%s.%N)
 end=$(date +%s.%N)
 deb=$(ls "$build"/contact-suite_*.deb)
 echo "ci/deb-package.sh: built $(basename "$deb") ($(du -h "$deb" | cut -f1)) in $(awk "BEGIN{printf \"%.1f\", $end - $start}") s"
-dpkg-deb -I "$deb" | sed -n '/^ Package:/,$p'
+dpkg-deb -f "$deb"  # every control field: Package, Version, Architecture, Depends ...
 echo "Contents (files by folder):"
 dpkg-deb -c "$deb" | awk '$1 !~ /^d/ {sub("^\\./", "", $6); n = split($6, p, "/");
   d = p[1]; for (i = 2; i < n && i < 5; ++i) d = d "/" p[i]; c[d]++; s[d] += $3}
   END {for (d in c) printf "  %-50s %4d files %9.1f KiB\n", d, c[d], s[d] / 1024}' | sort
+dpkg-deb -f "$deb" Description | grep -q ";" &&
+  { echo "ci/deb-package.sh: the description holds a CMake list separator ';'" >&2; exit 1; }
 for dep in python3-numpy libgsl libpugixml libcholmod; do
   dpkg-deb -f "$deb" Depends | grep -q "$dep" || { echo "ci/deb-package.sh: Depends lacks $dep" >&2; exit 1; }
 done

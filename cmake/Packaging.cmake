@@ -25,10 +25,13 @@ set(CPACK_PACKAGE_NAME contact-suite)
 set(CPACK_PACKAGE_VERSION ${PROJECT_VERSION})
 set(CPACK_PACKAGE_DESCRIPTION_SUMMARY
     "verification test suite for finite-element contact mechanics, with exact solutions")
-set(CPACK_PACKAGE_DESCRIPTION
-    "The contact-suite command (run the study's battery, grade imported results, gate CI on a "
-    "baseline with JUnit output), the exact-solution oracles as a C++ library (CMake package "
-    "and pkg-config file), the Python module contact_suite and the documentation.")
+# One string (set() joins several with ';', which would end up in the control file).
+string(CONCAT CPACK_PACKAGE_DESCRIPTION
+       "The contact-suite command (run the study's battery, grade imported results, gate CI on a "
+       "baseline with JUnit output), the exact-solution oracles as a C++ library (CMake package "
+       "and pkg-config file), the Python package contact_suite (oracles, results reader, grading, "
+       "the solver protocol's case reader and results writer), the GetFEM adapter and the "
+       "documentation.")
 set(CPACK_PACKAGE_CONTACT "contact-suite developers")
 set(CPACK_PACKAGING_INSTALL_PREFIX /usr)
 set(CPACK_DEBIAN_FILE_NAME DEB-DEFAULT)
@@ -43,7 +46,7 @@ if(CONTACT_SUITE_BUILD_PYTHON)
       "python3 (>= ${Python3_VERSION_MAJOR}.${Python3_VERSION_MINOR}), python3 (<< ${Python3_VERSION_MAJOR}.${cs_python_next_minor}), python3-numpy")
 endif()
 # The oracles' headers and static library need GSL's headers to build against; figures need
-# gnuplot; `run --solver calculix` needs ccx.
+# gnuplot; `run --solver calculix` needs ccx, `run --solver getfem` python3-getfem.
 set(CPACK_DEBIAN_PACKAGE_RECOMMENDS "libgsl-dev, pkg-config, gnuplot-nox")
-set(CPACK_DEBIAN_PACKAGE_SUGGESTS "calculix-ccx, cmake")
+set(CPACK_DEBIAN_PACKAGE_SUGGESTS "calculix-ccx, python3-getfem, cmake")
 include(CPack)
