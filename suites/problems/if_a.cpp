@@ -19,7 +19,7 @@ const ProblemDescriptor& problem_descriptor<ProblemId::IF_a>() {
        /*axisymmetric=*/true,
        /*singular=*/false,
        "",
-       "Lame, Timoshenko \& Goodier Sec. 137 (interference_fit.hpp)",
+       "Lame, Timoshenko & Goodier Sec. 137 (interference_fit.hpp)",
        {{Quantity::p_mean, "p<sub>mean</sub>/p", "p_mean/p", "", ""},
         {Quantity::p_arc, "p(θ<sub>max</sub>)/p", "p(theta_max)/p", "", ""}}},
       problems::interference_fit_parameters(),
