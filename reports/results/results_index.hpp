@@ -3,8 +3,8 @@
 // order, the row of an option set, the case behind a row's mesh, the status of each mesh. The
 // "baseline" rows are the study's option sets (our solver, or in results without a row of ours
 // the other solver first by name, so that an imported code's results read like ours; a
-// discretized target, patch-recovered nodal stresses, no parameter overrides); the same option sets with
-// extrapolated nodal stresses are "recovery twins" of the baseline rows (compared in their own
+// discretized target, patch-recovered nodal stresses, no parameter overrides); the same option sets
+// with extrapolated nodal stresses are "recovery twins" of the baseline rows (compared in their own
 // section); every other row (a rigid target, overrides, another solver) is a "variant",
 // reported in its own section.
 

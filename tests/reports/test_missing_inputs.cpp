@@ -106,7 +106,8 @@ TEST(MissingInputs, ImportedSolverWithoutFineMeshShowsNoFineError) {
   const std::string page = read_text(options.out_dir / "problem-H_p.md");
   EXPECT_EQ(md.rfind("# contact-suite report: getfem beside the study's ANSYS results\n", 0), 0u)
       << md.substr(0, 200);
-  EXPECT_NE(md.find("No verdict: these results hold no row with the study's settings and a fine-mesh (F) value"),
+  EXPECT_NE(md.find("No verdict: these results hold no row with the study's settings and a "
+                    "fine-mesh (F) value"),
             std::string::npos);
   EXPECT_NE(md.find("Solver: getfem."), std::string::npos);
   EXPECT_EQ(md.find("F error"), std::string::npos);
