@@ -11,9 +11,9 @@
 
 #include <fmt/core.h>
 
+#include "apps/ci_summary.hpp"
+#include "apps/junit_xml.hpp"
 #include "apps/usage_error.hpp"
-#include "reports/ci/ci_summary.hpp"
-#include "reports/ci/junit_xml.hpp"
 
 namespace cs::apps {
 namespace {
@@ -93,9 +93,9 @@ void require_writable(const CiReportFiles& files) {
 void write_ci_reports(const CiReportFiles& files, const std::vector<schema::RowOutcome>& rows,
                       std::string_view name, std::string_view title) {
   if (!files.junit.empty())
-    replace_file("--junit", files.junit, reports::junit_xml(rows, name));
+    replace_file("--junit", files.junit, junit_xml(rows, name));
   if (!files.summary.empty())
-    append_file("--summary", files.summary, reports::ci_summary_markdown(rows, title));
+    append_file("--summary", files.summary, ci_summary_markdown(rows, title));
 }
 
 }  // namespace cs::apps

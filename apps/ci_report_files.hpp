@@ -1,7 +1,7 @@
 #pragma once
 // `--junit FILE` and `--summary FILE` of `run` and `gate`: the rows as JUnit XML for a CI
-// system's test report (reports/ci/junit_xml.hpp), and a Markdown summary appended to FILE for a
-// CI job's summary page, e.g. --summary "$GITHUB_STEP_SUMMARY" (reports/ci/ci_summary.hpp).
+// system's test report (apps/junit_xml.hpp), and a Markdown summary appended to FILE for a
+// CI job's summary page, e.g. --summary "$GITHUB_STEP_SUMMARY" (apps/ci_summary.hpp).
 
 #include <string>
 #include <string_view>

@@ -4,7 +4,7 @@
 
 #include <vector>
 
-#include "reports/tables/solver_option_mapping.hpp"
+#include "reports/tables/cross_code_section.hpp"
 
 namespace cs::apps {
 

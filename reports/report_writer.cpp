@@ -1,21 +1,17 @@
 #include "reports/report_writer.hpp"
 
+#include <algorithm>
+#include <ranges>
 
 #include <fmt/format.h>
 
 #include "platform/output_transaction.hpp"
 #include "reports/bench/bench_results.hpp"
+#include "reports/bench/bench_section.hpp"
 #include "reports/facts/claims.hpp"
 #include "reports/facts/situation_verdict.hpp"
-#include "reports/pages/claims_ledger.hpp"
-#include "reports/pages/page_format.hpp"
-#include "reports/pages/problem_page.hpp"
-#include "reports/pages/run_page.hpp"
-#include "reports/pages/verdict_page.hpp"
-#include "reports/render/template_text.hpp"
-#include "reports/bench/bench_section.hpp"
+#include "reports/facts/solvers.hpp"
 #include "reports/figures/bench_figure.hpp"
-#include "reports/figures/cross_code_figure.hpp"
 #include "reports/figures/mesh_figure.hpp"
 #include "reports/figures/sweep_figure.hpp"
 #include "reports/findings/anomalies_section.hpp"
@@ -25,10 +21,15 @@
 #include "reports/findings/regression_report.hpp"
 #include "reports/findings/sweep_section.hpp"
 #include "reports/findings/variant_rows.hpp"
+#include "reports/pages/claims_ledger.hpp"
+#include "reports/pages/page_format.hpp"
+#include "reports/pages/problem_page.hpp"
+#include "reports/pages/run_page.hpp"
+#include "reports/pages/verdict_page.hpp"
+#include "reports/render/template_text.hpp"
 #include "reports/results/results_csv.hpp"
 #include "reports/tables/appendix_tables.hpp"
 #include "reports/tables/conformal_section.hpp"
-#include "reports/tables/cross_code_rows.hpp"
 #include "reports/tables/cross_code_section.hpp"
 #include "reports/tables/divergence_table.hpp"
 #include "reports/tables/friction_section.hpp"
@@ -39,6 +40,17 @@
 
 namespace cs::reports {
 namespace {
+
+/// An appendix's key in templates/report.mustache: "appendix-study-tables.md" -> "study_tables".
+std::string appendix_key(const std::string& file) {
+  std::string key = file.substr(9, file.size() - 12);
+  std::replace(key.begin(), key.end(), '-', '_');
+  return key;
+}
+
+bool has_content(const ReportPage& page) {
+  return !page.markdown.empty();
+}
 
 /// A section's text without its "## Title" line (its page carries the title).
 std::string strip_heading(const std::string& section) {
@@ -75,20 +87,19 @@ std::string variants_section(const ResultsIndex& index) {
                                schema::to_string(s.algorithm), schema::to_string(s.contact)),
                    variant_of(s), cells[0], cells[1], cells[2], grade});
   }
-  return "## Other option sets (rigid target, parameter overrides)\n\n"
-         "Not in the study, so not in Tables 2 or the appendix tables: our value (our % error) "
-         "per mesh and the grade of the finest mesh.\n\n" +
-         table.render() + "\n";
+  return render_template(templates::variants_section, TemplateData("table", table.render()));
 }
 
 std::string report_title(const ResultsIndex& index) {
   if (!is_cross_code(index))
-    return solver_names(index) == "ours" ? "our contact elements beside the study's ANSYS results"
-                                         : solver_names(index) + " beside the study's ANSYS results";
+    return solver_names(index) == "ours"
+               ? "our contact elements beside the study's ANSYS results"
+               : solver_names(index) + " beside the study's ANSYS results";
   return solver_names(index) + " beside the study's ANSYS results";
 }
 
-std::vector<ReportPage> appendix_pages(const ResultsIndex& index, const StudyReference& study,
+std::vector<ReportPage> appendix_pages(const ResultsIndex& index,
+                                       const schema::StudyReference& study,
                                        const ReportContent& content) {
   std::vector<ReportPage> pages = {
       {"appendix-tables-2.md", "Tables 2a′ and 2b′ beside the study's ANSYS grades",
@@ -115,11 +126,10 @@ std::vector<ReportPage> appendix_pages(const ResultsIndex& index, const StudyRef
       {"appendix-benchmarks.md", "Benchmarks", content.bench_md},
       {"appendix-run.md", "The run: files, machine, versions", run_page(index.results())},
   };
-  std::erase_if(pages, [](const ReportPage& p) { return p.markdown.empty(); });
   return pages;
 }
 
-std::string report_markdown(const ResultsIndex& index, const StudyReference& study,
+std::string report_markdown(const ResultsIndex& index, const schema::StudyReference& study,
                             const ReportContent& content, const std::vector<ReportPage>& problems,
                             const std::vector<ReportPage>& appendices) {
   const std::vector<RowFacts> rows = row_facts(index);
@@ -136,10 +146,20 @@ std::string report_markdown(const ResultsIndex& index, const StudyReference& stu
     return l;
   };
   d.set("problems", template_list(problems, links));
-  d.set("appendices", template_list(appendices, links));
+  std::vector<ReportPage> present;
+  TemplateData omitted(TemplateData::type::object);
+  for (const ReportPage& p : appendices) {
+    if (!p.markdown.empty())
+      present.push_back(p);
+    else
+      omitted.set(appendix_key(p.file), true);
+  }
+  d.set("appendices", template_list(present, links));
+  d.set("omitted", omitted);
+  d.set("has_omitted", present.size() < appendices.size());
   d.set("companions", companions_markdown(content.companions));
   d.set("has_regression", content.has_regression);
-  return render_template(templates::report, d);
+  return tidy_markdown(render_template(templates::report, d));
 }
 
 std::vector<ReportPage> problem_pages(const ResultsIndex& index, const FigureSet& figures,
@@ -155,8 +175,7 @@ std::vector<ReportPage> problem_pages(const ResultsIndex& index, const FigureSet
           own.push_back(&f);
       }
     }
-    pages.push_back({problem_page_file(p->id),
-                     std::string(schema::label(p->id)) + ": " + p->title,
+    pages.push_back({problem_page_file(p->id), std::string(schema::label(p->id)) + ": " + p->title,
                      problem_page(index, *p, rows, singular, own)});
   }
   return pages;
@@ -167,8 +186,8 @@ ReportOutcome write_report(const schema::ResultsDocument& results, const ReportO
   std::optional<schema::ResultsDocument> baseline;
   if (options.baseline)
     baseline = schema::read_results_file(*options.baseline);
-  const StudyReference study =
-      load_study_reference(options.study_data ? *options.study_data : default_study_data_dir());
+  const schema::StudyReference study = schema::load_study_reference(
+      options.study_data ? *options.study_data : schema::default_study_data_dir());
   std::optional<BenchResults> bench;
   if (!options.bench.empty())
     bench = load_bench_files(options.bench);
@@ -198,7 +217,7 @@ ReportOutcome write_report(const schema::ResultsDocument& results, const ReportO
   const std::vector<ReportPage> appendices = appendix_pages(index, study, content);
   for (const auto& page : problems)
     output.write_text(page.file, page.markdown);
-  for (const auto& page : appendices)
+  for (const auto& page : appendices | std::views::filter(has_content))
     output.write_text(page.file, "# " + page.title + "\n\n[← the report](report.md)\n\n" +
                                      strip_heading(page.markdown));
   output.write_text("report.md", report_markdown(index, study, content, problems, appendices));

@@ -1,20 +1,22 @@
 #pragma once
 // `contact-suite report`: everything a results document turns into, written atomically into one
-// directory: report.md (summary and findings, Tables 2a/2b, appendix tables, with several solvers
-// the cross-code section, figures, the flat-punch divergence table, other option sets, the recovery
-// comparison and, with Google Benchmark JSON of bench_contact_algorithms, the benchmarks),
-// figures/*.png, results.csv, estimates.csv (per-row error estimates), and with a baseline,
-// regression.md.
+// directory: report.md (the verdict page, the claims ledger, links to one page per problem and to
+// the appendices, and a line for each appendix left out for want of its inputs), the problem
+// pages, the appendices, figures/*.png, results.csv, estimates.csv (per-row error estimates),
+// and with a baseline, regression.md.
 //
-// The layout of the folder follows the report: results/ (the index over a results document,
-// the study's reference data, the CSV export), tables/ (Tables 2a/2b, the appendix tables, the
-// divergence table), figures/ (gnuplot figures, the bench chart), bench/ (benchmark files and
-// their section), findings/ (summary, findings, recovery comparison, regression report).
+// The layout of the folder: results/ (the index over a results document, the CSV export),
+// facts/ (queries over the results returning structs: rows, verdicts, claims, solvers), pages/
+// (the verdict page, the claims ledger, the problem pages), tables/ (the table model, Tables
+// 2a′/2b′, the appendix tables, the cross-code comparison), figures/ (the plot model, the gnuplot
+// writer, the figures), bench/ (benchmark files and their appendix), findings/ (the other
+// appendices, the regression report), render/ (templates/*.mustache, the prose). The study's
+// reference data is read by schema/study_reference.hpp.
 //
 // The report is built from a ResultsDocument in memory (`run` hands over what it ran; `report
 // --results FILE` reads the file with schema::read_results_file). All other input is read and
-// checked before the output directory is touched: a bad baseline (schema::SchemaError), bench
-// file or study data (ReportError) leaves the directory as it was.
+// checked before the output directory is touched: a bad baseline or study data
+// (schema::SchemaError) or bench file (ReportError) leaves the directory as it was.
 
 #include <filesystem>
 #include <optional>
@@ -24,9 +26,9 @@
 #include "reports/companion_report.hpp"
 #include "reports/figures/figures.hpp"
 #include "reports/results/results_index.hpp"
-#include "reports/results/study_reference.hpp"
-#include "reports/tables/solver_option_mapping.hpp"
+#include "reports/tables/cross_code_section.hpp"
 #include "schema/results_file.hpp"
+#include "schema/study_reference.hpp"
 
 namespace cs::reports {
 
@@ -34,7 +36,7 @@ struct ReportOptions {
   std::filesystem::path out_dir;  ///< where report.md and the rest go
   /// An older results.json for regression.md, read with schema::read_results_file.
   std::optional<std::filesystem::path> baseline;
-  /// data/study with the study's CSVs; default: default_study_data_dir().
+  /// data/study with the study's CSVs; default: schema::default_study_data_dir().
   std::optional<std::filesystem::path> study_data;
   /// Google Benchmark JSON files of bench_contact_algorithms: the appendix "Benchmarks"
   /// (none: no such appendix). A case measured in several files is shown from the last.
@@ -89,14 +91,16 @@ struct ReportPage {
 std::vector<ReportPage> problem_pages(const ResultsIndex& index, const FigureSet& figures,
                                       const FigureSet& mesh_figures);
 
-/// The appendices that have content, in the report's order (the one list of them and their
-/// titles).
-std::vector<ReportPage> appendix_pages(const ResultsIndex& index, const StudyReference& study,
+/// Every appendix in the report's order (the one list of them and their titles); one without
+/// content (its inputs are not in the results) has an empty text, is not written, and report.md
+/// says why it is absent (templates/report.mustache, keyed by its file name).
+std::vector<ReportPage> appendix_pages(const ResultsIndex& index,
+                                       const schema::StudyReference& study,
                                        const ReportContent& content);
 
 /// report.md: the verdict page, the claims ledger, and links to the problem pages and the
 /// appendices (no I/O).
-std::string report_markdown(const ResultsIndex& index, const StudyReference& study,
+std::string report_markdown(const ResultsIndex& index, const schema::StudyReference& study,
                             const ReportContent& content, const std::vector<ReportPage>& problems,
                             const std::vector<ReportPage>& appendices);
 

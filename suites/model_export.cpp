@@ -184,7 +184,7 @@ void require_exchangeable(const CaseSpec& spec) {
         "{}: {} has friction, which the import/export layout does not carry (no load path, "
         "shear stress or stick/slip states)",
         case_id(spec), to_string(spec.problem)));
-  if (spec.problem == ProblemId::IF_p || spec.problem == ProblemId::IF_a)
+  if (problem_descriptor(spec.problem).situation == schema::Situation::conformal_fit)
     throw SuiteInputError(fmt::format(
         "{}: {} is graded from the contact's nodal forces along the arc, which the import/export "
         "layout does not carry",

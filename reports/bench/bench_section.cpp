@@ -251,21 +251,12 @@ TemplateData model_data(const BenchModel& model,
   return d;
 }
 
-TemplateData figure_data(const FigureSet& figures) {
+TemplateData figure_set_data(const FigureSet& figures) {
   if (figures.figures.empty() && figures.unavailable.empty())
     return TemplateData(false);
   TemplateData d;
   d.set("unavailable", text_or_false(figures.unavailable));
-  d.set("list", template_list(figures.figures, [](const Figure& f) {
-          TemplateData e;
-          e.set("produced", f.produced);
-          e.set("file", f.file);
-          e.set("error", f.error.empty() ? "nothing to plot" : f.error);
-          e.set("caption", f.caption_md);
-          e.set("notes",
-                template_list(f.notes, [](const std::string& n) { return TemplateData(n); }));
-          return e;
-        }));
+  d.set("list", template_list(figures.figures, [](const Figure& f) { return figure_data(f); }));
   return d;
 }
 
@@ -347,7 +338,7 @@ std::string bench_section(const BenchResults& bench, const FigureSet& figures,
   d.set("below_floor", below_floor(bench));
   d.set("replaced", text_or_false(bench.n_replaced > 0 ? std::to_string(bench.n_replaced) : ""));
   d.set("target", target_data(bench, target));
-  d.set("figures", figure_data(figures));
+  d.set("figures", figure_set_data(figures));
   d.set("all_options",
         text_or_false(bench.all_options.empty() ? "" : all_options_table(bench).render()));
   d.set("al", name(BenchMethod::AL));

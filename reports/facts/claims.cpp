@@ -46,13 +46,14 @@ bool good_or_better(const RowFacts& f) {
   return f.grade && !schema::is_worse(*f.grade, Grade::g);
 }
 
-bool mismatched(ProblemId p) {
-  return p == ProblemId::Pprime_p || p == ProblemId::Pprime_a || p == ProblemId::Pprime_p_E1 ||
-         p == ProblemId::Pprime_a_E1;
+/// A patch test whose nodes do not meet (the problem record's situation).
+bool mismatched(const RowFacts& f) {
+  return f.situation == schema::Situation::mismatched_patch ||
+         f.situation == schema::Situation::mismatched_patch_equal_moduli;
 }
 
-bool patch_test(ProblemId p) {
-  return p == ProblemId::P_p || p == ProblemId::P_a || mismatched(p);
+bool patch_test(const RowFacts& f) {
+  return f.situation == schema::Situation::matched_patch || mismatched(f);
 }
 
 bool small_radius(ProblemId p) {
@@ -186,8 +187,7 @@ ClaimEvidence trend_multiplier(const std::vector<RowFacts>& rows) {
   return trend_claim(
       rows, "trend_multiplier",
       [](const RowFacts& f) {
-        return f.option.algorithm == Algorithm::LMP && f.element == Element::Q4 &&
-               !mismatched(f.problem);
+        return f.option.algorithm == Algorithm::LMP && f.element == Element::Q4 && !mismatched(f);
       },
       [](const RowFacts& f) {
         return TwinKey{f.problem, f.quantity, Element::Q8, f.option.algorithm, f.option.contact};
@@ -202,13 +202,13 @@ ClaimEvidence mpc_unsatisfactory(const std::vector<RowFacts>& rows) {
   for (const auto& f : rows) {
     if (f.option.algorithm != Algorithm::MPC)
       continue;
-    if (!f.evidence() && !patch_test(f.problem)) {
+    if (!f.evidence() && !patch_test(f)) {
       ++c.n;
       ++c.n_hold;
       ++c.n_excluded;
       continue;
     }
-    if (patch_test(f.problem)) {
+    if (patch_test(f)) {
       if (!f.evidence())
         continue;
       ++c.n2;
@@ -337,7 +337,7 @@ ClaimEvidence closing(const std::vector<RowFacts>& rows) {
     const bool penalty_ss = family_of(f.option.algorithm) == OptionFamily::penalty &&
                             f.option.contact == ContactKind::ss;
     const bool multiplier_aligned =
-        family_of(f.option.algorithm) == OptionFamily::multiplier && !mismatched(f.problem);
+        family_of(f.option.algorithm) == OptionFamily::multiplier && !mismatched(f);
     if (!penalty_ss && !multiplier_aligned)
       continue;
     if (!f.evidence()) {

@@ -68,6 +68,8 @@ std::vector<RowFacts> row_facts(const ResultsIndex& index) {
     RowFacts f;
     f.row = r;
     f.problem = r->spec.problem;
+    if (const schema::ProblemRecord* p = index.problem(f.problem))
+      f.situation = p->situation;
     f.quantity = r->quantity;
     f.element = r->spec.element;
     f.option = {r->spec.algorithm, r->spec.contact};

@@ -30,6 +30,7 @@ struct CheckFailure {
 struct RowFacts {
   const schema::RowVerdict* row = nullptr;
   schema::ProblemId problem = schema::ProblemId::P_p;
+  std::optional<schema::Situation> situation;  ///< the problem record's (none in old files)
   schema::Quantity quantity = schema::Quantity::sigma_c;
   schema::Element element = schema::Element::Q4;
   Option option;

@@ -7,6 +7,7 @@
 
 #include "reports/figures/figures.hpp"
 #include "reports/figures/gnuplot.hpp"
+#include "reports/render/template_text.hpp"
 #include "reports/tables/markdown_table.hpp"
 
 namespace cs::reports {
@@ -107,15 +108,10 @@ FigureSet render_bench_figures(const BenchResults& bench, const std::filesystem:
   if (plot.panels.empty())
     return set;
   Figure figure(FigureKind::bench, "figures/bench_time.png");
-  figure.caption_md = fmt::format(
-      "Time of the contact analysis (ms) per algorithm, grouped by contact discretization, for "
-      "each problem and element at the finest mesh measured ({}); above each bar its ratio to "
-      "the reference. Dashed black: the reference (one assembly + factorization + solve, ratio "
-      "1); dash-dotted red: ratio {:g}, the target.{}",
-      fmt::join(models, "; "), target.max_ratio,
-      any_failed
-          ? " A ratio marked * is of a case that did not converge; a missing bar, of an error."
-          : "");
+  TemplateData caption("models", fmt::format("{}", fmt::join(models, "; ")));
+  caption.set("target", fmt::format("{:g}", target.max_ratio));
+  caption.set("any_failed", any_failed);
+  figure.caption_md = figure_text("bench", caption);
   GnuplotWriter writer(options);
   set.unavailable = writer.unavailable();
   writer.draw(plot, out_root, figure);

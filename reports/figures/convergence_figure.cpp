@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "reports/figures/figures.hpp"
+#include "reports/render/template_text.hpp"
 #include "reports/tables/option_classes.hpp"
 
 namespace cs::reports {
@@ -83,7 +84,8 @@ Plot convergence_plot(const ResultsIndex& index, const std::vector<RowFacts>& ro
     const Slot slot{p.id, q.quantity, element};
     PlotPanel panel{
         std::string(schema::to_string(element)),
-        {over_punch_width(p.id) ? "element size h / b" : "element size h / a", Scale::log},
+        {fmt::format("element size h / {}", schema::symbol(length_scale_of(index, p.id))),
+         Scale::log},
         {p.singular ? q.definition_plain : "|error| (%)", Scale::log}};
     for (const auto& cls : coincidence_classes(index, all_options(), {slot})) {
       const schema::RowVerdict* row = class_row(index, cls, slot);
@@ -113,21 +115,15 @@ Plot convergence_plot(const ResultsIndex& index, const std::vector<RowFacts>& ro
     add_reference_slopes(panel, p.singular);
     plot.panels.push_back(std::move(panel));
   }
-  figure.caption_md = fmt::format(
-      "{} — {}: {} against element size, log–log, per option set (colour: option set; dashes "
-      "and symbols: contact type). Legend: {}.",
-      schema::label(p.id), schema::label(q.quantity),
-      p.singular ? "the edge stress" : "|error| (%)",
-      p.singular ? "the exponent of the edge stress's growth (grading/divergence.hpp)"
-                 : "the observed order (grading::observed_order: the mean of the C→M and M→F "
-                   "orders, given only for a monotone sequence in its asymptotic range; else "
-                   "why not)");
+  TemplateData caption("problem", std::string(schema::label(p.id)));
+  caption.set("quantity", std::string(schema::label(q.quantity)));
+  caption.set("singular", p.singular);
+  figure.caption_md = figure_text("convergence", caption);
   if (relative)
-    figure.notes.push_back("element_size_h missing in some cases: h taken as 1, 1/2, 1/4.");
+    figure.notes.push_back(figure_text("relative_h"));
   if (round_off)
-    figure.notes.push_back(fmt::format(
-        "errors below {:g} % are round-off, not discretization error: left out of the log plot.",
-        schema::kErrorNoiseFloorPercent));
+    figure.notes.push_back(figure_text(
+        "round_off", TemplateData("floor", fmt::format("{:g}", schema::kErrorNoiseFloorPercent))));
   return plot;
 }
 

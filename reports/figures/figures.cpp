@@ -8,9 +8,10 @@
 
 namespace cs::reports {
 
-bool over_punch_width(schema::ProblemId id) {
-  using schema::ProblemId;
-  return id == ProblemId::S_1 || id == ProblemId::S_1_3 || id == ProblemId::S_1_7;
+schema::LengthScale length_scale_of(const ResultsIndex& index, schema::ProblemId id) {
+  const schema::ProblemRecord* p = index.problem(id);
+  return p != nullptr && p->length_scale ? *p->length_scale
+                                         : schema::LengthScale::contact_half_width_a;
 }
 
 std::string option_colour(const Option& option) {

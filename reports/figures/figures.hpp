@@ -17,9 +17,9 @@
 
 namespace cs::reports {
 
-/// The length positions and sizes are normalized by: the punch half-width b for the Steuermann
-/// problems, else the contact half-width a.
-bool over_punch_width(schema::ProblemId id);
+/// The length a problem's positions and sizes are over (its record's length_scale; a record
+/// written before length scales were recorded: the contact half-width a).
+schema::LengthScale length_scale_of(const ResultsIndex& index, schema::ProblemId id);
 
 /// The colour of an option set: one per entry of all_options().
 std::string option_colour(const Option& option);

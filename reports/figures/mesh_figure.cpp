@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include "reports/figures/gnuplot.hpp"
+#include "reports/render/template_text.hpp"
 #include "reports/results/exported_models.hpp"
 
 namespace cs::reports {
@@ -54,9 +55,10 @@ FigureSet render_mesh_figures(const fs::path& export_dir, const fs::path& out_ro
   set.unavailable = writer.unavailable();
   for (const auto& m : models) {
     Figure f(FigureKind::mesh, "figures/mesh_" + m.name + ".png");
-    f.caption_md =
-        fmt::format("{}: {} elements in the indented block, {} in the indenter.", m.name,
-                    m.block_elements, static_cast<int>(m.elements.size()) - m.block_elements);
+    TemplateData caption("name", m.name);
+    caption.set("block", std::to_string(m.block_elements));
+    caption.set("indenter", std::to_string(static_cast<int>(m.elements.size()) - m.block_elements));
+    f.caption_md = figure_text("mesh", caption);
     // The problem of "H_p_C_Q4": the name without its mesh and element, for its problem page.
     const std::size_t cut = m.name.rfind('_', m.name.rfind('_') - 1);
     f.problem = cut == std::string::npos
@@ -71,16 +73,8 @@ FigureSet render_mesh_figures(const fs::path& export_dir, const fs::path& out_ro
 std::string mesh_figures_section(const FigureSet& figures) {
   if (figures.figures.empty())
     return {};
-  std::string out =
-      "## The meshes (Figure 3)\n\n"
-      "The coarse meshes as the suite builds them (drawn from `contact-suite export`), the "
-      "whole model beside a zoom on the contact; z points into the indented block. M and F "
-      "halve and quarter every element.\n\n";
-  for (const auto& f : figures.figures) {
-    out += f.produced ? fmt::format("![{}]({})\n\n{}\n\n", f.caption_md, f.file, f.caption_md)
-                      : fmt::format("{} (not drawn: {})\n\n", f.caption_md, f.error);
-  }
-  return out;
+  return render_template(templates::mesh_figures,
+                         TemplateData("figures", template_list(figures.figures, figure_data)));
 }
 
 }  // namespace cs::reports

@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "reports/figures/figures.hpp"
+#include "reports/render/template_text.hpp"
 #include "reports/tables/option_classes.hpp"
 
 namespace cs::reports {
@@ -30,8 +31,9 @@ Points points(const std::vector<double>& x, const std::vector<double>& y) {
 /// The C, M and F curves of one option class in its colour (titled by mesh) and the exact one.
 PlotPanel class_panel(const ResultsIndex& index, const OptionClass& cls, const Slot& slot,
                       Points& exact) {
-  PlotPanel panel{
-      cls.label(), {over_punch_width(slot.problem) ? "x / b" : "x / a"}, {"-sigma_z / p"}};
+  PlotPanel panel{cls.label(),
+                  {fmt::format("x / {}", schema::symbol(length_scale_of(index, slot.problem)))},
+                  {"-sigma_z / p"}};
   const schema::RowVerdict* row = class_row(index, cls, slot);
   for (const auto mesh : kMeshes) {
     const schema::CaseResult* c = row ? index.case_of(*row, mesh) : nullptr;
@@ -150,7 +152,7 @@ Plot profile_plot(const ResultsIndex& index, ProblemId problem, schema::Element 
   if (plot.panels.empty())
     return plot;
   if (exact.empty())
-    figure.notes.push_back("no exact curve: the results carry no `exact_profile` for these cases.");
+    figure.notes.push_back(figure_text("no_exact_profile"));
   const auto zoom = p->singular ? std::nullopt : peak_zoom(plot.panels, exact);
   const auto shared = profile_range(plot.panels);  // one x-range: the panels compare at a glance
   for (auto& panel : plot.panels) {
@@ -160,16 +162,12 @@ Plot profile_plot(const ResultsIndex& index, ProblemId problem, schema::Element 
   }
   if (zoom)
     plot.panels.push_back(*zoom);
-  figure.caption_md = fmt::format(
-      "{} {} (the study's Figure 4): −σ<sub>z</sub>/p along z = 0 on the C (dotted), M (dashed) "
-      "and F (solid) meshes{}, one panel per option set, each in its own colour in every panel{}; "
-      "x over {}.",
-      schema::label(problem), schema::to_string(element),
-      exact.empty() ? "" : " against the exact curve (black)",
-      plot.panels.back().title.starts_with("zoom")
-          ? "; the last panel zooms at the exact peak with every option set's C, M and F"
-          : "",
-      over_punch_width(problem) ? "the punch half-width b" : "the contact half-width a");
+  TemplateData caption("problem", std::string(schema::label(problem)));
+  caption.set("element", std::string(schema::to_string(element)));
+  caption.set("exact", !exact.empty());
+  caption.set("zoom", zoom.has_value());
+  caption.set("length", std::string(schema::label(length_scale_of(index, problem))));
+  figure.caption_md = figure_text("profile", caption);
   return plot;
 }
 

@@ -7,6 +7,7 @@
 
 #include "reports/figures/figures.hpp"
 #include "reports/figures/gnuplot.hpp"
+#include "reports/render/template_text.hpp"
 
 namespace cs::reports {
 namespace {
@@ -74,17 +75,13 @@ Plot sweep_plot(const schema::ResultsDocument& doc, const std::string& key,
       no_default = true;
     plot.panels.push_back(std::move(panel));
   }
-  figure.caption_md = fmt::format(
-      "|error| (%) against {}, one curve per option set; open circles: cases that did not "
-      "converge; the dashed vertical line: the problem's default {}.",
-      key, key);
+  figure.caption_md = figure_text("sweep", TemplateData("key", key));
+  TemplateData left("n", std::to_string(left_out));
+  left.set("floor", fmt::format("{:g}", schema::kErrorNoiseFloorPercent));
   if (left_out > 0)
-    figure.notes.push_back(fmt::format(
-        "{} error(s) below {:g} % (exact to round-off) are left out: a log axis has no zero.",
-        left_out, schema::kErrorNoiseFloorPercent));
+    figure.notes.push_back(figure_text("sweep_left_out", left));
   if (no_default)
-    figure.notes.push_back(fmt::format(
-        "the results do not record the default {} of every problem: not marked there.", key));
+    figure.notes.push_back(figure_text("sweep_no_default", TemplateData("key", key)));
   return plot;
 }
 

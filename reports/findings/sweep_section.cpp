@@ -221,7 +221,7 @@ TemplateData al_pm(const std::vector<SweepSeries>& series, const std::vector<dou
 
 /// Can any FKN reproduce the study's AL error on S(1/3) (sigma_c, Q4, ss, mesh F)? A crossing is
 /// interpolated in log FKN: the errors change with the order of magnitude of FKN.
-TemplateData study_al(const std::vector<SweepSeries>& series, const StudyReference& study) {
+TemplateData study_al(const std::vector<SweepSeries>& series, const schema::StudyReference& study) {
   const auto match =
       study.find_value(schema::ProblemId::S_1_3, Quantity::sigma_c, schema::Element::Q4,
                        Algorithm::AL, schema::ContactKind::ss, schema::MeshLevel::F);
@@ -295,7 +295,7 @@ TemplateData fkn_convergence(const ResultsIndex& index, const std::vector<Curve>
 }
 
 TemplateData fkn(const ResultsIndex& index, const std::vector<SweepSeries>& series,
-                 const std::vector<double>& values, const StudyReference& study) {
+                 const std::vector<double>& values, const schema::StudyReference& study) {
   const auto cs = curves(
       series, [&](const SweepSeries& s) { return penalty_based(s) && on_finest_mesh(s, series); },
       true);
@@ -435,7 +435,7 @@ std::string key_title(const std::string& key) {
 /// The answers of one key: those its kind asks for, else the spread of the errors.
 void set_answers(TemplateData& d, const ResultsIndex& index, const std::string& key,
                  const std::vector<SweepSeries>& series, const std::vector<double>& values,
-                 const StudyReference& study) {
+                 const schema::StudyReference& study) {
   const auto all = curves(series, nullptr);
   if (key == "fkn") {
     d.set("fkn", fkn(index, series, values, study));
@@ -475,7 +475,7 @@ TemplateData figure_data(const FigureSet& figures, const std::string& key) {
 
 }  // namespace
 
-std::string sweep_section(const ResultsIndex& index, const StudyReference& study,
+std::string sweep_section(const ResultsIndex& index, const schema::StudyReference& study,
                           const FigureSet& figures) {
   const auto& doc = index.results();
   TemplateData keys{TemplateData::type::list};

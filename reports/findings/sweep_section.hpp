@@ -17,7 +17,7 @@
 
 #include "reports/figures/figures.hpp"
 #include "reports/results/results_index.hpp"
-#include "reports/results/study_reference.hpp"
+#include "schema/study_reference.hpp"
 
 namespace cs::reports {
 
@@ -29,7 +29,7 @@ inline constexpr double kSettledPoints = 0.05;
 
 /// The section ("## Parameter sweeps ..."), or an empty string when nothing was swept.
 /// `figures`: those of render_sweep_figures (linked when drawn).
-std::string sweep_section(const ResultsIndex& index, const StudyReference& study,
+std::string sweep_section(const ResultsIndex& index, const schema::StudyReference& study,
                           const FigureSet& figures);
 
 }  // namespace cs::reports

@@ -5,7 +5,7 @@
 
 #include <fmt/format.h>
 
-#include "reports/tables/cross_code_rows.hpp"
+#include "reports/facts/solvers.hpp"
 
 namespace cs::reports {
 

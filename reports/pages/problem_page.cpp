@@ -1,5 +1,7 @@
 #include "reports/pages/problem_page.hpp"
 
+#include <algorithm>
+
 #include <fmt/format.h>
 
 #include "reports/pages/page_format.hpp"
@@ -85,6 +87,19 @@ TemplateData row_data(const RowFacts& f, const std::string& label, bool has_vf) 
   return d;
 }
 
+/// The meshes with a value in any baseline row of the problem: "C, M" (false: none).
+TemplateData meshes_given(const ResultsIndex& index, schema::ProblemId problem) {
+  std::string out;
+  for (std::size_t m = 0; m < kMeshes.size(); ++m) {
+    const auto& rows = index.baseline_rows();
+    if (std::any_of(rows.begin(), rows.end(), [&](const schema::RowVerdict* r) {
+          return r->spec.problem == problem && r->values[m];
+        }))
+      out += (out.empty() ? "" : ", ") + std::string(schema::to_string(kMeshes[m]));
+  }
+  return text_or_false(out);
+}
+
 TemplateData quantity_tables(const ResultsIndex& index, const schema::ProblemRecord& problem,
                              const std::vector<const RowFacts*>& rows) {
   TemplateData tables{TemplateData::type::list};
@@ -162,19 +177,12 @@ std::string problem_page(const ResultsIndex& index, const schema::ProblemRecord&
   d.set("has_study_tables", !problem.study_tables.empty());
   d.set("study_tables", problem.study_tables);
   d.set("singular", problem.singular);
-  d.set("tables", quantity_tables(index, problem, facts_of(rows, problem.id)));
+  const TemplateData tables = quantity_tables(index, problem, facts_of(rows, problem.id));
+  d.set("has_tables", !tables.is_empty_list());
+  d.set("tables", tables);
+  d.set("meshes_given", meshes_given(index, problem.id));
   d.set("divergence", divergence_rows(singular, problem.id));
-  d.set("figures", template_list(figures, [](const Figure* f) {
-          TemplateData fd;
-          fd.set("file", f->file);
-          fd.set("caption", f->caption_md);
-          fd.set("notes", template_list(f->notes, [](const std::string& n) {
-                   TemplateData nd;
-                   nd.set("note", n);
-                   return nd;
-                 }));
-          return fd;
-        }));
+  d.set("figures", template_list(figures, [](const Figure* f) { return figure_data(*f); }));
   return render_template(templates::problem_page, d);
 }
 

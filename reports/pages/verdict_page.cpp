@@ -150,6 +150,7 @@ std::string verdict_page(const ResultsIndex& index,
       matrices.push_back(matrix(situations, e));
   }
   d.set("matrices", matrices);
+  d.set("has_verdict", !matrices.is_empty_list());
   d.set("advice", template_list(situations, advice));
   TemplateData all_failures{TemplateData::type::list};
   for (const auto& s : situations) {

@@ -15,6 +15,7 @@
 #include <kainjow/mustache.hpp>
 
 #include "reports/embedded_templates.hpp"
+#include "reports/figures/plot_model.hpp"
 
 namespace cs::reports {
 
@@ -33,6 +34,14 @@ TemplateData template_list(const Range& items, ToData&& to_data) {
 inline TemplateData text_or_false(const std::string& text) {
   return text.empty() ? TemplateData(false) : TemplateData(text);
 }
+
+/// A figure's fields for a template: produced, file, error ("nothing to plot" when a figure was
+/// not drawn for no stated reason), caption (Markdown) and notes (a list of texts).
+TemplateData figure_data(const Figure& figure);
+
+/// One caption or note of a figure: templates/figure_text.mustache's section `key`, rendered with
+/// `data`, e.g. figure_text("sweep", TemplateData("key", "fkn")).
+std::string figure_text(const std::string& key, const TemplateData& data = TemplateData(true));
 
 /// `text` (an embedded template) rendered with `data`; throws ReportError if rendering fails.
 std::string render_template(std::string_view text, const TemplateData& data);

@@ -116,7 +116,7 @@ const std::vector<std::string>& results_csv_columns() {
   return columns;
 }
 
-std::string results_csv(const ResultsIndex& index, const StudyReference& study) {
+std::string results_csv(const ResultsIndex& index, const schema::StudyReference& study) {
   const RowsByCase rows = rows_by_case(index);
   std::string out;
   for (const auto& name : results_csv_columns())

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "reports/results/results_index.hpp"
-#include "reports/results/study_reference.hpp"
+#include "schema/study_reference.hpp"
 
 namespace cs::reports {
 
@@ -18,6 +18,6 @@ namespace cs::reports {
 const std::vector<std::string>& results_csv_columns();
 
 /// The whole CSV text (RFC 4180 quoting; numbers with 10 significant digits; empty = none).
-std::string results_csv(const ResultsIndex& index, const StudyReference& study);
+std::string results_csv(const ResultsIndex& index, const schema::StudyReference& study);
 
 }  // namespace cs::reports

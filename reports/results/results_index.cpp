@@ -35,11 +35,28 @@ int first_study_table(const schema::ProblemRecord& p) {
   return any ? n : INT_MAX;
 }
 
-/// True for a row or case with the study's options except for extrapolated nodal stresses.
-bool is_extrapolated_twin(const schema::CaseSpec& spec) {
-  schema::CaseSpec as_baseline = spec;
-  as_baseline.recovery = schema::Recovery::spr;
-  return spec.recovery == schema::Recovery::extrapolated && schema::is_baseline(as_baseline);
+/// The solver whose rows are the baseline: ours when the document has a row of ours, else the
+/// first other solver by name (the results of one imported code are reported like ours).
+std::string reference_solver(const std::vector<schema::RowVerdict>& rows) {
+  std::string out;
+  for (const auto& r : rows) {
+    const std::string s = schema::solver_label(r.spec);
+    if (r.spec.solver == schema::SolverKind::builtin)
+      return s;
+    out = out.empty() || s < out ? s : out;
+  }
+  return out;
+}
+
+/// True for a row of `solver` with the study's options, with recovery `recovery`.
+bool study_options(const schema::CaseSpec& spec, const std::string& solver,
+                   schema::Recovery recovery) {
+  schema::CaseSpec as_ours = spec;
+  as_ours.solver = schema::SolverKind::builtin;
+  as_ours.solver_name.clear();
+  as_ours.recovery = schema::Recovery::spr;
+  return spec.recovery == recovery && schema::solver_label(spec) == solver &&
+         schema::is_baseline(as_ours);
 }
 
 }  // namespace
@@ -81,11 +98,12 @@ ResultsIndex::ResultsIndex(const schema::ResultsDocument& results) : results_(re
   });
   for (const auto& c : results_.cases)
     case_by_key_.emplace(std::pair(schema::case_key(c.spec), c.spec.mesh), &c);
+  const std::string solver = reference_solver(results_.rows);
   for (const auto& r : results_.rows) {
-    if (r.is_baseline()) {
+    if (study_options(r.spec, solver, schema::Recovery::spr)) {
       baseline_.push_back(&r);
       baseline_by_key_.emplace(key_of(r), &r);
-    } else if (is_extrapolated_twin(r.spec)) {
+    } else if (study_options(r.spec, solver, schema::Recovery::extrapolated)) {
       extrapolated_by_key_.emplace(key_of(r), &r);
     } else {
       variants_.push_back(&r);

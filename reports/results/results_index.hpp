@@ -1,9 +1,10 @@
 #pragma once
 // Lookups over a results document (schema/results_file.hpp): the problems in the report's
 // order, the row of an option set, the case behind a row's mesh, the status of each mesh. The
-// "baseline" rows are the study's option sets (our solver, a discretized target,
-// patch-recovered nodal stresses, no parameter overrides); the same option sets with
-// extrapolated nodal stresses are "recovery twins" of the baseline rows (compared in their own
+// "baseline" rows are the study's option sets (our solver, or in results without a row of ours
+// the other solver first by name, so that an imported code's results read like ours; a
+// discretized target, patch-recovered nodal stresses, no parameter overrides); the same option sets
+// with extrapolated nodal stresses are "recovery twins" of the baseline rows (compared in their own
 // section); every other row (a rigid target, overrides, another solver) is a "variant",
 // reported in its own section.
 

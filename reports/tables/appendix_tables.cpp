@@ -51,17 +51,17 @@ struct ColumnSource {
   Algorithm study_column = Algorithm::AL;
 };
 
-AppendixTableFacts build_one(const ResultsIndex& index, const StudyReference& study,
+AppendixTableFacts build_one(const ResultsIndex& index, const schema::StudyReference& study,
                              const AppendixTableFacts& key) {
   AppendixTableFacts t = key;
   const Slot slot{t.problem, t.quantity, t.element};
   std::vector<ColumnSource> sources;
   std::vector<std::string> header{"Mesh", "h"};
   std::vector<const RowVerdict*> our_rows;
-  for (const Algorithm first : study_columns()) {
+  for (const Algorithm first : schema::study_columns()) {
     std::vector<Option> candidates;
     for (const auto& o : all_options()) {
-      if (o.contact == t.contact && same_study_column(o.algorithm, first))
+      if (o.contact == t.contact && schema::same_study_column(o.algorithm, first))
         candidates.push_back(o);
     }
     for (const auto& cls : coincidence_classes(index, candidates, {slot})) {
@@ -79,7 +79,7 @@ AppendixTableFacts build_one(const ResultsIndex& index, const StudyReference& st
     });
     if (study_has) {
       sources.push_back({std::nullopt, first});
-      header.push_back("ANSYS " + study_column_label(first));
+      header.push_back("ANSYS " + schema::study_column_label(first));
     }
   }
   t.table = MarkdownTable(header);
@@ -95,7 +95,7 @@ AppendixTableFacts build_one(const ResultsIndex& index, const StudyReference& st
         cells.push_back(text);
         continue;
       }
-      const StudyMatch match =
+      const schema::StudyMatch match =
           study.find_value(t.problem, t.quantity, t.element, col.study_column, t.contact, mesh);
       if (match.value != nullptr) {
         t.study_tables.insert(match.value->table);
@@ -139,7 +139,7 @@ TemplateData table_data(const AppendixTableFacts& t) {
   return d;
 }
 
-TemplateData group_data(const ResultsIndex& index, const StudyReference& study,
+TemplateData group_data(const ResultsIndex& index, const schema::StudyReference& study,
                         const AppendixTableFacts& t) {
   const schema::ProblemRecord* p = index.problem(t.problem);
   const schema::QuantityDefinition* q = index.definition(t.problem, t.quantity);
@@ -166,7 +166,7 @@ TemplateData group_data(const ResultsIndex& index, const StudyReference& study,
 }  // namespace
 
 std::vector<AppendixTableFacts> build_appendix_tables(const ResultsIndex& index,
-                                                      const StudyReference& study) {
+                                                      const schema::StudyReference& study) {
   std::vector<AppendixTableFacts> out;
   for (const schema::ProblemRecord* p : index.problems()) {
     for (const auto& q : p->quantities) {
@@ -185,7 +185,7 @@ std::vector<AppendixTableFacts> build_appendix_tables(const ResultsIndex& index,
   return out;
 }
 
-ExactValueFacts exact_value_facts(const ResultsIndex& index, const StudyReference& study,
+ExactValueFacts exact_value_facts(const ResultsIndex& index, const schema::StudyReference& study,
                                   schema::ProblemId problem, schema::Quantity quantity) {
   ExactValueFacts out;
   const schema::ProblemRecord* p = index.problem(problem);
@@ -204,7 +204,7 @@ ExactValueFacts exact_value_facts(const ResultsIndex& index, const StudyReferenc
   return out;
 }
 
-std::string appendix_section(const ResultsIndex& index, const StudyReference& study) {
+std::string appendix_section(const ResultsIndex& index, const schema::StudyReference& study) {
   const auto tables = build_appendix_tables(index, study);
   if (tables.empty())
     return {};

@@ -1,7 +1,7 @@
 #pragma once
 // The study's appendix Tables 3-14, side by side with ours: for each problem, quantity, element
 // and contact type, the rows C, M, F; per study column (AL, PM; LMP, PLM; IMC) our values and
-// signed errors beside the study's ANSYS value (the mapping is in results/study_reference.hpp);
+// signed errors beside the study's ANSYS value (the mapping is in schema/study_reference.hpp);
 // the exact value (ours, and the study's printed one) above each group of tables.
 
 #include <optional>
@@ -10,8 +10,8 @@
 #include <vector>
 
 #include "reports/results/results_index.hpp"
-#include "reports/results/study_reference.hpp"
 #include "reports/tables/markdown_table.hpp"
+#include "schema/study_reference.hpp"
 
 namespace cs::reports {
 
@@ -30,7 +30,7 @@ struct AppendixTableFacts {
 
 /// One table per (problem, quantity, element, contact) present, in the study's order.
 std::vector<AppendixTableFacts> build_appendix_tables(const ResultsIndex& index,
-                                                      const StudyReference& study);
+                                                      const schema::StudyReference& study);
 
 /// The exact value above a problem's tables: ours, and the study's printed one.
 struct ExactValueFacts {
@@ -40,10 +40,10 @@ struct ExactValueFacts {
   std::optional<double> printed_shift;  ///< (printed - ours) / ours, percent
   std::optional<double> convention;     ///< under the study's convention (docs/conventions.md)
 };
-ExactValueFacts exact_value_facts(const ResultsIndex& index, const StudyReference& study,
+ExactValueFacts exact_value_facts(const ResultsIndex& index, const schema::StudyReference& study,
                                   schema::ProblemId problem, schema::Quantity quantity);
 
 /// The report section "Appendix tables" (empty when no baseline row is present).
-std::string appendix_section(const ResultsIndex& index, const StudyReference& study);
+std::string appendix_section(const ResultsIndex& index, const schema::StudyReference& study);
 
 }  // namespace cs::reports

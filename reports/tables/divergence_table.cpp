@@ -56,7 +56,7 @@ std::string strict_failure_reason(const std::array<std::optional<double>, 3>& v,
 }
 
 DivergenceTableFacts build_divergence_table(const ResultsIndex& index,
-                                            const StudyReference& study) {
+                                            const schema::StudyReference& study) {
   const std::string c(schema::to_string(kMeshes[0])), m(schema::to_string(kMeshes[1])),
       f(schema::to_string(kMeshes[2]));
   DivergenceTableFacts out{
@@ -110,7 +110,7 @@ DivergenceTableFacts build_divergence_table(const ResultsIndex& index,
   return out;
 }
 
-std::string divergence_section(const ResultsIndex& index, const StudyReference& study) {
+std::string divergence_section(const ResultsIndex& index, const schema::StudyReference& study) {
   const DivergenceTableFacts t = build_divergence_table(index, study);
   if (t.table.n_rows() == 0)
     return {};

@@ -10,8 +10,8 @@
 #include <string>
 
 #include "reports/results/results_index.hpp"
-#include "reports/results/study_reference.hpp"
 #include "reports/tables/markdown_table.hpp"
+#include "schema/study_reference.hpp"
 
 namespace cs::reports {
 
@@ -30,9 +30,10 @@ struct DivergenceTableFacts {
 };
 
 /// The rows of the singular problems present in the results (table empty: none).
-DivergenceTableFacts build_divergence_table(const ResultsIndex& index, const StudyReference& study);
+DivergenceTableFacts build_divergence_table(const ResultsIndex& index,
+                                            const schema::StudyReference& study);
 
 /// The report section (empty when no case of a singular problem was run).
-std::string divergence_section(const ResultsIndex& index, const StudyReference& study);
+std::string divergence_section(const ResultsIndex& index, const schema::StudyReference& study);
 
 }  // namespace cs::reports

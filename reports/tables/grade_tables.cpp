@@ -48,12 +48,12 @@ std::string names_of(const std::vector<Algorithm>& algorithms) {
 
 /// The study's columns (split by contact type where its Table 2 splits them), then one group
 /// per contact type the study did not have.
-std::vector<ColumnGroup> column_groups(const StudyReference& study) {
+std::vector<ColumnGroup> column_groups(const schema::StudyReference& study) {
   std::vector<ColumnGroup> groups;
-  for (const Algorithm first : study_columns()) {
-    const auto members = study_column_members(first);
+  for (const Algorithm first : schema::study_columns()) {
+    const auto members = schema::study_column_members(first);
     const std::string ours = names_of(members);
-    const std::string theirs = study_column_label(first);
+    const std::string theirs = schema::study_column_label(first);
     const bool split = study.separates_contacts(first);
     const auto contacts = contacts_in_study(true);
     for (const ContactKind c : contacts) {
@@ -79,12 +79,12 @@ std::vector<ColumnGroup> column_groups(const StudyReference& study) {
 /// The pairs whose coincidence the table states: the algorithms of a study column on each
 /// contact type, the contact types of a column the study does not separate, then the same
 /// algorithms on the types it did not have.
-std::vector<std::pair<Option, Option>> stated_pairs(const StudyReference& study) {
+std::vector<std::pair<Option, Option>> stated_pairs(const schema::StudyReference& study) {
   std::vector<std::pair<Option, Option>> out;
   const auto in_study = contacts_in_study(true);
   for (const bool studied : {true, false}) {
-    for (const Algorithm first : study_columns()) {
-      const auto members = study_column_members(first);
+    for (const Algorithm first : schema::study_columns()) {
+      const auto members = schema::study_column_members(first);
       for (const ContactKind c : contacts_in_study(studied)) {
         for (std::size_t i = 1; i < members.size(); ++i)
           out.push_back({{first, c}, {members[i], c}});
@@ -107,7 +107,7 @@ PairFacts pair_facts(const Option& a, const Option& b, const OptionComparison& c
   p.coincide = cmp.coincide();
   // Without friction, the Lagrange-multiplier variants of one study column are one method.
   p.same_method = p.coincide && same_contact && a.algorithm != b.algorithm &&
-                  same_study_column(a.algorithm, b.algorithm) &&
+                  schema::same_study_column(a.algorithm, b.algorithm) &&
                   !schema::traits(a.algorithm).penalty_based;
   p.compared = cmp.compared;
   p.differing = cmp.differing;
@@ -121,7 +121,7 @@ PairFacts pair_facts(const Option& a, const Option& b, const OptionComparison& c
 
 /// Where the study graded against a printed exact value other than ours (the Steuermann rows),
 /// ANSYS's fine-mesh value re-graded by Eq. 46 against the physical value: " (phys. g)".
-std::string ansys_physical_regrade(const ResultsIndex& index, const StudyReference& study,
+std::string ansys_physical_regrade(const ResultsIndex& index, const schema::StudyReference& study,
                                    const StudyRowKey& r, schema::Element element,
                                    const Option& option, const schema::RowVerdict* row) {
   if (row == nullptr)
@@ -153,7 +153,8 @@ void count(AnsysComparison& c, schema::Grade ours, schema::Grade theirs, const s
 /// stresses where the row has a twin.
 class CellBuilder {
  public:
-  CellBuilder(const ResultsIndex& index, const StudyReference& study, GradeTableFacts& facts)
+  CellBuilder(const ResultsIndex& index, const schema::StudyReference& study,
+              GradeTableFacts& facts)
       : index_(index), study_(study), facts_(facts), rows_(row_facts(index)) {
     for (const auto& f : rows_)
       by_row_[f.row] = &f;
@@ -176,7 +177,7 @@ class CellBuilder {
       text =
           fmt::format("{}{} · spr {}", format_grade_cell(index_, twin), twin_luck ? " ‡" : "", spr);
     }
-    const StudyGrade* g =
+    const schema::StudyGrade* g =
         study_.find_grade(r.problem, r.study_row, facts_.element, first.algorithm, first.contact);
     text += fmt::format(" │ ANSYS {}", g != nullptr ? g->cell() : std::string(kMissing));
     text += ansys_physical_regrade(index_, study_, r, facts_.element, first, row);
@@ -203,7 +204,7 @@ class CellBuilder {
   }
 
   const ResultsIndex& index_;
-  const StudyReference& study_;
+  const schema::StudyReference& study_;
   GradeTableFacts& facts_;
   std::vector<RowFacts> rows_;
   std::map<const schema::RowVerdict*, const RowFacts*> by_row_;
@@ -223,7 +224,7 @@ TemplateData table_data(const GradeTableFacts& t) {
   TemplateData d;
   d.set("study_table", t.study_table);
   d.set("element", std::string(schema::to_string(t.element)));
-  d.set("study_element", std::string(study_name(t.element)));
+  d.set("study_element", std::string(schema::study_name(t.element)));
   d.set("table", t.table.render());
   d.set("twins", t.extrapolated);
   d.set("in_study_any", t.in_study_any);
@@ -258,7 +259,8 @@ TemplateData table_data(const GradeTableFacts& t) {
 
 }  // namespace
 
-std::vector<StudyRowKey> grade_table_rows(const ResultsIndex& index, const StudyReference& study) {
+std::vector<StudyRowKey> grade_table_rows(const ResultsIndex& index,
+                                          const schema::StudyReference& study) {
   std::vector<StudyRowKey> rows;
   for (const auto& p : index.results().problems) {
     for (const auto& d : p.quantities) {
@@ -305,7 +307,7 @@ std::string format_grade_cell(const ResultsIndex& index, const schema::RowVerdic
 }
 
 std::optional<GradeTableFacts> build_grade_table(const ResultsIndex& index,
-                                                 const StudyReference& study,
+                                                 const schema::StudyReference& study,
                                                  schema::Element element) {
   std::vector<Slot> slots;
   std::vector<StudyRowKey> present;
@@ -350,7 +352,7 @@ std::optional<GradeTableFacts> build_grade_table(const ResultsIndex& index,
   return facts;
 }
 
-std::string grade_tables_section(const ResultsIndex& index, const StudyReference& study) {
+std::string grade_tables_section(const ResultsIndex& index, const schema::StudyReference& study) {
   std::vector<GradeTableFacts> tables;
   for (const auto element : schema::values<schema::Element>()) {
     if (auto t = build_grade_table(index, study, element))
@@ -362,8 +364,9 @@ std::string grade_tables_section(const ResultsIndex& index, const StudyReference
   d.set("tables", template_list(tables, table_data));
   std::vector<std::string> renamed;
   for (const Algorithm a : schema::values<Algorithm>()) {
-    if (study_name(a) != schema::to_string(a))
-      renamed.push_back(fmt::format("{} is the study's {}", schema::to_string(a), study_name(a)));
+    if (schema::study_name(a) != schema::to_string(a))
+      renamed.push_back(
+          fmt::format("{} is the study's {}", schema::to_string(a), schema::study_name(a)));
   }
   for (const ContactKind c : contacts_in_study(false))
     renamed.push_back(fmt::format("{} was not in the study", schema::to_string(c)));

@@ -19,8 +19,8 @@
 #include <vector>
 
 #include "reports/results/results_index.hpp"
-#include "reports/results/study_reference.hpp"
 #include "reports/tables/markdown_table.hpp"
+#include "schema/study_reference.hpp"
 
 namespace cs::reports {
 
@@ -35,7 +35,8 @@ struct StudyRowKey {
 
 /// The rows of Table 2 in battery order: those the results' problems define, and those of the
 /// study's Table 2 whose problem is not in the results.
-std::vector<StudyRowKey> grade_table_rows(const ResultsIndex& index, const StudyReference& study);
+std::vector<StudyRowKey> grade_table_rows(const ResultsIndex& index,
+                                          const schema::StudyReference& study);
 
 /// Our grades against ANSYS's over the cells that have both.
 struct AnsysComparison {
@@ -68,7 +69,7 @@ struct GradeTableFacts {
 
 /// Table 2a′/2b′ for one element, or nullopt when no Table 2 row of that element was run.
 std::optional<GradeTableFacts> build_grade_table(const ResultsIndex& index,
-                                                 const StudyReference& study,
+                                                 const schema::StudyReference& study,
                                                  schema::Element element);
 
 /// A row's grade cell: "e, c", "g", "s (M)*", "u!", "failed" or "—" (row == nullptr).
@@ -82,6 +83,6 @@ constexpr int grade_rank(schema::Grade grade) {
 }
 
 /// The section "Tables 2a and 2b" of the report (empty if neither table has rows).
-std::string grade_tables_section(const ResultsIndex& index, const StudyReference& study);
+std::string grade_tables_section(const ResultsIndex& index, const schema::StudyReference& study);
 
 }  // namespace cs::reports

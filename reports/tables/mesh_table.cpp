@@ -44,7 +44,7 @@ std::string count_cell(const schema::CaseResult* ours, std::optional<int> study,
 
 }  // namespace
 
-std::string mesh_table_section(const ResultsIndex& index, const StudyReference& study) {
+std::string mesh_table_section(const ResultsIndex& index, const schema::StudyReference& study) {
   MarkdownTable table({"Problem", "C: ours / study", "M: ours / study", "F: ours / study",
                        "h at the contact (C / M / F)"});
   Differences differing;

@@ -6,11 +6,11 @@
 #include <string>
 
 #include "reports/results/results_index.hpp"
-#include "reports/results/study_reference.hpp"
+#include "schema/study_reference.hpp"
 
 namespace cs::reports {
 
 /// The section (empty when the results hold no case).
-std::string mesh_table_section(const ResultsIndex& index, const StudyReference& study);
+std::string mesh_table_section(const ResultsIndex& index, const schema::StudyReference& study);
 
 }  // namespace cs::reports

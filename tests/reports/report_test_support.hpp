@@ -14,8 +14,8 @@
 #include <nlohmann/json.hpp>
 
 #include "reports/results/results_index.hpp"
-#include "reports/results/study_reference.hpp"
 #include "schema/results_file.hpp"
+#include "schema/study_reference.hpp"
 #include "support/temp_dir.hpp"
 
 namespace cs::reports::testing {
@@ -35,8 +35,8 @@ inline nlohmann::json sample_json() {
   return nlohmann::json::parse(in);
 }
 
-inline const StudyReference& study() {
-  static const StudyReference s = load_study_reference(study_dir());
+inline const schema::StudyReference& study() {
+  static const schema::StudyReference s = schema::load_study_reference(study_dir());
   return s;
 }
 

@@ -143,7 +143,7 @@ TEST(StudyReference, MapsOurOptionsOntoTheStudysKeys) {
                          ContactKind::mortar, F)
                 .value,
             nullptr);
-  const StudyGrade* g =
+  const schema::StudyGrade* g =
       s.find_grade(ProblemId::H_a, "main", Element::Q8, Algorithm::MPC, ContactKind::ns);
   ASSERT_NE(g, nullptr);
   EXPECT_EQ(g->cell(), "u, c");
@@ -151,7 +151,7 @@ TEST(StudyReference, MapsOurOptionsOntoTheStudysKeys) {
   EXPECT_EQ(s.find_grade(ProblemId::H_a, "main", Element::Q8, Algorithm::AL, ContactKind::mortar),
             nullptr);
   // AL, PM has a column per contact type in Table 2; LMP, PLM one for both.
-  const StudyGrade* al =
+  const schema::StudyGrade* al =
       s.find_grade(ProblemId::P_p, "main", Element::Q4, Algorithm::PM, ContactKind::ns);
   ASSERT_NE(al, nullptr);
   EXPECT_EQ(al->column_label(), "AL, PM ns");
@@ -165,11 +165,11 @@ TEST(StudyReference, MapsOurOptionsOntoTheStudysKeys) {
 // Requirement: the study's names (4Q, IMC, AL_PM, either) are read with the vocabulary; a name
 // it does not know is rejected with the file and line.
 TEST(StudyReference, NamesTheVocabularyDoesNotKnowAreRejected) {
-  EXPECT_EQ(study_name(Element::Q4), "4Q");
-  EXPECT_EQ(study_name(Algorithm::MPC), "IMC");
-  EXPECT_EQ(study_name(Algorithm::LMP), "LMP");
-  EXPECT_EQ(study_column_label(Algorithm::PLM), "LMP, PLM");
-  EXPECT_EQ(study_columns(),
+  EXPECT_EQ(schema::study_name(Element::Q4), "4Q");
+  EXPECT_EQ(schema::study_name(Algorithm::MPC), "IMC");
+  EXPECT_EQ(schema::study_name(Algorithm::LMP), "LMP");
+  EXPECT_EQ(schema::study_column_label(Algorithm::PLM), "LMP, PLM");
+  EXPECT_EQ(schema::study_columns(),
             (std::vector<Algorithm>{Algorithm::AL, Algorithm::LMP, Algorithm::MPC}));
   testing::TempDir tmp;
   const std::string grades = testing::read_text(testing::study_dir() / "ansys_grades.csv");
@@ -178,9 +178,9 @@ TEST(StudyReference, NamesTheVocabularyDoesNotKnowAreRejected) {
   testing::write_text(tmp.path() / "ansys_results.csv", results);
   testing::write_text(tmp.path() / "ansys_grades.csv", grades);
   try {
-    load_study_reference(tmp.path());
+    schema::load_study_reference(tmp.path());
     FAIL() << "an unknown problem was accepted";
-  } catch (const ReportError& e) {
+  } catch (const schema::SchemaError& e) {
     const std::string what = e.what();
     EXPECT_NE(what.find("ansys_results.csv' line "), std::string::npos) << what;
     EXPECT_NE(what.find("unknown problem 'H_x'"), std::string::npos) << what;

@@ -186,7 +186,8 @@ TEST(BenchSection, InTheReportOnlyWithABenchFile) {
   TempDir tmp;
   write_report(results(), options_with_bench(tmp.path() / "plain", {}));
   const std::string plain = read_text(tmp.path() / "plain" / "report.md");
-  EXPECT_EQ(plain.find("Benchmarks"), std::string::npos);
+  EXPECT_EQ(plain.find("[Benchmarks]"), std::string::npos);
+  EXPECT_NE(plain.find("- *Benchmarks*: no benchmark file was given"), std::string::npos);
   write_report(results(), options_with_bench(tmp.path() / "bench", {bench_path()}));
   const std::string md = read_text(tmp.path() / "bench" / "report.md");
   EXPECT_NE(md.find("[Benchmarks](appendix-benchmarks.md)"), std::string::npos);

@@ -1,5 +1,5 @@
-// The cross-code section of the report (reports/tables/cross_code_*, reports/figures/
-// cross_code_figure): built from small in-memory results documents whose rows are made by the
+// The cross-code section of the report (reports/facts/solvers, reports/tables/
+// cross_code_section): built from small in-memory results documents whose rows are made by the
 // suite's own grading (suites::make_row_verdicts), and once from a real run of CalculiX and our
 // solver on the coarse H_p mesh.
 
@@ -14,11 +14,9 @@
 
 #include "grading/accuracy.hpp"
 #include "report_test_support.hpp"
-#include "reports/figures/cross_code_figure.hpp"
+#include "reports/facts/solvers.hpp"
 #include "reports/report_writer.hpp"
-#include "reports/tables/cross_code_rows.hpp"
 #include "reports/tables/cross_code_section.hpp"
-#include "reports/tables/cross_code_tables.hpp"
 #include "suites/executor_factory.hpp"
 #include "suites/problem_catalog.hpp"
 #include "suites/row_verdict.hpp"
@@ -144,8 +142,8 @@ TEST(CrossCodeGradeTable, GradesSideBySideWithTheStudysCell) {
   const auto table = build_cross_code_grade_table(index, study(), Element::Q4);
   ASSERT_TRUE(table.has_value());
   ASSERT_EQ(table->n_rows(), 1U);
-  const StudyGrade* ansys = study().find_grade(ProblemId::H_p, "contact", Element::Q4,
-                                               schema::Algorithm::PM, schema::ContactKind::ss);
+  const schema::StudyGrade* ansys = study().find_grade(
+      ProblemId::H_p, "contact", Element::Q4, schema::Algorithm::PM, schema::ContactKind::ss);
   ASSERT_NE(ansys, nullptr);
   const auto cell = table->cell(table->rows()[0][0], "PM ss");
   ASSERT_TRUE(cell.has_value());
@@ -168,7 +166,7 @@ TEST(CrossCodeGradeTable, TimeoutOnTheFineMeshIsShownAsSuch) {
   ASSERT_TRUE(cell.has_value());
   EXPECT_NE(cell->find("│ g (M)*, timeout (F) │"), std::string::npos) << *cell;
   EXPECT_EQ(cross_code_grade_tally(index, study()).at("calculix").by_class.at("no grade"), 1);
-  const std::string outcome = cross_code_outcome_markdown(index);
+  const std::string outcome = cross_code_section(index, study(), {}, {});
   EXPECT_NE(outcome.find("**CalculiX**: 2 converged, 1 timeout in all."), std::string::npos)
       << outcome;
 }
@@ -179,20 +177,20 @@ TEST(CrossCodeGradeTable, TimeoutOnTheFineMeshIsShownAsSuch) {
 TEST(CrossCodeCost, RatiosOfTheSameCases) {
   const auto doc = document(hertz_pair(true));
   const ResultsIndex index(doc);
-  const auto costs = cross_code_cost(index);
-  ASSERT_EQ(costs.size(), 1U);
-  const auto& c = costs[0];
-  EXPECT_EQ(c.solver, "calculix");
-  EXPECT_EQ(c.total.pairs, 3);
-  EXPECT_DOUBLE_EQ(c.total.ours_seconds, 7.0);
-  EXPECT_DOUBLE_EQ(*c.total.time_ratio(), 10.0);
-  EXPECT_DOUBLE_EQ(*c.total.memory_ratio(), 3.0);
-  EXPECT_EQ(c.total.other_converged, 2);
-  EXPECT_EQ(c.total_both_converged.pairs, 2);
-  EXPECT_DOUBLE_EQ(c.total_both_converged.ours_seconds, 3.0);
-  ASSERT_EQ(c.lines.size(), 3U);  // H_p C, M, F
-  const std::string md = cost_table(c).render();
-  EXPECT_NE(md.find("| all cases | 3 | 2 | 7 | 70 | 10 | 30 | 90 | 3 |"), std::string::npos) << md;
+  const auto c = solver_cost(index);
+  ASSERT_TRUE(c.has_value());
+  EXPECT_EQ(c->solvers, (std::vector<std::string>{"builtin", "calculix"}));
+  EXPECT_EQ(c->total.cases, 3);
+  EXPECT_DOUBLE_EQ(c->total.seconds[0], 7.0);
+  EXPECT_DOUBLE_EQ(*c->total.time_ratio(1), 10.0);
+  EXPECT_DOUBLE_EQ(*c->total.memory_ratio(1), 3.0);
+  EXPECT_EQ(c->total.converged[1], 2);
+  EXPECT_EQ(c->all_converged.cases, 2);
+  EXPECT_DOUBLE_EQ(c->all_converged.seconds[0], 3.0);
+  ASSERT_EQ(c->lines.size(), 3U);  // H_p C, M, F
+  const std::string md = cost_table(*c).render();
+  EXPECT_NE(md.find("| all cases | 3 | 3 | 7 | 30 | 2 | 70 | 90 | 10 | 3 |"), std::string::npos)
+      << md;
 }
 
 // Requirement: the appendix gives each solver's value and error per mesh, 4 decimals, and
@@ -265,7 +263,7 @@ TEST(CrossCodeSection, InTheReportOnlyWithSeveralSolvers) {
   const std::string md = cross_code_section(index, study(), {}, mapping);
   EXPECT_NE(md.find("## Cross-code comparison: ours and CalculiX"), std::string::npos);
   EXPECT_NE(md.find("| PM | PRESSURE-OVERCLOSURE=LINEAR | same | penalty |"), std::string::npos);
-  EXPECT_NE(md.find("#### Cost: CalculiX beside ours"), std::string::npos);
+  EXPECT_NE(md.find("time CalculiX/ours"), std::string::npos);
   const ReportContent content{.cross_code_md = md, .companions = {{"x/report.md", "T"}}};
   const auto appendices = appendix_pages(index, study(), content);
   const std::string report = report_markdown(index, study(), content, {}, appendices);
@@ -323,10 +321,9 @@ TEST(CrossCodeSection, RealRunOfBothSolversOnTheCoarseMesh) {
     EXPECT_EQ(row[3].substr(0, 6), fmt::format("{:.4f}", theirs->value));
   }
   EXPECT_TRUE(found);
-  const auto costs = cross_code_cost(index);
-  ASSERT_EQ(costs.size(), 1U);
-  EXPECT_NEAR(*costs[0].total.time_ratio(), results[1].wall_seconds / results[0].wall_seconds,
-              1e-12);
+  const auto cost = solver_cost(index);
+  ASSERT_TRUE(cost.has_value());
+  EXPECT_NEAR(*cost->total.time_ratio(1), results[1].wall_seconds / results[0].wall_seconds, 1e-12);
 }
 
 }  // namespace

@@ -212,7 +212,7 @@ TEST(ReportWriter, BadBaselineOrStudyDataLeavesTheDirectoryUntouched) {
   user.expect_untouched();
   o = options_for(user.path);
   o.study_data = tmp.path();
-  EXPECT_THROW(write_report(sample(), o), ReportError);
+  EXPECT_THROW(write_report(sample(), o), schema::SchemaError);
   user.expect_untouched();
 }
 

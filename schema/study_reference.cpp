@@ -1,4 +1,4 @@
-#include "reports/results/study_reference.hpp"
+#include "schema/study_reference.hpp"
 
 #include <algorithm>
 #include <cstdlib>
@@ -8,14 +8,12 @@
 
 #include <fmt/format.h>
 
-#include "reports/report_error.hpp"
+#include "schema/schema_error.hpp"
 
-namespace cs::reports {
+namespace cs::schema {
 namespace {
 
 namespace fs = std::filesystem;
-using schema::Algorithm;
-using schema::ContactKind;
 
 /// The contact key of the study's columns that hold for node-to-surface and
 /// surface-to-surface alike (data/study/README.md).
@@ -41,14 +39,14 @@ class CsvFile {
   CsvFile(const fs::path& path, const std::vector<std::string>& required) : path_(path.string()) {
     std::ifstream in(path);
     if (!in)
-      throw ReportError(fmt::format("study data file '{}' cannot be read", path_));
+      throw SchemaError(fmt::format("study data file '{}' cannot be read", path_));
     std::string line;
     if (!std::getline(in, line))
-      throw ReportError(fmt::format("study data file '{}' is empty", path_));
+      throw SchemaError(fmt::format("study data file '{}' is empty", path_));
     header_ = split_commas(line);
     for (const auto& name : required) {
       if (column(name) < 0)
-        throw ReportError(fmt::format("study data file '{}' has no column '{}'", path_, name));
+        throw SchemaError(fmt::format("study data file '{}' has no column '{}'", path_, name));
     }
     int line_no = 1;
     while (std::getline(in, line)) {
@@ -57,7 +55,7 @@ class CsvFile {
         continue;
       auto fields = split_commas(line);
       if (fields.size() != header_.size()) {
-        throw ReportError(fmt::format("study data file '{}' line {}: {} fields, expected {}", path_,
+        throw SchemaError(fmt::format("study data file '{}' line {}: {} fields, expected {}", path_,
                                       line_no, fields.size(), header_.size()));
       }
       rows_.push_back(std::move(fields));
@@ -74,22 +72,22 @@ class CsvFile {
     char* end = nullptr;
     const double v = std::strtod(text.c_str(), &end);
     if (text.empty() || end == nullptr || *end != '\0') {
-      throw ReportError(fmt::format("study data file '{}' line {}: '{}' is not a number ({})",
+      throw SchemaError(fmt::format("study data file '{}' line {}: '{}' is not a number ({})",
                                     path_, line_numbers_[row], text, name));
     }
     return v;
   }
   /// A name of the vocabulary (schema/name_table.hpp), names and aliases accepted.
-  template <schema::Axis E>
+  template <Axis E>
   E name(std::size_t row, const std::string& column_name) const {
     const std::string& text = get(row, column_name);
-    if (const auto v = schema::try_parse<E>(text))
+    if (const auto v = try_parse<E>(text))
       return *v;
-    fail(row, fmt::format("unknown {} '{}' in column '{}' (expected one of: {})",
-                          schema::axis_name(E{}), text, column_name, schema::accepted_names<E>()));
+    fail(row, fmt::format("unknown {} '{}' in column '{}' (expected one of: {})", axis_name(E{}),
+                          text, column_name, accepted_names<E>()));
   }
   [[noreturn]] void fail(std::size_t row, const std::string& what) const {
-    throw ReportError(
+    throw SchemaError(
         fmt::format("study data file '{}' line {}: {}", path_, line_numbers_[row], what));
   }
 
@@ -111,11 +109,11 @@ class CsvFile {
 /// The first algorithm of the study column a CSV names: by its study column key ("AL_PM") or
 /// by the name the study gives an algorithm of its own column ("IMC"); nullopt if neither.
 std::optional<Algorithm> study_column_named(std::string_view key) {
-  for (const Algorithm a : schema::values<Algorithm>()) {
-    if (schema::traits(a).study_column == key)
+  for (const Algorithm a : values<Algorithm>()) {
+    if (traits(a).study_column == key)
       return study_column_members(a).front();
   }
-  if (const auto a = schema::try_parse<Algorithm>(key))
+  if (const auto a = try_parse<Algorithm>(key))
     return study_column_members(*a).front();
   return std::nullopt;
 }
@@ -131,8 +129,8 @@ std::optional<ContactKind> study_contact_of(const CsvFile& csv, std::size_t row)
   if (csv.get(row, "contact") == kEitherContact)
     return std::nullopt;
   const ContactKind c = csv.name<ContactKind>(row, "contact");
-  if (!schema::traits(c).in_study)
-    csv.fail(row, fmt::format("contact '{}' was not in the study", schema::to_string(c)));
+  if (!traits(c).in_study)
+    csv.fail(row, fmt::format("contact '{}' was not in the study", to_string(c)));
   return c;
 }
 
@@ -141,9 +139,9 @@ std::optional<ContactKind> study_contact_of(const CsvFile& csv, std::size_t row)
 std::pair<Algorithm, std::optional<ContactKind>> grade_column_of(const CsvFile& csv,
                                                                  std::size_t row) {
   const std::string& key = csv.get(row, "column");
-  for (const ContactKind c : schema::values<ContactKind>()) {
-    const std::string suffix = fmt::format("_{}", schema::to_string(c));
-    if (!schema::traits(c).in_study || key.size() <= suffix.size() ||
+  for (const ContactKind c : values<ContactKind>()) {
+    const std::string suffix = fmt::format("_{}", to_string(c));
+    if (!traits(c).in_study || key.size() <= suffix.size() ||
         key.compare(key.size() - suffix.size(), suffix.size(), suffix) != 0)
       continue;
     if (const auto a =
@@ -163,12 +161,12 @@ std::vector<StudyValue> read_values(const fs::path& file) {
   for (std::size_t i = 0; i < csv.size(); ++i) {
     StudyValue v;
     v.table = csv.get(i, "table");
-    v.problem = csv.name<schema::ProblemId>(i, "problem");
-    v.quantity = csv.name<schema::Quantity>(i, "quantity");
-    v.element = csv.name<schema::Element>(i, "element");
+    v.problem = csv.name<ProblemId>(i, "problem");
+    v.quantity = csv.name<Quantity>(i, "quantity");
+    v.element = csv.name<Element>(i, "element");
     v.contact = study_contact_of(csv, i);
     v.algorithm = study_algorithm_of(csv, i, "algorithm");
-    v.mesh = csv.name<schema::MeshLevel>(i, "mesh");
+    v.mesh = csv.name<MeshLevel>(i, "mesh");
     v.printed = csv.get(i, "value");
     v.value = csv.number(i, "value");
     v.exact_printed = csv.get(i, "exact");
@@ -186,11 +184,11 @@ std::vector<StudyGrade> read_grades(const fs::path& file) {
   for (std::size_t i = 0; i < csv.size(); ++i) {
     StudyGrade g;
     g.table = csv.get(i, "table");
-    g.problem = csv.name<schema::ProblemId>(i, "problem");
+    g.problem = csv.name<ProblemId>(i, "problem");
     g.row = csv.get(i, "row");
-    g.element = csv.name<schema::Element>(i, "element");
+    g.element = csv.name<Element>(i, "element");
     std::tie(g.algorithm, g.contact) = grade_column_of(csv, i);
-    g.grade = csv.name<schema::Grade>(i, "grade");
+    g.grade = csv.name<Grade>(i, "grade");
     g.converging = csv.get(i, "converging") == "1";
     grades.push_back(std::move(g));
   }
@@ -198,8 +196,8 @@ std::vector<StudyGrade> read_grades(const fs::path& file) {
 }
 
 /// table1_elements.csv (the study's Table 1), when the directory has it.
-std::map<std::pair<schema::ProblemId, schema::MeshLevel>, int> read_table1(const fs::path& file) {
-  std::map<std::pair<schema::ProblemId, schema::MeshLevel>, int> out;
+std::map<std::pair<ProblemId, MeshLevel>, int> read_table1(const fs::path& file) {
+  std::map<std::pair<ProblemId, MeshLevel>, int> out;
   std::error_code ec;
   if (!fs::is_regular_file(file, ec))
     return out;
@@ -214,10 +212,10 @@ std::map<std::pair<schema::ProblemId, schema::MeshLevel>, int> read_table1(const
       used = 0;
     }
     if (used != text.size() || n <= 0) {
-      throw ReportError(fmt::format("{}: row {}: elements '{}' is not a positive integer",
+      throw SchemaError(fmt::format("{}: row {}: elements '{}' is not a positive integer",
                                     file.string(), i + 2, text));
     }
-    out[{csv.name<schema::ProblemId>(i, "problem"), csv.name<schema::MeshLevel>(i, "mesh")}] = n;
+    out[{csv.name<ProblemId>(i, "problem"), csv.name<MeshLevel>(i, "mesh")}] = n;
   }
   return out;
 }
@@ -231,30 +229,27 @@ bool holds_study_data(const fs::path& dir) {
 }  // namespace
 
 std::string StudyGrade::cell() const {
-  return std::string(schema::to_string(grade)) + (converging ? ", c" : "");
+  return std::string(to_string(grade)) + (converging ? ", c" : "");
 }
 
 std::string StudyGrade::column_label() const {
   return study_column_label(algorithm) +
-         (contact ? fmt::format(" {}", schema::to_string(*contact)) : std::string());
+         (contact ? fmt::format(" {}", to_string(*contact)) : std::string());
 }
 
-StudyReference::StudyReference(
-    std::vector<StudyValue> values, std::vector<StudyGrade> grades,
-    std::map<std::pair<schema::ProblemId, schema::MeshLevel>, int> table1)
+StudyReference::StudyReference(std::vector<StudyValue> values, std::vector<StudyGrade> grades,
+                               std::map<std::pair<ProblemId, MeshLevel>, int> table1)
     : values_(std::move(values)), grades_(std::move(grades)), table1_(std::move(table1)) {}
 
-std::optional<int> StudyReference::table1_elements(schema::ProblemId problem,
-                                                   schema::MeshLevel mesh) const {
+std::optional<int> StudyReference::table1_elements(ProblemId problem, MeshLevel mesh) const {
   const auto it = table1_.find({problem, mesh});
   return it == table1_.end() ? std::nullopt : std::optional<int>(it->second);
 }
 
-const StudyValue* StudyReference::find_exact_key(schema::ProblemId problem,
-                                                 schema::Quantity quantity, schema::Element element,
-                                                 Algorithm algorithm,
+const StudyValue* StudyReference::find_exact_key(ProblemId problem, Quantity quantity,
+                                                 Element element, Algorithm algorithm,
                                                  std::optional<ContactKind> contact,
-                                                 schema::MeshLevel mesh) const {
+                                                 MeshLevel mesh) const {
   for (const auto& v : values_) {
     if (v.problem == problem && v.quantity == quantity && v.element == element &&
         same_study_column(v.algorithm, algorithm) && v.contact == contact && v.mesh == mesh)
@@ -263,10 +258,10 @@ const StudyValue* StudyReference::find_exact_key(schema::ProblemId problem,
   return nullptr;
 }
 
-StudyMatch StudyReference::find_value(schema::ProblemId problem, schema::Quantity quantity,
-                                      schema::Element element, Algorithm algorithm,
-                                      ContactKind contact, schema::MeshLevel mesh) const {
-  if (!schema::traits(contact).in_study)
+StudyMatch StudyReference::find_value(ProblemId problem, Quantity quantity, Element element,
+                                      Algorithm algorithm, ContactKind contact,
+                                      MeshLevel mesh) const {
+  if (!traits(contact).in_study)
     return {};
   if (const auto* v = find_exact_key(problem, quantity, element, algorithm, contact, mesh))
     return {v, false};
@@ -282,10 +277,10 @@ StudyMatch StudyReference::find_value(schema::ProblemId problem, schema::Quantit
   return {};
 }
 
-const StudyGrade* StudyReference::find_grade(schema::ProblemId problem,
-                                             const std::string& study_row, schema::Element element,
-                                             Algorithm algorithm, ContactKind contact) const {
-  if (!schema::traits(contact).in_study)
+const StudyGrade* StudyReference::find_grade(ProblemId problem, const std::string& study_row,
+                                             Element element, Algorithm algorithm,
+                                             ContactKind contact) const {
+  if (!traits(contact).in_study)
     return nullptr;
   for (const auto& g : grades_) {
     if (g.problem == problem && g.row == study_row && g.element == element &&
@@ -295,8 +290,7 @@ const StudyGrade* StudyReference::find_grade(schema::ProblemId problem,
   return nullptr;
 }
 
-std::string StudyReference::printed_exact(schema::ProblemId problem,
-                                          schema::Quantity quantity) const {
+std::string StudyReference::printed_exact(ProblemId problem, Quantity quantity) const {
   for (const auto& v : values_) {
     if (v.problem == problem && v.quantity == quantity)
       return v.exact_printed;
@@ -310,7 +304,7 @@ bool StudyReference::separates_contacts(Algorithm a) const {
   });
 }
 
-std::string StudyReference::grade_table(schema::Element element) const {
+std::string StudyReference::grade_table(Element element) const {
   for (const auto& g : grades_) {
     if (g.element == element)
       return g.table;
@@ -318,8 +312,8 @@ std::string StudyReference::grade_table(schema::Element element) const {
   return {};
 }
 
-std::vector<std::pair<schema::ProblemId, std::string>> StudyReference::grade_rows() const {
-  std::vector<std::pair<schema::ProblemId, std::string>> rows;
+std::vector<std::pair<ProblemId, std::string>> StudyReference::grade_rows() const {
+  std::vector<std::pair<ProblemId, std::string>> rows;
   for (const auto& g : grades_) {
     const std::pair key(g.problem, g.row);
     if (std::find(rows.begin(), rows.end(), key) == rows.end())
@@ -328,9 +322,9 @@ std::vector<std::pair<schema::ProblemId, std::string>> StudyReference::grade_row
   return rows;
 }
 
-std::vector<schema::ProblemId> StudyReference::singular_problems() const {
-  std::vector<schema::ProblemId> out;
-  for (const auto id : schema::values<schema::ProblemId>()) {
+std::vector<ProblemId> StudyReference::singular_problems() const {
+  std::vector<ProblemId> out;
+  for (const auto id : schema::values<ProblemId>()) {
     const bool singular = std::any_of(values_.begin(), values_.end(), [&](const StudyValue& v) {
       return v.problem == id && !v.exact;
     });
@@ -342,7 +336,7 @@ std::vector<schema::ProblemId> StudyReference::singular_problems() const {
 
 StudyReference load_study_reference(const fs::path& dir) {
   if (!holds_study_data(dir)) {
-    throw ReportError(fmt::format(
+    throw SchemaError(fmt::format(
         "study data directory '{}' does not hold ansys_results.csv and ansys_grades.csv",
         dir.string()));
   }
@@ -374,18 +368,18 @@ fs::path default_study_data_dir() {
   const fs::path cwd = fs::current_path(ec);
   if (!ec && holds_study_data(cwd / "data" / "study"))
     return cwd / "data" / "study";
-  throw ReportError(
+  throw SchemaError(
       "the study's data (data/study/ansys_results.csv) was not found next to the program or in "
       "the working directory; pass --study-data DIR");
 }
 
 bool same_study_column(Algorithm a, Algorithm b) {
-  return schema::traits(a).study_column == schema::traits(b).study_column;
+  return traits(a).study_column == traits(b).study_column;
 }
 
 std::vector<Algorithm> study_column_members(Algorithm a) {
   std::vector<Algorithm> out;
-  for (const Algorithm b : schema::values<Algorithm>()) {
+  for (const Algorithm b : values<Algorithm>()) {
     if (same_study_column(a, b))
       out.push_back(b);
   }
@@ -394,7 +388,7 @@ std::vector<Algorithm> study_column_members(Algorithm a) {
 
 std::vector<Algorithm> study_columns() {
   std::vector<Algorithm> out;
-  for (const Algorithm a : schema::values<Algorithm>()) {
+  for (const Algorithm a : values<Algorithm>()) {
     if (study_column_members(a).front() == a)
       out.push_back(a);
   }
@@ -408,4 +402,4 @@ std::string study_column_label(Algorithm a) {
   return out;
 }
 
-}  // namespace cs::reports
+}  // namespace cs::schema

@@ -28,18 +28,18 @@
 #include "schema/grade.hpp"
 #include "schema/quantity.hpp"
 
-namespace cs::reports {
+namespace cs::schema {
 
 /// One printed appendix value (one row of ansys_results.csv).
 struct StudyValue {
   std::string table;  ///< 3a ... 14d, or 3text
-  schema::ProblemId problem = schema::ProblemId::P_p;
-  schema::Quantity quantity = schema::Quantity::sigma_c;
-  schema::Element element = schema::Element::Q4;
-  std::optional<schema::ContactKind> contact;  ///< nullopt: `either` (ss or ns)
+  ProblemId problem = ProblemId::P_p;
+  Quantity quantity = Quantity::sigma_c;
+  Element element = Element::Q4;
+  std::optional<ContactKind> contact;  ///< nullopt: `either` (ss or ns)
   /// The first of the study column's algorithms (AL for "AL, PM").
-  schema::Algorithm algorithm = schema::Algorithm::AL;
-  schema::MeshLevel mesh = schema::MeshLevel::C;
+  Algorithm algorithm = Algorithm::AL;
+  MeshLevel mesh = MeshLevel::C;
   std::string printed;  ///< the value as printed (4 decimals)
   double value = 0.0;
   std::string exact_printed;    ///< the exact value printed above the table group, or "inf"
@@ -49,13 +49,13 @@ struct StudyValue {
 /// One printed Table 2 cell (one row of ansys_grades.csv).
 struct StudyGrade {
   std::string table;  ///< 2a | 2b
-  schema::ProblemId problem = schema::ProblemId::P_p;
+  ProblemId problem = ProblemId::P_p;
   std::string row;  ///< the study's row key: main | contact | horizontal
-  schema::Element element = schema::Element::Q4;
+  Element element = Element::Q4;
   /// The first of the column's algorithms (AL for AL_PM_ss).
-  schema::Algorithm algorithm = schema::Algorithm::AL;
-  std::optional<schema::ContactKind> contact;  ///< nullopt: a column for ss and ns alike
-  schema::Grade grade = schema::Grade::u;
+  Algorithm algorithm = Algorithm::AL;
+  std::optional<ContactKind> contact;  ///< nullopt: a column for ss and ns alike
+  Grade grade = Grade::u;
   bool converging = false;
   /// "e, c" or "g": the cell as the study prints it.
   std::string cell() const;
@@ -76,52 +76,49 @@ class StudyReference {
  public:
   StudyReference() = default;
   StudyReference(std::vector<StudyValue> values, std::vector<StudyGrade> grades,
-                 std::map<std::pair<schema::ProblemId, schema::MeshLevel>, int> table1 = {});
+                 std::map<std::pair<ProblemId, MeshLevel>, int> table1 = {});
 
   /// The study's Table 1: elements of the indented body of a problem on a mesh level
   /// (table1_elements.csv; the axisymmetric problems share their plane column), if printed.
-  std::optional<int> table1_elements(schema::ProblemId problem, schema::MeshLevel mesh) const;
+  std::optional<int> table1_elements(ProblemId problem, MeshLevel mesh) const;
 
   /// The study's value for our option set on one mesh; `value == nullptr` when the study
   /// printed none (e.g. mortar, or a table it omitted).
-  StudyMatch find_value(schema::ProblemId problem, schema::Quantity quantity,
-                        schema::Element element, schema::Algorithm algorithm,
-                        schema::ContactKind contact, schema::MeshLevel mesh) const;
+  StudyMatch find_value(ProblemId problem, Quantity quantity, Element element, Algorithm algorithm,
+                        ContactKind contact, MeshLevel mesh) const;
 
   /// The study's Table 2 cell for our option set, or nullptr (mortar, flat punch).
-  const StudyGrade* find_grade(schema::ProblemId problem, const std::string& study_row,
-                               schema::Element element, schema::Algorithm algorithm,
-                               schema::ContactKind contact) const;
+  const StudyGrade* find_grade(ProblemId problem, const std::string& study_row, Element element,
+                               Algorithm algorithm, ContactKind contact) const;
 
   /// The study's printed exact value for a problem and quantity ("inf" for the flat punch),
   /// or an empty string when the study printed no table for it.
-  std::string printed_exact(schema::ProblemId problem, schema::Quantity quantity) const;
+  std::string printed_exact(ProblemId problem, Quantity quantity) const;
 
   /// True when the study's Table 2 has a column per contact type for a's study column (AL, PM
   /// (ss) and (ns)); false when one column holds for both (LMP, PLM; IMC).
-  bool separates_contacts(schema::Algorithm a) const;
+  bool separates_contacts(Algorithm a) const;
   /// The study's Table 2 of an element ("2a" for Q4), or "" when it has none.
-  std::string grade_table(schema::Element element) const;
+  std::string grade_table(Element element) const;
   /// The rows of the study's Table 2 (problem and row key), in the file's order.
-  std::vector<std::pair<schema::ProblemId, std::string>> grade_rows() const;
+  std::vector<std::pair<ProblemId, std::string>> grade_rows() const;
   /// The problems whose printed exact value is "inf" (the singular flat punches), in the
   /// vocabulary's order.
-  std::vector<schema::ProblemId> singular_problems() const;
+  std::vector<ProblemId> singular_problems() const;
 
   const std::vector<StudyValue>& values() const { return values_; }
   const std::vector<StudyGrade>& grades() const { return grades_; }
 
  private:
-  const StudyValue* find_exact_key(schema::ProblemId problem, schema::Quantity quantity,
-                                   schema::Element element, schema::Algorithm algorithm,
-                                   std::optional<schema::ContactKind> contact,
-                                   schema::MeshLevel mesh) const;
+  const StudyValue* find_exact_key(ProblemId problem, Quantity quantity, Element element,
+                                   Algorithm algorithm, std::optional<ContactKind> contact,
+                                   MeshLevel mesh) const;
   std::vector<StudyValue> values_;
   std::vector<StudyGrade> grades_;
-  std::map<std::pair<schema::ProblemId, schema::MeshLevel>, int> table1_;
+  std::map<std::pair<ProblemId, MeshLevel>, int> table1_;
 };
 
-/// Reads ansys_results.csv and ansys_grades.csv from `dir`; throws ReportError naming the
+/// Reads ansys_results.csv and ansys_grades.csv from `dir`; throws SchemaError naming the
 /// file and line of anything it cannot read (a name the vocabulary does not know included).
 StudyReference load_study_reference(const std::filesystem::path& dir);
 
@@ -129,24 +126,24 @@ StudyReference load_study_reference(const std::filesystem::path& dir);
 /// CONTACT_SUITE_STUDY_DATA_DIR if that directory exists, else the first `data/study` (or
 /// `share/contact-suite/data/study`, where `cmake --install` puts it) found walking up from the
 /// running executable's directory, else `data/study` in the working directory.
-/// Throws ReportError when none holds ansys_results.csv.
+/// Throws SchemaError when none holds ansys_results.csv.
 std::filesystem::path default_study_data_dir();
 
 /// The study's name of a value: its alias where it has one (Q4 -> 4Q, MPC -> IMC), else its
 /// name.
-template <schema::Axis E>
+template <Axis E>
 constexpr std::string_view study_name(E v) {
-  const schema::AxisEntry e = entry(v);
+  const AxisEntry e = entry(v);
   return e.alias.empty() ? e.name : e.alias;
 }
 
 /// True when the study reports both algorithms in one column (AL and PM; LMP and PLM).
-bool same_study_column(schema::Algorithm a, schema::Algorithm b);
+bool same_study_column(Algorithm a, Algorithm b);
 /// Our algorithms of a's study column, in the vocabulary's order: AL, PM for PM.
-std::vector<schema::Algorithm> study_column_members(schema::Algorithm a);
+std::vector<Algorithm> study_column_members(Algorithm a);
 /// The first algorithm of each study column, in the vocabulary's order: AL, LMP, MPC.
-std::vector<schema::Algorithm> study_columns();
+std::vector<Algorithm> study_columns();
 /// The study's printed column head of a's study column: "AL, PM", "LMP, PLM", "IMC".
-std::string study_column_label(schema::Algorithm a);
+std::string study_column_label(Algorithm a);
 
-}  // namespace cs::reports
+}  // namespace cs::schema

@@ -16,7 +16,7 @@
 
 #include "schema/row_outcome.hpp"
 
-namespace cs::reports {
+namespace cs::apps {
 
 /// The JUnit document of `rows` (in their order; testsuites in the order their problem first
 /// appears), its root <testsuites> named `name` (e.g. "contact-suite gate"). Deterministic:
@@ -26,4 +26,4 @@ std::string junit_xml(const std::vector<schema::RowOutcome>& rows, std::string_v
 /// `text` with every character XML 1.0 cannot hold replaced by U+FFFD (see above).
 std::string xml_safe_text(std::string_view text);
 
-}  // namespace cs::reports
+}  // namespace cs::apps

@@ -1,9 +1,9 @@
 #pragma once
-// Lookups for the cross-code report: the solvers of a results document and, per solver, the
-// row of one of the study's option sets. A solver's row is the one with the study's settings
-// (a discretized target, no parameter overrides) and, for our solver, patch-recovered nodal
-// stresses (the baseline row); another solver's nodal stresses are its own, whatever the case's
-// `recovery` says, so its row of either recovery counts (spr first).
+// The solvers of a results document and, per solver, the row of one of the study's option sets
+// (for the cross-code comparison, generic over any number of solvers). A solver's row is the one
+// with the study's settings (a discretized target, no parameter overrides) and, for our solver,
+// patch-recovered nodal stresses (the baseline row); another solver's nodal stresses are its own,
+// whatever the case's `recovery` says, so its row of either recovery counts (spr first).
 
 #include <string>
 #include <vector>
@@ -36,10 +36,6 @@ const schema::RowVerdict* solver_row(const ResultsIndex& index, const std::strin
 /// in all_options() order.
 std::vector<Option> cross_code_options(const ResultsIndex& index, schema::ProblemId problem,
                                        schema::Quantity quantity, schema::Element element);
-
-/// The case a row of a solver ran on one mesh, or nullptr.
-const schema::CaseResult* solver_case(const ResultsIndex& index, const schema::RowVerdict& row,
-                                      schema::MeshLevel mesh);
 
 /// A case's id without its solver and recovery fields: the key under which the same case of
 /// two solvers is matched ("H_p/F/Q4/PM/ss").

@@ -9,10 +9,10 @@
 #include <gtest/gtest.h>
 #include <pugixml.hpp>
 
-#include "reports/ci/ci_summary.hpp"
-#include "reports/ci/junit_xml.hpp"
+#include "apps/ci_summary.hpp"
+#include "apps/junit_xml.hpp"
 
-namespace cs::reports {
+namespace cs::apps {
 namespace {
 
 using schema::ProblemId;
@@ -93,4 +93,4 @@ TEST(CiSummary, ListsRowsThatDidNotPass) {
 }
 
 }  // namespace
-}  // namespace cs::reports
+}  // namespace cs::apps

@@ -10,11 +10,11 @@
 
 #include "schema/row_outcome.hpp"
 
-namespace cs::reports {
+namespace cs::apps {
 
 /// The summary of `rows` under the heading `title` (e.g. "contact-suite gate against
 /// ci/baseline.json"). Ends with a newline.
 std::string ci_summary_markdown(const std::vector<schema::RowOutcome>& rows,
                                 std::string_view title);
 
-}  // namespace cs::reports
+}  // namespace cs::apps

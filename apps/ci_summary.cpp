@@ -1,10 +1,12 @@
-#include "reports/ci/ci_summary.hpp"
+#include "apps/ci_summary.hpp"
 
 #include <fmt/format.h>
 
 #include "reports/tables/markdown_table.hpp"
 
-namespace cs::reports {
+namespace cs::apps {
+
+using reports::MarkdownTable;
 namespace {
 
 using schema::RowOutcome;
@@ -67,4 +69,4 @@ std::string ci_summary_markdown(const std::vector<RowOutcome>& rows, std::string
   return out;
 }
 
-}  // namespace cs::reports
+}  // namespace cs::apps

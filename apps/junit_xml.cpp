@@ -1,4 +1,4 @@
-#include "reports/ci/junit_xml.hpp"
+#include "apps/junit_xml.hpp"
 
 #include <algorithm>
 #include <cstdint>
@@ -7,7 +7,7 @@
 #include <fmt/format.h>
 #include <pugixml.hpp>
 
-namespace cs::reports {
+namespace cs::apps {
 namespace {
 
 using schema::RowOutcome;
@@ -178,4 +178,4 @@ std::string junit_xml(const std::vector<RowOutcome>& rows, std::string_view name
   return text.str();
 }
 
-}  // namespace cs::reports
+}  // namespace cs::apps

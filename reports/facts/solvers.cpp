@@ -1,4 +1,4 @@
-#include "reports/tables/cross_code_rows.hpp"
+#include "reports/facts/solvers.hpp"
 
 #include <algorithm>
 #include <set>
@@ -82,11 +82,6 @@ std::vector<Option> cross_code_options(const ResultsIndex& index, schema::Proble
       out.push_back(o);
   }
   return out;
-}
-
-const schema::CaseResult* solver_case(const ResultsIndex& index, const schema::RowVerdict& row,
-                                      schema::MeshLevel mesh) {
-  return index.case_of(row, mesh);
 }
 
 std::string same_case_key(const schema::CaseSpec& spec) {
