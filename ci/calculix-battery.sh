@@ -17,7 +17,7 @@
 #     peak_rss_mb (the process's peak, or ccx's, whichever is larger) is that model's and not
 #     an earlier, larger one's; each writes OUT-parts/<solver>-<problem>-<mesh>-<element>/;
 #   - the built-in solver first (minutes), then CalculiX on C and M, on F but S, and on the
-#     Steuermann F meshes last (the slowest: up to --ccx-time-limit 600 s per case);
+#     Steuermann F meshes last (the slowest: up to --time-limit 600 s per case);
 #     CALCULIX_BATTERY_JOBS (default 1) sets --jobs of the CalculiX runs of the S F meshes;
 #     CALCULIX_BATTERY_STAGES (default all: "builtin calculix-C-M calculix-F calculix-F-S")
 #     runs only the stages named (e.g. the CalculiX stages in a second process beside the

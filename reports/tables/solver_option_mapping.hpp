@@ -1,7 +1,7 @@
 #pragma once
 // How the study's contact options map to another solver's own, as the report states it. The
 // report reads results only, so the mapping is handed in by the command line (apps/), which
-// takes it from the solver's adapter (adapters/calculix: calculix_option_mapping()).
+// takes it from the registered codes' manifests (apps/solver_option_mappings.hpp).
 
 #include <string>
 #include <vector>
