@@ -141,11 +141,14 @@ class CaseCollector {
 
   void add(std::string_view id, const ImportRow& row, const ImportedCaseValues& values,
            const std::array<Place, kColumns>& places) {
-    auto [it, inserted] = slot_.try_emplace(std::string(id), cases_.size());
-    if (inserted)
+    // A case is its id and its option: two options of a code share the id's study fields.
+    const std::string key = std::string(id) + '\n' + values.option.value_or("");
+    auto [it, inserted] = slot_.try_emplace(key, cases_.size());
+    if (inserted) {
       cases_.push_back({std::string(id), row.line, {}, {}});
+      cases_.back().values.option = values.option;
+    }
     ImportedCase& c = cases_[it->second];
-    merge_case_value(c.values.option, values.option, id, places[kOption]);
     merge_case_value(c.values.wall_seconds, values.wall_seconds, id, places[kWallSeconds]);
     merge_case_value(c.values.iterations, values.iterations, id, places[kIterations]);
     merge_case_value(c.values.n_equations, values.n_equations, id, places[kEquations]);
@@ -153,7 +156,8 @@ class CaseCollector {
     const auto [seen, fresh] = lines_[it->second].try_emplace(row.x, row.line);
     if (!fresh)
       fail({source_, row.line, 0, {}},
-           fmt::format("duplicate node: case '{}' already has x = {} on line {}", shown(id), row.x,
+           fmt::format("duplicate node: case '{}'{} already has x = {} on line {}", shown(id),
+                       values.option ? " (option " + *values.option + ")" : std::string(), row.x,
                        seen->second));
     c.rows.push_back(row);
   }
@@ -300,7 +304,7 @@ std::string import_csv_text(const std::vector<ImportedCase>& cases) {
     out += "," + std::string(kImportOptionalColumns);
   out += "\n";
   for (const auto& c : cases) {
-    // The case's values on its first row only: later rows leave them empty.
+    // The option on every row (it is part of the case), the other values on its first row only.
     bool first = true;
     for (const auto& r : c.rows) {
       out += fmt::format("{},{:.17g},{:.17g},{:.17g},", c.case_id, r.x, r.sigma_z, r.sigma_x);
@@ -309,9 +313,9 @@ std::string import_csv_text(const std::vector<ImportedCase>& cases) {
       if (values) {
         const ImportedCaseValues none;
         const ImportedCaseValues& v = first ? c.values : none;
-        out += fmt::format(",{},{},{},{},{}", field_text(v.option), field_text(v.wall_seconds),
-                           field_text(v.iterations), field_text(v.n_equations),
-                           field_text(v.peak_rss_mb));
+        out += fmt::format(",{},{},{},{},{}", field_text(c.values.option),
+                           field_text(v.wall_seconds), field_text(v.iterations),
+                           field_text(v.n_equations), field_text(v.peak_rss_mb));
       }
       out += '\n';
       first = false;

@@ -47,8 +47,10 @@ struct ImportRow {
   int line = 0;                            ///< 1-based line of the file (0: not from a file)
 };
 
-/// What the optional columns say of a case as a whole (none: not given). A value may be given
-/// on any of the case's rows and left empty on the others; where two rows give one, they agree.
+/// What the optional columns say of a case as a whole (none: not given). The option is part of
+/// the case (rows of one id and two options are two cases): it is given on every row of a case
+/// that has one. The others may be given on any of the case's rows and left empty on the rest;
+/// where two rows give one, they agree.
 struct ImportedCaseValues {
   std::optional<std::string> option;   ///< the code's own option label, e.g. "nitsche"
   std::optional<double> wall_seconds;  ///< the code's wall time for the case, >= 0
@@ -59,7 +61,7 @@ struct ImportedCaseValues {
   friend bool operator==(const ImportedCaseValues&, const ImportedCaseValues&) = default;
 };
 
-/// The rows of one case id, in the file's order.
+/// The rows of one case id and option, in the file's order.
 struct ImportedCase {
   std::string case_id;
   int line = 0;  ///< the line of its first row
@@ -74,7 +76,8 @@ class ImportError : public SuiteInputError {
   explicit ImportError(const std::string& what) : SuiteInputError(what) {}
 };
 
-/// Parses the import layout. Returns one entry per case id, in the order of first appearance.
+/// Parses the import layout. Returns one entry per case id and option, in the order of first
+/// appearance.
 /// Throws ImportError, naming `source_name`, the line and the column, for: an empty file (no
 /// header) or a header without data rows; a missing, unknown or repeated column; a row with
 /// more or fewer fields than the header; an empty case id; a value that is not a number, not

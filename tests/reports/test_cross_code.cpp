@@ -61,7 +61,7 @@ CaseResult hertz_case(SolverKind solver, MeshLevel mesh, double error, double wa
   c.spec.contact = schema::ContactKind::ss;
   c.spec.solver = solver;
   if (solver == kCalculix) {
-    c.spec.solver_name = "calculix:linear-ss";
+    c.spec.solver_name = "calculix";
     c.spec.solver_option = "linear-ss";
   }
   c.status = status;

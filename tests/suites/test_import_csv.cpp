@@ -230,17 +230,22 @@ TEST(ImportedResults, RowsThatDoNotMatchTheSurfaceAreRefused) {
 }
 
 // Requirement (issue 24): the optional per-case columns are read (own option label, time,
-// iterations, equations, memory), may be given on one row of a case only, must agree where two
-// rows give them, are checked as labels, counts and amounts, and are written back so that they
-// read back the same.
+// iterations, equations, memory); the option is part of the case (one id, two options: two
+// cases), the others may be given on one row of a case only and must agree where two rows give
+// them; all are checked as labels, counts and amounts, and written back so that they read back
+// the same.
 TEST(ImportCsv, OptionalPerCaseColumns) {
   const std::string h =
       "case_id,x,sigma_z,sigma_x,contact_pressure,option,wall_seconds,"
       "iterations,n_equations,peak_rss_mb\n";
   const auto cases = parse_import_csv(
-      h + "H_p/C/Q4/AL/ss,0,-1,-1,1,nitsche,2.5,7,1234,88.5\nH_p/C/Q4/AL/ss,0.5,-1,-1,1,,,,,\n",
+      h + "H_p/C/Q4/AL/ss,0,-1,-1,1,nitsche,2.5,7,1234,88.5\n"
+          "H_p/C/Q4/AL/ss,0.5,-1,-1,1,nitsche,,,,\n"
+          "H_p/C/Q4/AL/ss,0,-1,-1,1,integral_al,,,,\n",  // the same id, another option
       "f.csv");
-  ASSERT_EQ(cases.size(), 1u);
+  ASSERT_EQ(cases.size(), 2u);
+  EXPECT_EQ(cases[1].values.option, "integral_al");
+  EXPECT_EQ(cases[1].rows.size(), 1u);
   const ImportedCaseValues& v = cases[0].values;
   EXPECT_EQ(v.option, "nitsche");
   EXPECT_EQ(v.wall_seconds, 2.5);
@@ -248,9 +253,10 @@ TEST(ImportCsv, OptionalPerCaseColumns) {
   EXPECT_EQ(v.n_equations, 1234);
   EXPECT_EQ(v.peak_rss_mb, 88.5);
   const auto again = parse_import_csv(import_csv_text(cases), "again.csv");
-  ASSERT_EQ(again.size(), 1u);
+  ASSERT_EQ(again.size(), 2u);
   EXPECT_EQ(again[0].values, v);
   EXPECT_EQ(again[0].rows.size(), 2u);
+  EXPECT_EQ(again[1].values, cases[1].values);
   // Only some optional columns, in any order.
   const auto some = parse_import_csv(
       "iterations,case_id,x,sigma_z,sigma_x,contact_pressure\n3,P_p/C/Q4/PM/ss,0,-1,-1,\n", "f");
@@ -265,7 +271,8 @@ TEST(ImportCsv, OptionalPerCaseColumns) {
            {"H_p/C/Q4/AL/ss,0,-1,-1,1,,,,,nan\n", "column 10 (peak_rss_mb): 'nan' is not a"},
            {"H_p/C/Q4/AL/ss,0,-1,-1,1,,,4,,\nH_p/C/Q4/AL/ss,1,-1,-1,1,,,5,,\n",
             "f.csv:3: column 8 (iterations): case 'H_p/C/Q4/AL/ss': iterations differs"},
-           {"H_p/C/Q4/AL/ss,0,-1,-1,1,a,,,,\nH_p/C/Q4/AL/ss,1,-1,-1,1,b,,,,\n", "option differs"},
+           {"H_p/C/Q4/AL/ss,0,-1,-1,1,a,,,,\nH_p/C/Q4/AL/ss,0,-1,-1,1,a,,,,\n",
+            "duplicate node: case 'H_p/C/Q4/AL/ss' (option a) already has x = 0 on line 2"},
            {"H_p/C/Q4/AL/ss,0,-1,-1,1\n", "5 fields, the header has 10"},
        })
     EXPECT_NE(error_of(h + rows).find(expected), std::string::npos) << rows << error_of(h + rows);
