@@ -9,10 +9,13 @@
 
 #include <fmt/core.h>
 
+#include "adapters/protocol/solver_registry.hpp"
+#include "adapters/registered_codes.hpp"
 #include "apps/usage_error.hpp"
 #include "platform/output_transaction.hpp"
 #include "schema/results_file.hpp"
 #include "suites/executor_factory.hpp"
+#include "suites/external_executor.hpp"
 #include "suites/problem_catalog.hpp"
 #include "suites/problem_executor.hpp"
 #include "suites/problem_setup.hpp"
@@ -45,9 +48,17 @@ suites::CaseSpec make_spec(const CaseArgs& args) {
   spec.contact = schema::parse<schema::ContactKind>(args.contact);
   spec.target = schema::parse<schema::TargetKind>(args.target);
   spec.recovery = schema::parse<schema::Recovery>(args.recovery);
-  spec.solver = schema::parse<schema::SolverKind>(args.solver);
-  if (spec.solver == schema::SolverKind::imported)
-    throw UsageError("--solver imported: imported results are graded by `grade`, not run");
+  if (args.solver != schema::to_string(schema::SolverKind::builtin)) {
+    const auto colon = args.solver.find(':');
+    if (colon == std::string::npos)
+      throw UsageError("--solver " + args.solver +
+                       ": builtin, or a registered code and its option as NAME:OPTION (e.g. "
+                       "calculix:hard-ss; `contact-suite list` shows them)");
+    const auto code =
+        adapters::find_code(args.solver.substr(0, colon), adapters::protocol::solver_directories());
+    spec = suites::external_case(spec, code, code.option(args.solver.substr(colon + 1)),
+                                 spec.recovery);
+  }
   spec.overrides = suites::parse_overrides(args.sets);
   // Validate the parameters now: a bad --set is bad input, not a failed case.
   suites::Parameters(suites::problem_descriptor(spec.problem).parameters, spec.overrides,
@@ -149,7 +160,9 @@ void add_case_command(CLI::App& app, int& exit_code) {
                   "Nodal stresses: spr (patch recovery) or extrapolated (as commercial codes)")
       ->capture_default_str();
   cmd->add_option("--set", args->sets, "Override a parameter: name=value (see `list`)");
-  cmd->add_option("--solver", args->solver, "Who solves it: builtin or calculix")
+  cmd->add_option("--solver", args->solver,
+                  "Who solves it: builtin, or a registered code's NAME:OPTION (e.g. "
+                  "calculix:hard-ss; then --algorithm and --contact are the option's)")
       ->capture_default_str();
   cmd->add_flag("--json", args->json, "Print one JSON object (the fields of results.json)");
   auto* vtu = cmd->add_option("--vtu", args->vtu,

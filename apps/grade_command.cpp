@@ -26,6 +26,8 @@ namespace {
 struct GradeArgs {
   std::string import_file;
   std::string solver_name;
+  std::string target;    ///< "": as each case id says
+  std::string recovery;  ///< "": as each case id says
   std::string out = "out";
   bool no_report = false;
 };
@@ -43,9 +45,29 @@ std::string read_import_file(const std::string& path) {
   return text;
 }
 
+/// The target and basis the command line states (UsageError for an unknown name).
+suites::ImportBasis import_basis(const GradeArgs& args) {
+  suites::ImportBasis basis;
+  if (!args.target.empty()) {
+    basis.target = schema::try_parse<schema::TargetKind>(args.target);
+    if (!basis.target)
+      throw UsageError(fmt::format("--target {}: expected discretized or rigid", args.target));
+  }
+  if (!args.recovery.empty()) {
+    basis.recovery = schema::try_parse<schema::Recovery>(args.recovery);
+    if (!basis.recovery)
+      throw UsageError(fmt::format(
+          "--recovery {}: expected own (the code's own stresses) or spr (our patch recovery of "
+          "its displacements)",
+          args.recovery));
+  }
+  return basis;
+}
+
 int run_grade(const GradeArgs& args) {
   platform::check_output_directory(args.out);  // refused before any input is read
   suites::require_imported_solver_name(args.solver_name);
+  const suites::ImportBasis basis = import_basis(args);
   const auto cases = suites::parse_import_csv(read_import_file(args.import_file), args.import_file);
   // Taken before grading: an unwritable or busy directory fails now; bad input found while
   // grading leaves it as it was (the transaction is not committed).
@@ -55,7 +77,7 @@ int run_grade(const GradeArgs& args) {
   info.command_line = invocation().empty() ? "contact-suite grade" : invocation();
   info.environment = suites::run_environment();
   const auto start = std::chrono::steady_clock::now();
-  const auto results = suites::grade_imported(cases, args.solver_name, args.import_file);
+  const auto results = suites::grade_imported(cases, args.solver_name, args.import_file, basis);
   info.wall_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   info.peak_rss_mb = suites::peak_rss_mb();
@@ -85,8 +107,15 @@ void add_grade_command(CLI::App& app, int& exit_code) {
       "grade",
       "Grade another code's results (the import layout of docs/import-export.md) like a run");
   cmd->add_option("--import", args->import_file,
-                  "CSV of case_id,x,sigma_z,sigma_x,contact_pressure (see docs/import-export.md)")
+                  "CSV of case_id,x,sigma_z,sigma_x,contact_pressure and optionally option, "
+                  "wall_seconds, iterations, n_equations, peak_rss_mb (docs/import-export.md)")
       ->required();
+  cmd->add_option("--target", args->target,
+                  "The target of every case: discretized or rigid (default: as each case id "
+                  "says; an id that says otherwise is refused)");
+  cmd->add_option("--recovery", args->recovery,
+                  "The stress basis of every case: own (the code's own nodal stresses) or spr "
+                  "(our patch recovery of its displacements); default: as each case id says");
   cmd->add_option("--solver-name", args->solver_name,
                   "The code that produced the results, e.g. abaqus-2024 ([A-Za-z0-9._-])")
       ->required();

@@ -5,8 +5,8 @@
 #include <fmt/core.h>
 #include <nlohmann/json.hpp>
 
-#include "adapters/calculix/calculix_options.hpp"
 #include "adapters/protocol/solver_registry.hpp"
+#include "adapters/registered_codes.hpp"
 #include "suites/case_spec.hpp"
 #include "suites/problem_catalog.hpp"
 #include "suites/problems/problem_builders.hpp"
@@ -32,17 +32,6 @@ nlohmann::json names() {
   return a;
 }
 
-nlohmann::json calculix_mapping() {
-  nlohmann::json a = nlohmann::json::array();
-  for (const auto& m : adapters::calculix::calculix_option_mapping()) {
-    a.push_back({{"option", m.study_option},
-                 {"calculix", m.calculix},
-                 {"fidelity", m.fidelity},
-                 {"note", m.note}});
-  }
-  return a;
-}
-
 nlohmann::json quantity_names(const schema::ProblemRecord& record) {
   nlohmann::json a = nlohmann::json::array();
   for (const auto& q : record.quantities)
@@ -63,11 +52,12 @@ bool is_common(const std::string& name) {
   return false;
 }
 
-/// The codes registered by a manifest (docs/solver-protocol.md), with their options.
+/// The registered codes (docs/solver-protocol.md; CalculiX's manifest is its adapter's), with
+/// their options.
 void print_external_solvers(const std::vector<std::filesystem::path>& dirs) {
   fmt::print("\nRegistered codes (--solver NAME; case ids end in /@NAME:OPTION):\n");
   for (const auto& code :
-       adapters::protocol::discover_solvers(adapters::protocol::solver_directories(dirs))) {
+       adapters::registered_codes(adapters::protocol::solver_directories(dirs))) {
     std::string supports;
     for (auto s : code.supports)
       supports += (supports.empty() ? "" : " ") + std::string(adapters::protocol::to_string(s));
@@ -82,7 +72,7 @@ void print_external_solvers(const std::vector<std::filesystem::path>& dirs) {
 nlohmann::json external_solvers_json(const std::vector<std::filesystem::path>& dirs) {
   nlohmann::json out = nlohmann::json::array();
   for (const auto& code :
-       adapters::protocol::discover_solvers(adapters::protocol::solver_directories(dirs))) {
+       adapters::registered_codes(adapters::protocol::solver_directories(dirs))) {
     nlohmann::json options = nlohmann::json::array();
     for (const auto& o : code.options)
       options.push_back({{"label", o.label},
@@ -143,13 +133,7 @@ void print_text(const std::vector<std::filesystem::path>& dirs) {
       "  --recovery   {}   (nodal stresses: superconvergent patch recovery; or "
       "extrapolated and averaged, as commercial codes print)\n",
       joined<schema::Recovery>());
-  fmt::print("  --solver     {}   (ours; CalculiX through its adapter)\n",
-             joined<schema::SolverKind>());
-  fmt::print("\nHow the options map to CalculiX (--solver calculix):\n");
-  for (const auto& m : adapters::calculix::calculix_option_mapping()) {
-    fmt::print("  {:<7} -> {:<52} {}{}\n", m.study_option, m.calculix, m.fidelity,
-               m.note.empty() ? "" : " (" + m.note + ")");
-  }
+  fmt::print("  --solver     builtin   (ours), or a registered code below\n");
   print_external_solvers(dirs);
 }
 
@@ -179,7 +163,6 @@ void print_json(const std::vector<std::filesystem::path>& dirs) {
                            {"targets", names<schema::TargetKind>()},
                            {"recoveries", names<schema::Recovery>()},
                            {"solvers", names<schema::SolverKind>()},
-                           {"calculix_mapping", calculix_mapping()},
                            {"external_solvers", external_solvers_json(dirs)}};
   fmt::print("{}\n", out.dump(2));
 }

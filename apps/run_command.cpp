@@ -11,6 +11,7 @@
 #include <fmt/core.h>
 
 #include "adapters/protocol/solver_registry.hpp"
+#include "adapters/registered_codes.hpp"
 #include "apps/case_selection_options.hpp"
 #include "apps/ci_report_files.hpp"
 #include "apps/invocation.hpp"
@@ -41,7 +42,6 @@ namespace {
 struct RunArgs {
   SelectionArgs selection;
   std::string solver{schema::to_string(schema::SolverKind::builtin)};
-  double ccx_time_limit = 600.0;
   std::vector<std::string> solver_dirs;
   std::vector<std::string> solver_options;
   double time_limit = 0.0;
@@ -67,8 +67,8 @@ std::vector<suites::CaseSpec> external_cases(const RunArgs& args, suites::CaseSe
   if (!args.selection.algorithms.empty() || !args.selection.contacts.empty())
     throw UsageError("--algorithms and --contacts do not apply to " + args.solver +
                      ": its options are chosen by --solver-options");
-  const auto code = adapters::protocol::find_solver(
-      args.solver, adapters::protocol::solver_directories(solver_dirs(args)));
+  const auto code =
+      adapters::find_code(args.solver, adapters::protocol::solver_directories(solver_dirs(args)));
   std::vector<const adapters::protocol::SolverOption*> options;
   for (const auto& label : suites::split_list_option(args.solver_options, "--solver-options"))
     options.push_back(&code.option(label));
@@ -101,8 +101,7 @@ std::vector<suites::CaseSpec> selected_cases(const RunArgs& args,
   sel.solver = schema::parse<schema::SolverKind>(args.solver);
   if (sel.solver == schema::SolverKind::imported || sel.solver == schema::SolverKind::external)
     throw UsageError("--solver " + args.solver +
-                     ": name the code (builtin, calculix or a "
-                     "registered code, see `contact-suite list`)");
+                     ": name the code (builtin or a registered code, see `contact-suite list`)");
   if (!args.solver_options.empty())
     throw UsageError("--solver-options: only for an external code's options");
   auto cases = suites::make_case_matrix(sel);
@@ -111,7 +110,8 @@ std::vector<suites::CaseSpec> selected_cases(const RunArgs& args,
 }
 
 /// DIR/surface.csv: every converged case's sampled-surface values in the import layout
-/// (suites/import_csv.hpp), under its case id without the solver suffix.
+/// (suites/import_csv.hpp), under its case id without the solver suffix (its target and stress
+/// basis stay in the id), with its option label, wall time, iterations, equations and memory.
 void stage_surface_csv(const std::vector<suites::CaseResult>& results,
                        const platform::OutputTransaction& output) {
   std::vector<suites::ImportedCase> cases;
@@ -121,7 +121,14 @@ void stage_surface_csv(const std::vector<suites::CaseResult>& results,
     suites::CaseSpec spec = r.spec;
     spec.solver = schema::SolverKind::builtin;
     spec.solver_name.clear();
-    suites::ImportedCase c{suites::case_id(spec), 0, {}};
+    spec.solver_option.clear();
+    suites::ImportedCase c{suites::case_id(spec), 0, {}, {}};
+    if (!r.spec.solver_option.empty())
+      c.values.option = r.spec.solver_option;
+    c.values.wall_seconds = r.wall_seconds;
+    c.values.iterations = r.iterations;
+    c.values.n_equations = r.n_equations;
+    c.values.peak_rss_mb = r.peak_rss_mb;
     for (const auto& n : r.surface_nodes)
       c.rows.push_back({n.x, n.sigma_z, n.sigma_x, n.contact_pressure, 0});
     cases.push_back(std::move(c));
@@ -149,7 +156,6 @@ int run(const RunArgs& args) {
   std::vector<schema::SweepAxis> sweep;
   const auto all_cases = selected_cases(args, sweep);
   suites::ExecutorOptions exec;
-  exec.calculix_time_limit_seconds = args.ccx_time_limit;
   exec.solver_dirs = solver_dirs(args);
   exec.external_time_limit_seconds = args.time_limit;
   suites::require_solvers(all_cases, exec);  // e.g. ccx missing: exit 2 before anything runs
@@ -245,9 +251,9 @@ void add_run_command(CLI::App& app, int& exit_code) {
   auto* cmd = app.add_subcommand("run", "Run the study's case matrix (or a subset) and report");
   add_selection_options(*cmd, args->selection);
   cmd->add_option("--solver", args->solver,
-                  "Who solves the cases: builtin (ours), calculix (ccx through its adapter; "
-                  "see docs/calculix.md for how the options map) or a code registered by its "
-                  "manifest (docs/solver-protocol.md; `contact-suite list` shows them)")
+                  "Who solves the cases: builtin (ours) or a registered code: calculix (ccx "
+                  "through its C++ adapter, docs/calculix.md) or a code registered by its "
+                  "manifest (docs/solver-protocol.md; `contact-suite list` shows them all)")
       ->capture_default_str();
   cmd->add_option("--solver-dir", args->solver_dirs,
                   "A folder of external codes (each a folder with manifest.json), or one code's "
@@ -255,12 +261,9 @@ void add_run_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--solver-options", args->solver_options,
                   "An external code's options to run, by their own labels (default: all)");
   cmd->add_option("--time-limit", args->time_limit,
-                  "Seconds one external code's case may take (default: its manifest's)")
+                  "Seconds one registered code's case may take before it is `timeout` "
+                  "(default: its manifest's, 600 s for CalculiX)")
       ->check(CLI::Range(0.1, 86400.0));
-  cmd->add_option("--ccx-time-limit", args->ccx_time_limit,
-                  "Seconds one CalculiX case may take before it is `timeout`")
-      ->check(CLI::Range(1.0, 86400.0))
-      ->capture_default_str();
   cmd->add_option("--jobs", args->jobs, "Parallel workers, 1 to 256 (default: the number of cores)")
       ->check(CLI::Range(1, 256));
   cmd->add_option("--out", args->out, "Output directory")->capture_default_str();

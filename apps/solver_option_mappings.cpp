@@ -1,15 +1,32 @@
 #include "apps/solver_option_mappings.hpp"
 
-#include "adapters/calculix/calculix_options.hpp"
-#include "schema/case_axes.hpp"
+#include <fmt/format.h>
+
+#include "adapters/protocol/solver_registry.hpp"
+#include "adapters/registered_codes.hpp"
+#include "suites/solver_support.hpp"
 
 namespace cs::apps {
 
 std::vector<reports::SolverOptionMapping> solver_option_mappings() {
   std::vector<reports::SolverOptionMapping> out;
-  const std::string calculix(schema::to_string(schema::SolverKind::calculix));
-  for (const auto& m : adapters::calculix::calculix_option_mapping())
-    out.push_back({calculix, m.study_option, m.calculix, m.fidelity, m.note});
+  std::vector<adapters::protocol::SolverManifest> codes;
+  try {
+    codes = adapters::registered_codes(adapters::protocol::solver_directories());
+  } catch (const adapters::protocol::ManifestError&) {
+    return out;
+  }
+  for (const auto& code : codes) {
+    for (const auto& o : code.options) {
+      const auto algorithm = suites::study_algorithm(o.family);
+      out.push_back({code.name + ":" + o.label,
+                     fmt::format("{} {}", schema::to_string(algorithm), o.discretization),
+                     o.description, std::string(adapters::protocol::to_string(o.family)),
+                     fmt::format("family {}: rows sit in the study's {} column",
+                                 adapters::protocol::to_string(o.family),
+                                 schema::traits(algorithm).study_column)});
+    }
+  }
   return out;
 }
 

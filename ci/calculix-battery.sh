@@ -7,18 +7,17 @@
 #   bash ci/calculix-battery.sh [OUT] [BUILD_DIR]     # OUT: out/calculix, BUILD_DIR: build
 #
 # The selection: problems P_p P_a Pprime_p Pprime_a H_p H_a S_1 S_1_3 S_1_7 F_p F_a (a
-# discretized indenter: CalculiX has no rigid analytic target); contacts ns and ss (ccx 2.20
-# rejects mortar on 2D elements); algorithms PM and LMP. These are CalculiX's two distinct
-# options per contact type: AL maps to the same LINEAR deck as PM and PLM to the same HARD deck
-# as LMP (`contact-suite list`), so running them would repeat identical ccx jobs; MPC has no
-# CalculiX counterpart.
+# discretized indenter: CalculiX has no rigid analytic target); CalculiX's four options by its
+# own labels (LINEAR and HARD, node-to-surface and surface-to-surface; ccx 2.20 rejects mortar
+# on 2D elements, and it has no augmented Lagrangian, Lagrange-multiplier or MPC contact in 2D),
+# each graded on both stress bases (own and the common spr); ours with PM and LMP, ns and ss.
 #
 # How it runs:
 #   - one `run` process per problem, mesh, element and solver (--jobs 1), so that a case's
 #     peak_rss_mb (the process's peak, or ccx's, whichever is larger) is that model's and not
 #     an earlier, larger one's; each writes OUT-parts/<solver>-<problem>-<mesh>-<element>/;
 #   - the built-in solver first (minutes), then CalculiX on C and M, on F but S, and on the
-#     Steuermann F meshes last (the slowest: up to --ccx-time-limit 600 s per case);
+#     Steuermann F meshes last (the slowest: up to --time-limit 600 s per case);
 #     CALCULIX_BATTERY_JOBS (default 1) sets --jobs of the CalculiX runs of the S F meshes;
 #     CALCULIX_BATTERY_STAGES (default all: "builtin calculix-C-M calculix-F calculix-F-S")
 #     runs only the stages named (e.g. the CalculiX stages in a second process beside the
@@ -44,7 +43,11 @@ s_jobs=${CALCULIX_BATTERY_JOBS:-1}
 stages=${CALCULIX_BATTERY_STAGES:-builtin calculix-C-M calculix-F calculix-F-S}
 problems_not_s=(P_p P_a Pprime_p Pprime_a H_p H_a F_p F_a)
 problems_s=(S_1 S_1_3 S_1_7)
-common=(--algorithms PM,LMP --contacts ns,ss --target discretized --no-report)
+common=(--target discretized --no-report)
+# Ours: the study's PM and LMP with ns and ss. CalculiX: its own four options (linear-ns,
+# linear-ss, hard-ns, hard-ss: `contact-suite list`), each on both stress bases (own and the
+# common spr), one ccx run per option.
+builtin_options=(--algorithms PM,LMP --contacts ns,ss)
 
 [ -x "$exe" ] || { echo "calculix-battery: $exe not built (bash ci/build.sh $build_dir)" >&2; exit 2; }
 command -v ccx > /dev/null || { echo "calculix-battery: ccx not on PATH (ci/install-deps.sh)" >&2; exit 2; }
@@ -76,8 +79,10 @@ run_part() {
   [ -f "$dir/results.json" ] && return 0
   claim "$dir" || return 0
   local status=0
+  local options=()
+  [ "$solver" = builtin ] && options=("${builtin_options[@]}")
   "$exe" run --solver "$solver" --problems "$problem" --meshes "$mesh" --elements "$element" \
-    "${common[@]}" --ccx-time-limit 600 --jobs "$jobs" --out "$dir" || status=$?
+    "${common[@]}" "${options[@]}" --time-limit 600 --jobs "$jobs" --out "$dir" || status=$?
   # Exit 1: some case did not converge or timed out; that is a result, recorded in the file.
   [ "$status" -le 1 ] || { echo "calculix-battery: $dir failed (exit $status)" >&2; exit "$status"; }
   rm -rf "$dir.lock"

@@ -261,11 +261,11 @@ constexpr AxisEntry entry(Recovery v) {
   return {};
 }
 
-/// Which solver produced a case: ours, CalculiX through its adapter, results imported from
-/// any other code (whose name the case records beside this kind, see CaseSpec::solver_name), or
-/// an external code run through the solver protocol (docs/solver-protocol.md), named by its
-/// manifest and one of its options (CaseSpec::solver_name, CaseSpec::solver_option).
-enum class SolverKind : std::uint8_t { builtin, calculix, imported, external };
+/// Which solver produced a case: ours, results imported from any other code (whose name the
+/// case records beside this kind, see CaseSpec::solver_name), or a registered code run through
+/// the solver protocol (docs/solver-protocol.md; CalculiX among them, through its C++ adapter),
+/// named by its manifest and one of its options (CaseSpec::solver_name, solver_option).
+enum class SolverKind : std::uint8_t { builtin, imported, external };
 constexpr std::string_view axis_name(SolverKind) {
   return "solver";
 }
@@ -273,8 +273,6 @@ constexpr AxisEntry entry(SolverKind v) {
   switch (v) {
     case SolverKind::builtin:
       return {"builtin", "", "contact-suite"};
-    case SolverKind::calculix:
-      return {"calculix", "ccx", "CalculiX"};
     case SolverKind::imported:
       return {"imported", "", "imported"};
     case SolverKind::external:

@@ -67,11 +67,13 @@ void parse_options(std::string_view id, const std::vector<std::string_view>& fie
       if (spec.solver_name.empty() || spec.solver_option.empty())
         throw SchemaError(fmt::format(
             "case id '{}': '{}' is not a solver suffix (@<code>:<option>)", id, fields[i]));
+    } else if (solver == "calculix") {
+      throw SchemaError(
+          fmt::format("case id '{}': '{}' names CalculiX without its option (@calculix:<option>)",
+                      id, fields[i]));
     } else {
-      spec.solver =
-          solver == to_string(SolverKind::calculix) ? SolverKind::calculix : SolverKind::imported;
-      if (spec.solver == SolverKind::imported)
-        spec.solver_name = std::string(solver);
+      spec.solver = SolverKind::imported;
+      spec.solver_name = std::string(solver);
     }
     ++i;
   }

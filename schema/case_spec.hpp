@@ -31,22 +31,24 @@ struct CaseSpec {
   friend bool operator==(const CaseSpec&, const CaseSpec&) = default;
 };
 
-/// The solver as results.json and the report name it: "builtin", "calculix", the imported
-/// code's own name, or an external code's "<name>:<option>" (e.g. "getfem:nitsche").
+/// The solver as results.json and the report name it: "builtin", the imported code's own name,
+/// or a registered code's "<name>:<option>" (e.g. "getfem:nitsche", "calculix:hard-ss").
 std::string solver_label(const CaseSpec& spec);
 
 /// A stable identifier of a case: "H_p/F/Q4/LMP/ss" (+ "/rigid", "/extrapolated", "/k=v"
-/// overrides, and "/@calculix", "/@<name>" (imported) or "/@<name>:<option>" (external) for a
-/// solver other than ours).
+/// overrides, and "/@<name>" (imported) or "/@<name>:<option>" (a registered code, e.g.
+/// "/@calculix:hard-ss") for a solver other than ours).
 std::string case_id(const CaseSpec& spec);
 
 /// The case a case id names: the inverse of case_id() on its canonical form. The five fields
 /// problem/mesh/element/algorithm/contact, then in case_id()'s order "rigid", a recovery other
-/// than spr, "name=value" overrides (sorted by name) and "@<solver>" ("@calculix", or any other
-/// name for imported results, recorded in solver_name). Throws SchemaError naming the id and its
-/// first bad field; an id that parses but is not written as case_id() writes it (an alias, a
-/// reordered or repeated field, "fkn=10.0" for "fkn=10") is refused with the canonical form, so
-/// that one case has one id. Parameters are not validated here (suites::validate_case does).
+/// than spr, "name=value" overrides (sorted by name) and "@<solver>" ("@<code>:<option>" for a
+/// registered code, any other name for imported results, recorded in solver_name; "@calculix"
+/// alone, version 3's suffix, is refused: CalculiX's cases name their option). Throws SchemaError
+/// naming the id and its first bad field; an id that parses but is not written as case_id() writes
+/// it (an alias, a reordered or repeated field, "fkn=10.0" for "fkn=10") is refused with the
+/// canonical form, so that one case has one id. Parameters are not validated here
+/// (suites::validate_case does).
 CaseSpec parse_case_id(std::string_view id);
 
 /// True for the study's option sets: our solver, a discretized target, patch-recovered nodal

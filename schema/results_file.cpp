@@ -8,6 +8,7 @@
 
 #include "schema/json_fields.hpp"
 #include "schema/json_file.hpp"
+#include "schema/results_migration.hpp"
 #include "schema/schema_error.hpp"
 
 namespace cs::schema {
@@ -16,6 +17,10 @@ namespace {
 using nlohmann::json;
 
 constexpr long long kIntMax = std::numeric_limits<int>::max();
+/// The older version read through results_migration.hpp.
+constexpr int kMigratedSchemaVersion = 3;
+/// Version 3's solver of every CalculiX case; version 4 names the option ("calculix:<label>").
+constexpr std::string_view kCalculixWithoutOption = "calculix";
 
 json numbers_or_null(const std::vector<double>& v) {
   json a = json::array();
@@ -102,6 +107,8 @@ CaseSpec spec_from_json(const JsonFields& r) {
     r.fail_field("solver",
                  "is empty, \"imported\" or \"external\": name the code the results "
                  "came from");
+  } else if (solver == kCalculixWithoutOption) {
+    r.fail_field("solver", "is \"calculix\" without its option (calculix:<option>)");
   } else if (colon != std::string::npos) {
     if (colon == 0 || colon + 1 == solver.size())
       r.fail_field("solver", "is not <code>:<option>");
@@ -522,9 +529,16 @@ ResultsDocument results_from_json(const json& j, const std::string& source) {
                                        kResultsSchemaName));
   }
   const auto version = r.integer("schema_version", 0, kIntMax);
+  if (version == kMigratedSchemaVersion) {
+    json migrated = j;
+    migrate_results_v3_to_v4(migrated);
+    migrated["schema_version"] = kResultsSchemaVersion;
+    return results_from_json(migrated, source);
+  }
   if (version != kResultsSchemaVersion) {
-    r.fail_field("schema_version", fmt::format("{} is not supported (this build reads {})", version,
-                                               kResultsSchemaVersion));
+    r.fail_field("schema_version",
+                 fmt::format("{} is not supported (this build reads {} and {})", version,
+                             kMigratedSchemaVersion, kResultsSchemaVersion));
   }
   ResultsDocument doc;
   doc.source = source;

@@ -20,7 +20,7 @@
 namespace cs::schema {
 
 inline constexpr const char* kResultsSchemaName = "contact-suite/results";
-inline constexpr int kResultsSchemaVersion = 3;
+inline constexpr int kResultsSchemaVersion = 4;
 
 /// Which slice of a sharded run a results file holds (`run --shard K/N`).
 struct ShardInfo {

@@ -4,14 +4,16 @@
 
 #include <cmath>
 #include <exception>
+#include <stdexcept>
 #include <string>
 #include <system_error>
 #include <utility>
 #include <vector>
 
 #include "adapters/calculix/calculix_error.hpp"
-#include "adapters/calculix/calculix_options.hpp"
+#include "adapters/calculix/calculix_manifest.hpp"
 #include "suites/problem_executor.hpp"
+#include "suites/solver_support.hpp"
 #include "suites/suite_error.hpp"
 #include "suites/surface_sampling.hpp"
 
@@ -34,26 +36,22 @@ CaseStatus to_case_status(ccx::CalculixStatus status) {
   return CaseStatus::failed;
 }
 
-/// "not supported by CalculiX: <the adapter's message less its "CalculiX: " prefix>".
-std::string unsupported_reason(const std::string& message) {
-  constexpr std::string_view kPrefix = "CalculiX: ";
-  std::string_view m = message;
-  if (m.starts_with(kPrefix))
-    m.remove_prefix(kPrefix.size());
-  return "not supported by CalculiX: " + std::string(m);
-}
-
-/// The CalculiX options of `spec` on `setup` (throws UnsupportedByCalculix for its gaps).
-ccx::CalculixOptions calculix_options(const CaseSpec& spec, const ProblemSetup& setup,
-                                      const ExecutorOptions& options) {
-  if (spec.target == TargetKind::Rigid || setup.load_control)
-    throw ccx::UnsupportedByCalculix(
-        "a rigid target (the adapter writes meshed surfaces only: use --target discretized)");
-  ccx::CalculixOptions out = ccx::map_contact_settings(
-      contact_settings(spec), ccx::penalty_scale(setup.model, setup.pair, setup.p));
-  out.time_limit_seconds = options.calculix_time_limit_seconds;
-  out.executable = options.ccx_executable;
-  return out;
+/// The CalculiX options of `spec` on `setup`; "" or why the case cannot run on CalculiX.
+std::string calculix_options(const CaseSpec& spec, const ProblemSetup& setup,
+                             const CalculixRunOptions& run, ccx::CalculixOptions& out) {
+  if (std::string why = why_not_runnable(spec, setup, ccx::calculix_manifest()); !why.empty())
+    return why;
+  if (setup.load_control)
+    return "not supported by calculix: a load-controlled rigid punch";
+  try {
+    out = ccx::options_for(spec.solver_option, contact_settings(spec).fkn,
+                           ccx::penalty_scale(setup.model, setup.pair, setup.p));
+  } catch (const std::invalid_argument& e) {
+    return e.what();
+  }
+  out.time_limit_seconds = run.time_limit_seconds;
+  out.executable = run.executable;
+  return {};
 }
 
 /// The sampled surface's stresses on the case's basis: CalculiX's own extrapolated nodal
@@ -113,13 +111,15 @@ const std::filesystem::path& calculix_run_directory() {
 }
 
 std::string calculix_case_directory_name(const CaseSpec& spec) {
-  return plain_file_name(case_id(spec));
+  CaseSpec run = spec;
+  run.recovery = Recovery::spr;
+  return plain_file_name(case_id(run));
 }
 
-CalculixExecutor::CalculixExecutor(const CaseSpec& representative, const ExecutorOptions& options)
-    : setup_(std::make_unique<ProblemSetup>(build_problem(representative))), options_(options) {
-  if (!(options_.calculix_time_limit_seconds > 0.0) ||
-      !std::isfinite(options_.calculix_time_limit_seconds))
+CalculixExecutor::CalculixExecutor(const CaseSpec& representative, CalculixRunOptions options)
+    : setup_(std::make_unique<ProblemSetup>(build_problem(representative))),
+      options_(std::move(options)) {
+  if (!(options_.time_limit_seconds > 0.0) || !std::isfinite(options_.time_limit_seconds))
     throw SuiteInputError("the CalculiX time limit must be a positive number of seconds");
 }
 
@@ -128,29 +128,36 @@ CalculixExecutor::~CalculixExecutor() = default;
 CaseResult CalculixExecutor::run(const CaseSpec& spec) {
   CaseResult result;
   result.spec = spec;
-  result.spec.solver = SolverKind::calculix;
   result.n_elements = setup_->mesh_info.n_block_elements;
   result.element_size_h = setup_->mesh_info.h_contact / setup_->length_unit;
   result.status = CaseStatus::failed;
-  last_.reset();
 
   ccx::CalculixOptions options;
-  try {
-    options = calculix_options(spec, *setup_, options_);
-  } catch (const ccx::UnsupportedByCalculix& e) {
-    result.reason = unsupported_reason(e.what());
+  if (std::string why = calculix_options(spec, *setup_, options_, options); !why.empty()) {
+    last_.reset();
+    result.reason = std::move(why);
     mark_missing(*setup_, result);
     return result;
   }
   const std::filesystem::path root =
-      options_.calculix_work_root.empty() ? calculix_run_directory() : options_.calculix_work_root;
-  const std::filesystem::path dir = root / calculix_case_directory_name(spec);
-  try {
-    last_ = ccx::run_calculix(setup_->model, setup_->pair, options, dir);
-  } catch (const std::exception& e) {  // ccx missing, a deck it cannot take: this case only
-    result.reason = with_kept_directory(e.what(), dir);
-    mark_missing(*setup_, result);
-    return result;
+      options_.work_root.empty() ? calculix_run_directory() : options_.work_root;
+  // The cases of one option on other stress bases share its run (and its directory).
+  const std::string key = calculix_case_directory_name(spec);
+  const std::filesystem::path dir = root / key;
+  if (!last_ || last_key_ != key) {
+    last_.reset();
+    try {
+      last_ = ccx::run_calculix(setup_->model, setup_->pair, options, dir);
+    } catch (const std::exception& e) {  // ccx missing, a deck it cannot take: this case only
+      result.reason = with_kept_directory(e.what(), dir);
+      mark_missing(*setup_, result);
+      return result;
+    }
+    last_key_ = key;
+    if (last_->converged()) {
+      std::error_code ignored;
+      std::filesystem::remove_all(dir, ignored);
+    }
   }
   result.status = to_case_status(last_->status);
   result.iterations = std::max(last_->iterations, 0);
@@ -161,8 +168,6 @@ CaseResult CalculixExecutor::run(const CaseSpec& spec) {
     return result;
   }
   fill_values(*setup_, *last_, result);
-  std::error_code ignored;
-  std::filesystem::remove_all(dir, ignored);
   return result;
 }
 

@@ -1,26 +1,37 @@
 #include "suites/executor_factory.hpp"
 
-#include <algorithm>
-
 #include <set>
 
+#include "adapters/calculix/calculix_manifest.hpp"
 #include "adapters/calculix/runner.hpp"
 #include "adapters/protocol/solver_registry.hpp"
+#include "adapters/registered_codes.hpp"
 #include "suites/calculix_executor.hpp"
 #include "suites/external_executor.hpp"
 #include "suites/problem_executor.hpp"
 #include "suites/suite_error.hpp"
 
 namespace cs::suites {
+namespace {
+
+/// CalculiX's run options: its manifest's program and time limit unless `options` sets one.
+CalculixRunOptions calculix_run_options(const ExecutorOptions& options) {
+  const auto& manifest = adapters::calculix::calculix_manifest();
+  return {options.external_time_limit_seconds > 0.0 ? options.external_time_limit_seconds
+                                                    : manifest.time_limit_seconds,
+          manifest.command.front(), options.external_work_root};
+}
+
+}  // namespace
 
 std::unique_ptr<GroupExecutor> make_executor_for(const CaseSpec& representative,
                                                  const ExecutorOptions& options) {
   switch (representative.solver) {
     case SolverKind::builtin:
       return std::make_unique<ProblemExecutor>(representative);
-    case SolverKind::calculix:
-      return std::make_unique<CalculixExecutor>(representative, options);
     case SolverKind::external: {
+      if (representative.solver_name == adapters::calculix::kCalculixName)
+        return std::make_unique<CalculixExecutor>(representative, calculix_run_options(options));
       ExternalRunOptions external{adapters::protocol::find_solver(
                                       representative.solver_name,
                                       adapters::protocol::solver_directories(options.solver_dirs)),
@@ -35,18 +46,16 @@ std::unique_ptr<GroupExecutor> make_executor_for(const CaseSpec& representative,
 }
 
 void require_solvers(const std::vector<CaseSpec>& cases, const ExecutorOptions& options) {
-  const bool any_calculix = std::any_of(cases.begin(), cases.end(), [](const CaseSpec& s) {
-    return s.solver == SolverKind::calculix;
-  });
-  if (any_calculix)
-    adapters::calculix::require_ccx(options.ccx_executable);
-  std::set<std::string> external;
+  std::set<std::string> codes;
   for (const auto& s : cases)
     if (s.solver == SolverKind::external)
-      external.insert(s.solver_name);
+      codes.insert(s.solver_name);
   const auto dirs = adapters::protocol::solver_directories(options.solver_dirs);
-  for (const auto& name : external)
-    adapters::protocol::find_solver(name, dirs);
+  for (const auto& name : codes) {
+    const auto code = adapters::find_code(name, dirs);
+    if (name == adapters::calculix::kCalculixName)
+      adapters::calculix::require_ccx(code.command.front());
+  }
 }
 
 ExecutorFactory executor_factory(const ExecutorOptions& options) {

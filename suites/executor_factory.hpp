@@ -4,9 +4,10 @@
 // CaseSpec::solver; the runner takes it as its ExecutorFactory (executor_factory(options)).
 //
 //   builtin   -> ProblemExecutor (suites/problem_executor.hpp), the built-in solver;
-//   calculix  -> CalculixExecutor (suites/calculix_executor.hpp), ccx through the adapter;
-//   external  -> ExternalExecutor (suites/external_executor.hpp), a code registered by its
-//                manifest (adapters/protocol/), found by the case's solver_name;
+//   external  -> the registered code the case's solver_name names (adapters/registered_codes.hpp):
+//                CalculiX -> CalculixExecutor (suites/calculix_executor.hpp), its C++ adapter;
+//                any other -> ExternalExecutor (suites/external_executor.hpp), its manifest's
+//                command through the solver protocol;
 //   imported  -> SuiteInputError: imported results are graded from a file, not run.
 //
 // Grading, rows, the gate and the report read the CaseResult and never learn which ran.
@@ -20,21 +21,14 @@
 
 namespace cs::suites {
 
-/// What an executor needs beyond the case (the external solvers' settings).
+/// What an executor needs beyond the case (the registered codes' settings).
 struct ExecutorOptions {
-  /// Wall-clock limit of one CalculiX run in seconds (> 0); past it the case is `timeout`.
-  double calculix_time_limit_seconds = 600.0;
-  /// The CalculiX program (searched in PATH unless it contains '/').
-  std::string ccx_executable = "ccx";
-  /// Where CalculiX cases get their directories; empty: one temporary directory per process
-  /// (calculix_run_directory()).
-  std::filesystem::path calculix_work_root;
   /// Folders searched for external codes' manifests after the project's adapters/ and
   /// CONTACT_SUITE_SOLVER_DIRS (adapters/protocol/solver_registry.hpp).
   std::vector<std::filesystem::path> solver_dirs;
-  /// Wall-clock limit of one external code's run in seconds; 0: its manifest's.
+  /// Wall-clock limit of one registered code's run in seconds; 0: its manifest's.
   double external_time_limit_seconds = 0.0;
-  /// Where external codes' cases get their run directories; empty: a temporary directory.
+  /// Where registered codes' cases get their run directories; empty: a temporary directory.
   std::filesystem::path external_work_root;
 };
 
@@ -43,10 +37,10 @@ struct ExecutorOptions {
 std::unique_ptr<GroupExecutor> make_executor_for(const CaseSpec& representative,
                                                  const ExecutorOptions& options = {});
 
-/// Checks, before any case runs, that every external solver `cases` name is available:
-/// throws adapters::calculix::CalculixError (a std::invalid_argument: the command line's exit
-/// 2) "CalculiX: 'ccx' not found in PATH (...)" when a case is for CalculiX and
-/// options.ccx_executable is not found.
+/// Checks, before any case runs, that every registered code `cases` name is available: throws
+/// adapters::protocol::ManifestError for an unknown code, adapters::calculix::CalculixError
+/// "CalculiX: 'ccx' not found in PATH (...)" when a case is for CalculiX and its program is not
+/// found (both std::invalid_argument: the command line's exit 2).
 void require_solvers(const std::vector<CaseSpec>& cases, const ExecutorOptions& options = {});
 
 /// make_executor_for with `options`, as the runner's factory.

@@ -16,6 +16,7 @@
 #include "solver/stress_recovery.hpp"
 #include "suites/case_directory.hpp"
 #include "suites/problem_executor.hpp"
+#include "suites/solver_support.hpp"
 #include "suites/suite_error.hpp"
 #include "suites/surface_sampling.hpp"
 
@@ -24,7 +25,6 @@ namespace {
 
 namespace fs = std::filesystem;
 namespace protocol = adapters::protocol;
-using protocol::Support;
 
 /// The process's run root for external codes, created on first use.
 const fs::path& default_work_root() {
@@ -58,22 +58,6 @@ std::string first_change(const std::map<std::string, fs::file_time_type>& before
   return {};
 }
 
-/// Why `spec` cannot run on `code`, or "".
-std::string unsupported(const CaseSpec& spec, const ProblemSetup& setup,
-                        const protocol::SolverManifest& code) {
-  const bool axi = setup.model.analysis == solver::AnalysisType::Axisymmetric;
-  if (!code.supports_all({axi ? Support::axisymmetric : Support::plane_strain}))
-    return axi ? "axisymmetric analysis" : "plane-strain analysis";
-  if (!code.supports_all(
-          {spec.target == TargetKind::Rigid ? Support::rigid_target : Support::meshed_target}))
-    return spec.target == TargetKind::Rigid ? "a rigid target" : "a meshed target";
-  if (!code.supports_all({spec.element == Element::Q8 ? Support::Q8 : Support::Q4}))
-    return fmt::format("{} elements", to_string(spec.element));
-  if (!setup.load_steps.empty())
-    return "a load path (friction)";
-  return {};
-}
-
 std::vector<int> deformable_nodes(const ProblemSetup& setup) {
   const solver::Mesh& mesh = setup.model.mesh;
   const bool rigid = std::holds_alternative<solver::RigidProfile>(setup.pair.target);
@@ -88,21 +72,6 @@ std::vector<int> deformable_nodes(const ProblemSetup& setup) {
 }
 
 }  // namespace
-
-Algorithm study_algorithm(protocol::OptionFamily family) {
-  switch (family) {
-    case protocol::OptionFamily::penalty:
-      return Algorithm::PM;
-    case protocol::OptionFamily::augmented_lagrangian:
-    case protocol::OptionFamily::nitsche:
-      return Algorithm::AL;
-    case protocol::OptionFamily::lagrange_multiplier:
-      return Algorithm::LMP;
-    case protocol::OptionFamily::mpc:
-      return Algorithm::MPC;
-  }
-  return Algorithm::AL;
-}
 
 CaseSpec external_case(const CaseSpec& model_case, const protocol::SolverManifest& code,
                        const protocol::SolverOption& option, Recovery recovery) {
@@ -205,23 +174,7 @@ CaseResult ExternalExecutor::run(const CaseSpec& spec) {
   result.element_size_h = setup_->mesh_info.h_contact / setup_->length_unit;
   result.status = CaseStatus::failed;
   const protocol::SolverManifest& code = options_.manifest;
-  std::string why;
-  try {
-    const protocol::SolverOption& option = code.option(spec.solver_option);
-    if (spec.solver != SolverKind::external || spec.solver_name != code.name)
-      why = "the case is not for " + code.name;
-    else if (spec.algorithm != study_algorithm(option.family) ||
-             to_string(spec.contact) != option.discretization)
-      why = fmt::format("option '{}' is {} {}: its case id must read {}/{}", option.label,
-                        protocol::to_string(option.family), option.discretization,
-                        to_string(study_algorithm(option.family)), option.discretization);
-  } catch (const protocol::ManifestError& e) {
-    why = e.what();
-  }
-  if (why.empty()) {
-    if (const std::string gap = unsupported(spec, *setup_, code); !gap.empty())
-      why = fmt::format("not supported by {}: {}", code.name, gap);
-  }
+  const std::string why = why_not_runnable(spec, *setup_, code);
   if (!why.empty()) {
     result.reason = why;
     mark_missing(*setup_, result);

@@ -31,12 +31,9 @@
 #include "adapters/protocol/solver_manifest.hpp"
 #include "suites/problem_setup.hpp"
 #include "suites/runner.hpp"
+#include "suites/solver_support.hpp"
 
 namespace cs::suites {
-
-/// The study algorithm an option family's rows sit under (penalty: PM, augmented Lagrangian
-/// and Nitsche: AL, Lagrange multiplier: LMP, mpc: MPC).
-Algorithm study_algorithm(adapters::protocol::OptionFamily family);
 
 /// The case of an external code's option, on the model of `model_case` (its problem, mesh,
 /// element, target and overrides): solver external, the option's label, family and

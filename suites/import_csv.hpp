@@ -7,11 +7,14 @@
 //   case_id,x,sigma_z,sigma_x,contact_pressure
 //   H_p/C/Q4/PM/ss,0,-1.2731,-1.2731,1.2733
 //
-// - The header names the five columns, in any order; a missing, unknown or repeated column is
-//   an error. Blank lines and lines starting with '#' are skipped; a UTF-8 byte-order mark and
-//   CR line ends are accepted; fields are trimmed of spaces and tabs; quoting is not supported
-//   (no field of the layout needs it).
-// - case_id: a case id as cases.csv of `export` lists it (no "/@solver" suffix).
+// - The header names the five columns, in any order, and any of the optional per-case columns
+//   option, wall_seconds, iterations, n_equations, peak_rss_mb (ImportedCaseValues); a
+//   missing required, unknown or repeated column is an error. Blank lines and lines starting with
+//   '#' are skipped; a UTF-8 byte-order mark and CR line ends are accepted; fields are trimmed of
+//   spaces and tabs; quoting is not supported (no field of the layout needs it).
+// - case_id: a case id as cases.csv of `export` lists it (no "/@solver" suffix); it may name
+//   a rigid target ("/rigid") and the stress basis ("/own": the code's own stresses; none:
+//   spr, our patch recovery of the code's displacements), see `grade --target --recovery`.
 // - x: the node's reference coordinate x (r) on the sampled surface, in the model's units.
 // - sigma_z, sigma_x: the code's nodal stresses there, unnormalized, tension positive
 //   (compression negative), as the code reports them; required, finite.
@@ -29,8 +32,11 @@
 
 namespace cs::suites {
 
-/// The header `import_csv_text` writes (any order of these five names is read).
+/// The five required columns (any order is read).
 inline constexpr std::string_view kImportHeader = "case_id,x,sigma_z,sigma_x,contact_pressure";
+/// The optional per-case columns (any order, any subset).
+inline constexpr std::string_view kImportOptionalColumns =
+    "option,wall_seconds,iterations,n_equations,peak_rss_mb";
 
 /// One row: a node of the sampled surface of one case.
 struct ImportRow {
@@ -41,11 +47,26 @@ struct ImportRow {
   int line = 0;                            ///< 1-based line of the file (0: not from a file)
 };
 
-/// The rows of one case id, in the file's order.
+/// What the optional columns say of a case as a whole (none: not given). The option is part of
+/// the case (rows of one id and two options are two cases): it is given on every row of a case
+/// that has one. The others may be given on any of the case's rows and left empty on the rest;
+/// where two rows give one, they agree.
+struct ImportedCaseValues {
+  std::optional<std::string> option;   ///< the code's own option label, e.g. "nitsche"
+  std::optional<double> wall_seconds;  ///< the code's wall time for the case, >= 0
+  std::optional<int> iterations;       ///< its (Newton or contact) iterations, >= 0
+  std::optional<int> n_equations;      ///< its number of equations, >= 0
+  std::optional<double> peak_rss_mb;   ///< its peak resident memory in MB, >= 0
+
+  friend bool operator==(const ImportedCaseValues&, const ImportedCaseValues&) = default;
+};
+
+/// The rows of one case id and option, in the file's order.
 struct ImportedCase {
   std::string case_id;
   int line = 0;  ///< the line of its first row
   std::vector<ImportRow> rows;
+  ImportedCaseValues values;
 };
 
 /// A malformed import file. The message is one line: "<source>:<line>: column <k> (<name>):
@@ -55,15 +76,19 @@ class ImportError : public SuiteInputError {
   explicit ImportError(const std::string& what) : SuiteInputError(what) {}
 };
 
-/// Parses the import layout. Returns one entry per case id, in the order of first appearance.
+/// Parses the import layout. Returns one entry per case id and option, in the order of first
+/// appearance.
 /// Throws ImportError, naming `source_name`, the line and the column, for: an empty file (no
 /// header) or a header without data rows; a missing, unknown or repeated column; a row with
 /// more or fewer fields than the header; an empty case id; a value that is not a number, not
 /// finite or out of the range of a double (an empty contact_pressure is allowed); the same x
-/// twice for one case id (a duplicate node).
+/// twice for one case id (a duplicate node); an option that is not a label, a negative time or
+/// memory, a count that is not a whole number >= 0, and two rows of a case that give a per-case
+/// value differently.
 std::vector<ImportedCase> parse_import_csv(std::string_view text, std::string_view source_name);
 
-/// The import layout of `cases` (kImportHeader, then one row per node; numbers with 17
+/// The import layout of `cases` (kImportHeader, and the optional columns when any case has a
+/// value for them, given on its first row; then one row per node; numbers with 17
 /// significant digits, so that parse_import_csv reads back the same doubles).
 std::string import_csv_text(const std::vector<ImportedCase>& cases);
 

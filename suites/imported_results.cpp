@@ -4,9 +4,11 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <set>
 
 #include <fmt/format.h>
 
+#include "adapters/calculix/calculix_manifest.hpp"
 #include "schema/schema_error.hpp"
 #include "solver/mesh/mesh_sets.hpp"
 #include "solver/model.hpp"
@@ -85,6 +87,26 @@ std::vector<std::size_t> match_rows(const SurfaceNodes& surface, const ImportedC
   return row_of;
 }
 
+/// `basis` onto `spec`: a target or recovery the id does not state is the command line's; one
+/// the id states otherwise is an error.
+void apply_basis(CaseSpec& spec, const ImportBasis& basis, const ImportedCase& imported,
+                 std::string_view source) {
+  if (basis.target) {
+    if (spec.target == TargetKind::Rigid && *basis.target != TargetKind::Rigid)
+      fail_at(source, imported.line,
+              fmt::format("case '{}' names a rigid target, --target {}", imported.case_id,
+                          to_string(*basis.target)));
+    spec.target = *basis.target;
+  }
+  if (basis.recovery) {
+    if (spec.recovery != Recovery::spr && spec.recovery != *basis.recovery)
+      fail_at(source, imported.line,
+              fmt::format("case '{}' names the stress basis {}, --recovery {}", imported.case_id,
+                          to_string(spec.recovery), to_string(*basis.recovery)));
+    spec.recovery = *basis.recovery;
+  }
+}
+
 }  // namespace
 
 void require_imported_solver_name(std::string_view name) {
@@ -96,7 +118,7 @@ void require_imported_solver_name(std::string_view name) {
     throw SuiteInputError(printable(
         fmt::format("--solver-name '{}': expected 1 to 64 characters of [A-Za-z0-9._-]", name)));
   for (const SolverKind kind : values<SolverKind>()) {
-    if (name == to_string(kind))
+    if (name == to_string(kind) || name == adapters::calculix::kCalculixName)
       throw SuiteInputError(fmt::format(
           "--solver-name {}: the name of a solver of this suite; name the code that produced "
           "the results (e.g. abaqus-2024)",
@@ -105,7 +127,7 @@ void require_imported_solver_name(std::string_view name) {
 }
 
 CaseSpec imported_case_spec(const ImportedCase& imported, std::string_view solver_name,
-                            std::string_view source_name) {
+                            std::string_view source_name, const ImportBasis& basis) {
   CaseSpec spec;
   try {
     spec = schema::parse_case_id(imported.case_id);
@@ -115,14 +137,19 @@ CaseSpec imported_case_spec(const ImportedCase& imported, std::string_view solve
           "solver is --solver-name)",
           imported.case_id));
     validate_case(spec);  // --set keys and values, algorithms
-    require_exchangeable(spec);
+    require_importable(spec);
   } catch (const schema::SchemaError& e) {
     fail_at(source_name, imported.line, fmt::format("unknown case id: {}", e.what()));
   } catch (const SuiteInputError& e) {
     fail_at(source_name, imported.line, fmt::format("unknown case id: {}", e.what()));
   }
+  apply_basis(spec, basis, imported, source_name);
   spec.solver = SolverKind::imported;
   spec.solver_name = std::string(solver_name);
+  if (imported.values.option) {
+    spec.solver = SolverKind::external;
+    spec.solver_option = *imported.values.option;
+  }
   return spec;
 }
 
@@ -150,6 +177,11 @@ CaseResult grade_imported_case(const ProblemSetup& setup, const CaseSpec& spec,
   CaseResult result;
   result.spec = spec;
   result.status = CaseStatus::converged;
+  const ImportedCaseValues& v = imported.values;
+  result.wall_seconds = v.wall_seconds.value_or(0.0);
+  result.iterations = v.iterations.value_or(0);
+  result.n_equations = v.n_equations.value_or(0);
+  result.peak_rss_mb = v.peak_rss_mb.value_or(0.0);
   result.n_elements = setup.mesh_info.n_block_elements;
   result.element_size_h = setup.mesh_info.h_contact / setup.length_unit;
   sample_quantities(setup, surface_of_nodal_stresses(setup, nodal), pressures, result);
@@ -158,10 +190,17 @@ CaseResult grade_imported_case(const ProblemSetup& setup, const CaseSpec& spec,
 }
 
 std::vector<CaseResult> grade_imported(const std::vector<ImportedCase>& cases,
-                                       std::string_view solver_name, std::string_view source_name) {
+                                       std::string_view solver_name, std::string_view source_name,
+                                       const ImportBasis& basis) {
   std::vector<CaseSpec> specs;
   for (const auto& c : cases)
-    specs.push_back(imported_case_spec(c, solver_name, source_name));
+    specs.push_back(imported_case_spec(c, solver_name, source_name, basis));
+  std::set<std::string> ids;
+  for (std::size_t i = 0; i < specs.size(); ++i)
+    if (!ids.insert(case_id(specs[i])).second)
+      fail_at(source_name, cases[i].line,
+              fmt::format("case '{}' is, on the stated basis, the case {} again", cases[i].case_id,
+                          case_id(specs[i])));
   std::vector<CaseResult> results(cases.size());
   for (const auto& members : group_by_model(specs)) {
     const ProblemSetup setup = build_problem(specs[members.front()]);

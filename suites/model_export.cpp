@@ -176,9 +176,13 @@ std::string_view stress_component_name(StressComponent c) {
 void require_exchangeable(const CaseSpec& spec) {
   if (spec.target == TargetKind::Rigid)
     throw SuiteInputError(fmt::format(
-        "{}: a rigid target is not in the import/export layout (meshed targets only: use "
-        "--target discretized)",
+        "{}: a rigid target is not in the export layout (meshed targets only: use --target "
+        "discretized, or the solver protocol's case directory, docs/solver-protocol.md)",
         case_id(spec)));
+  require_importable(spec);
+}
+
+void require_importable(const CaseSpec& spec) {
   if (is_frictional(spec.problem))
     throw SuiteInputError(fmt::format(
         "{}: {} has friction, which the import/export layout does not carry (no load path, "

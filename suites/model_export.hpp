@@ -19,9 +19,15 @@
 
 namespace cs::suites {
 
-/// Throws SuiteInputError unless the layout can describe `spec`'s case: a discretized target
-/// (the layout has no rigid profile) and a frictionless problem (the layout has no load path,
-/// no shear stress and no stick/slip states).
+/// Throws SuiteInputError unless the import layout (suites/import_csv.hpp) can grade `spec`'s
+/// case from surface stresses: a frictionless problem (the layout has no load path, no shear
+/// stress and no stick/slip states) graded on its surface, not on the contact's nodal forces
+/// (IF_p, IF_a). A rigid target is allowed: the case is rebuilt with its profile.
+void require_importable(const CaseSpec& spec);
+
+/// Throws SuiteInputError unless the export layout can describe `spec`'s case: what
+/// require_importable() asks, and a discretized target (the layout has no rigid profile; the
+/// solver protocol's case directory has one, docs/solver-protocol.md).
 void require_exchangeable(const CaseSpec& spec);
 
 /// The directory of the model `spec` runs on: "H_p_C_Q4", then "_name=value" for each

@@ -7,7 +7,6 @@
 #include <fmt/format.h>
 
 #include "adapters/calculix/calculix_error.hpp"
-#include "schema/case_axes.hpp"
 #include "solver/contact/contact_surface.hpp"
 
 namespace cs::adapters::calculix {
@@ -74,75 +73,6 @@ void validate(const CalculixOptions& options) {
   if (!plain_stem(options.job_name))
     throw CalculixError("CalculiX: job name '" + options.job_name +
                         "' must be 1-64 characters of [A-Za-z0-9_-]");
-}
-
-namespace {
-
-std::string name(auto option) {
-  return std::string(schema::to_string(option));
-}
-
-}  // namespace
-
-std::vector<OptionMapping> calculix_option_mapping() {
-  return {
-      {name(schema::ContactKind::ns), "*CONTACT PAIR, TYPE=NODE TO SURFACE, SMALL SLIDING", "same",
-       "penalty springs at the slave nodes, paired once per increment (small sliding, like "
-       "ours); springs for clearances up to c0 = 0.1 (x sqrt of the spring area)"},
-      {name(schema::ContactKind::ss), "*CONTACT PAIR, TYPE=SURFACE TO SURFACE", "same",
-       "face-to-face penalty at integration points of the cut slave/master faces (not Gauss "
-       "points of the slave side alone)"},
-      {name(schema::ContactKind::mortar), "TYPE=MORTAR", "not supported",
-       "ccx 2.20 rejects mortar on 2D elements (the expanded elements are tied by MPCs)"},
-      {name(schema::Algorithm::PM), "*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=LINEAR, K = FKN E / h",
-       "same",
-       "our penalty law p = FKN E / h x penetration with one h (the finest of the surface); "
-       "ns adds CalculiX's tension sigma_inf = 0.25 % p at large clearance"},
-      {name(schema::Algorithm::AL), "PRESSURE-OVERCLOSURE=LINEAR, K = FKN E / h", "approximated",
-       "CalculiX has no augmented Lagrangian: the penalty alone, without augmentation"},
-      {name(schema::Algorithm::LMP), "penalty (HARD, K = 50 E)", "approximated",
-       "for node/surface-to-surface pairs ccx reduces HARD to a penalty with K = 50 E (its "
-       "default); its Lagrange-multiplier contact is mortar (not supported in 2D)"},
-      {name(schema::Algorithm::PLM), "penalty (HARD, K = 50 E)", "approximated",
-       "as LMP (no friction: they coincide)"},
-      {name(schema::Algorithm::MPC), "-", "not supported",
-       "*TIE and PRESSURE-OVERCLOSURE=TIED tie tangentially too (TIED needs friction data); "
-       "no frictionless bonded contact"},
-  };
-}
-
-CalculixOptions map_contact_settings(const solver::ContactSettings& settings,
-                                     const PenaltyScale& scale) {
-  if (!positive_finite(scale.youngs_modulus_E) || !positive_finite(scale.depth_h) ||
-      !positive_finite(scale.pressure_p))
-    throw CalculixError("CalculiX: the penalty scale needs positive finite E, h and p");
-  CalculixOptions options;
-  switch (settings.discretization) {
-    case solver::ContactDiscretization::NodeToSurface:
-      options.contact = CcxContactType::NodeToSurface;
-      break;
-    case solver::ContactDiscretization::SurfaceToSurface:
-      options.contact = CcxContactType::SurfaceToSurface;
-      break;
-    case solver::ContactDiscretization::Mortar:
-      throw UnsupportedByCalculix(
-          "CalculiX: mortar contact is not supported on 2D elements (ccx 2.20 rejects it)");
-  }
-  switch (settings.algorithm) {
-    case solver::ContactAlgorithm::Penalty:
-    case solver::ContactAlgorithm::AugmentedLagrangian:
-      options.behavior = CcxPressureOverclosure::Linear;
-      break;
-    case solver::ContactAlgorithm::LagrangeMultiplier:
-      options.behavior = CcxPressureOverclosure::Hard;
-      break;
-    case solver::ContactAlgorithm::MultipointConstraint:
-      throw UnsupportedByCalculix(
-          "CalculiX: MPC contact is not supported (no frictionless bonded contact in CalculiX)");
-  }
-  options.penalty_K = settings.fkn * scale.youngs_modulus_E / scale.depth_h;
-  options.tension_sigma_inf = 0.0025 * scale.pressure_p;
-  return options;
 }
 
 PenaltyScale penalty_scale(const solver::Model& model, const solver::ContactPair& pair,

@@ -1,5 +1,5 @@
 #pragma once
-// The CalculiX contact options the adapter writes, and how the study's options map onto them.
+// The CalculiX contact options the adapter writes into a deck.
 //
 // CalculiX 2.20 (ccx) offers, for 2D plane-strain and axisymmetric elements:
 //   *CONTACT PAIR, TYPE=NODE TO SURFACE   node-to-face penalty springs (slave nodes)
@@ -13,20 +13,13 @@
 //   TYPE=MORTAR (and LINMORTAR, PGMORTAR, PGLINMORTAR): ccx 2.20 rejects it on 2D elements
 //       ("*ERROR in catsmpcslavno: slave node ... is connected als dependent node in a MPC":
 //       the 2D elements are expanded into 3D ones tied by MPCs, which mortar forbids).
-// How the study's options map (calculix_option_mapping() returns this table as data; the
-// `list` command prints it and docs/calculix.md explains it):
-//   ns -> NODE TO SURFACE (SMALL SLIDING, c0 = 0.1), ss -> SURFACE TO SURFACE, mortar -> not
-//   supported;
-//   PM -> LINEAR with K = FKN E / h (our penalty law); AL -> LINEAR with the same K (CalculiX
-//   has no augmentation: approximated by the penalty); LMP, PLM -> HARD (approximated: a penalty
-//   with CalculiX's own stiffness); MPC -> not supported (CalculiX's *TIE and TIED behaviour
-//   also tie tangentially, and need friction data).
+// CalculiX's own options (labels, families, what each writes) are declared once, in
+// calculix_manifest.hpp; options_for() there turns a label into these CalculixOptions.
 
 #include <string>
 #include <vector>
 
 #include "solver/contact/contact_analysis.hpp"
-#include "solver/contact/contact_options.hpp"
 #include "solver/model.hpp"
 
 namespace cs::adapters::calculix {
@@ -54,7 +47,7 @@ struct CalculixOptions {
   CcxContactType contact = CcxContactType::NodeToSurface;
   CcxPressureOverclosure behavior = CcxPressureOverclosure::Linear;
   /// LINEAR: the slope K of the pressure-overclosure law (pressure / length), > 0. The suite
-  /// passes K = FKN E / h, our penalty law (see map_contact_settings()).
+  /// passes K = FKN E / h, our penalty law (see options_for()).
   double penalty_K = 0.0;
   /// LINEAR with NODE TO SURFACE: the tension sigma_inf at large clearance (pressure), > 0.
   /// CalculiX's manual advises about 0.25 % of the largest stress expected.
@@ -90,30 +83,12 @@ struct CalculixOptions {
 /// that is not a plain file stem), and UnsupportedByCalculix for mortar.
 void validate(const CalculixOptions& options);
 
-/// One row of the study-to-CalculiX mapping.
-struct OptionMapping {
-  std::string study_option;  ///< "ns", "ss", "mortar", "PM", "AL", "LMP", "PLM", "MPC"
-  std::string calculix;      ///< what is written, e.g. "*CONTACT PAIR, TYPE=NODE TO SURFACE"
-  std::string fidelity;      ///< "same", "approximated" or "not supported"
-  std::string note;          ///< why, in one line
-};
-
-/// The mapping of every contact option of the study (and mortar) to CalculiX, as data.
-std::vector<OptionMapping> calculix_option_mapping();
-
 /// The scales that turn the study's dimensionless settings into CalculiX's numbers.
 struct PenaltyScale {
   double youngs_modulus_E = 0.0;  ///< E of the contact (slave) body
   double depth_h = 0.0;           ///< underlying element depth of the contact surface
   double pressure_p = 1.0;        ///< the problem's pressure scale (for sigma_inf)
 };
-
-/// CalculiX options for the solver settings `settings` (discretization, algorithm, FKN):
-/// the pair type and behaviour of calculix_option_mapping(), K = FKN E / h and
-/// sigma_inf = 0.25 % p. Throws UnsupportedByCalculix for mortar and MPC, CalculixError for a
-/// non-positive E, h or p.
-CalculixOptions map_contact_settings(const solver::ContactSettings& settings,
-                                     const PenaltyScale& scale);
 
 /// The scale of `pair` on `model`: E of the contact surface's body and the smallest
 /// underlying element depth h of its sides (the finest elements, where contact is resolved).

@@ -44,8 +44,6 @@ std::vector<std::string> solvers_in(const ResultsIndex& index) {
 std::string solver_display_name(const std::string& solver) {
   if (solver == builtin_solver_label())
     return "ours";
-  if (solver == schema::to_string(schema::SolverKind::calculix))
-    return std::string(schema::entry(schema::SolverKind::calculix).label);
   return solver;
 }
 

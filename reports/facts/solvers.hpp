@@ -19,8 +19,8 @@ std::string builtin_solver_label();
 /// {"builtin", "calculix"}.
 std::vector<std::string> solvers_in(const ResultsIndex& index);
 
-/// How the report names a solver: "ours" for the built-in solver, "CalculiX" for calculix,
-/// else the imported code's name.
+/// How the report names a solver: "ours" for the built-in solver, else the label its results
+/// carry (an imported code's name, a registered code's "calculix:hard-ss").
 std::string solver_display_name(const std::string& solver);
 
 /// True when the document has cases of more than one solver.

@@ -220,7 +220,7 @@ std::string tally_table(const std::map<std::string, GradeTally>& tally,
   return table.n_rows() == 0 ? std::string() : table.render();
 }
 
-/// "ours, CalculiX and X".
+/// "ours, calculix:hard-ss and X".
 std::string names_of(const std::vector<std::string>& solvers, const char* last) {
   std::string out;
   for (std::size_t i = 0; i < solvers.size(); ++i)

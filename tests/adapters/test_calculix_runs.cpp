@@ -18,6 +18,7 @@
 #include <gtest/gtest.h>
 
 #include "adapters/calculix/calculix_error.hpp"
+#include "adapters/calculix/calculix_manifest.hpp"
 #include "adapters/calculix/frd_reader.hpp"
 #include "adapters/calculix/input_deck.hpp"
 #include "adapters/calculix/runner.hpp"
@@ -301,36 +302,36 @@ TEST(CalculixRuns, MissingCcxIsATypedError) {
   EXPECT_FALSE(std::filesystem::exists(dir.path() / "job.inp"));  // checked before writing
 }
 
-TEST(CalculixOptionMapping, StudyOptionsMapToCalculix) {
-  const auto table = calculix_option_mapping();
-  std::vector<std::string> names;
-  for (const auto& row : table) {
-    names.push_back(row.study_option);
-    EXPECT_FALSE(row.note.empty());
+// Requirement: CalculiX's options are declared once, by its own labels, each a penalty with
+// its discretization, and options_for() writes the deck each label names (K = FKN E / h for
+// LINEAR); an unknown label is refused naming the options, a non-positive scale likewise.
+TEST(CalculixManifest, OwnLabelsMapToTheirDeck) {
+  const protocol::SolverManifest& m = calculix_manifest();
+  EXPECT_EQ(m.name, kCalculixName);
+  std::vector<std::string> labels;
+  for (const auto& o : m.options) {
+    labels.push_back(o.label);
+    EXPECT_EQ(o.family, protocol::OptionFamily::penalty) << o.label;
+    EXPECT_EQ(o.discretization, o.label.substr(o.label.size() - 2)) << o.label;
   }
-  EXPECT_EQ(names,
-            (std::vector<std::string>{"ns", "ss", "mortar", "PM", "AL", "LMP", "PLM", "MPC"}));
-  solver::ContactSettings settings;
-  settings.discretization = solver::ContactDiscretization::NodeToSurface;
-  settings.algorithm = solver::ContactAlgorithm::Penalty;
-  settings.fkn = 10.0;
+  EXPECT_EQ(labels, (std::vector<std::string>{"linear-ns", "linear-ss", "hard-ns", "hard-ss"}));
+  EXPECT_EQ(m.option("hard-ss").description, "penalty (HARD, K = 50 E), SURFACE TO SURFACE");
+  EXPECT_FALSE(m.supports_all({protocol::Support::rigid_target}));
   test::PatchSpec s;
   const solver::Model model = test::patch_model(s);
   const PenaltyScale scale = penalty_scale(model, test::patch_pair(), 2.0);
   EXPECT_EQ(scale.youngs_modulus_E, s.E);
   EXPECT_TRUE(Near(scale.depth_h, 0.25, {1e-12, 0}));  // area / side length of the 4 x 4 block
-  const CalculixOptions pm = map_contact_settings(settings, scale);
-  EXPECT_EQ(pm.contact, CcxContactType::NodeToSurface);
-  EXPECT_EQ(pm.behavior, CcxPressureOverclosure::Linear);
-  EXPECT_TRUE(Near(pm.penalty_K, 10.0 * s.E / 0.25, {1e-12, 0}));
-  EXPECT_EQ(pm.tension_sigma_inf, 0.005);
-  settings.algorithm = solver::ContactAlgorithm::LagrangeMultiplier;
-  EXPECT_EQ(map_contact_settings(settings, scale).behavior, CcxPressureOverclosure::Hard);
-  settings.algorithm = solver::ContactAlgorithm::MultipointConstraint;
-  EXPECT_THROW(map_contact_settings(settings, scale), UnsupportedByCalculix);
-  settings.algorithm = solver::ContactAlgorithm::Penalty;
-  settings.discretization = solver::ContactDiscretization::Mortar;
-  EXPECT_THROW(map_contact_settings(settings, scale), UnsupportedByCalculix);
+  const CalculixOptions linear = options_for("linear-ns", 10.0, scale);
+  EXPECT_EQ(linear.contact, CcxContactType::NodeToSurface);
+  EXPECT_EQ(linear.behavior, CcxPressureOverclosure::Linear);
+  EXPECT_TRUE(Near(linear.penalty_K, 10.0 * s.E / 0.25, {1e-12, 0}));
+  EXPECT_EQ(linear.tension_sigma_inf, 0.005);
+  const CalculixOptions hard = options_for("hard-ss", 10.0, scale);
+  EXPECT_EQ(hard.contact, CcxContactType::SurfaceToSurface);
+  EXPECT_EQ(hard.behavior, CcxPressureOverclosure::Hard);
+  EXPECT_THROW(options_for("mortar", 10.0, scale), protocol::ManifestError);
+  EXPECT_THROW(options_for("linear-ss", 0.0, scale), CalculixError);
 }
 
 }  // namespace

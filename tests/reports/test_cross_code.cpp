@@ -45,6 +45,9 @@ schema::ResultsDocument document(std::vector<CaseResult> cases) {
   return doc;
 }
 
+/// CalculiX, a registered code: its cases carry its option (here linear-ss, its LINEAR penalty).
+constexpr SolverKind kCalculix = SolverKind::external;
+
 /// An H_p case (Q4, PM ss) of `solver` with sigma_c at `error` percent of the exact value.
 CaseResult hertz_case(SolverKind solver, MeshLevel mesh, double error, double wall = 1.0,
                       double peak = 10.0, CaseStatus status = CaseStatus::converged) {
@@ -55,6 +58,10 @@ CaseResult hertz_case(SolverKind solver, MeshLevel mesh, double error, double wa
   c.spec.algorithm = schema::Algorithm::PM;
   c.spec.contact = schema::ContactKind::ss;
   c.spec.solver = solver;
+  if (solver == kCalculix) {
+    c.spec.solver_name = "calculix";
+    c.spec.solver_option = "linear-ss";
+  }
   c.status = status;
   c.wall_seconds = wall;
   c.peak_rss_mb = peak;
@@ -91,7 +98,7 @@ std::vector<CaseResult> hertz_pair(bool calculix_times_out = false) {
     const int i = static_cast<int>(m);
     cases.push_back(hertz_case(SolverKind::builtin, m, ours[i], 1.0 * (1 << i), 10.0 * (i + 1)));
     const bool timeout = calculix_times_out && m == MeshLevel::F;
-    cases.push_back(hertz_case(SolverKind::calculix, m, theirs[i], 10.0 * (1 << i), 30.0 * (i + 1),
+    cases.push_back(hertz_case(kCalculix, m, theirs[i], 10.0 * (1 << i), 30.0 * (i + 1),
                                timeout ? CaseStatus::timeout : CaseStatus::converged));
   }
   return cases;
@@ -102,7 +109,7 @@ std::vector<CaseResult> hertz_pair(bool calculix_times_out = false) {
 TEST(CrossCodeRows, SolversOursFirstAndNoSectionForOneSolver) {
   const auto doc = document(hertz_pair());
   const ResultsIndex index(doc);
-  EXPECT_EQ(solvers_in(index), (std::vector<std::string>{"builtin", "calculix"}));
+  EXPECT_EQ(solvers_in(index), (std::vector<std::string>{"builtin", "calculix:linear-ss"}));
   EXPECT_TRUE(is_cross_code(index));
 
   std::vector<CaseResult> ours_only;
@@ -124,8 +131,8 @@ TEST(CrossCodeRows, EachSolverGetsItsOwnRow) {
   const Option pm_ss{schema::Algorithm::PM, schema::ContactKind::ss};
   const auto* ours =
       solver_row(index, "builtin", ProblemId::H_p, Quantity::sigma_c, Element::Q4, pm_ss);
-  const auto* theirs =
-      solver_row(index, "calculix", ProblemId::H_p, Quantity::sigma_c, Element::Q4, pm_ss);
+  const auto* theirs = solver_row(index, "calculix:linear-ss", ProblemId::H_p, Quantity::sigma_c,
+                                  Element::Q4, pm_ss);
   ASSERT_NE(ours, nullptr);
   ASSERT_NE(theirs, nullptr);
   EXPECT_NEAR(*ours->errors[2], 0.5, 1e-9);
@@ -152,7 +159,7 @@ TEST(CrossCodeGradeTable, GradesSideBySideWithTheStudysCell) {
 
   const auto tally = cross_code_grade_tally(index, study());
   EXPECT_EQ(tally.at("builtin").by_class.at("e, c"), 1);
-  EXPECT_EQ(tally.at("calculix").by_class.at("g"), 1);
+  EXPECT_EQ(tally.at("calculix:linear-ss").by_class.at("g"), 1);
 }
 
 // Requirement: a case CalculiX did not finish on F shows as its status with the mesh, and the
@@ -206,9 +213,9 @@ TEST(CrossCodeAppendix, ValuesPerMeshAndSolver) {
     return t.cell(t.rows()[0][0], name).value_or("no column " + name);
   };
   EXPECT_EQ(col("Exact"), fmt::format("{:.4f}", kHertzExact));
-  EXPECT_EQ(col("C CalculiX").substr(0, 6), fmt::format("{:.4f}", kHertzExact * 1.08));
-  EXPECT_NE(col("C CalculiX").find("+8.00 %"), std::string::npos);
-  EXPECT_EQ(col("F CalculiX"), "timeout");
+  EXPECT_EQ(col("C calculix:linear-ss").substr(0, 6), fmt::format("{:.4f}", kHertzExact * 1.08));
+  EXPECT_NE(col("C calculix:linear-ss").find("+8.00 %"), std::string::npos);
+  EXPECT_EQ(col("F calculix:linear-ss"), "timeout");
   EXPECT_EQ(col("F ours").substr(0, 6), fmt::format("{:.4f}", kHertzExact * 1.005));
 }
 
@@ -218,14 +225,14 @@ TEST(CrossCodeAppendix, ErrorsAreSigned) {
   std::vector<CaseResult> cases;
   for (const auto m : kMeshes) {
     cases.push_back(hertz_case(SolverKind::builtin, m, 1.0));
-    cases.push_back(hertz_case(SolverKind::calculix, m, -52.26));
+    cases.push_back(hertz_case(kCalculix, m, -52.26));
   }
   const auto doc = document(cases);
   const ResultsIndex index(doc);
   const auto tables = build_cross_code_appendix(index, study());
   ASSERT_EQ(tables.size(), 1U);
   const auto& t = tables[0].second;
-  const std::string cell = t.cell(t.rows()[0][0], "F CalculiX").value_or("");
+  const std::string cell = t.cell(t.rows()[0][0], "F calculix:linear-ss").value_or("");
   EXPECT_NE(cell.find("(−52.3 %)"), std::string::npos) << cell;
   const std::string md = cross_code_section(index, study(), {}, {});
   EXPECT_EQ(md.find("+52.3"), std::string::npos);
@@ -241,7 +248,7 @@ TEST(CrossCodeFigure, OneCurvePerSolverAndTheExactOne) {
   ASSERT_EQ(panels.size(), 1U);
   ASSERT_EQ(panels[0].curves.size(), 3U);
   EXPECT_EQ(panels[0].curves[0].title, "ours");
-  EXPECT_EQ(panels[0].curves[1].title, "CalculiX");
+  EXPECT_EQ(panels[0].curves[1].title, "calculix:linear-ss");
   EXPECT_EQ(panels[0].curves[2].title, "exact");
   EXPECT_NEAR(panels[0].curves[1].xy[0].second, kHertzExact * 1.02, 1e-12);
 
@@ -250,7 +257,7 @@ TEST(CrossCodeFigure, OneCurvePerSolverAndTheExactOne) {
   const auto panels2 = cross_code_profile_panels(index2);
   ASSERT_EQ(panels2.size(), 1U);
   EXPECT_EQ(panels2[0].curves.size(), 2U);
-  EXPECT_EQ(panels2[0].missing, std::vector<std::string>{"CalculiX (timeout)"});
+  EXPECT_EQ(panels2[0].missing, std::vector<std::string>{"calculix:linear-ss (timeout)"});
 }
 
 // Requirement: the report of a document with two solvers has the cross-code section, with the
@@ -259,19 +266,20 @@ TEST(CrossCodeSection, InTheReportOnlyWithSeveralSolvers) {
   const auto doc = document(hertz_pair());
   const ResultsIndex index(doc);
   const std::vector<SolverOptionMapping> mapping{
-      {"calculix", "PM", "PRESSURE-OVERCLOSURE=LINEAR", "same", "penalty"}};
+      {"calculix:linear-ss", "PM", "PRESSURE-OVERCLOSURE=LINEAR", "same", "penalty"}};
   const std::string md = cross_code_section(index, study(), {}, mapping);
-  EXPECT_NE(md.find("## Cross-code comparison: ours and CalculiX"), std::string::npos);
+  EXPECT_NE(md.find("## Cross-code comparison: ours and calculix:linear-ss"), std::string::npos);
   EXPECT_NE(md.find("| PM | PRESSURE-OVERCLOSURE=LINEAR | same | penalty |"), std::string::npos);
   EXPECT_NE(md.find("time CalculiX/ours"), std::string::npos);
   const ReportContent content{.cross_code_md = md, .companions = {{"x/report.md", "T"}}};
   const auto appendices = appendix_pages(index, study(), content);
   const std::string report = report_markdown(index, study(), content, {}, appendices);
   EXPECT_NE(report.find("(appendix-cross-code.md)"), std::string::npos);
-  EXPECT_EQ(report.rfind("# contact-suite report: ours and CalculiX beside the study's ANSYS "
-                         "results\n",
-                         0),
-            0u);
+  EXPECT_EQ(
+      report.rfind("# contact-suite report: ours and calculix:linear-ss beside the study's ANSYS "
+                   "results\n",
+                   0),
+      0u);
   EXPECT_NE(report.find("\nAlso: [T](x/report.md).\n"), std::string::npos);
 }
 
@@ -283,7 +291,7 @@ TEST(CrossCodeSection, RealRunOfBothSolversOnTheCoarseMesh) {
   if (std::system("command -v ccx > /dev/null 2>&1") != 0)
     GTEST_SKIP() << "ccx not on PATH (ci/install-deps.sh installs calculix-ccx)";
   std::vector<suites::CaseSpec> specs;
-  for (const auto solver : {SolverKind::builtin, SolverKind::calculix}) {
+  for (const auto solver : {SolverKind::builtin, kCalculix}) {
     suites::CaseSpec s;
     s.problem = ProblemId::H_p;
     s.mesh = MeshLevel::C;
@@ -291,12 +299,16 @@ TEST(CrossCodeSection, RealRunOfBothSolversOnTheCoarseMesh) {
     s.algorithm = schema::Algorithm::PM;
     s.contact = schema::ContactKind::ns;
     s.solver = solver;
+    if (solver == kCalculix) {
+      s.solver_name = "calculix";
+      s.solver_option = "linear-ns";
+    }
     specs.push_back(s);
   }
   suites::RunnerOptions options;
   options.jobs = 1;
   suites::ExecutorOptions exec;
-  exec.calculix_time_limit_seconds = 300;
+  exec.external_time_limit_seconds = 300;
   auto results = suites::run_cases(specs, suites::executor_factory(exec), options);
   ASSERT_EQ(results.size(), 2U);
   for (const auto& r : results)

@@ -189,7 +189,7 @@ INSTANTIATE_TEST_SUITE_P(
                       BadInput{"other schema", sample_with("schema", "someone/else"),
                                "not a contact-suite results file"},
                       BadInput{"older version", sample_with("schema_version", 2),
-                               "schema_version: 2 is not supported (this build reads 3)"},
+                               "schema_version: 2 is not supported (this build reads 3 and 4)"},
                       BadInput{"no cases", sample_with("cases", 7), ".cases: is not an array"},
                       BadInput{
                           "bad case", sample_with_bad_case(),

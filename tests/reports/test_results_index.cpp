@@ -119,7 +119,9 @@ TEST(ResultsIndex, IndexesADocumentBuiltInMemory) {
   doc.rows.push_back(row);
   schema::RowVerdict ccx = row;
   ccx.spec.target = schema::TargetKind::Discretized;
-  ccx.spec.solver = schema::SolverKind::calculix;
+  ccx.spec.solver = schema::SolverKind::external;
+  ccx.spec.solver_name = "calculix";
+  ccx.spec.solver_option = "hard-ss";
   ccx.id = schema::case_key(ccx.spec) + "/sigma_c";
   doc.rows.push_back(ccx);
 
@@ -127,7 +129,7 @@ TEST(ResultsIndex, IndexesADocumentBuiltInMemory) {
   EXPECT_TRUE(index.baseline_rows().empty());
   ASSERT_EQ(index.variant_rows().size(), 2u);
   EXPECT_EQ(variant_of(index.variant_rows()[0]->spec), "rigid");
-  EXPECT_EQ(variant_of(index.variant_rows()[1]->spec), "@calculix");
+  EXPECT_EQ(variant_of(index.variant_rows()[1]->spec), "@calculix:hard-ss");
   EXPECT_EQ(index.state(row, MeshLevel::M), MeshState::not_converged);
   EXPECT_EQ(index.state(row, MeshLevel::F), MeshState::missing);
   EXPECT_EQ(index.quantity_of(row, MeshLevel::M)->study_exact, 10.9571);

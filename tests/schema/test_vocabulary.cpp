@@ -40,7 +40,7 @@ TEST(SchemaVocabulary, EveryAxisRoundTrips) {
   expect_round_trip<ContactKind>(3);
   expect_round_trip<TargetKind>(2);
   expect_round_trip<Recovery>(3);
-  expect_round_trip<SolverKind>(4);
+  expect_round_trip<SolverKind>(3);  // builtin, imported, external (CalculiX is external)
   expect_round_trip<Quantity>(9);
   expect_round_trip<Grade>(4);
   expect_round_trip<CaseStatus>(4);
@@ -106,8 +106,12 @@ TEST(SchemaCaseSpec, CaseIdParsesBackToItsCase) {
   s.recovery = Recovery::extrapolated;
   s.overrides = {{"fkn", 0.1}, {"nu", 1.0 / 3.0}, {"p_over_E", 1e-6}};
   EXPECT_EQ(parse_case_id(case_id(s)), s) << case_id(s);
-  s.solver = SolverKind::calculix;
+  s.solver = SolverKind::external;
+  s.solver_name = "calculix";
+  s.solver_option = "hard-ss";
+  EXPECT_EQ(case_id(s).substr(case_id(s).rfind('/')), "/@calculix:hard-ss");
   EXPECT_EQ(parse_case_id(case_id(s)), s);
+  s.solver_option.clear();
   s.solver = SolverKind::imported;
   s.solver_name = "abaqus-2024.1";
   EXPECT_EQ(parse_case_id(case_id(s)), s) << case_id(s);
@@ -130,6 +134,7 @@ TEST(SchemaCaseSpec, MalformedCaseIdsAreRefusedNamingTheField) {
       {"H_p/C/Q4/PM/ss/fkn=1/fkn=2", "given twice"},
       {"H_p/C/Q4/PM/ss/@", "not a solver suffix"},
       {"H_p/C/Q4/PM/ss/@builtin", "not a solver suffix"},
+      {"H_p/C/Q4/PM/ss/@calculix", "names CalculiX without its option"},
       {"H_p/C/Q4/PM/ss/@a/@b", "unexpected field '@b'"},
       {"H_p/C/Q4/PM/ss/extrapolated/rigid", "unexpected field 'rigid'"},
       {"H_p/C/Q4/PM/ss/fkn=10.0", "'H_p/C/Q4/PM/ss/fkn=10'"},

@@ -141,7 +141,7 @@ TEST(ImportCsv, ArbitraryBytesGiveRowsOrAnImportError) {
 
 /// The import rows of a solved case, as `run --surface-csv` writes them.
 ImportedCase rows_of(const CaseResult& r, const std::string& id) {
-  ImportedCase c{id, 1, {}};
+  ImportedCase c{id, 1, {}, {}};
   int line = 2;
   for (const auto& n : r.surface_nodes)
     c.rows.push_back({n.x, n.sigma_z, n.sigma_x, n.contact_pressure, line++});
@@ -214,10 +214,11 @@ TEST(ImportedResults, RowsThatDoNotMatchTheSurfaceAreRefused) {
   EXPECT_NE(grade_error({twice}).find("again (line 2)"), std::string::npos) << grade_error({twice});
 
   const std::vector<std::pair<std::string, std::string>> ids{
-      {"P_p/C/Q4/PM/ss/@calculix", "names a solver"},
+      {"P_p/C/Q4/PM/ss/@calculix", "without its option"},
+      {"P_p/C/Q4/PM/ss/@abaqus", "names a solver"},
       {"P_x/C/Q4/PM/ss", "unknown case id: case id 'P_x/C/Q4/PM/ss': unknown problem"},
       {"P_p/C/Q4/PM/ss/nonsense=1", "unknown case id"},
-      {"P_p/C/Q4/PM/ss/rigid", "rigid target"},
+      {"IF_p/C/Q4/PM/ss", "nodal forces"},
       {"FP_p/C/Q4/PM/ss", "has friction"},
       {"P_p/C/Q4/PM/ss/fkn=10.0", "'P_p/C/Q4/PM/ss/fkn=10'"},
   };
@@ -226,6 +227,111 @@ TEST(ImportedResults, RowsThatDoNotMatchTheSurfaceAreRefused) {
     c.case_id = id;
     EXPECT_NE(grade_error({c}).find(expected), std::string::npos) << id << ": " << grade_error({c});
   }
+}
+
+// Requirement (issue 24): the optional per-case columns are read (own option label, time,
+// iterations, equations, memory); the option is part of the case (one id, two options: two
+// cases), the others may be given on one row of a case only and must agree where two rows give
+// them; all are checked as labels, counts and amounts, and written back so that they read back
+// the same.
+TEST(ImportCsv, OptionalPerCaseColumns) {
+  const std::string h =
+      "case_id,x,sigma_z,sigma_x,contact_pressure,option,wall_seconds,"
+      "iterations,n_equations,peak_rss_mb\n";
+  const auto cases = parse_import_csv(
+      h + "H_p/C/Q4/AL/ss,0,-1,-1,1,nitsche,2.5,7,1234,88.5\n"
+          "H_p/C/Q4/AL/ss,0.5,-1,-1,1,nitsche,,,,\n"
+          "H_p/C/Q4/AL/ss,0,-1,-1,1,integral_al,,,,\n",  // the same id, another option
+      "f.csv");
+  ASSERT_EQ(cases.size(), 2u);
+  EXPECT_EQ(cases[1].values.option, "integral_al");
+  EXPECT_EQ(cases[1].rows.size(), 1u);
+  const ImportedCaseValues& v = cases[0].values;
+  EXPECT_EQ(v.option, "nitsche");
+  EXPECT_EQ(v.wall_seconds, 2.5);
+  EXPECT_EQ(v.iterations, 7);
+  EXPECT_EQ(v.n_equations, 1234);
+  EXPECT_EQ(v.peak_rss_mb, 88.5);
+  const auto again = parse_import_csv(import_csv_text(cases), "again.csv");
+  ASSERT_EQ(again.size(), 2u);
+  EXPECT_EQ(again[0].values, v);
+  EXPECT_EQ(again[0].rows.size(), 2u);
+  EXPECT_EQ(again[1].values, cases[1].values);
+  // Only some optional columns, in any order.
+  const auto some = parse_import_csv(
+      "iterations,case_id,x,sigma_z,sigma_x,contact_pressure\n3,P_p/C/Q4/PM/ss,0,-1,-1,\n", "f");
+  EXPECT_EQ(some[0].values.iterations, 3);
+  EXPECT_FALSE(some[0].values.option.has_value());
+  for (const auto& [rows, expected] : std::vector<std::pair<std::string, std::string>>{
+           {"H_p/C/Q4/AL/ss,0,-1,-1,1,a b,,,,\n",
+            "f.csv:2: column 6 (option): 'a b' is not an option label"},
+           {"H_p/C/Q4/AL/ss,0,-1,-1,1,,-1,,,\n", "column 7 (wall_seconds): '-1' is negative"},
+           {"H_p/C/Q4/AL/ss,0,-1,-1,1,,,2.5,,\n", "column 8 (iterations): '2.5' is not a whole"},
+           {"H_p/C/Q4/AL/ss,0,-1,-1,1,,,,-3,\n", "column 9 (n_equations): '-3' is not a whole"},
+           {"H_p/C/Q4/AL/ss,0,-1,-1,1,,,,,nan\n", "column 10 (peak_rss_mb): 'nan' is not a"},
+           {"H_p/C/Q4/AL/ss,0,-1,-1,1,,,4,,\nH_p/C/Q4/AL/ss,1,-1,-1,1,,,5,,\n",
+            "f.csv:3: column 8 (iterations): case 'H_p/C/Q4/AL/ss': iterations differs"},
+           {"H_p/C/Q4/AL/ss,0,-1,-1,1,a,,,,\nH_p/C/Q4/AL/ss,0,-1,-1,1,a,,,,\n",
+            "duplicate node: case 'H_p/C/Q4/AL/ss' (option a) already has x = 0 on line 2"},
+           {"H_p/C/Q4/AL/ss,0,-1,-1,1\n", "5 fields, the header has 10"},
+       })
+    EXPECT_NE(error_of(h + rows).find(expected), std::string::npos) << rows << error_of(h + rows);
+}
+
+// Requirement (issue 24): grading records the target and the stress basis each id names or the
+// command line states, the code's own option label (as <name>:<label>), and the case's time,
+// iterations, equations and memory; a rigid target is graded on the rigid case's surface; an id
+// that contradicts the stated target or basis, and two ids that become one case, are refused.
+TEST(ImportedResults, TargetBasisLabelAndCostAreRecorded) {
+  CaseSpec spec;
+  spec.problem = ProblemId::H_p;
+  spec.algorithm = Algorithm::PM;
+  spec.target = TargetKind::Rigid;
+  ProblemExecutor executor(spec);
+  const CaseResult direct = executor.run(spec);
+  ASSERT_EQ(direct.status, CaseStatus::converged) << direct.reason;
+  CaseSpec unstated = spec;
+  unstated.target = TargetKind::Discretized;
+  ImportedCase c = rows_of(direct, case_id(unstated));  // the id does not say rigid
+  c.values.option = "my-penalty";
+  c.values.wall_seconds = 1.5;
+  c.values.iterations = 9;
+  c.values.n_equations = 321;
+  c.values.peak_rss_mb = 12.0;
+  const auto graded = grade_imported({c}, "code", "t.csv", {TargetKind::Rigid, Recovery::own});
+  ASSERT_EQ(graded.size(), 1u);
+  const CaseResult& g = graded[0];
+  EXPECT_EQ(case_id(g.spec), "H_p/C/Q4/PM/ss/rigid/own/@code:my-penalty");
+  EXPECT_EQ(g.wall_seconds, 1.5);
+  EXPECT_EQ(g.iterations, 9);
+  EXPECT_EQ(g.n_equations, 321);
+  EXPECT_EQ(g.peak_rss_mb, 12.0);
+  ASSERT_EQ(g.quantities.size(), direct.quantities.size());
+  for (std::size_t q = 0; q < g.quantities.size(); ++q)  // the rigid case's sampling, exactly
+    EXPECT_EQ(g.quantities[q].value, direct.quantities[q].value);
+
+  ImportedCase rigid = rows_of(direct, case_id(spec));  // the id says rigid
+  const auto error = [&](const std::vector<ImportedCase>& cases, const ImportBasis& basis) {
+    try {
+      grade_imported(cases, "code", "t.csv", basis);
+    } catch (const SuiteInputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  EXPECT_NE(error({rigid}, {TargetKind::Discretized, std::nullopt})
+                .find("names a rigid target, --target discretized"),
+            std::string::npos);
+  CaseSpec extrapolated = spec;
+  extrapolated.recovery = Recovery::extrapolated;
+  EXPECT_NE(error({rows_of(direct, case_id(extrapolated))}, {std::nullopt, Recovery::own})
+                .find("names the stress basis extrapolated, --recovery own"),
+            std::string::npos);
+  CaseSpec own = spec;
+  own.recovery = Recovery::own;
+  EXPECT_NE(
+      error({rigid, rows_of(direct, case_id(own))}, {std::nullopt, Recovery::own}).find("again"),
+      std::string::npos);
 }
 
 TEST(ImportedResults, SolverNamesAreChecked) {
