@@ -61,6 +61,8 @@ void add_row(OptionCell& cell, const RowFacts& f) {
   if (f.errors[1])
     cell.largest_m_to_f_change = std::max(cell.largest_m_to_f_change, std::abs(e - *f.errors[1]));
   cell.n_not_credible += f.credible ? 0 : 1;
+  for (const auto& failure : f.failures)
+    cell.failed_checks.insert(failure.check);
   cell.n_luck += f.luck ? 1 : 0;
   cell.n_not_converged += f.fine_converged ? 0 : 1;
 }
@@ -102,10 +104,32 @@ std::vector<OptionCell> make_cells(const ResultsIndex& index,
   return out;
 }
 
+/// The checks every cell fails (none for the flat punch, graded by divergence).
+std::vector<std::string> common_failures(const SituationVerdict& v) {
+  if (v.singular || v.cells.empty())
+    return {};
+  std::set<std::string> common = v.cells.front().failed_checks;
+  for (const auto& c : v.cells) {
+    std::erase_if(common, [&](const std::string& check) { return !c.failed_checks.contains(check); });
+  }
+  return {common.begin(), common.end()};
+}
+
+/// A cell to avoid: graded u, or failing an interface check that some other option passes.
+bool fails_on_its_own(const OptionCell& c, const std::vector<std::string>& common) {
+  const bool own_failure = std::any_of(c.failed_checks.begin(), c.failed_checks.end(),
+                                       [&](const std::string& check) {
+                                         return std::find(common.begin(), common.end(), check) ==
+                                                common.end();
+                                       });
+  return own_failure || c.worst_grade == schema::Grade::u;
+}
+
 void rank(SituationVerdict& v) {
+  v.common_failures = common_failures(v);
   for (const auto& c : v.cells) {
     const bool fails = v.singular ? c.n_eq47 < static_cast<int>(c.singular_rows.size())
-                                  : (c.n_not_credible > 0 || c.worst_grade == schema::Grade::u);
+                                  : fails_on_its_own(c, v.common_failures);
     if (fails)
       v.avoid.push_back(&c);
     if (!c.evidence || v.singular || !c.worst_grade)

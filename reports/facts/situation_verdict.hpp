@@ -7,6 +7,7 @@
 // change one refinement makes to the same rows, the noise a ranking would have to beat.
 
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -26,6 +27,7 @@ struct OptionCell {
   std::optional<double> min_error, max_error;         ///< signed range of the F errors
   double largest_m_to_f_change = 0.0;                 ///< max |e_F - e_M| over its rows (points)
   int n_not_credible = 0, n_luck = 0, n_not_converged = 0;
+  std::set<std::string> failed_checks;  ///< the interface checks its F cases fail, by name
   bool evidence = false;         ///< every row is evidence (RowFacts::evidence)
   int n_eq47 = 0, n_strict = 0;  ///< the flat punch: rows passing each divergence verdict
 };
@@ -38,7 +40,11 @@ struct SituationVerdict {
   std::vector<schema::ProblemId> problems;
   std::vector<OptionCell> cells;         ///< every option set present
   std::vector<const OptionCell*> best;   ///< evidence cells of the best grade (ties)
-  std::vector<const OptionCell*> avoid;  ///< u, not credible, or failing divergence
+  /// u, failing an interface check not in `common_failures`, or failing divergence.
+  std::vector<const OptionCell*> avoid;
+  /// The interface checks that every cell fails: a cause shared by all options (the model, the
+  /// mesh or the exact solution), which makes no cell evidence but is no reason to avoid one.
+  std::vector<std::string> common_failures;
   std::optional<schema::Grade> best_grade;
   std::optional<double> best_min, best_max;  ///< signed F error range over `best`
   /// What a ranking of `best` would have to beat (points): the largest M -> F change over its

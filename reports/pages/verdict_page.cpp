@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <map>
 #include <set>
 
@@ -55,14 +56,17 @@ TemplateData matrix(const std::vector<SituationVerdict>& situations, Element ele
 }
 
 /// The largest measure of each failed check over the cells, e.g. "force balance up to 19.2".
-std::string failure_evidence(const std::vector<const OptionCell*>& cells) {
+/// Only the checks `shown` accepts are listed.
+std::string failure_evidence(const std::vector<const OptionCell*>& cells,
+                             const std::function<bool(const std::string&)>& shown) {
   std::map<std::string, double> worst;
   double worst_error = 0.0;
   int eq47_failures = 0, singular = 0;
   for (const OptionCell* c : cells) {
     for (const RowFacts* f : c->rows) {
       for (const auto& failure : f->failures)
-        worst[failure.check] = std::max(worst[failure.check], failure.measure.value_or(0.0));
+        if (shown(failure.check))
+          worst[failure.check] = std::max(worst[failure.check], failure.measure.value_or(0.0));
     }
     if (c->worst_error && std::abs(*c->worst_error) > std::abs(worst_error))
       worst_error = *c->worst_error;
@@ -82,16 +86,39 @@ std::string failure_evidence(const std::vector<const OptionCell*>& cells) {
   return out;
 }
 
+/// "pressure outside the patch" or "force balance and tensile pressure".
+std::string checks_label(const std::vector<std::string>& checks) {
+  std::string out;
+  for (std::size_t i = 0; i < checks.size(); ++i)
+    out += (i == 0 ? "" : i + 1 == checks.size() ? " and " : ", ") + checks[i];
+  return out;
+}
+
 TemplateData failures(const SituationVerdict& s) {
+  const auto common = [&](const std::string& check) {
+    return std::find(s.common_failures.begin(), s.common_failures.end(), check) !=
+           s.common_failures.end();
+  };
   std::map<OptionFamily, std::vector<const OptionCell*>> by_family;
   for (const OptionCell* c : s.avoid)
     by_family[c->family].push_back(c);
   TemplateData list{TemplateData::type::list};
+  if (!s.common_failures.empty()) {
+    std::vector<const OptionCell*> all;
+    for (const auto& c : s.cells)
+      all.push_back(&c);
+    TemplateData d;
+    d.set("situation", s.title);
+    d.set("options", "every option alike");
+    d.set("evidence", failure_evidence(all, common));
+    list.push_back(d);
+  }
   for (const auto& [family, cells] : by_family) {
     TemplateData d;
     d.set("situation", s.title);
     d.set("options", cells_label(cells));
-    d.set("evidence", failure_evidence(cells));
+    d.set("evidence", failure_evidence(
+        cells, [&](const std::string& check) { return !common(check); }));
     list.push_back(d);
   }
   return list;
@@ -105,6 +132,8 @@ TemplateData advice(const SituationVerdict& s) {
   d.set("best", cells_label(s.best));
   d.set("has_avoid", !s.avoid.empty());
   d.set("avoid", cells_label(s.avoid));
+  d.set("has_common", !s.common_failures.empty());
+  d.set("common", checks_label(s.common_failures));
   if (s.best_grade && s.best_min && s.best_max) {
     const double spread = *s.best_max - *s.best_min;
     d.set("grade", std::string(schema::to_string(*s.best_grade)));

@@ -242,6 +242,54 @@ TEST(VerdictPage, TiesAreEvidenceOfTheBestGrade) {
 }
 
 // Requirement: the first screen of the study's battery is at most 60 lines.
+/// A rounded-punch row on F: e, converged, failing the named interface checks.
+RowFacts rounded_punch_row(Algorithm algorithm, std::vector<std::string> checks) {
+  RowFacts f;
+  f.problem = schema::ProblemId::S_1;
+  f.quantity = schema::Quantity::sigma_c;
+  f.option = {algorithm, schema::ContactKind::ss};
+  f.errors = {2.0, 1.0, 0.5};
+  f.grade = schema::Grade::e;
+  f.fine_converged = true;
+  for (auto& check : checks)
+    f.failures.push_back({std::move(check), 3.0});
+  f.credible = f.failures.empty();
+  return f;
+}
+
+// Requirement: a check that every option fails alike (e.g. pressure a few elements beyond the
+// exact patch edge for every option and target) makes no option evidence, but is no reason to
+// avoid one: only an option that fails a check some other option passes, or grades u, is to be
+// avoided; the page says the failure is shared.
+TEST(VerdictPage, ACheckEveryOptionFailsIsSharedNotAReasonToAvoidOne) {
+  const std::string outside = "pressure outside the patch";
+  const std::vector<RowFacts> rows = {
+      rounded_punch_row(Algorithm::LMP, {outside}),
+      rounded_punch_row(Algorithm::AL, {outside, "tensile pressure"}),
+      rounded_punch_row(Algorithm::MPC, {outside})};
+  const auto situations = situation_verdicts(battery().index, rows, {});
+  ASSERT_EQ(situations.size(), 1U);
+  const SituationVerdict& s = situations[0];
+  EXPECT_EQ(s.common_failures, std::vector<std::string>{outside});
+  EXPECT_TRUE(s.best.empty());  // no cell is evidence
+  ASSERT_EQ(s.avoid.size(), 1U);
+  EXPECT_EQ(s.avoid[0]->family, OptionFamily::penalty);  // AL: it also pulls
+  const std::string md = verdict_page(battery().index, situations);
+  EXPECT_NE(md.find("every option fails the pressure outside the patch check alike"),
+            std::string::npos)
+      << md;
+  EXPECT_NE(md.find("every option alike: pressure outside the patch up to 3"), std::string::npos)
+      << md;
+  // Without the shared failure, the same three options are all to be avoided.
+  const std::vector<RowFacts> apart = {rounded_punch_row(Algorithm::LMP, {outside}),
+                                       rounded_punch_row(Algorithm::AL, {"tensile pressure"}),
+                                       rounded_punch_row(Algorithm::MPC, {outside})};
+  const auto s2 = situation_verdicts(battery().index, apart, {});
+  ASSERT_EQ(s2.size(), 1U);
+  EXPECT_TRUE(s2[0].common_failures.empty());
+  EXPECT_EQ(s2[0].avoid.size(), 3U);
+}
+
 TEST(VerdictPage, FitsOnTheFirstScreen) {
   const auto situations = situation_verdicts(battery().index, battery().rows, battery().singular);
   const std::string md = verdict_page(battery().index, situations);
