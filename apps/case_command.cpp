@@ -118,7 +118,7 @@ int run_case(const CaseArgs& args) {
   result.wall_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   result.peak_rss_mb = suites::peak_rss_mb();
-  const auto* builtin = dynamic_cast<const suites::ProblemExecutor*>(executor.get());
+  auto* builtin = dynamic_cast<suites::ProblemExecutor*>(executor.get());
   if (args.vtu_given && builtin && builtin->last_displacement().size() > 0)
     builtin->write_vtu(args.vtu);
   if (args.json) {

@@ -48,4 +48,17 @@ void recover_by_patches(const Mesh& mesh, const ElementSamples& samples,
                         std::vector<std::vector<Eigen::Vector4d>>& nodal,
                         std::vector<std::vector<int>>& count);
 
+/// The same recovery at the nodes marked in `nodes` only (size n_nodes; e.g. a sampled surface):
+/// their entries get the values, bit for bit, that the whole-mesh recovery gives them (the
+/// patches are fitted and summed in the same order); the other entries are left unchanged.
+/// `samples` need only hold the elements patch_elements() marks.
+void recover_by_patches(const Mesh& mesh, const ElementSamples& samples,
+                        const std::vector<char>& nodes,
+                        std::vector<std::vector<Eigen::Vector4d>>& nodal,
+                        std::vector<std::vector<int>>& count);
+
+/// The elements (a mask of size n_elements) whose samples the patches that reach the nodes
+/// marked in `nodes` read, over bodies 0 .. n_bodies - 1.
+std::vector<char> patch_elements(const Mesh& mesh, int n_bodies, const std::vector<char>& nodes);
+
 }  // namespace cs::solver

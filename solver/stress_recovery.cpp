@@ -58,13 +58,17 @@ ElementVector element_displacements(const Mesh& mesh, int e, const Eigen::Vector
   return u_e;
 }
 
-/// The stresses at the patch sampling points of every element (patch_recovery.hpp).
+/// The stresses at the patch sampling points of the elements marked in `elements` (nullptr:
+/// every element; patch_recovery.hpp).
 ElementSamples patch_samples(const Model& model, const Eigen::VectorXd& u,
-                             const std::vector<Eigen::Matrix4d>& D) {
+                             const std::vector<Eigen::Matrix4d>& D,
+                             const std::vector<char>* elements) {
   const Mesh& mesh = model.mesh;
   const auto& points = patch_sampling_points(mesh.type);
   ElementSamples samples(mesh.n_elements());
   for (int e = 0; e < mesh.n_elements(); ++e) {
+    if (elements != nullptr && !(*elements)[e])
+      continue;
     const ElementGeometry g = element_geometry(mesh, model.analysis, e);
     const ElementVector u_e = element_displacements(mesh, e, u);
     samples[e].reserve(points.size());
@@ -77,16 +81,23 @@ ElementSamples patch_samples(const Model& model, const Eigen::VectorXd& u,
 }
 
 /// Replaces the extrapolated, averaged values of `field` by patch-recovered ones wherever a
-/// patch reaches.
+/// patch reaches (at the nodes marked in `nodes`; nullptr: every node).
 void apply_patch_recovery(const Model& model, const Eigen::VectorXd& u,
-                          const std::vector<Eigen::Matrix4d>& D, StressField& field) {
+                          const std::vector<Eigen::Matrix4d>& D, const std::vector<char>* nodes,
+                          StressField& field) {
   std::vector<std::vector<Eigen::Vector4d>> nodal(field.nodal.size());
   for (std::size_t b = 0; b < nodal.size(); ++b) {
     nodal[b].reserve(field.nodal[b].size());
     for (const Stress& s : field.nodal[b])
       nodal[b].push_back(s.vector());
   }
-  recover_by_patches(model.mesh, patch_samples(model, u, D), nodal, field.nodal_count);
+  if (nodes == nullptr) {
+    recover_by_patches(model.mesh, patch_samples(model, u, D, nullptr), nodal, field.nodal_count);
+  } else {
+    const std::vector<char> elements = patch_elements(model.mesh, model.n_bodies(), *nodes);
+    recover_by_patches(model.mesh, patch_samples(model, u, D, &elements), *nodes, nodal,
+                       field.nodal_count);
+  }
   for (std::size_t b = 0; b < nodal.size(); ++b) {
     for (std::size_t n = 0; n < nodal[b].size(); ++n)
       field.nodal[b][n] = Stress::from(nodal[b][n]);
@@ -138,8 +149,23 @@ const Stress& StressField::at_node(int node) const {
   return at_node(node, found);
 }
 
-StressField recover_stresses(const Model& model, const Eigen::VectorXd& u,
-                             const StressRecoveryOptions& options) {
+namespace {
+
+/// Whether element e holds a node marked in `nodes`.
+bool holds_any(const Mesh& mesh, int e, const std::vector<char>& nodes) {
+  for (int a = 0; a < mesh.n_element_nodes(); ++a) {
+    if (nodes[mesh.elements[e][a]])
+      return true;
+  }
+  return false;
+}
+
+/// recover_stresses at the nodes marked in `nodes` (nullptr: every node). Nodal methods: only
+/// the elements holding such a node are evaluated (in increasing order, as for the whole mesh, so
+/// that every sum adds in the same order) and only the marked nodes have values. GaussPoint: the
+/// Gauss points of those elements.
+StressField recover(const Model& model, const Eigen::VectorXd& u,
+                    const StressRecoveryOptions& options, const std::vector<char>* nodes) {
   const Mesh& mesh = model.mesh;
   if (u.size() != 2 * mesh.n_nodes()) {
     throw std::invalid_argument(
@@ -171,6 +197,8 @@ StressField recover_stresses(const Model& model, const Eigen::VectorXd& u,
 
   Eigen::MatrixXd sampled(rule.size(), 4);
   for (int e = 0; e < mesh.n_elements(); ++e) {
+    if (nodes != nullptr && !holds_any(mesh, e, *nodes))
+      continue;
     const int body = mesh.element_body[e];
     const ElementGeometry g = element_geometry(mesh, model.analysis, e);
     const ElementVector u_e = element_displacements(mesh, e, u);
@@ -196,15 +224,26 @@ StressField recover_stresses(const Model& model, const Eigen::VectorXd& u,
   if (!gauss) {
     for (int b = 0; b < model.n_bodies(); ++b) {
       for (int node = 0; node < mesh.n_nodes(); ++node) {
-        const int count = field.nodal_count[b][node];
+        int& count = field.nodal_count[b][node];
+        if (nodes != nullptr && !(*nodes)[node] && count > 0) {
+          count = 0;  // reached by some of its elements only: no value
+          field.nodal[b][node] = Stress{};
+        }
         if (count > 1)
           field.nodal[b][node] = Stress::from(field.nodal[b][node].vector() / count);
       }
     }
   }
   if (options.method == StressRecoveryMethod::PatchRecovered)
-    apply_patch_recovery(model, u, D, field);
+    apply_patch_recovery(model, u, D, nodes, field);
   return field;
+}
+
+}  // namespace
+
+StressField recover_stresses(const Model& model, const Eigen::VectorXd& u,
+                             const StressRecoveryOptions& options) {
+  return recover(model, u, options, nullptr);
 }
 
 namespace {
@@ -296,6 +335,17 @@ std::vector<SurfaceStressSample> surface_stresses(const Model& model, const Stre
   std::stable_sort(samples.begin(), samples.end(),
                    [](const auto& a, const auto& b) { return a.arc_length < b.arc_length; });
   return samples;
+}
+
+std::vector<SurfaceStressSample> recover_surface_stresses(const Model& model,
+                                                          const Eigen::VectorXd& u,
+                                                          const StressRecoveryOptions& options,
+                                                          const std::string& edge_set) {
+  const SurfacePath path = surface_path(model.mesh, edge_set);
+  std::vector<char> nodes(model.mesh.n_nodes(), 0);
+  for (int node : path.nodes)
+    nodes[node] = 1;
+  return surface_stresses(model, recover(model, u, options, &nodes), edge_set);
 }
 
 }  // namespace cs::solver

@@ -115,4 +115,12 @@ struct SurfaceStressSample {
 std::vector<SurfaceStressSample> surface_stresses(const Model& model, const StressField& field,
                                                   const std::string& edge_set);
 
+/// surface_stresses(model, recover_stresses(model, u, options), edge_set), bit for bit, at the
+/// cost of the elements (and, for patch recovery, the patches) that reach the set's nodes
+/// instead of the whole mesh: what a case that samples one surface needs.
+std::vector<SurfaceStressSample> recover_surface_stresses(const Model& model,
+                                                          const Eigen::VectorXd& u,
+                                                          const StressRecoveryOptions& options,
+                                                          const std::string& edge_set);
+
 }  // namespace cs::solver
