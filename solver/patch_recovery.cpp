@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <span>
 #include <utility>
 
@@ -177,29 +178,44 @@ std::vector<char> patch_centres(const Mesh& mesh, int body, const std::vector<ch
   return centre;
 }
 
+/// The patches of one body that a recovery uses: its vertices' element lists, the patch centres
+/// (increasing) and which vertices lie on the body's boundary.
+struct BodyPatches {
+  NodeElements around;
+  std::vector<int> centres;
+  std::vector<char> boundary;
+};
+
+BodyPatches body_patches(const Mesh& mesh, int body, const std::vector<char>* nodes) {
+  BodyPatches b;
+  b.around = elements_around(mesh, body);
+  const std::vector<char> centre = patch_centres(mesh, body, nodes);
+  b.boundary = boundary_vertices(mesh, body, centre);
+  for (int node = 0; node < mesh.n_nodes(); ++node) {
+    if (centre[node] && !b.around.of(node).empty())
+      b.centres.push_back(node);
+  }
+  return b;
+}
+
 /// The patch recovery of one body at the nodes of `nodes` (nullptr: every node), from the
-/// patches of the vertices marked in `centres`, in increasing node order (so that a node's sum
-/// over patches adds in the same order whatever `nodes` is).
-void recover_body(const Mesh& mesh, const ElementSamples& samples, int body,
+/// patches of `b.centres` in increasing node order (so that a node's sum over patches adds in
+/// the same order whatever `nodes` is).
+void recover_body(const Mesh& mesh, const ElementSamples& samples, const BodyPatches& b,
                   const std::vector<char>* nodes, std::vector<Eigen::Vector4d>& nodal,
                   std::vector<int>& count) {
   const int degree = patch_polynomial_degree(mesh.type);
   const int nen = mesh.n_element_nodes();
-  const NodeElements around = elements_around(mesh, body);
-  const std::vector<char> centres = patch_centres(mesh, body, nodes);
-  const std::vector<char> boundary = boundary_vertices(mesh, body, centres);
   auto wanted = [&](int node) { return nodes == nullptr || (*nodes)[node] != 0; };
   // Interior vertices: their own patch. Others: sum of the patches reaching them.
   std::vector<char> own(mesh.n_nodes(), 0);
   std::vector<Eigen::Vector4d> sum(mesh.n_nodes(), Eigen::Vector4d::Zero());
   std::vector<int> reached(mesh.n_nodes(), 0);
   PatchFit fit;
-  for (int node = 0; node < mesh.n_nodes(); ++node) {
-    const std::span<const int> patch = around.of(node);
-    if (!centres[node] || patch.empty() || boundary[node] ||
-        !fit_patch(mesh, samples, patch, node, degree, fit)) {
+  for (int node : b.centres) {
+    const std::span<const int> patch = b.around.of(node);
+    if (b.boundary[node] || !fit_patch(mesh, samples, patch, node, degree, fit))
       continue;
-    }
     if (wanted(node)) {
       nodal[node] = fit.at(mesh.nodes[node]);
       count[node] = 1;
@@ -208,7 +224,7 @@ void recover_body(const Mesh& mesh, const ElementSamples& samples, int body,
     for (int e : patch) {
       for (int a = 0; a < nen; ++a) {
         const int other = mesh.elements[e][a];
-        const bool interior_vertex = a < 4 && !boundary[other];
+        const bool interior_vertex = a < 4 && !b.boundary[other];
         if (other == node || interior_vertex || !wanted(other))
           continue;
         sum[other] += fit.at(mesh.nodes[other]);
@@ -226,34 +242,51 @@ void recover_body(const Mesh& mesh, const ElementSamples& samples, int body,
 
 }  // namespace
 
-void recover_by_patches(const Mesh& mesh, const ElementSamples& samples,
-                        std::vector<std::vector<Eigen::Vector4d>>& nodal,
-                        std::vector<std::vector<int>>& count) {
-  for (int body = 0; body < static_cast<int>(nodal.size()); ++body)
-    recover_body(mesh, samples, body, nullptr, nodal[body], count[body]);
-}
+struct PatchScope::Impl {
+  std::vector<char> nodes;
+  std::vector<char> elements;
+  std::vector<BodyPatches> bodies;
+};
 
-void recover_by_patches(const Mesh& mesh, const ElementSamples& samples,
-                        const std::vector<char>& nodes,
-                        std::vector<std::vector<Eigen::Vector4d>>& nodal,
-                        std::vector<std::vector<int>>& count) {
-  for (int body = 0; body < static_cast<int>(nodal.size()); ++body)
-    recover_body(mesh, samples, body, &nodes, nodal[body], count[body]);
-}
-
-std::vector<char> patch_elements(const Mesh& mesh, int n_bodies, const std::vector<char>& nodes) {
-  std::vector<char> needed(mesh.n_elements(), 0);
+PatchScope::PatchScope(const Mesh& mesh, int n_bodies, std::vector<char> nodes) {
+  auto impl = std::make_shared<Impl>();
+  impl->nodes = std::move(nodes);
+  impl->elements.assign(mesh.n_elements(), 0);
   for (int body = 0; body < n_bodies; ++body) {
-    const NodeElements around = elements_around(mesh, body);
-    const std::vector<char> centres = patch_centres(mesh, body, &nodes);
-    for (int node = 0; node < mesh.n_nodes(); ++node) {
-      if (!centres[node])
-        continue;
-      for (int e : around.of(node))
-        needed[e] = 1;
+    impl->bodies.push_back(body_patches(mesh, body, &impl->nodes));
+    const BodyPatches& b = impl->bodies.back();
+    for (int node : b.centres) {
+      for (int e : b.around.of(node))
+        impl->elements[e] = 1;
     }
   }
-  return needed;
+  impl_ = std::move(impl);
+}
+
+const std::vector<char>& PatchScope::nodes() const {
+  return impl_->nodes;
+}
+
+const std::vector<char>& PatchScope::elements() const {
+  return impl_->elements;
+}
+
+void recover_by_patches(const Mesh& mesh, const ElementSamples& samples,
+                        std::vector<std::vector<Eigen::Vector4d>>& nodal,
+                        std::vector<std::vector<int>>& count) {
+  for (int body = 0; body < static_cast<int>(nodal.size()); ++body) {
+    recover_body(mesh, samples, body_patches(mesh, body, nullptr), nullptr, nodal[body],
+                 count[body]);
+  }
+}
+
+void recover_by_patches(const Mesh& mesh, const ElementSamples& samples, const PatchScope& scope,
+                        std::vector<std::vector<Eigen::Vector4d>>& nodal,
+                        std::vector<std::vector<int>>& count) {
+  const auto& bodies = scope.impl_->bodies;
+  for (int body = 0; body < static_cast<int>(nodal.size()); ++body) {
+    recover_body(mesh, samples, bodies.at(body), &scope.nodes(), nodal[body], count[body]);
+  }
 }
 
 }  // namespace cs::solver

@@ -81,9 +81,9 @@ ElementSamples patch_samples(const Model& model, const Eigen::VectorXd& u,
 }
 
 /// Replaces the extrapolated, averaged values of `field` by patch-recovered ones wherever a
-/// patch reaches (at the nodes marked in `nodes`; nullptr: every node).
+/// patch reaches (at the nodes of `patches`; nullptr: every node).
 void apply_patch_recovery(const Model& model, const Eigen::VectorXd& u,
-                          const std::vector<Eigen::Matrix4d>& D, const std::vector<char>* nodes,
+                          const std::vector<Eigen::Matrix4d>& D, const PatchScope* patches,
                           StressField& field) {
   std::vector<std::vector<Eigen::Vector4d>> nodal(field.nodal.size());
   for (std::size_t b = 0; b < nodal.size(); ++b) {
@@ -91,12 +91,11 @@ void apply_patch_recovery(const Model& model, const Eigen::VectorXd& u,
     for (const Stress& s : field.nodal[b])
       nodal[b].push_back(s.vector());
   }
-  if (nodes == nullptr) {
+  if (patches == nullptr) {
     recover_by_patches(model.mesh, patch_samples(model, u, D, nullptr), nodal, field.nodal_count);
   } else {
-    const std::vector<char> elements = patch_elements(model.mesh, model.n_bodies(), *nodes);
-    recover_by_patches(model.mesh, patch_samples(model, u, D, &elements), *nodes, nodal,
-                       field.nodal_count);
+    recover_by_patches(model.mesh, patch_samples(model, u, D, &patches->elements()), *patches,
+                       nodal, field.nodal_count);
   }
   for (std::size_t b = 0; b < nodal.size(); ++b) {
     for (std::size_t n = 0; n < nodal[b].size(); ++n)
@@ -151,21 +150,20 @@ const Stress& StressField::at_node(int node) const {
 
 namespace {
 
-/// Whether element e holds a node marked in `nodes`.
-bool holds_any(const Mesh& mesh, int e, const std::vector<char>& nodes) {
-  for (int a = 0; a < mesh.n_element_nodes(); ++a) {
-    if (nodes[mesh.elements[e][a]])
-      return true;
-  }
-  return false;
-}
+/// Where a restricted recovery works: the nodes wanted, the elements holding one (increasing)
+/// and the patches that reach them.
+struct RecoveryScope {
+  const std::vector<int>& elements;
+  const PatchScope& patches;
+};
 
-/// recover_stresses at the nodes marked in `nodes` (nullptr: every node). Nodal methods: only
-/// the elements holding such a node are evaluated (in increasing order, as for the whole mesh, so
-/// that every sum adds in the same order) and only the marked nodes have values. GaussPoint: the
+/// recover_stresses at the nodes of `scope` (nullptr: every node). Nodal methods: only the
+/// elements holding such a node are evaluated (in increasing order, as for the whole mesh, so
+/// that every sum adds in the same order) and only the scope's nodes have values. GaussPoint: the
 /// Gauss points of those elements.
 StressField recover(const Model& model, const Eigen::VectorXd& u,
-                    const StressRecoveryOptions& options, const std::vector<char>* nodes) {
+                    const StressRecoveryOptions& options, const RecoveryScope* scope) {
+  const std::vector<char>* nodes = scope != nullptr ? &scope->patches.nodes() : nullptr;
   const Mesh& mesh = model.mesh;
   if (u.size() != 2 * mesh.n_nodes()) {
     throw std::invalid_argument(
@@ -196,9 +194,10 @@ StressField recover(const Model& model, const Eigen::VectorXd& u,
   }
 
   Eigen::MatrixXd sampled(rule.size(), 4);
-  for (int e = 0; e < mesh.n_elements(); ++e) {
-    if (nodes != nullptr && !holds_any(mesh, e, *nodes))
-      continue;
+  const int n_evaluated =
+      scope != nullptr ? static_cast<int>(scope->elements.size()) : mesh.n_elements();
+  for (int i = 0; i < n_evaluated; ++i) {
+    const int e = scope != nullptr ? scope->elements[i] : i;
     const int body = mesh.element_body[e];
     const ElementGeometry g = element_geometry(mesh, model.analysis, e);
     const ElementVector u_e = element_displacements(mesh, e, u);
@@ -235,7 +234,7 @@ StressField recover(const Model& model, const Eigen::VectorXd& u,
     }
   }
   if (options.method == StressRecoveryMethod::PatchRecovered)
-    apply_patch_recovery(model, u, D, nodes, field);
+    apply_patch_recovery(model, u, D, scope != nullptr ? &scope->patches : nullptr, field);
   return field;
 }
 
@@ -337,15 +336,47 @@ std::vector<SurfaceStressSample> surface_stresses(const Model& model, const Stre
   return samples;
 }
 
+namespace {
+
+std::vector<char> path_nodes(const Mesh& mesh, const std::string& edge_set) {
+  std::vector<char> nodes(mesh.n_nodes(), 0);
+  for (int node : surface_path(mesh, edge_set).nodes)
+    nodes[node] = 1;
+  return nodes;
+}
+
+std::vector<int> elements_holding(const Mesh& mesh, const std::vector<char>& nodes) {
+  std::vector<int> elements;
+  for (int e = 0; e < mesh.n_elements(); ++e) {
+    for (int a = 0; a < mesh.n_element_nodes(); ++a) {
+      if (nodes[mesh.elements[e][a]]) {
+        elements.push_back(e);
+        break;
+      }
+    }
+  }
+  return elements;
+}
+
+}  // namespace
+
+SurfaceStressRecovery::SurfaceStressRecovery(const Model& model, std::string edge_set)
+    : model_(&model),
+      edge_set_(std::move(edge_set)),
+      patches_(model.mesh, model.n_bodies(), path_nodes(model.mesh, edge_set_)),
+      elements_(elements_holding(model.mesh, patches_.nodes())) {}
+
+std::vector<SurfaceStressSample> SurfaceStressRecovery::recover(
+    const Eigen::VectorXd& u, const StressRecoveryOptions& options) const {
+  const RecoveryScope scope{elements_, patches_};
+  return surface_stresses(*model_, cs::solver::recover(*model_, u, options, &scope), edge_set_);
+}
+
 std::vector<SurfaceStressSample> recover_surface_stresses(const Model& model,
                                                           const Eigen::VectorXd& u,
                                                           const StressRecoveryOptions& options,
                                                           const std::string& edge_set) {
-  const SurfacePath path = surface_path(model.mesh, edge_set);
-  std::vector<char> nodes(model.mesh.n_nodes(), 0);
-  for (int node : path.nodes)
-    nodes[node] = 1;
-  return surface_stresses(model, recover(model, u, options, &nodes), edge_set);
+  return SurfaceStressRecovery(model, edge_set).recover(u, options);
 }
 
 }  // namespace cs::solver

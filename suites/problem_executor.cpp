@@ -183,8 +183,9 @@ CaseResult ProblemExecutor::run(const CaseSpec& spec) {
                                                                      : CaseStatus::not_converged;
   last_u_ = contact.displacement;
   // Only the sampled surface is graded: recovered there alone (the whole field on demand).
-  const auto surface =
-      solver::recover_surface_stresses(setup_->model, last_u_, last_recovery_, kSampledSurface);
+  if (!surface_recovery_)
+    surface_recovery_.emplace(setup_->model, kSampledSurface);
+  const auto surface = surface_recovery_->recover(last_u_, last_recovery_);
   std::vector<ContactPressureSample> pressures;
   pressures.reserve(contact.nodes.size());
   for (const auto& n : contact.nodes)

@@ -67,6 +67,8 @@ class ProblemExecutor final : public GroupExecutor {
   Eigen::VectorXd last_u_;
   std::optional<solver::StressField> last_stresses_;  ///< whole mesh, on demand
   solver::StressRecoveryOptions last_recovery_;
+  /// The sampled surface's elements and patches, found on the first case.
+  std::optional<solver::SurfaceStressRecovery> surface_recovery_;
   std::optional<std::pair<std::string, solver::ContactResult>> last_contact_;
   std::optional<double> applied_load_;
 };
