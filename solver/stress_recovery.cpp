@@ -84,23 +84,31 @@ ElementSamples patch_samples(const Model& model, const Eigen::VectorXd& u,
 /// patch reaches (at the nodes of `patches`; nullptr: every node).
 void apply_patch_recovery(const Model& model, const Eigen::VectorXd& u,
                           const std::vector<Eigen::Matrix4d>& D, const PatchScope* patches,
-                          StressField& field) {
+                          const std::vector<int>* node_list, StressField& field) {
+  // Copied in and out at the nodes that can change: every node, or the scope's.
   std::vector<std::vector<Eigen::Vector4d>> nodal(field.nodal.size());
-  for (std::size_t b = 0; b < nodal.size(); ++b) {
-    nodal[b].reserve(field.nodal[b].size());
-    for (const Stress& s : field.nodal[b])
-      nodal[b].push_back(s.vector());
-  }
+  auto for_each_node = [&](auto&& f) {
+    for (std::size_t b = 0; b < nodal.size(); ++b) {
+      if (node_list == nullptr) {
+        for (std::size_t n = 0; n < nodal[b].size(); ++n)
+          f(b, n);
+      } else {
+        for (int n : *node_list)
+          f(b, static_cast<std::size_t>(n));
+      }
+    }
+  };
+  for (std::size_t b = 0; b < nodal.size(); ++b)
+    nodal[b].resize(field.nodal[b].size());
+  for_each_node([&](std::size_t b, std::size_t n) { nodal[b][n] = field.nodal[b][n].vector(); });
   if (patches == nullptr) {
     recover_by_patches(model.mesh, patch_samples(model, u, D, nullptr), nodal, field.nodal_count);
   } else {
     recover_by_patches(model.mesh, patch_samples(model, u, D, &patches->elements()), *patches,
                        nodal, field.nodal_count);
   }
-  for (std::size_t b = 0; b < nodal.size(); ++b) {
-    for (std::size_t n = 0; n < nodal[b].size(); ++n)
-      field.nodal[b][n] = Stress::from(nodal[b][n]);
-  }
+  for_each_node(
+      [&](std::size_t b, std::size_t n) { field.nodal[b][n] = Stress::from(nodal[b][n]); });
 }
 
 }  // namespace
@@ -153,7 +161,8 @@ namespace {
 /// Where a restricted recovery works: the nodes wanted, the elements holding one (increasing)
 /// and the patches that reach them.
 struct RecoveryScope {
-  const std::vector<int>& elements;
+  const std::vector<int>& nodes;     ///< increasing
+  const std::vector<int>& elements;  ///< increasing
   const PatchScope& patches;
 };
 
@@ -221,20 +230,34 @@ StressField recover(const Model& model, const Eigen::VectorXd& u,
     }
   }
   if (!gauss) {
+    auto average = [&](int b, int node) {
+      const int count = field.nodal_count[b][node];
+      if (count > 1)
+        field.nodal[b][node] = Stress::from(field.nodal[b][node].vector() / count);
+    };
     for (int b = 0; b < model.n_bodies(); ++b) {
-      for (int node = 0; node < mesh.n_nodes(); ++node) {
-        int& count = field.nodal_count[b][node];
-        if (nodes != nullptr && !(*nodes)[node] && count > 0) {
-          count = 0;  // reached by some of its elements only: no value
-          field.nodal[b][node] = Stress{};
-        }
-        if (count > 1)
-          field.nodal[b][node] = Stress::from(field.nodal[b][node].vector() / count);
+      if (scope == nullptr) {
+        for (int node = 0; node < mesh.n_nodes(); ++node)
+          average(b, node);
+        continue;
       }
+      for (int e : scope->elements) {
+        for (int a = 0; a < nen; ++a) {
+          const int node = mesh.elements[e][a];
+          if (!(*nodes)[node]) {  // reached by some of its elements only: no value
+            field.nodal_count[b][node] = 0;
+            field.nodal[b][node] = Stress{};
+          }
+        }
+      }
+      for (int node : scope->nodes)
+        average(b, node);
     }
   }
-  if (options.method == StressRecoveryMethod::PatchRecovered)
-    apply_patch_recovery(model, u, D, scope != nullptr ? &scope->patches : nullptr, field);
+  if (options.method == StressRecoveryMethod::PatchRecovered) {
+    apply_patch_recovery(model, u, D, scope != nullptr ? &scope->patches : nullptr,
+                         scope != nullptr ? &scope->nodes : nullptr, field);
+  }
   return field;
 }
 
@@ -364,11 +387,16 @@ SurfaceStressRecovery::SurfaceStressRecovery(const Model& model, std::string edg
     : model_(&model),
       edge_set_(std::move(edge_set)),
       patches_(model.mesh, model.n_bodies(), path_nodes(model.mesh, edge_set_)),
-      elements_(elements_holding(model.mesh, patches_.nodes())) {}
+      elements_(elements_holding(model.mesh, patches_.nodes())) {
+  for (int node = 0; node < model.mesh.n_nodes(); ++node) {
+    if (patches_.nodes()[node])
+      nodes_.push_back(node);
+  }
+}
 
 std::vector<SurfaceStressSample> SurfaceStressRecovery::recover(
     const Eigen::VectorXd& u, const StressRecoveryOptions& options) const {
-  const RecoveryScope scope{elements_, patches_};
+  const RecoveryScope scope{nodes_, elements_, patches_};
   return surface_stresses(*model_, cs::solver::recover(*model_, u, options, &scope), edge_set_);
 }
 

@@ -133,6 +133,7 @@ class SurfaceStressRecovery {
   std::string edge_set_;
   PatchScope patches_;         ///< the set's nodes and the patches that reach them
   std::vector<int> elements_;  ///< the elements holding a node of the set, increasing
+  std::vector<int> nodes_;     ///< the set's nodes, increasing
 };
 
 /// SurfaceStressRecovery(model, edge_set).recover(u, options): for one displacement.
