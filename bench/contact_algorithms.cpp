@@ -32,7 +32,8 @@
 // build, assembly, factorization, solve and grading). Counters: cases, converged, one_case_s (the
 // one analysis, measured after the set, in a warm process) and ratio = time / one_case_s (the
 // target is at most 1.3: every case after the first adds little to the factorization); the same
-// in process CPU time (one_case_cpu_s, ratio_cpu), which a loaded machine leaves comparable.
+// in process CPU time (one_case_cpu_s, ratio_cpu), which a loaded machine leaves comparable; and
+// blas_threads, the model's BLAS threads as `run` and `case` give them.
 //   ModelCases/<problem>/<mesh>/<element>                       e.g. ModelCases/H_p/F/Q8
 //
 // Run:  build-*/bench/bench_contact_algorithms --benchmark_filter='Contact/H_p/M/'   (H_p, M)
@@ -57,11 +58,14 @@
 #include <benchmark/benchmark.h>
 #include <fmt/format.h>
 
+#include "apps/model_cost.hpp"
+#include "platform/available_cores.hpp"
 #include "solver/contact/contact_analysis.hpp"
 #include "solver/linear_static.hpp"
 #include "suites/case_matrix.hpp"
 #include "suites/problem_executor.hpp"
 #include "suites/problem_setup.hpp"
+#include "suites/run_environment.hpp"
 
 namespace {
 
@@ -224,6 +228,10 @@ std::vector<suites::CaseSpec> model_cases(const suites::CaseSpec& model) {
 /// A model's full set of cases on one executor, against one analysis of the model.
 void BM_ModelCases(benchmark::State& state, const suites::CaseSpec& model) {
   const std::vector<suites::CaseSpec> cases = model_cases(model);
+  // The BLAS threads `contact-suite run` and `case` give the model (apps/model_cost.hpp).
+  const int threads_before = suites::blas_threads();
+  const int threads = apps::model_threads(model, platform::available_cores());
+  suites::set_blas_threads(threads);
   int converged = 0;
   double seconds = 0.0, cpu = 0.0;
   for (auto _ : state) {
@@ -253,6 +261,8 @@ void BM_ModelCases(benchmark::State& state, const suites::CaseSpec& model) {
   state.counters["ratio"] = seconds / one_case;
   state.counters["one_case_cpu_s"] = one_case_cpu;
   state.counters["ratio_cpu"] = cpu / one_case_cpu;
+  state.counters["blas_threads"] = threads;
+  suites::set_blas_threads(threads_before);
 }
 
 /// Every model of the matrix: problem x mesh level x element, in the study's order.
