@@ -196,8 +196,12 @@ StressField recover(const Model& model, const Eigen::VectorXd& u,
   Eigen::MatrixXd E;
   if (!gauss) {
     E = extrapolation_matrix(mesh.type, n);
-    field.nodal.assign(model.n_bodies(), std::vector<Stress>(mesh.n_nodes()));
-    field.nodal_count.assign(model.n_bodies(), std::vector<int>(mesh.n_nodes(), 0));
+    field.nodal.resize(model.n_bodies());
+    field.nodal_count.resize(model.n_bodies());
+    for (int b = 0; b < model.n_bodies(); ++b) {  // zeroed in place (no copy of a prototype)
+      field.nodal[b].resize(mesh.n_nodes());
+      field.nodal_count[b].resize(mesh.n_nodes(), 0);
+    }
   } else {
     field.gauss_points.reserve(static_cast<std::size_t>(mesh.n_elements()) * rule.size());
   }
