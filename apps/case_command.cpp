@@ -11,7 +11,9 @@
 
 #include "adapters/protocol/solver_registry.hpp"
 #include "adapters/registered_codes.hpp"
+#include "apps/model_cost.hpp"
 #include "apps/usage_error.hpp"
+#include "platform/available_cores.hpp"
 #include "platform/output_transaction.hpp"
 #include "schema/results_file.hpp"
 #include "suites/executor_factory.hpp"
@@ -19,6 +21,7 @@
 #include "suites/problem_catalog.hpp"
 #include "suites/problem_executor.hpp"
 #include "suites/problem_setup.hpp"
+#include "suites/run_environment.hpp"
 #include "suites/suite_error.hpp"
 
 namespace cs::apps {
@@ -113,6 +116,9 @@ int run_case(const CaseArgs& args) {
   if (args.vtu_given)
     check_vtu_path(args.vtu);
   suites::require_solvers({spec});  // e.g. ccx missing: exit 2 before anything runs
+  // A large model's factorization on every core, as `run` gives it (apps/model_cost.hpp): the
+  // same thread count, so the same values as the model's cases in a run.
+  suites::set_blas_threads(model_threads(spec, platform::available_cores()));
   const auto start = std::chrono::steady_clock::now();
   suites::CaseResult result;
   std::unique_ptr<suites::GroupExecutor> executor;
@@ -129,7 +135,7 @@ int run_case(const CaseArgs& args) {
   result.wall_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   result.peak_rss_mb = suites::peak_rss_mb();
-  const auto* builtin = dynamic_cast<const suites::ProblemExecutor*>(executor.get());
+  auto* builtin = dynamic_cast<suites::ProblemExecutor*>(executor.get());
   if (args.vtu_given && builtin && builtin->last_displacement().size() > 0)
     builtin->write_vtu(args.vtu);
   if (args.json) {

@@ -25,18 +25,17 @@ std::pair<double, std::string> memory_limit(const MemoryLimits& limits) {
 
 MemoryPlan plan_memory(double largest_mib, const std::string& largest_name,
                        const MemoryLimits& limits) {
-  MemoryPlan plan{1.5 * largest_mib, {}};
   const auto [limit, why] = memory_limit(limits);
   if (limit <= 0.0)
-    return plan;
+    return {1.5 * largest_mib, {}};
   if (largest_mib > limit) {
     throw UsageError(fmt::format(
         "refused before starting: the largest model of this selection ({}) needs about {:.2f} GiB, "
         "more than the {:.2f} GiB this run may use ({}); select coarser meshes or free memory",
         largest_name, gib(largest_mib), gib(limit), why));
   }
-  if (plan.budget_mib > limit) {
-    plan.budget_mib = limit;
+  MemoryPlan plan{limit, {}};
+  if (2.0 * largest_mib > limit) {
     plan.note = fmt::format(
         "memory: scheduled to fit: models run together only while their estimated peaks sum to "
         "at most {:.2f} GiB ({}); the largest ({}) needs about {:.2f} GiB",

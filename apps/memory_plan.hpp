@@ -1,17 +1,17 @@
 #pragma once
 // The memory a run plans for, decided before it starts.
 //
-// Each model's peak is estimated from its cost (apps/run_command.cpp's group_cost: elements
-// grow as the mesh factor squared, S problems x30, Q8 x3) at kMiBPerCostUnit. The runner
-// (suites/runner.hpp) starts a model only while the estimated total of the running ones stays
-// within a budget, by default 1.5 times the largest model (so the two largest never run
-// together). The machine's limit is MemAvailable (platform/available_memory.hpp) less a 10 %
-// margin (for the process's own memory, the page cache the kernel keeps and the estimate's
-// error), or --max-memory when smaller. Then:
-//   - a largest model above the limit: the run is refused before it starts (UsageError, exit 2);
-//   - a default budget above the limit: the budget becomes the limit (scheduled to fit), and the
-//     plan's note says so;
-//   - otherwise the default budget, and no note.
+// Each model's peak is estimated from its cost (apps/model_cost.hpp: elements grow as the mesh
+// factor squared, S problems x30, Q8 x3) at kMiBPerCostUnit. The run may use what the machine
+// has: MemAvailable (platform/available_memory.hpp) less a kMemoryMargin share (for the
+// process's own memory, the page cache the kernel keeps and the estimate's error), or
+// --max-memory when smaller. The runner (suites/runner.hpp) starts a model only while the
+// estimated total of the running ones stays within that budget. Then:
+//   - a largest model above the budget: the run is refused before it starts (UsageError, exit 2);
+//   - a budget below twice the largest model (the two largest cannot run together): the plan's
+//     note says so;
+//   - no budget known (no MemAvailable, no --max-memory): 1.5 times the largest model, so that
+//     the two largest never run together.
 
 #include <string>
 
@@ -31,7 +31,7 @@ struct MemoryLimits {
   double max_mib = 0.0;        ///< --max-memory; <= 0: none
 };
 
-/// The plan: the runner's budget (MiB) and, when the limit changed the schedule, a line that
+/// The plan: the runner's budget (MiB) and, when it keeps the largest models apart, a line that
 /// says so.
 struct MemoryPlan {
   double budget_mib = 0.0;

@@ -16,8 +16,10 @@
 #include "apps/ci_report_files.hpp"
 #include "apps/invocation.hpp"
 #include "apps/memory_plan.hpp"
+#include "apps/model_cost.hpp"
 #include "apps/usage_error.hpp"
 #include "apps/write_run_output.hpp"
+#include "platform/available_cores.hpp"
 #include "platform/available_memory.hpp"
 #include "platform/interrupts.hpp"
 #include "platform/output_transaction.hpp"
@@ -142,14 +144,6 @@ std::string model_name(const suites::CaseSpec& spec) {
                      schema::to_string(spec.element));
 }
 
-/// A rough relative cost of a model, to start the largest first: the problem's relative cost
-/// (its descriptor) times f^2 for the level's elements, and 3 for Q8.
-double group_cost(const suites::CaseSpec& spec) {
-  const double f = suites::level_factor(spec.mesh);  // elements grow as f^2
-  const double cost = f * f * suites::problem_descriptor(spec.problem).relative_cost;
-  return spec.element == schema::Element::Q8 ? 3.0 * cost : cost;
-}
-
 int run(const RunArgs& args) {
   platform::check_output_directory(args.out);  // refused before any input is read
   require_writable(args.ci);                   // before anything runs: a bad path costs nothing
@@ -172,10 +166,14 @@ int run(const RunArgs& args) {
   // end, and no other process writes into it while this run holds it.
   platform::OutputTransaction output(args.out);
 
-  const int jobs =
-      args.jobs > 0 ? args.jobs : static_cast<int>(std::thread::hardware_concurrency());
-  // One BLAS thread per worker, whatever --jobs is: a threaded BLAS sums in an order that
-  // depends on its thread count, and results must be bit-identical for every --jobs.
+  const int cores = platform::available_cores();
+  const int jobs = args.jobs > 0 ? args.jobs : cores;
+  if (jobs > cores) {
+    std::fprintf(stderr, "contact-suite: --jobs %d on %d core%s found: workers will share cores\n",
+                 jobs, cores, cores == 1 ? "" : "s");
+  }
+  // BLAS threads per model from the model and the machine (apps/model_cost.hpp), never from
+  // --jobs: results stay bit-identical for every --jobs. One until a threaded model starts.
   suites::set_blas_threads(1);
   const bool interactive = isatty(fileno(stderr)) != 0;
   suites::ProgressReporter progress(cases.size(), stderr, interactive);
@@ -183,6 +181,8 @@ int run(const RunArgs& args) {
   options.jobs = jobs;
   options.on_case_done = [&progress](const suites::CaseResult& r) { progress.case_done(r); };
   options.group_cost = group_cost;
+  options.group_threads = [cores](const suites::CaseSpec& c) { return model_threads(c, cores); };
+  options.set_threads = [](int threads) { suites::set_blas_threads(threads); };
   // Memory in proportion to the cost estimate, planned against what the machine has
   // (apps/memory_plan.hpp): refused now, or scheduled to fit.
   const auto largest =

@@ -25,11 +25,24 @@
 // ContactAnalysis (one shared factorization), with ratio_per_case = time / 12 / reference_s and
 // the number of cases that converged.
 //
+// ModelCases: the suite engine's full set of cases of one model, as the main job runs them
+// (ci/main.sh: 5 algorithms x ns, ss, mortar x patch-recovered and extrapolated stresses, 30
+// cases on one ProblemExecutor: model built once, one shared factorization, each case graded),
+// against one analysis of the model (`contact-suite case <problem> --algorithm LMP --contact ss`:
+// build, assembly, factorization, solve and grading). Counters: cases, converged, one_case_s (the
+// one analysis, measured after the set, in a warm process) and ratio = time / one_case_s (the
+// target is at most 1.3: every case after the first adds little to the factorization); the same
+// in process CPU time (one_case_cpu_s, ratio_cpu), which a loaded machine leaves comparable; and
+// blas_threads, the model's BLAS threads as `run` and `case` give them.
+//   ModelCases/<problem>/<mesh>/<element>                       e.g. ModelCases/H_p/F/Q8
+//
 // Run:  build-*/bench/bench_contact_algorithms --benchmark_filter='Contact/H_p/M/'   (H_p, M)
 //       --benchmark_filter='^Contact/Pprime_p/(C|M)/Q4/'     --benchmark_list_tests lists names
 //       --benchmark_out=bench.json --benchmark_out_format=json   JSON for `contact-suite report
 //       --bench bench.json` (see ci/bench.sh and docs/benchmarks.md). The F meshes of S_1_7
 //       take about 7 s (Q4) and 30 s (Q8) per case on 2 cores.
+
+#include <time.h>
 
 #include <chrono>
 #include <cmath>
@@ -45,9 +58,14 @@
 #include <benchmark/benchmark.h>
 #include <fmt/format.h>
 
+#include "apps/model_cost.hpp"
+#include "platform/available_cores.hpp"
 #include "solver/contact/contact_analysis.hpp"
 #include "solver/linear_static.hpp"
+#include "suites/case_matrix.hpp"
+#include "suites/problem_executor.hpp"
 #include "suites/problem_setup.hpp"
+#include "suites/run_environment.hpp"
 
 namespace {
 
@@ -68,6 +86,14 @@ constexpr int kCasesPerModel =
 
 double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+/// CPU seconds of the whole process (every thread) so far: a ratio of two of them holds on a
+/// loaded machine, where wall-clock time also counts the waits for a core.
+double process_cpu_seconds() {
+  timespec t{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
 }
 
 /// "H_p/F/Q4": the model part of a benchmark name.
@@ -186,6 +212,59 @@ void BM_ContactAllOptions(benchmark::State& state, const suites::CaseSpec& spec)
   state.counters["reference_s"] = reference;
 }
 
+/// The main job's cases of `model`'s model (ci/main.sh): every algorithm, ns, ss and mortar,
+/// patch-recovered and extrapolated stresses.
+std::vector<suites::CaseSpec> model_cases(const suites::CaseSpec& model) {
+  suites::CaseSelection selection;
+  selection.problems = {model.problem};
+  selection.meshes = {model.mesh};
+  selection.elements = {model.element};
+  selection.contacts = {suites::ContactKind::ns, suites::ContactKind::ss,
+                        suites::ContactKind::mortar};
+  selection.recoveries = {suites::Recovery::spr, suites::Recovery::extrapolated};
+  return suites::make_case_matrix(selection);
+}
+
+/// A model's full set of cases on one executor, against one analysis of the model.
+void BM_ModelCases(benchmark::State& state, const suites::CaseSpec& model) {
+  const std::vector<suites::CaseSpec> cases = model_cases(model);
+  // The BLAS threads `contact-suite run` and `case` give the model (apps/model_cost.hpp).
+  const int threads_before = suites::blas_threads();
+  const int threads = apps::model_threads(model, platform::available_cores());
+  suites::set_blas_threads(threads);
+  int converged = 0;
+  double seconds = 0.0, cpu = 0.0;
+  for (auto _ : state) {
+    const auto start = Clock::now();
+    const double cpu_start = process_cpu_seconds();
+    suites::ProblemExecutor executor(cases.front());
+    converged = 0;
+    for (const suites::CaseSpec& spec : cases)
+      converged += executor.run(spec).status == suites::CaseStatus::converged ? 1 : 0;
+    seconds = seconds_since(start);
+    cpu = process_cpu_seconds() - cpu_start;
+    state.SetIterationTime(seconds);
+  }
+  suites::CaseSpec one = cases.front();
+  one.algorithm = suites::Algorithm::LMP;
+  one.contact = suites::ContactKind::ss;
+  one.recovery = suites::Recovery::spr;
+  const auto start = Clock::now();
+  const double cpu_start = process_cpu_seconds();
+  suites::ProblemExecutor executor(one);
+  benchmark::DoNotOptimize(executor.run(one).status);
+  const double one_case = seconds_since(start);
+  const double one_case_cpu = process_cpu_seconds() - cpu_start;
+  state.counters["cases"] = static_cast<double>(cases.size());
+  state.counters["converged"] = converged;
+  state.counters["one_case_s"] = one_case;
+  state.counters["ratio"] = seconds / one_case;
+  state.counters["one_case_cpu_s"] = one_case_cpu;
+  state.counters["ratio_cpu"] = cpu / one_case_cpu;
+  state.counters["blas_threads"] = threads;
+  suites::set_blas_threads(threads_before);
+}
+
 /// Every model of the matrix: problem x mesh level x element, in the study's order.
 std::vector<suites::CaseSpec> models() {
   std::vector<suites::CaseSpec> out;
@@ -221,6 +300,13 @@ void register_benchmarks() {
             ->Unit(benchmark::kMillisecond);
       }
     }
+  }
+  for (const suites::CaseSpec& spec : models()) {
+    const std::string name = "ModelCases/" + model_name(spec);
+    benchmark::RegisterBenchmark(name.c_str(), BM_ModelCases, spec)
+        ->UseManualTime()
+        ->Iterations(1)
+        ->Unit(benchmark::kMillisecond);
   }
   for (const suites::CaseSpec& spec : models()) {
     const std::string name = "ContactAllOptions/" + model_name(spec);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <span>
 #include <utility>
 
@@ -65,15 +66,19 @@ NodeElements elements_around(const Mesh& mesh, int body) {
   return around;
 }
 
-/// Whether each corner node lies on the boundary of one body: on a corner-to-corner edge that
-/// only one element of the body has.
-std::vector<char> boundary_vertices(const Mesh& mesh, int body) {
+/// Whether each corner node marked in `vertices` lies on the boundary of one body: on a
+/// corner-to-corner edge that only one element of the body has (0 for unmarked nodes). A local
+/// test: the edges at a vertex are those of the body's elements around it.
+std::vector<char> boundary_vertices(const Mesh& mesh, int body, const std::vector<char>& vertices) {
   std::vector<std::pair<int, int>> edges;
   for (int e = 0; e < mesh.n_elements(); ++e) {
     if (mesh.element_body[e] != body)
       continue;
-    for (int s = 0; s < 4; ++s)
-      edges.push_back(std::minmax(mesh.elements[e][s], mesh.elements[e][(s + 1) % 4]));
+    for (int s = 0; s < 4; ++s) {
+      const int a = mesh.elements[e][s], b = mesh.elements[e][(s + 1) % 4];
+      if (vertices[a] || vertices[b])
+        edges.push_back(std::minmax(a, b));
+    }
   }
   std::sort(edges.begin(), edges.end());
   std::vector<char> boundary(mesh.n_nodes(), 0);
@@ -81,8 +86,10 @@ std::vector<char> boundary_vertices(const Mesh& mesh, int body) {
     std::size_t j = i + 1;
     while (j < edges.size() && edges[j] == edges[i])
       ++j;
-    if (j - i == 1)
-      boundary[edges[i].first] = boundary[edges[i].second] = 1;
+    if (j - i == 1) {
+      boundary[edges[i].first] |= vertices[edges[i].first];
+      boundary[edges[i].second] |= vertices[edges[i].second];
+    }
     i = j;
   }
   return boundary;
@@ -150,46 +157,135 @@ const std::vector<Eigen::Vector2d>& patch_sampling_points(ElementType type) {
   return type == ElementType::Q4 ? centre : barlow;
 }
 
+namespace {
+
+/// The vertices whose patches reach a node of `nodes` (nullptr: every node) in `body`, as a
+/// mask: the corners of the body's elements that hold such a node.
+std::vector<char> patch_centres(const Mesh& mesh, int body, const std::vector<char>* nodes) {
+  std::vector<char> centre(mesh.n_nodes(), 0);
+  const int nen = mesh.n_element_nodes();
+  for (int e = 0; e < mesh.n_elements(); ++e) {
+    if (mesh.element_body[e] != body)
+      continue;
+    bool reaches = nodes == nullptr;
+    for (int a = 0; a < nen && !reaches; ++a)
+      reaches = (*nodes)[mesh.elements[e][a]] != 0;
+    if (!reaches)
+      continue;
+    for (int a = 0; a < 4; ++a)
+      centre[mesh.elements[e][a]] = 1;
+  }
+  return centre;
+}
+
+/// The patches of one body that a recovery uses: its vertices' element lists, the patch centres
+/// (increasing) and which vertices lie on the body's boundary.
+struct BodyPatches {
+  NodeElements around;
+  std::vector<int> centres;
+  std::vector<char> boundary;
+};
+
+BodyPatches body_patches(const Mesh& mesh, int body, const std::vector<char>* nodes) {
+  BodyPatches b;
+  b.around = elements_around(mesh, body);
+  const std::vector<char> centre = patch_centres(mesh, body, nodes);
+  b.boundary = boundary_vertices(mesh, body, centre);
+  for (int node = 0; node < mesh.n_nodes(); ++node) {
+    if (centre[node] && !b.around.of(node).empty())
+      b.centres.push_back(node);
+  }
+  return b;
+}
+
+/// The patch recovery of one body at the nodes of `nodes` (nullptr: every node), from the
+/// patches of `b.centres` in increasing node order (so that a node's sum over patches adds in
+/// the same order whatever `nodes` is).
+void recover_body(const Mesh& mesh, const ElementSamples& samples, const BodyPatches& b,
+                  const std::vector<char>* nodes, std::vector<Eigen::Vector4d>& nodal,
+                  std::vector<int>& count) {
+  const int degree = patch_polynomial_degree(mesh.type);
+  const int nen = mesh.n_element_nodes();
+  auto wanted = [&](int node) { return nodes == nullptr || (*nodes)[node] != 0; };
+  // Interior vertices: their own patch. Others: sum of the patches reaching them.
+  std::vector<char> own(mesh.n_nodes(), 0);
+  std::vector<Eigen::Vector4d> sum(mesh.n_nodes(), Eigen::Vector4d::Zero());
+  std::vector<int> reached(mesh.n_nodes(), 0);
+  PatchFit fit;
+  for (int node : b.centres) {
+    const std::span<const int> patch = b.around.of(node);
+    if (b.boundary[node] || !fit_patch(mesh, samples, patch, node, degree, fit))
+      continue;
+    if (wanted(node)) {
+      nodal[node] = fit.at(mesh.nodes[node]);
+      count[node] = 1;
+    }
+    own[node] = 1;
+    for (int e : patch) {
+      for (int a = 0; a < nen; ++a) {
+        const int other = mesh.elements[e][a];
+        const bool interior_vertex = a < 4 && !b.boundary[other];
+        if (other == node || interior_vertex || !wanted(other))
+          continue;
+        sum[other] += fit.at(mesh.nodes[other]);
+        ++reached[other];
+      }
+    }
+  }
+  for (int node = 0; node < mesh.n_nodes(); ++node) {
+    if (own[node] || reached[node] == 0 || !wanted(node))
+      continue;
+    nodal[node] = sum[node] / reached[node];
+    count[node] = reached[node];
+  }
+}
+
+}  // namespace
+
+struct PatchScope::Impl {
+  std::vector<char> nodes;
+  std::vector<char> elements;
+  std::vector<BodyPatches> bodies;
+};
+
+PatchScope::PatchScope(const Mesh& mesh, int n_bodies, std::vector<char> nodes) {
+  auto impl = std::make_shared<Impl>();
+  impl->nodes = std::move(nodes);
+  impl->elements.assign(mesh.n_elements(), 0);
+  for (int body = 0; body < n_bodies; ++body) {
+    impl->bodies.push_back(body_patches(mesh, body, &impl->nodes));
+    const BodyPatches& b = impl->bodies.back();
+    for (int node : b.centres) {
+      for (int e : b.around.of(node))
+        impl->elements[e] = 1;
+    }
+  }
+  impl_ = std::move(impl);
+}
+
+const std::vector<char>& PatchScope::nodes() const {
+  return impl_->nodes;
+}
+
+const std::vector<char>& PatchScope::elements() const {
+  return impl_->elements;
+}
+
 void recover_by_patches(const Mesh& mesh, const ElementSamples& samples,
                         std::vector<std::vector<Eigen::Vector4d>>& nodal,
                         std::vector<std::vector<int>>& count) {
-  const int n_bodies = static_cast<int>(nodal.size());
-  const int degree = patch_polynomial_degree(mesh.type);
-  const int nen = mesh.n_element_nodes();
+  for (int body = 0; body < static_cast<int>(nodal.size()); ++body) {
+    recover_body(mesh, samples, body_patches(mesh, body, nullptr), nullptr, nodal[body],
+                 count[body]);
+  }
+}
 
-  for (int body = 0; body < n_bodies; ++body) {
-    const NodeElements around = elements_around(mesh, body);
-    const std::vector<char> boundary = boundary_vertices(mesh, body);
-    // Interior vertices: their own patch. Others: sum of the patches reaching them.
-    std::vector<char> own(mesh.n_nodes(), 0);
-    std::vector<Eigen::Vector4d> sum(mesh.n_nodes(), Eigen::Vector4d::Zero());
-    std::vector<int> reached(mesh.n_nodes(), 0);
-    PatchFit fit;
-    for (int node = 0; node < mesh.n_nodes(); ++node) {
-      const std::span<const int> patch = around.of(node);
-      if (patch.empty() || boundary[node] || !fit_patch(mesh, samples, patch, node, degree, fit)) {
-        continue;
-      }
-      nodal[body][node] = fit.at(mesh.nodes[node]);
-      count[body][node] = 1;
-      own[node] = 1;
-      for (int e : patch) {
-        for (int a = 0; a < nen; ++a) {
-          const int other = mesh.elements[e][a];
-          const bool interior_vertex = a < 4 && !boundary[other];
-          if (other == node || interior_vertex)
-            continue;
-          sum[other] += fit.at(mesh.nodes[other]);
-          ++reached[other];
-        }
-      }
-    }
-    for (int node = 0; node < mesh.n_nodes(); ++node) {
-      if (own[node] || reached[node] == 0)
-        continue;
-      nodal[body][node] = sum[node] / reached[node];
-      count[body][node] = reached[node];
-    }
+void recover_by_patches(const Mesh& mesh, const ElementSamples& samples, const PatchScope& scope,
+                        std::vector<std::vector<Eigen::Vector4d>>& nodal,
+                        std::vector<std::vector<int>>& count) {
+  const auto& bodies = scope.impl_->bodies;
+  for (int body = 0; body < static_cast<int>(nodal.size()); ++body) {
+    recover_body(mesh, samples, bodies.at(body), &scope.nodes(), nodal[body], count[body]);
   }
 }
 

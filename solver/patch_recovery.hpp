@@ -18,6 +18,7 @@
 // of elements, an O(h) bias; the centre values carry no such bias and the fitted polynomial is
 // accurate to O(h^2) at the surface.
 
+#include <memory>
 #include <vector>
 
 #include <Eigen/Core>
@@ -45,6 +46,32 @@ const std::vector<Eigen::Vector2d>& patch_sampling_points(ElementType type);
 /// Overwrites nodal[body][node] (and sets count[body][node] to the number of patches averaged)
 /// for every node a patch of its body reaches; leaves the other entries unchanged.
 void recover_by_patches(const Mesh& mesh, const ElementSamples& samples,
+                        std::vector<std::vector<Eigen::Vector4d>>& nodal,
+                        std::vector<std::vector<int>>& count);
+
+/// The patches that reach the nodes marked in `nodes` (size n_nodes; e.g. a sampled surface), per
+/// body 0 .. n_bodies - 1, found once per mesh and node set: the recovery at those nodes alone
+/// then costs the patches, not the mesh.
+class PatchScope {
+ public:
+  PatchScope(const Mesh& mesh, int n_bodies, std::vector<char> nodes);
+  /// The nodes marked.
+  const std::vector<char>& nodes() const;
+  /// The elements (a mask of size n_elements) whose samples the patches read.
+  const std::vector<char>& elements() const;
+
+ private:
+  friend void recover_by_patches(const Mesh&, const ElementSamples&, const PatchScope&,
+                                 std::vector<std::vector<Eigen::Vector4d>>&,
+                                 std::vector<std::vector<int>>&);
+  struct Impl;
+  std::shared_ptr<const Impl> impl_;
+};
+
+/// The same recovery at the nodes of `scope` only: their entries get the values, bit for bit,
+/// that the whole-mesh recovery gives them (the same patches fitted and summed in the same
+/// order); the other entries are left unchanged. `samples` need only hold scope.elements().
+void recover_by_patches(const Mesh& mesh, const ElementSamples& samples, const PatchScope& scope,
                         std::vector<std::vector<Eigen::Vector4d>>& nodal,
                         std::vector<std::vector<int>>& count);
 

@@ -58,13 +58,17 @@ ElementVector element_displacements(const Mesh& mesh, int e, const Eigen::Vector
   return u_e;
 }
 
-/// The stresses at the patch sampling points of every element (patch_recovery.hpp).
+/// The stresses at the patch sampling points of the elements marked in `elements` (nullptr:
+/// every element; patch_recovery.hpp).
 ElementSamples patch_samples(const Model& model, const Eigen::VectorXd& u,
-                             const std::vector<Eigen::Matrix4d>& D) {
+                             const std::vector<Eigen::Matrix4d>& D,
+                             const std::vector<char>* elements) {
   const Mesh& mesh = model.mesh;
   const auto& points = patch_sampling_points(mesh.type);
   ElementSamples samples(mesh.n_elements());
   for (int e = 0; e < mesh.n_elements(); ++e) {
+    if (elements != nullptr && !(*elements)[e])
+      continue;
     const ElementGeometry g = element_geometry(mesh, model.analysis, e);
     const ElementVector u_e = element_displacements(mesh, e, u);
     samples[e].reserve(points.size());
@@ -77,20 +81,34 @@ ElementSamples patch_samples(const Model& model, const Eigen::VectorXd& u,
 }
 
 /// Replaces the extrapolated, averaged values of `field` by patch-recovered ones wherever a
-/// patch reaches.
+/// patch reaches (at the nodes of `patches`; nullptr: every node).
 void apply_patch_recovery(const Model& model, const Eigen::VectorXd& u,
-                          const std::vector<Eigen::Matrix4d>& D, StressField& field) {
+                          const std::vector<Eigen::Matrix4d>& D, const PatchScope* patches,
+                          const std::vector<int>* node_list, StressField& field) {
+  // Copied in and out at the nodes that can change: every node, or the scope's.
   std::vector<std::vector<Eigen::Vector4d>> nodal(field.nodal.size());
-  for (std::size_t b = 0; b < nodal.size(); ++b) {
-    nodal[b].reserve(field.nodal[b].size());
-    for (const Stress& s : field.nodal[b])
-      nodal[b].push_back(s.vector());
+  auto for_each_node = [&](auto&& f) {
+    for (std::size_t b = 0; b < nodal.size(); ++b) {
+      if (node_list == nullptr) {
+        for (std::size_t n = 0; n < nodal[b].size(); ++n)
+          f(b, n);
+      } else {
+        for (int n : *node_list)
+          f(b, static_cast<std::size_t>(n));
+      }
+    }
+  };
+  for (std::size_t b = 0; b < nodal.size(); ++b)
+    nodal[b].resize(field.nodal[b].size());
+  for_each_node([&](std::size_t b, std::size_t n) { nodal[b][n] = field.nodal[b][n].vector(); });
+  if (patches == nullptr) {
+    recover_by_patches(model.mesh, patch_samples(model, u, D, nullptr), nodal, field.nodal_count);
+  } else {
+    recover_by_patches(model.mesh, patch_samples(model, u, D, &patches->elements()), *patches,
+                       nodal, field.nodal_count);
   }
-  recover_by_patches(model.mesh, patch_samples(model, u, D), nodal, field.nodal_count);
-  for (std::size_t b = 0; b < nodal.size(); ++b) {
-    for (std::size_t n = 0; n < nodal[b].size(); ++n)
-      field.nodal[b][n] = Stress::from(nodal[b][n]);
-  }
+  for_each_node(
+      [&](std::size_t b, std::size_t n) { field.nodal[b][n] = Stress::from(nodal[b][n]); });
 }
 
 }  // namespace
@@ -138,8 +156,23 @@ const Stress& StressField::at_node(int node) const {
   return at_node(node, found);
 }
 
-StressField recover_stresses(const Model& model, const Eigen::VectorXd& u,
-                             const StressRecoveryOptions& options) {
+namespace {
+
+/// Where a restricted recovery works: the nodes wanted, the elements holding one (increasing)
+/// and the patches that reach them.
+struct RecoveryScope {
+  const std::vector<int>& nodes;     ///< increasing
+  const std::vector<int>& elements;  ///< increasing
+  const PatchScope& patches;
+};
+
+/// recover_stresses at the nodes of `scope` (nullptr: every node). Nodal methods: only the
+/// elements holding such a node are evaluated (in increasing order, as for the whole mesh, so
+/// that every sum adds in the same order) and only the scope's nodes have values. GaussPoint: the
+/// Gauss points of those elements.
+StressField recover(const Model& model, const Eigen::VectorXd& u,
+                    const StressRecoveryOptions& options, const RecoveryScope* scope) {
+  const std::vector<char>* nodes = scope != nullptr ? &scope->patches.nodes() : nullptr;
   const Mesh& mesh = model.mesh;
   if (u.size() != 2 * mesh.n_nodes()) {
     throw std::invalid_argument(
@@ -163,14 +196,21 @@ StressField recover_stresses(const Model& model, const Eigen::VectorXd& u,
   Eigen::MatrixXd E;
   if (!gauss) {
     E = extrapolation_matrix(mesh.type, n);
-    field.nodal.assign(model.n_bodies(), std::vector<Stress>(mesh.n_nodes()));
-    field.nodal_count.assign(model.n_bodies(), std::vector<int>(mesh.n_nodes(), 0));
+    field.nodal.resize(model.n_bodies());
+    field.nodal_count.resize(model.n_bodies());
+    for (int b = 0; b < model.n_bodies(); ++b) {  // zeroed in place (no copy of a prototype)
+      field.nodal[b].resize(mesh.n_nodes());
+      field.nodal_count[b].resize(mesh.n_nodes(), 0);
+    }
   } else {
     field.gauss_points.reserve(static_cast<std::size_t>(mesh.n_elements()) * rule.size());
   }
 
   Eigen::MatrixXd sampled(rule.size(), 4);
-  for (int e = 0; e < mesh.n_elements(); ++e) {
+  const int n_evaluated =
+      scope != nullptr ? static_cast<int>(scope->elements.size()) : mesh.n_elements();
+  for (int i = 0; i < n_evaluated; ++i) {
+    const int e = scope != nullptr ? scope->elements[i] : i;
     const int body = mesh.element_body[e];
     const ElementGeometry g = element_geometry(mesh, model.analysis, e);
     const ElementVector u_e = element_displacements(mesh, e, u);
@@ -194,17 +234,42 @@ StressField recover_stresses(const Model& model, const Eigen::VectorXd& u,
     }
   }
   if (!gauss) {
+    auto average = [&](int b, int node) {
+      const int count = field.nodal_count[b][node];
+      if (count > 1)
+        field.nodal[b][node] = Stress::from(field.nodal[b][node].vector() / count);
+    };
     for (int b = 0; b < model.n_bodies(); ++b) {
-      for (int node = 0; node < mesh.n_nodes(); ++node) {
-        const int count = field.nodal_count[b][node];
-        if (count > 1)
-          field.nodal[b][node] = Stress::from(field.nodal[b][node].vector() / count);
+      if (scope == nullptr) {
+        for (int node = 0; node < mesh.n_nodes(); ++node)
+          average(b, node);
+        continue;
       }
+      for (int e : scope->elements) {
+        for (int a = 0; a < nen; ++a) {
+          const int node = mesh.elements[e][a];
+          if (!(*nodes)[node]) {  // reached by some of its elements only: no value
+            field.nodal_count[b][node] = 0;
+            field.nodal[b][node] = Stress{};
+          }
+        }
+      }
+      for (int node : scope->nodes)
+        average(b, node);
     }
   }
-  if (options.method == StressRecoveryMethod::PatchRecovered)
-    apply_patch_recovery(model, u, D, field);
+  if (options.method == StressRecoveryMethod::PatchRecovered) {
+    apply_patch_recovery(model, u, D, scope != nullptr ? &scope->patches : nullptr,
+                         scope != nullptr ? &scope->nodes : nullptr, field);
+  }
   return field;
+}
+
+}  // namespace
+
+StressField recover_stresses(const Model& model, const Eigen::VectorXd& u,
+                             const StressRecoveryOptions& options) {
+  return recover(model, u, options, nullptr);
 }
 
 namespace {
@@ -296,6 +361,54 @@ std::vector<SurfaceStressSample> surface_stresses(const Model& model, const Stre
   std::stable_sort(samples.begin(), samples.end(),
                    [](const auto& a, const auto& b) { return a.arc_length < b.arc_length; });
   return samples;
+}
+
+namespace {
+
+std::vector<char> path_nodes(const Mesh& mesh, const std::string& edge_set) {
+  std::vector<char> nodes(mesh.n_nodes(), 0);
+  for (int node : surface_path(mesh, edge_set).nodes)
+    nodes[node] = 1;
+  return nodes;
+}
+
+std::vector<int> elements_holding(const Mesh& mesh, const std::vector<char>& nodes) {
+  std::vector<int> elements;
+  for (int e = 0; e < mesh.n_elements(); ++e) {
+    for (int a = 0; a < mesh.n_element_nodes(); ++a) {
+      if (nodes[mesh.elements[e][a]]) {
+        elements.push_back(e);
+        break;
+      }
+    }
+  }
+  return elements;
+}
+
+}  // namespace
+
+SurfaceStressRecovery::SurfaceStressRecovery(const Model& model, std::string edge_set)
+    : model_(&model),
+      edge_set_(std::move(edge_set)),
+      patches_(model.mesh, model.n_bodies(), path_nodes(model.mesh, edge_set_)),
+      elements_(elements_holding(model.mesh, patches_.nodes())) {
+  for (int node = 0; node < model.mesh.n_nodes(); ++node) {
+    if (patches_.nodes()[node])
+      nodes_.push_back(node);
+  }
+}
+
+std::vector<SurfaceStressSample> SurfaceStressRecovery::recover(
+    const Eigen::VectorXd& u, const StressRecoveryOptions& options) const {
+  const RecoveryScope scope{nodes_, elements_, patches_};
+  return surface_stresses(*model_, cs::solver::recover(*model_, u, options, &scope), edge_set_);
+}
+
+std::vector<SurfaceStressSample> recover_surface_stresses(const Model& model,
+                                                          const Eigen::VectorXd& u,
+                                                          const StressRecoveryOptions& options,
+                                                          const std::string& edge_set) {
+  return SurfaceStressRecovery(model, edge_set).recover(u, options);
 }
 
 }  // namespace cs::solver

@@ -23,6 +23,7 @@
 #include <Eigen/Core>
 
 #include "solver/model.hpp"
+#include "solver/patch_recovery.hpp"
 
 namespace cs::solver {
 
@@ -114,5 +115,31 @@ struct SurfaceStressSample {
 /// Throws ModelError if the set is unknown or empty.
 std::vector<SurfaceStressSample> surface_stresses(const Model& model, const StressField& field,
                                                   const std::string& edge_set);
+
+/// The stresses along one edge set of a model, recovered for any displacement at the cost of the
+/// elements (and, for patch recovery, the patches) that reach the set's nodes instead of the
+/// whole mesh: what a case that samples one surface needs. Which elements and patches those are
+/// is found once, when this is made. The model must outlive it.
+class SurfaceStressRecovery {
+ public:
+  /// Throws ModelError if the set is unknown or empty.
+  SurfaceStressRecovery(const Model& model, std::string edge_set);
+  /// surface_stresses(model, recover_stresses(model, u, options), edge_set), bit for bit.
+  std::vector<SurfaceStressSample> recover(const Eigen::VectorXd& u,
+                                           const StressRecoveryOptions& options) const;
+
+ private:
+  const Model* model_;
+  std::string edge_set_;
+  PatchScope patches_;         ///< the set's nodes and the patches that reach them
+  std::vector<int> elements_;  ///< the elements holding a node of the set, increasing
+  std::vector<int> nodes_;     ///< the set's nodes, increasing
+};
+
+/// SurfaceStressRecovery(model, edge_set).recover(u, options): for one displacement.
+std::vector<SurfaceStressSample> recover_surface_stresses(const Model& model,
+                                                          const Eigen::VectorXd& u,
+                                                          const StressRecoveryOptions& options,
+                                                          const std::string& edge_set);
 
 }  // namespace cs::solver

@@ -165,6 +165,7 @@ CaseResult ProblemExecutor::run(const CaseSpec& spec) {
   result.element_size_h = setup_->mesh_info.h_contact / setup_->length_unit;
   last_u_.resize(0);
   last_stresses_.reset();
+  last_recovery_ = recovery_options(spec);
 
   const solver::ContactResult& contact = contact_solution(spec);
   result.n_equations = elastic_->dof_map().n_free();
@@ -181,8 +182,10 @@ CaseResult ProblemExecutor::run(const CaseSpec& spec) {
   result.status = contact.status == solver::ContactStatus::Converged ? CaseStatus::converged
                                                                      : CaseStatus::not_converged;
   last_u_ = contact.displacement;
-  last_stresses_ = solver::recover_stresses(setup_->model, last_u_, recovery_options(spec));
-  const auto surface = solver::surface_stresses(setup_->model, *last_stresses_, kSampledSurface);
+  // Only the sampled surface is graded: recovered there alone (the whole field on demand).
+  if (!surface_recovery_)
+    surface_recovery_.emplace(setup_->model, kSampledSurface);
+  const auto surface = surface_recovery_->recover(last_u_, last_recovery_);
   std::vector<ContactPressureSample> pressures;
   pressures.reserve(contact.nodes.size());
   for (const auto& n : contact.nodes)
@@ -212,8 +215,14 @@ double ProblemExecutor::applied_load() {
   return *applied_load_;
 }
 
-void ProblemExecutor::write_vtu(const std::string& path) const {
-  if (last_u_.size() == 0 || !last_stresses_) {
+const std::optional<solver::StressField>& ProblemExecutor::last_stresses() {
+  if (!last_stresses_ && last_u_.size() > 0)
+    last_stresses_ = solver::recover_stresses(setup_->model, last_u_, last_recovery_);
+  return last_stresses_;
+}
+
+void ProblemExecutor::write_vtu(const std::string& path) {
+  if (last_u_.size() == 0 || !last_stresses()) {
     throw std::runtime_error("no displacement to write: the case produced no values");
   }
   const solver::Mesh& mesh = setup_->model.mesh;

@@ -45,11 +45,12 @@ class ProblemExecutor final : public GroupExecutor {
   const ProblemSetup& setup() const { return *setup_; }
   /// The displacement of the last case run (empty if it produced none).
   const Eigen::VectorXd& last_displacement() const { return last_u_; }
-  /// The nodal stresses of the last case run, if any.
-  const std::optional<solver::StressField>& last_stresses() const { return last_stresses_; }
+  /// The nodal stresses of the last case run over the whole mesh, if it produced values
+  /// (recovered on first call: a case itself recovers only its sampled surface).
+  const std::optional<solver::StressField>& last_stresses();
   /// Writes the model with the displacement and nodal stresses of the last case run as a
   /// .vtu file (atomically). Throws std::runtime_error if the last case produced no values.
-  void write_vtu(const std::string& path) const;
+  void write_vtu(const std::string& path);
 
  private:
   /// The contact solution of `spec`: solved, or the last one when only the recovery differs
@@ -64,7 +65,10 @@ class ProblemExecutor final : public GroupExecutor {
   std::unique_ptr<solver::LinearStaticAnalysis> elastic_;
   std::unique_ptr<solver::ContactAnalysis> contact_;
   Eigen::VectorXd last_u_;
-  std::optional<solver::StressField> last_stresses_;
+  std::optional<solver::StressField> last_stresses_;  ///< whole mesh, on demand
+  solver::StressRecoveryOptions last_recovery_;
+  /// The sampled surface's elements and patches, found on the first case.
+  std::optional<solver::SurfaceStressRecovery> surface_recovery_;
   std::optional<std::pair<std::string, solver::ContactResult>> last_contact_;
   std::optional<double> applied_load_;
 };

@@ -84,6 +84,13 @@ bool set_blas_threads(int threads) {
   return false;
 }
 
+int blas_threads() {
+  using GetFn = int (*)();
+  if (auto fn = reinterpret_cast<GetFn>(dlsym(RTLD_DEFAULT, "openblas_get_num_threads")))
+    return fn();
+  return 1;
+}
+
 std::string contact_suite_version() {
   return CONTACT_SUITE_VERSION;
 }

@@ -18,4 +18,7 @@ std::string utc_now_iso8601();
 /// returns false when it is not. Parallel runs use one BLAS thread per worker.
 bool set_blas_threads(int threads);
 
+/// The number of OpenBLAS threads; 1 when the BLAS in use is not OpenBLAS.
+int blas_threads();
+
 }  // namespace cs::suites

@@ -182,6 +182,8 @@ struct DofCondensation::Impl {
   // Reference path: the FE core's linear solver.
   std::optional<LinearSolver> solver;
   Eigen::VectorXd f;
+  /// Trailing-block path: y0 = L^{-1} P f, whose interior part every recovery shares.
+  Eigen::VectorXd y0;
 
   ~Impl() {
     if (started) {
@@ -546,8 +548,8 @@ void DofCondensation::update_load(const Eigen::VectorXd& f) {
   cholmod_dense fb = view_vector(f);
   cholmod_dense* Pf = cholmod_solve(CHOLMOD_P, im.L, &fb, &im.common);
   cholmod_dense* y = cholmod_solve(CHOLMOD_L, im.L, Pf, &im.common);
-  const Eigen::VectorXd y_c =
-      Eigen::Map<const Eigen::VectorXd>(static_cast<const double*>(y->x) + first, nc);
+  im.y0 = Eigen::Map<const Eigen::VectorXd>(static_cast<const double*>(y->x), im.L->n);
+  const Eigen::VectorXd y_c = im.y0.tail(nc);
   cholmod_free_dense(&Pf, &im.common);
   cholmod_free_dense(&y, &im.common);
   const Eigen::VectorXd ft = L_tail_.triangularView<Eigen::Lower>() * y_c;
@@ -556,15 +558,36 @@ void DofCondensation::update_load(const Eigen::VectorXd& f) {
 }
 
 Eigen::VectorXd DofCondensation::recover(const Eigen::VectorXd& u_c) const {
-  // x = A0^{-1} [f_i; f_c(original) - f_c(condensed) + (S + Delta) u_c] has x_c = u_c and the
-  // interior in equilibrium with it.
-  Eigen::VectorXd rhs = impl_->f;
-  const Eigen::VectorXd SDu = S_ * u_c + delta_times(u_c);
-  for (int k = 0; k < n_contact_dofs(); ++k) {
-    rhs[contact_dofs_[k]] += SDu[k] - f_c_[k];
+  Impl& im = *impl_;
+  if (im.solver) {
+    // x = A0^{-1} [f_i; f_c(original) - f_c(condensed) + (S + Delta) u_c] has x_c = u_c and
+    // the interior in equilibrium with it.
+    Eigen::VectorXd rhs = im.f;
+    const Eigen::VectorXd SDu = S_ * u_c + delta_times(u_c);
+    for (int k = 0; k < n_contact_dofs(); ++k) {
+      rhs[contact_dofs_[k]] += SDu[k] - f_c_[k];
+    }
+    Eigen::VectorXd u = im.solve(rhs);
+    for (int k = 0; k < n_contact_dofs(); ++k)
+      u[contact_dofs_[k]] = u_c[k];  // exact on c
+    return u;
   }
-  Eigen::VectorXd u = impl_->solve(rhs);
-  for (int k = 0; k < n_contact_dofs(); ++k)
+  // With c last in the factor, L y = P [f_i; r_c] leaves the interior of y at y0 = L^{-1} P f
+  // whatever r_c is, and L^T (P x) = y has x_c = u_c exactly when y_c = L_cc^T u_c (tail
+  // order): one backward solve instead of a forward and a backward one.
+  const int nc = n_contact_dofs();
+  Eigen::VectorXd u_tail(nc);
+  for (int a = 0; a < nc; ++a)
+    u_tail[a] = u_c[tail_position_[a]];
+  Eigen::VectorXd y = im.y0;
+  y.tail(nc) = L_tail_.triangularView<Eigen::Lower>().transpose() * u_tail;
+  cholmod_dense yv = view_vector(y);
+  cholmod_dense* Px = cholmod_solve(CHOLMOD_Lt, im.L, &yv, &im.common);
+  cholmod_dense* x = cholmod_solve(CHOLMOD_Pt, im.L, Px, &im.common);
+  Eigen::VectorXd u = Eigen::Map<const Eigen::VectorXd>(static_cast<const double*>(x->x), y.size());
+  cholmod_free_dense(&Px, &im.common);
+  cholmod_free_dense(&x, &im.common);
+  for (int k = 0; k < nc; ++k)
     u[contact_dofs_[k]] = u_c[k];  // exact on c
   return u;
 }
