@@ -458,19 +458,14 @@ void set_answers(TemplateData& d, const ResultsIndex& index, const std::string& 
   }
 }
 
-TemplateData figure_data(const FigureSet& figures, const std::string& key) {
+/// The key's figure (figure_data), or why there is none.
+TemplateData key_figure(const FigureSet& figures, const std::string& key) {
   for (const auto& f : figures.figures) {
-    if (f.file != sweep_figure_file(key))
-      continue;
-    TemplateData d("produced", f.produced);
-    d.set("file", f.file);
-    d.set("caption", f.caption_md);
-    d.set("error", f.error);
-    return d;
+    if (f.file == sweep_figure_file(key))
+      return figure_data(f);
   }
-  TemplateData d("produced", false);
-  d.set("unavailable", figures.unavailable);
-  return figures.unavailable.empty() ? TemplateData(false) : d;
+  return figures.unavailable.empty() ? TemplateData(false)
+                                     : TemplateData("unavailable", figures.unavailable);
 }
 
 }  // namespace
@@ -491,7 +486,7 @@ std::string sweep_section(const ResultsIndex& index, const schema::StudyReferenc
     d.set("values", values_text(values));
     d.set("n_series", std::to_string(series.size()));
     set_answers(d, index, key, series, values, study);
-    d.set("figure", figure_data(figures, key));
+    d.set("figure", key_figure(figures, key));
     d.set("header",
           template_list(values, [](double v) { return TemplateData(format_swept_value(v)); }));
     d.set("rows", table_rows(series, values));
