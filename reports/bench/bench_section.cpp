@@ -48,14 +48,6 @@ std::string format_ratio(const std::optional<double>& ratio) {
   return ratio ? fmt::format("{:.2f}", *ratio) : std::string(kMissing);
 }
 
-/// "a, b and c" (or "a, b or c" with `last` = "or").
-std::string join_and(const std::vector<std::string>& items, const char* last = "and") {
-  std::string out;
-  for (std::size_t i = 0; i < items.size(); ++i)
-    out += (i == 0 ? "" : i + 1 == items.size() ? fmt::format(" {} ", last) : ", ") + items[i];
-  return out;
-}
-
 std::vector<const ContactBenchmark*> sorted_cases(const BenchResults& bench) {
   std::vector<const ContactBenchmark*> out;
   for (const auto& b : bench.contact)
@@ -110,7 +102,7 @@ TemplateData not_judged(const BenchResults& bench, const BenchTarget& target) {
   }
   TemplateData d;
   d.set("files", bench.sources.size() > 1 ? "s" : "");
-  d.set("meshes", meshes.empty() ? std::string("none") : join_and(names(meshes)));
+  d.set("meshes", meshes.empty() ? std::string("none") : join_words(names(meshes)));
   d.set("finest", TemplateData(false));
   if (!meshes.empty()) {
     BenchTarget finest = target;
@@ -133,10 +125,10 @@ TemplateData target_data(const BenchResults& bench, const BenchTarget& target) {
     problems.emplace_back(schema::label(p));
   TemplateData d;
   d.set("max_ratio", fmt::format("{:g}", target.max_ratio));
-  d.set("algorithms", join_and(names(target.algorithms)));
-  d.set("algorithms_or", join_and(names(target.algorithms), "or"));
+  d.set("algorithms", join_words(names(target.algorithms)));
+  d.set("algorithms_or", join_words(names(target.algorithms), " or "));
   d.set("mesh", name(target.mesh));
-  d.set("problems", join_and(problems));
+  d.set("problems", join_words(problems));
   const TargetCheck check = check_target(bench, target);
   d.set("judged", check.n_cases() > 0);
   d.set("not_judged", check.n_cases() > 0 ? TemplateData(false) : not_judged(bench, target));
@@ -166,7 +158,7 @@ TemplateData target_data(const BenchResults& bench, const BenchTarget& target) {
           e.set("items", m.second);
           return e;
         }));
-  d.set("not_measured", text_or_false(join_and(check.not_measured)));
+  d.set("not_measured", text_or_false(join_words(check.not_measured)));
   return d;
 }
 

@@ -70,6 +70,13 @@ std::string tidy_markdown(const std::string& markdown) {
   return out;
 }
 
+std::string join_words(const std::vector<std::string>& items, const char* last) {
+  std::string out;
+  for (std::size_t i = 0; i < items.size(); ++i)
+    out += (i == 0 ? "" : i + 1 == items.size() ? last : ", ") + items[i];
+  return out;
+}
+
 std::string format_value(double v) {
   return fmt::format("{:.4f}", v);
 }

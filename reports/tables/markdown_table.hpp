@@ -43,6 +43,9 @@ std::string format_error_resolved(double percent);
 /// format_value, or the em dash for nullopt.
 std::string format_value(const std::optional<double>& v);
 
+/// "a, b and c": `items` joined by ", ", the last two by `last` (" and ", " or ", ", ").
+std::string join_words(const std::vector<std::string>& items, const char* last = " and ");
+
 /// The em dash the report uses for "not in this results file".
 inline constexpr const char* kMissing = "—";
 
