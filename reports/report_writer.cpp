@@ -91,11 +91,9 @@ std::string variants_section(const ResultsIndex& index) {
 }
 
 std::string report_title(const ResultsIndex& index) {
-  if (!is_cross_code(index))
-    return solver_names(index) == "ours"
-               ? "our contact elements beside the study's ANSYS results"
-               : solver_names(index) + " beside the study's ANSYS results";
-  return solver_names(index) + " beside the study's ANSYS results";
+  const std::string solvers = solver_names(index);
+  return (solvers == "ours" ? "our contact elements" : solvers) +
+         " beside the study's ANSYS results";
 }
 
 std::vector<ReportPage> appendix_pages(const ResultsIndex& index,

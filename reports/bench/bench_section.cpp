@@ -48,14 +48,6 @@ std::string format_ratio(const std::optional<double>& ratio) {
   return ratio ? fmt::format("{:.2f}", *ratio) : std::string(kMissing);
 }
 
-/// "a, b and c" (or "a, b or c" with `last` = "or").
-std::string join_and(const std::vector<std::string>& items, const char* last = "and") {
-  std::string out;
-  for (std::size_t i = 0; i < items.size(); ++i)
-    out += (i == 0 ? "" : i + 1 == items.size() ? fmt::format(" {} ", last) : ", ") + items[i];
-  return out;
-}
-
 std::vector<const ContactBenchmark*> sorted_cases(const BenchResults& bench) {
   std::vector<const ContactBenchmark*> out;
   for (const auto& b : bench.contact)
@@ -110,7 +102,7 @@ TemplateData not_judged(const BenchResults& bench, const BenchTarget& target) {
   }
   TemplateData d;
   d.set("files", bench.sources.size() > 1 ? "s" : "");
-  d.set("meshes", meshes.empty() ? std::string("none") : join_and(names(meshes)));
+  d.set("meshes", meshes.empty() ? std::string("none") : join_words(names(meshes)));
   d.set("finest", TemplateData(false));
   if (!meshes.empty()) {
     BenchTarget finest = target;
@@ -133,10 +125,10 @@ TemplateData target_data(const BenchResults& bench, const BenchTarget& target) {
     problems.emplace_back(schema::label(p));
   TemplateData d;
   d.set("max_ratio", fmt::format("{:g}", target.max_ratio));
-  d.set("algorithms", join_and(names(target.algorithms)));
-  d.set("algorithms_or", join_and(names(target.algorithms), "or"));
+  d.set("algorithms", join_words(names(target.algorithms)));
+  d.set("algorithms_or", join_words(names(target.algorithms), " or "));
   d.set("mesh", name(target.mesh));
-  d.set("problems", join_and(problems));
+  d.set("problems", join_words(problems));
   const TargetCheck check = check_target(bench, target);
   d.set("judged", check.n_cases() > 0);
   d.set("not_judged", check.n_cases() > 0 ? TemplateData(false) : not_judged(bench, target));
@@ -166,7 +158,7 @@ TemplateData target_data(const BenchResults& bench, const BenchTarget& target) {
           e.set("items", m.second);
           return e;
         }));
-  d.set("not_measured", text_or_false(join_and(check.not_measured)));
+  d.set("not_measured", text_or_false(join_words(check.not_measured)));
   return d;
 }
 
@@ -294,36 +286,35 @@ TargetCheck check_target(const BenchResults& bench, const BenchTarget& target) {
 
 std::string machine_line(const BenchSource& source) {
   const BenchContext& c = source.context;
-  std::vector<std::string> parts;
+  TemplateData parts{TemplateData::type::list};
+  const auto part = [&](const char* key, const std::string& value, TemplateData p = {}) {
+    p.set(key, value);
+    p.set("first", parts.is_empty_list());
+    parts.push_back(p);
+  };
   if (!c.host_name.empty())
-    parts.push_back(fmt::format("host `{}`", c.host_name));
-  if (c.num_cpus) {
-    parts.push_back(c.mhz_per_cpu
-                        ? fmt::format("{} CPUs at {:.0f} MHz", *c.num_cpus, *c.mhz_per_cpu)
-                        : fmt::format("{} CPUs", *c.num_cpus));
-  }
-  if (!c.load_avg.empty()) {
-    std::string loads;
-    for (double l : c.load_avg)
-      loads += fmt::format("{}{:.2f}", loads.empty() ? "" : " / ", l);
-    parts.push_back(fmt::format("load average {} when the run began", loads));
-  }
+    part("host", c.host_name);
+  if (c.num_cpus)
+    part("cpus", std::to_string(*c.num_cpus),
+         c.mhz_per_cpu ? TemplateData("mhz", fmt::format("{:.0f}", *c.mhz_per_cpu))
+                       : TemplateData());
+  std::vector<std::string> loads;
+  for (double l : c.load_avg)
+    loads.push_back(fmt::format("{:.2f}", l));
+  if (!loads.empty())
+    part("loads", fmt::format("{}", fmt::join(loads, " / ")));
   if (!c.library_build_type.empty())
-    parts.push_back(
-        fmt::format("Google Benchmark library built as {} (the library's own build, "
-                    "not the timed code's)",
-                    c.library_build_type));
+    part("build_type", c.library_build_type);
   if (!c.executable.empty())
-    parts.push_back(fmt::format("program `{}`", c.executable));
+    part("executable", c.executable);
   if (!c.date.empty())
-    parts.push_back(fmt::format("run {}", c.date));
-  std::string out = fmt::format("**Machine** (`{}`): {}.", source.file,
-                                parts.empty() ? std::string("the file does not say (no `context`)")
-                                              : fmt::format("{}", fmt::join(parts, ", ")));
-  if (c.cpu_scaling_enabled && *c.cpu_scaling_enabled)
-    out += " CPU frequency scaling was on: times may vary from run to run.";
-  if (source.n_other > 0)
-    out += fmt::format(" {} benchmarks of other families left out.", source.n_other);
+    part("date", c.date);
+  TemplateData d("file", source.file);
+  d.set("parts", parts);
+  d.set("scaling", c.cpu_scaling_enabled.value_or(false));
+  d.set("n_other", text_or_false(source.n_other > 0 ? std::to_string(source.n_other) : ""));
+  std::string out = render_template(templates::machine_line, d);
+  std::erase(out, '\n');
   return out;
 }
 

@@ -227,13 +227,13 @@ std::string anomalies_section(const ResultsIndex& index) {
   d["n_luck"] = std::to_string(a.luck.size());
   d["n_luck_c"] = std::to_string(
       std::count_if(a.luck.begin(), a.luck.end(), [](const RowFacts* f) { return f->study_c; }));
-  d["luck"] = template_list(a.luck, [](const RowFacts* f) -> TemplateData {
-    return Fields{{"row", row_name(*f)},
-                  {"errors", errors_text(*f)},
-                  {"grade", f->grade ? std::string(schema::to_string(*f->grade)) : kMissing},
-                  {"c", f->study_c ? "c" : ""},
-                  {"credible", f->credible ? "yes" : "no"}};
-  });
+  MarkdownTable luck({"Row", "Error C / M / F", "Grade", "c", "Credible"},
+                     {Align::left, Align::left, Align::center, Align::center, Align::center});
+  for (const RowFacts* f : a.luck)
+    luck.add_row({row_name(*f), errors_text(*f),
+                  f->grade ? std::string(schema::to_string(*f->grade)) : kMissing,
+                  f->study_c ? "c" : "", f->credible ? "yes" : "no"});
+  d["luck"] = luck.render();
   return render_template(templates::anomalies_section, d);
 }
 

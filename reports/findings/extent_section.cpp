@@ -184,36 +184,34 @@ std::string option_of(const ExtentSeries& s) {
                      s.option.label());
 }
 
-TemplateData series_rows(const ResultsIndex& index,
+/// Per series and extent: the C, M, F values, the Richardson limit, F against the limit and the
+/// change of F from the previous extent.
+std::string series_table(const ResultsIndex& index,
                          const std::vector<const ExtentSeries*>& series) {
-  TemplateData list{TemplateData::type::list};
+  constexpr Align l = Align::left, c = Align::center, r = Align::right;
+  MarkdownTable t({"Quantity", "Element", "Option", "Extent", "C", "M", "F", "Richardson limit",
+                   "F − limit", "Change of F from the previous extent"},
+                  {l, c, l, r, r, r, r, r, r, r});
   for (const ExtentSeries* s : series) {
     std::optional<double> previous;
     for (const auto& [k, row] : s->by_extent) {
       const auto exact = index.exact_of(*row);
       const auto lim = richardson(*row);
       const auto f = fine_value(*row);
-      TemplateData d;
-      d.set("quantity", std::string(schema::label(s->quantity)));
-      d.set("element", std::string(schema::to_string(s->element)));
-      d.set("option", s->option.label());
-      d.set("extent", extent_label(k));
-      for (std::size_t m = 0; m < 3; ++m) {
-        const auto v = row->values[m];
-        d.set(std::string(1, "cmf"[m]),
-              v ? fmt::format("{} ({})", format_value(*v), percent_cell(percent_of(v, exact)))
-                : std::string(kMissing));
-      }
-      d.set("limit",
-            lim ? fmt::format("{} ({})", format_value(*lim), percent_cell(percent_of(lim, exact)))
-                : (row->estimate ? row->estimate->note : std::string(kMissing)));
-      d.set("f_minus_limit", percent_cell(lim && f ? percent_of(f, lim) : std::nullopt));
-      d.set("change", percent_cell(previous && f ? percent_of(f, previous) : std::nullopt));
+      const auto with_error = [&](std::optional<double> v) {
+        return v ? fmt::format("{} ({})", format_value(*v), percent_cell(percent_of(v, exact)))
+                 : std::string(kMissing);
+      };
+      t.add_row({std::string(schema::label(s->quantity)),
+                 std::string(schema::to_string(s->element)), s->option.label(), extent_label(k),
+                 with_error(row->values[0]), with_error(row->values[1]), with_error(row->values[2]),
+                 lim ? with_error(lim) : (row->estimate ? row->estimate->note : kMissing),
+                 percent_cell(lim && f ? percent_of(f, lim) : std::nullopt),
+                 percent_cell(previous && f ? percent_of(f, previous) : std::nullopt)});
       previous = f;
-      list.push_back(d);
     }
   }
-  return list;
+  return t.render();
 }
 
 std::vector<ErrorSplit> error_splits(const ResultsIndex& index,
@@ -311,7 +309,7 @@ TemplateData problem_data(const ResultsIndex& index, const ExtentFacts& f,
   d.set("singular", index.singular(f.problem));
   d.set("exact", format_value(index.exact_of(*series.front()->by_extent.begin()->second)));
   d.set("exact_source", record ? record->exact_source : std::string());
-  d.set("series", series_rows(index, series));
+  d.set("series", series_table(index, series));
   d.set("splits", template_list(f.splits, [](const ErrorSplit& s) {
           TemplateData t;
           t.set("option", s.option);

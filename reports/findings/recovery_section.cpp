@@ -82,21 +82,24 @@ TemplateData comparison_data(const RecoveryComparison& c) {
   return d;
 }
 
-TemplateData pair_data(const ResultsIndex& index, const RecoveryPair& p) {
-  const schema::ProblemRecord* info = index.problem(p.spr->spec.problem);
-  std::string name(schema::label(p.spr->spec.problem));
-  if (info != nullptr && info->quantities.size() > 1)
-    name += fmt::format(" {}", schema::label(p.spr->quantity));
-  TemplateData d;
-  d.set("problem", name);
-  d.set("element", std::string(schema::to_string(p.spr->spec.element)));
-  d.set("option", Option{p.spr->spec.algorithm, p.spr->spec.contact}.label());
-  d.set("spr", error_cell(*p.spr, p.mesh));
-  d.set("extrapolated", error_cell(*p.extrapolated, p.mesh));
-  d.set("pressure", p.pressure_error ? format_percent(*p.pressure_error) : kMissing);
-  d.set("converging",
-        converging_text(p.spr->converging) + " / " + converging_text(p.extrapolated->converging));
-  return d;
+std::string pairs_table(const ResultsIndex& index, const std::vector<RecoveryPair>& pairs) {
+  constexpr Align l = Align::left, c = Align::center, r = Align::right;
+  MarkdownTable t({"Problem", "Element", "Option", "Patch recovery", "Extrapolated",
+                   "Contact pressure", "Converging (patch / extrapolated)"},
+                  {l, c, l, r, r, r, c});
+  for (const RecoveryPair& p : pairs) {
+    const schema::ProblemRecord* info = index.problem(p.spr->spec.problem);
+    std::string name(schema::label(p.spr->spec.problem));
+    if (info != nullptr && info->quantities.size() > 1)
+      name += fmt::format(" {}", schema::label(p.spr->quantity));
+    t.add_row(
+        {name, std::string(schema::to_string(p.spr->spec.element)),
+         Option{p.spr->spec.algorithm, p.spr->spec.contact}.label(), error_cell(*p.spr, p.mesh),
+         error_cell(*p.extrapolated, p.mesh),
+         p.pressure_error ? format_percent(*p.pressure_error) : kMissing,
+         converging_text(p.spr->converging) + " / " + converging_text(p.extrapolated->converging)});
+  }
+  return t.render();
 }
 
 }  // namespace
@@ -154,8 +157,7 @@ std::string recovery_section(const ResultsIndex& index) {
                 [](const RecoveryPair& p) { return *p.spr->grade == *p.extrapolated->grade; });
   d.set("n_differing", std::to_string(differing.size()));
   d.set("has_differing", !differing.empty());
-  d.set("differing",
-        template_list(differing, [&](const RecoveryPair& p) { return pair_data(index, p); }));
+  d.set("differing", pairs_table(index, differing));
   return render_template(templates::recovery_section, d);
 }
 

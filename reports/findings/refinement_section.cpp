@@ -140,26 +140,31 @@ std::string percent(int part, int whole) {
   return whole == 0 ? std::string(kMissing) : fmt::format("{:.0f} %", 100.0 * part / whole);
 }
 
-TemplateData summary_data(const EstimateSummary& s) {
-  return Fields{{"problem", std::string(schema::label(s.problem))},
-                {"rows", std::to_string(s.rows)},
-                {"asymptotic", std::to_string(s.asymptotic)},
-                {"bounded", fmt::format("{} of {}", s.bounded, s.with_exact)},
-                {"median_gci", s.median_gci ? fmt::format("{:.3g} %", *s.median_gci) : kMissing}};
+std::string summary_table(const std::vector<EstimateSummary>& summaries) {
+  constexpr Align r = Align::right;
+  MarkdownTable t(
+      {"Problem", "Rows", "Asymptotic", "Exact value inside the GCI band", "Median GCI"},
+      {Align::left, r, r, r, r});
+  for (const auto& s : summaries)
+    t.add_row({std::string(schema::label(s.problem)), std::to_string(s.rows),
+               std::to_string(s.asymptotic), fmt::format("{} of {}", s.bounded, s.with_exact),
+               s.median_gci ? fmt::format("{:.3g} %", *s.median_gci) : kMissing});
+  return t.render();
 }
 
-TemplateData vf_data(const VfRow& v) {
-  const auto error = [&](std::size_t m) {
-    return v.row->errors[m] ? format_error_resolved(*v.row->errors[m]) : std::string(kMissing);
-  };
-  return Fields{{"row", row_label(*v.row)},
-                {"c", error(0)},
-                {"m", error(1)},
-                {"f", error(2)},
-                {"vf", vf_cell(v)},
-                {"trend_cmf", trend_cell(v.trend_cmf)},
-                {"trend_mfvf", trend_cell(v.trend_mfvf)},
-                {"claim", claim_cell(v.claim)}};
+std::string vf_table(const std::vector<VfRow>& rows) {
+  constexpr Align r = Align::right, c = Align::center;
+  MarkdownTable t(
+      {"Row", "C", "M", "F", "VF", "Trend C-M-F", "Trend M-F-VF", "Further refinement converges"},
+      {Align::left, r, r, r, r, c, c, Align::left});
+  for (const VfRow& v : rows) {
+    const auto error = [&](std::size_t m) {
+      return v.row->errors[m] ? format_error_resolved(*v.row->errors[m]) : std::string(kMissing);
+    };
+    t.add_row({row_label(*v.row), error(0), error(1), error(2), vf_cell(v), trend_cell(v.trend_cmf),
+               trend_cell(v.trend_mfvf), claim_cell(v.claim)});
+  }
+  return t.render();
 }
 
 std::string csv_number(const std::optional<double>& v) {
@@ -285,7 +290,7 @@ std::string refinement_section(const ResultsIndex& index) {
            {"bounded_share", percent(bounded, with_exact)},
            // Roache's factor 1.25 is meant to cover the exact value about 95 % of the time.
            {"band_understates", with_exact > 0 && bounded < 0.95 * with_exact},
-           {"problems", template_list(f.problems, summary_data)},
+           {"problems", summary_table(f.problems)},
            {"has_vf", !f.vf_rows.empty() || f.singular_vf > 0},
            {"n_vf", n(static_cast<int>(f.vf_rows.size()))},
            {"applies", n(f.claim.applies)},
@@ -293,7 +298,7 @@ std::string refinement_section(const ResultsIndex& index) {
            {"judged", n(f.claim.holds + f.claim.fails)},
            {"vf_not_converged", n(f.claim.vf_not_converged)},
            {"has_vf_not_converged", f.claim.vf_not_converged > 0},
-           {"vf_rows", template_list(shown, vf_data)},
+           {"vf_rows", vf_table(shown)},
            {"has_shown", !shown.empty()}};
   if (f.mpc.rows > 0)
     d["mpc"] = Fields{{"rows", n(f.mpc.rows)},

@@ -118,31 +118,42 @@ bool penalty_based(const SweepSeries& s) {
   return schema::traits(s.base.algorithm).penalty_based;
 }
 
-/// The rows of one key's table: per curve on the finest mesh swept, per value the signed error,
-/// grade and iterations, or the status of a case without an error.
-TemplateData table_rows(const std::vector<SweepSeries>& series, const std::vector<double>& values) {
-  return template_list(
-      curves(series, [&](const SweepSeries& s) { return on_finest_mesh(s, series); }),
-      [&](const Curve& c) {
-        const auto& b = c.series->base;
-        TemplateData d;
-        d.set("problem", std::string(schema::to_string(b.problem)));
-        d.set("quantity", std::string(schema::to_string(c.quantity)));
-        d.set("mesh", std::string(schema::to_string(b.mesh)));
-        d.set("element", std::string(schema::to_string(b.element)));
-        d.set("option", c.series->option_label());
-        d.set("cells", template_list(values, [&](double v) {
-                const SweepPoint* p = point_at(*c.series, v);
-                const auto e = p ? SweepSeries::error(*p, c.quantity) : std::nullopt;
-                if (!e)
-                  return TemplateData(p ? std::string(to_string(p->result->status)) : kMissing);
-                return TemplateData(fmt::format(
-                    "{} {}, {} it{}", format_error_resolved(*e),
-                    schema::to_string(grading::grade_of_error(*e)), p->result->iterations,
-                    SweepSeries::converged(*p) ? "" : " (not converged)"));
-              }));
-        return d;
-      });
+/// A table whose first columns are `header` (aligned as `align`), then one right-aligned
+/// column per swept value.
+MarkdownTable value_table(std::vector<std::string> header, std::vector<Align> align,
+                          const std::vector<double>& values) {
+  for (double v : values) {
+    header.push_back(format_swept_value(v));
+    align.push_back(Align::right);
+  }
+  return MarkdownTable(std::move(header), std::move(align));
+}
+
+/// One key's table: per curve on the finest mesh swept, per value the signed error, grade and
+/// iterations, or the status of a case without an error.
+std::string error_table(const std::vector<SweepSeries>& series, const std::vector<double>& values) {
+  constexpr Align l = Align::left, c = Align::center;
+  MarkdownTable t =
+      value_table({"Problem", "Quantity", "Mesh", "Element", "Option"}, {l, l, c, c, l}, values);
+  for (const Curve& curve :
+       curves(series, [&](const SweepSeries& s) { return on_finest_mesh(s, series); })) {
+    const auto& b = curve.series->base;
+    std::vector<std::string> row{
+        std::string(schema::to_string(b.problem)), std::string(schema::to_string(curve.quantity)),
+        std::string(schema::to_string(b.mesh)), std::string(schema::to_string(b.element)),
+        curve.series->option_label()};
+    for (double v : values) {
+      const SweepPoint* p = point_at(*curve.series, v);
+      const auto e = p ? SweepSeries::error(*p, curve.quantity) : std::nullopt;
+      row.push_back(!e ? (p ? std::string(to_string(p->result->status)) : kMissing)
+                       : fmt::format("{} {}, {} it{}", format_error_resolved(*e),
+                                     schema::to_string(grading::grade_of_error(*e)),
+                                     p->result->iterations,
+                                     SweepSeries::converged(*p) ? "" : " (not converged)"));
+    }
+    t.add_row(std::move(row));
+  }
+  return t.render();
 }
 
 /// The largest spread (max - min, percentage points) of a curve's converged errors.
@@ -344,20 +355,21 @@ TemplateData fkn(const ResultsIndex& index, const std::vector<SweepSeries>& seri
   }
   d.set("al_pm", al_pm(series, values));
   d.set("study_al", study_al(series, study));
-  d.set("algorithms", template_list(schema::values<Algorithm>(), [&](Algorithm a) {
-          TemplateData row("name", std::string(schema::to_string(a)));
-          row.set("present", most_iterations(series, values.front(), a) >= 0);
-          row.set("cells", template_list(values, [&](double v) {
-                    const int it = most_iterations(series, v, a);
-                    const int nc = count_not_converged(
-                        series, v, [a](const SweepSeries& s) { return s.base.algorithm == a; });
-                    return TemplateData(
-                        it < 0
-                            ? std::string(kMissing)
-                            : fmt::format("{}{}", it, nc > 0 ? fmt::format(" ({} n.c.)", nc) : ""));
-                  }));
-          return row;
-        }));
+  MarkdownTable iterations = value_table({"Algorithm"}, {Align::left}, values);
+  for (const Algorithm a : schema::values<Algorithm>()) {
+    if (most_iterations(series, values.front(), a) < 0)
+      continue;
+    std::vector<std::string> row{std::string(schema::to_string(a))};
+    for (double v : values) {
+      const int it = most_iterations(series, v, a);
+      const int nc = count_not_converged(
+          series, v, [a](const SweepSeries& s) { return s.base.algorithm == a; });
+      row.push_back(it < 0 ? std::string(kMissing)
+                           : fmt::format("{}{}", it, nc > 0 ? fmt::format(" ({} n.c.)", nc) : ""));
+    }
+    iterations.add_row(std::move(row));
+  }
+  d.set("iterations", iterations.render());
   return d;
 }
 
@@ -458,19 +470,14 @@ void set_answers(TemplateData& d, const ResultsIndex& index, const std::string& 
   }
 }
 
-TemplateData figure_data(const FigureSet& figures, const std::string& key) {
+/// The key's figure (figure_data), or why there is none.
+TemplateData key_figure(const FigureSet& figures, const std::string& key) {
   for (const auto& f : figures.figures) {
-    if (f.file != sweep_figure_file(key))
-      continue;
-    TemplateData d("produced", f.produced);
-    d.set("file", f.file);
-    d.set("caption", f.caption_md);
-    d.set("error", f.error);
-    return d;
+    if (f.file == sweep_figure_file(key))
+      return figure_data(f);
   }
-  TemplateData d("produced", false);
-  d.set("unavailable", figures.unavailable);
-  return figures.unavailable.empty() ? TemplateData(false) : d;
+  return figures.unavailable.empty() ? TemplateData(false)
+                                     : TemplateData("unavailable", figures.unavailable);
 }
 
 }  // namespace
@@ -491,15 +498,13 @@ std::string sweep_section(const ResultsIndex& index, const schema::StudyReferenc
     d.set("values", values_text(values));
     d.set("n_series", std::to_string(series.size()));
     set_answers(d, index, key, series, values, study);
-    d.set("figure", figure_data(figures, key));
-    d.set("header",
-          template_list(values, [](double v) { return TemplateData(format_swept_value(v)); }));
-    d.set("rows", table_rows(series, values));
+    d.set("figure", key_figure(figures, key));
+    d.set("table", error_table(series, values));
     keys.push_back(d);
   }
   if (keys.is_empty_list())
     return {};
-  return render_template(templates::sweep_section, TemplateData("keys", keys));
+  return tidy_markdown(render_template(templates::sweep_section, TemplateData("keys", keys)));
 }
 
 }  // namespace cs::reports

@@ -20,14 +20,11 @@ std::string format_measure(double measure) {
   return fmt::format("{:.3g}", measure);
 }
 
-std::string solver_names(const ResultsIndex& index) {
-  const auto solvers = solvers_in(index);
-  std::string out;
-  for (std::size_t i = 0; i < solvers.size(); ++i) {
-    const char* sep = i == 0 ? "" : (i + 1 == solvers.size() ? " and " : ", ");
-    out += sep + solver_display_name(solvers[i]);
-  }
-  return out;
+std::string solver_names(const ResultsIndex& index, const char* last) {
+  std::vector<std::string> names;
+  for (const auto& s : solvers_in(index))
+    names.push_back(solver_display_name(s));
+  return join_words(names, last);
 }
 
 std::string recovery_names(const ResultsIndex& index) {

@@ -15,9 +15,9 @@ std::string format_points(double points);
 /// A ratio from an interface check, to three significant digits: "19.2", "2.78e+03".
 std::string format_measure(double measure);
 
-/// The solvers whose cases the results hold, as a reader knows them: "contact-suite's own
-/// solver", "contact-suite's own solver and CalculiX".
-std::string solver_names(const ResultsIndex& index);
+/// The solvers whose cases the results hold, as a reader knows them: "ours", "ours and
+/// CalculiX" (`last` joins the last two).
+std::string solver_names(const ResultsIndex& index, const char* last = " and ");
 
 /// The stress recoveries of the baseline rows: "patch-recovered nodal stresses (SPR)".
 std::string recovery_names(const ResultsIndex& index);

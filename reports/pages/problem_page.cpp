@@ -141,22 +141,19 @@ TemplateData quantity_tables(const ResultsIndex& index, const schema::ProblemRec
   return tables;
 }
 
-TemplateData divergence_rows(const std::vector<DivergenceFacts>& singular, schema::ProblemId p) {
-  TemplateData list{TemplateData::type::list};
+std::string divergence_table(const std::vector<DivergenceFacts>& singular, schema::ProblemId p) {
+  constexpr Align r = Align::right, c = Align::center;
+  MarkdownTable t({"Option", "C", "M", "F", "Eq. 47", "Strict", "Exponent"},
+                  {Align::left, r, r, r, c, c, c});
   for (const auto& d : singular) {
-    if (d.problem != p)
-      continue;
-    TemplateData r;
-    r.set("option", fmt::format("{} {}", schema::to_string(d.element), d.option.label()));
-    r.set("c", format_value(d.row->values[0]));
-    r.set("m", format_value(d.row->values[1]));
-    r.set("f", format_value(d.row->values[2]));
-    r.set("eq47", d.eq47 ? "holds" : "fails");
-    r.set("strict", d.strict ? "diverges" : "no");
-    r.set("exponent", d.exponent ? fmt::format("{:.2f}", *d.exponent) : std::string(kMissing));
-    list.push_back(r);
+    if (d.problem == p)
+      t.add_row({fmt::format("{} {}", schema::to_string(d.element), d.option.label()),
+                 format_value(d.row->values[0]), format_value(d.row->values[1]),
+                 format_value(d.row->values[2]), d.eq47 ? "holds" : "fails",
+                 d.strict ? "diverges" : "no",
+                 d.exponent ? fmt::format("{:.2f}", *d.exponent) : std::string(kMissing)});
   }
-  return list;
+  return t.render();
 }
 
 }  // namespace
@@ -181,7 +178,7 @@ std::string problem_page(const ResultsIndex& index, const schema::ProblemRecord&
   d.set("has_tables", !tables.is_empty_list());
   d.set("tables", tables);
   d.set("meshes_given", meshes_given(index, problem.id));
-  d.set("divergence", divergence_rows(singular, problem.id));
+  d.set("divergence", divergence_table(singular, problem.id));
   d.set("figures", template_list(figures, [](const Figure* f) { return figure_data(*f); }));
   return render_template(templates::problem_page, d);
 }

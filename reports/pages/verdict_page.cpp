@@ -34,24 +34,23 @@ TemplateData matrix(const std::vector<SituationVerdict>& situations, Element ele
         options.insert({c.family, c.contact});
     }
   }
-  TemplateData m;
-  m.set("element", std::string(schema::to_string(element)));
-  m.set("columns",
-        template_list(situations, [](const SituationVerdict& s) { return TemplateData(s.title); }));
-  m.set("rows", template_list(options, [&](const auto& option) {
-          TemplateData row;
-          row.set("option",
-                  family_label(option.first) + " " + std::string(schema::to_string(option.second)));
-          row.set("cells", template_list(situations, [&](const SituationVerdict& s) {
-                    for (const auto& c : s.cells) {
-                      if (c.element == element && c.family == option.first &&
-                          c.contact == option.second)
-                        return TemplateData(verdict_cell(c));
-                    }
-                    return TemplateData(std::string(kMissing));
-                  }));
-          return row;
-        }));
+  std::vector<std::string> header{"Option"};
+  for (const auto& s : situations)
+    header.push_back(s.title);
+  MarkdownTable table(header);
+  for (const auto& [family, contact] : options) {
+    std::vector<std::string> row{family_label(family) + " " +
+                                 std::string(schema::to_string(contact))};
+    for (const auto& s : situations) {
+      const auto c = std::find_if(s.cells.begin(), s.cells.end(), [&](const OptionCell& c) {
+        return c.element == element && c.family == family && c.contact == contact;
+      });
+      row.push_back(c == s.cells.end() ? std::string(kMissing) : verdict_cell(*c));
+    }
+    table.add_row(std::move(row));
+  }
+  TemplateData m("element", std::string(schema::to_string(element)));
+  m.set("table", table.render());
   return m;
 }
 

@@ -7,6 +7,7 @@
 #include "reports/facts/solvers.hpp"
 #include "reports/figures/figures.hpp"
 #include "reports/figures/gnuplot.hpp"
+#include "reports/pages/page_format.hpp"
 #include "reports/render/template_text.hpp"
 #include "reports/tables/grade_tables.hpp"
 
@@ -218,14 +219,6 @@ std::string tally_table(const std::map<std::string, GradeTally>& tally,
     table.add_row(std::move(cells));
   }
   return table.n_rows() == 0 ? std::string() : table.render();
-}
-
-/// "ours, calculix:hard-ss and X".
-std::string names_of(const std::vector<std::string>& solvers, const char* last) {
-  std::string out;
-  for (std::size_t i = 0; i < solvers.size(); ++i)
-    out += (i == 0 ? "" : i + 1 == solvers.size() ? last : ", ") + solver_display_name(solvers[i]);
-  return out;
 }
 
 TemplateData titled(const std::string& title, const std::string& table) {
@@ -468,8 +461,8 @@ std::string cross_code_section(const ResultsIndex& index, const schema::StudyRef
     return {};
   const auto solvers = solvers_in(index);
   TemplateData d;
-  d.set("names", names_of(solvers, " and "));
-  d.set("order", names_of(solvers, ", ") + ", ANSYS");
+  d.set("names", solver_names(index));
+  d.set("order", solver_names(index, ", ") + ", ANSYS");
   d.set("outcome", template_list(solvers, [&](const std::string& s) {
           return TemplateData(outcome_markdown(index, s));
         }));

@@ -4,6 +4,7 @@
 #include <map>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "grading/accuracy.hpp"
 #include "grading/convergence.hpp"
@@ -32,18 +33,11 @@ std::vector<ContactKind> contacts_in_study(bool in_study) {
   return out;
 }
 
-std::string joined(const std::vector<std::string>& names, const char* separator) {
-  std::string out;
-  for (const auto& n : names)
-    out += (out.empty() ? "" : separator) + n;
-  return out;
-}
-
 std::string names_of(const std::vector<Algorithm>& algorithms) {
   std::vector<std::string> names;
   for (const Algorithm a : algorithms)
     names.emplace_back(schema::to_string(a));
-  return joined(names, ", ");
+  return join_words(names, ", ");
 }
 
 /// The study's columns (split by contact type where its Table 2 splits them), then one group
@@ -216,7 +210,7 @@ TemplateData comparison_data(const AnsysComparison& c) {
   d.set("same", std::to_string(c.same));
   d.set("better", std::to_string(c.better));
   d.set("worse", std::to_string(c.worse));
-  d.set("worse_cells", text_or_false(joined(c.worse_cells, "; ")));
+  d.set("worse_cells", text_or_false(fmt::format("{}", fmt::join(c.worse_cells, "; "))));
   return d;
 }
 
@@ -252,8 +246,8 @@ TemplateData table_data(const GradeTableFacts& t) {
           e.set("resolution", fmt::format("{:g} %", kCoincidenceRelative * 100));
           return e;
         }));
-  d.set("rows_absent", text_or_false(joined(t.rows_absent, ", ")));
-  d.set("groups_absent", text_or_false(joined(t.groups_absent, "; ")));
+  d.set("rows_absent", text_or_false(fmt::format("{}", fmt::join(t.rows_absent, ", "))));
+  d.set("groups_absent", text_or_false(fmt::format("{}", fmt::join(t.groups_absent, "; "))));
   return d;
 }
 
@@ -370,7 +364,7 @@ std::string grade_tables_section(const ResultsIndex& index, const schema::StudyR
   }
   for (const ContactKind c : contacts_in_study(false))
     renamed.push_back(fmt::format("{} was not in the study", schema::to_string(c)));
-  d.set("study_names", joined(renamed, "; "));
+  d.set("study_names", fmt::format("{}", fmt::join(renamed, "; ")));
   return tidy_markdown(render_template(templates::grade_tables, d));
 }
 

@@ -38,8 +38,10 @@ std::string MarkdownTable::render() const {
   std::size_t width = header_.size();
   std::string out = render_row(header_, width);
   out += "|";
-  for (std::size_t i = 0; i < width; ++i)
-    out += i == 0 ? " :-- |" : " :-: |";
+  for (std::size_t i = 0; i < width; ++i) {
+    const Align a = i < align_.size() ? align_[i] : i == 0 ? Align::left : Align::center;
+    out += a == Align::left ? " :-- |" : a == Align::center ? " :-: |" : " --: |";
+  }
   out += "\n";
   for (const auto& row : rows_)
     out += render_row(row, width);
@@ -67,6 +69,13 @@ std::string tidy_markdown(const std::string& markdown) {
     if (newlines <= 2)
       out += c;
   }
+  return out;
+}
+
+std::string join_words(const std::vector<std::string>& items, const char* last) {
+  std::string out;
+  for (std::size_t i = 0; i < items.size(); ++i)
+    out += (i == 0 ? "" : i + 1 == items.size() ? last : ", ") + items[i];
   return out;
 }
 

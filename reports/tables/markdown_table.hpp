@@ -8,10 +8,16 @@
 
 namespace cs::reports {
 
+/// How a column's cells are aligned.
+enum class Align { left, center, right };
+
 /// A pipe table: a header row, then body rows of the same width (shorter rows are padded).
+/// Columns are aligned as `align` says; without it (or past its end) the first column is left-
+/// and the others centre-aligned.
 class MarkdownTable {
  public:
-  explicit MarkdownTable(std::vector<std::string> header) : header_(std::move(header)) {}
+  explicit MarkdownTable(std::vector<std::string> header, std::vector<Align> align = {})
+      : header_(std::move(header)), align_(std::move(align)) {}
   void add_row(std::vector<std::string> cells) { rows_.push_back(std::move(cells)); }
   std::size_t n_rows() const { return rows_.size(); }
   const std::vector<std::string>& header() const { return header_; }
@@ -23,6 +29,7 @@ class MarkdownTable {
 
  private:
   std::vector<std::string> header_;
+  std::vector<Align> align_;
   std::vector<std::vector<std::string>> rows_;
 };
 
@@ -42,6 +49,9 @@ std::string format_error_resolved(double percent);
 
 /// format_value, or the em dash for nullopt.
 std::string format_value(const std::optional<double>& v);
+
+/// "a, b and c": `items` joined by ", ", the last two by `last` (" and ", " or ", ", ").
+std::string join_words(const std::vector<std::string>& items, const char* last = " and ");
 
 /// The em dash the report uses for "not in this results file".
 inline constexpr const char* kMissing = "—";
