@@ -172,9 +172,11 @@ TEST(CrossCodeGradeTable, TimeoutOnTheFineMeshIsShownAsSuch) {
   const auto cell = table->cell(table->rows()[0][0], "PM ss");
   ASSERT_TRUE(cell.has_value());
   EXPECT_NE(cell->find("│ g (M)*, timeout (F) │"), std::string::npos) << *cell;
-  EXPECT_EQ(cross_code_grade_tally(index, study()).at("calculix").by_class.at("no grade"), 1);
+  EXPECT_EQ(cross_code_grade_tally(index, study()).at("calculix:linear-ss").by_class.at("no grade"),
+            1);
   const std::string outcome = cross_code_section(index, study(), {}, {});
-  EXPECT_NE(outcome.find("**CalculiX**: 2 converged, 1 timeout in all."), std::string::npos)
+  EXPECT_NE(outcome.find("**calculix:linear-ss**: 2 converged, 1 timeout in all."),
+            std::string::npos)
       << outcome;
 }
 
@@ -186,7 +188,7 @@ TEST(CrossCodeCost, RatiosOfTheSameCases) {
   const ResultsIndex index(doc);
   const auto c = solver_cost(index);
   ASSERT_TRUE(c.has_value());
-  EXPECT_EQ(c->solvers, (std::vector<std::string>{"builtin", "calculix"}));
+  EXPECT_EQ(c->solvers, (std::vector<std::string>{"builtin", "calculix:linear-ss"}));
   EXPECT_EQ(c->total.cases, 3);
   EXPECT_DOUBLE_EQ(c->total.seconds[0], 7.0);
   EXPECT_DOUBLE_EQ(*c->total.time_ratio(1), 10.0);
@@ -270,7 +272,7 @@ TEST(CrossCodeSection, InTheReportOnlyWithSeveralSolvers) {
   const std::string md = cross_code_section(index, study(), {}, mapping);
   EXPECT_NE(md.find("## Cross-code comparison: ours and calculix:linear-ss"), std::string::npos);
   EXPECT_NE(md.find("| PM | PRESSURE-OVERCLOSURE=LINEAR | same | penalty |"), std::string::npos);
-  EXPECT_NE(md.find("time CalculiX/ours"), std::string::npos);
+  EXPECT_NE(md.find("time calculix:linear-ss/ours"), std::string::npos);
   const ReportContent content{.cross_code_md = md, .companions = {{"x/report.md", "T"}}};
   const auto appendices = appendix_pages(index, study(), content);
   const std::string report = report_markdown(index, study(), content, {}, appendices);
