@@ -110,18 +110,18 @@ std::vector<std::string> common_failures(const SituationVerdict& v) {
     return {};
   std::set<std::string> common = v.cells.front().failed_checks;
   for (const auto& c : v.cells) {
-    std::erase_if(common, [&](const std::string& check) { return !c.failed_checks.contains(check); });
+    std::erase_if(common,
+                  [&](const std::string& check) { return !c.failed_checks.contains(check); });
   }
   return {common.begin(), common.end()};
 }
 
 /// A cell to avoid: graded u, or failing an interface check that some other option passes.
 bool fails_on_its_own(const OptionCell& c, const std::vector<std::string>& common) {
-  const bool own_failure = std::any_of(c.failed_checks.begin(), c.failed_checks.end(),
-                                       [&](const std::string& check) {
-                                         return std::find(common.begin(), common.end(), check) ==
-                                                common.end();
-                                       });
+  const bool own_failure =
+      std::any_of(c.failed_checks.begin(), c.failed_checks.end(), [&](const std::string& check) {
+        return std::find(common.begin(), common.end(), check) == common.end();
+      });
   return own_failure || c.worst_grade == schema::Grade::u;
 }
 

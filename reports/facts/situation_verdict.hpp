@@ -28,8 +28,8 @@ struct OptionCell {
   double largest_m_to_f_change = 0.0;                 ///< max |e_F - e_M| over its rows (points)
   int n_not_credible = 0, n_luck = 0, n_not_converged = 0;
   std::set<std::string> failed_checks;  ///< the interface checks its F cases fail, by name
-  bool evidence = false;         ///< every row is evidence (RowFacts::evidence)
-  int n_eq47 = 0, n_strict = 0;  ///< the flat punch: rows passing each divergence verdict
+  bool evidence = false;                ///< every row is evidence (RowFacts::evidence)
+  int n_eq47 = 0, n_strict = 0;         ///< the flat punch: rows passing each divergence verdict
 };
 
 /// One situation: its problems' cells and the statements a reader needs.
@@ -38,8 +38,8 @@ struct SituationVerdict {
   std::string title;  ///< its label, capitalized: "Smooth curved contact (Hertz)"
   bool singular = false;
   std::vector<schema::ProblemId> problems;
-  std::vector<OptionCell> cells;         ///< every option set present
-  std::vector<const OptionCell*> best;   ///< evidence cells of the best grade (ties)
+  std::vector<OptionCell> cells;        ///< every option set present
+  std::vector<const OptionCell*> best;  ///< evidence cells of the best grade (ties)
   /// u, failing an interface check not in `common_failures`, or failing divergence.
   std::vector<const OptionCell*> avoid;
   /// The interface checks that every cell fails: a cause shared by all options (the model, the

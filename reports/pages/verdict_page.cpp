@@ -116,8 +116,8 @@ TemplateData failures(const SituationVerdict& s) {
     TemplateData d;
     d.set("situation", s.title);
     d.set("options", cells_label(cells));
-    d.set("evidence", failure_evidence(
-        cells, [&](const std::string& check) { return !common(check); }));
+    d.set("evidence",
+          failure_evidence(cells, [&](const std::string& check) { return !common(check); }));
     list.push_back(d);
   }
   return list;

@@ -104,9 +104,9 @@ TEST(ClaimsLedger, DivergenceCountsEq47OverEveryFlatPunchRow) {
   EXPECT_EQ(c.n, n);
   EXPECT_EQ(c.n_hold, eq47);
   EXPECT_EQ(c.n2_hold, strict);
-  EXPECT_EQ(c.verdict, eq47 == n ? ClaimVerdict::reproduced
-                                 : (eq47 >= 0.75 * n ? ClaimVerdict::refined
-                                                     : ClaimVerdict::not_reproduced));
+  EXPECT_EQ(c.verdict,
+            eq47 == n ? ClaimVerdict::reproduced
+                      : (eq47 >= 0.75 * n ? ClaimVerdict::refined : ClaimVerdict::not_reproduced));
   const std::string md = claims_ledger({c});
   EXPECT_NE(md.find(std::to_string(eq47) + " of " + std::to_string(n) + " flat-punch rows"),
             std::string::npos);
@@ -148,8 +148,8 @@ TEST(ClaimsLedger, MpcClaimNeverCountsAFailedRowAsGood) {
     if (!r.is_baseline() || r.spec.algorithm != Algorithm::MPC || !r.errors[2] ||
         battery().index.singular(r.spec.problem))
       continue;
-    const bool patch = r.spec.problem == schema::ProblemId::P_p ||
-                       r.spec.problem == schema::ProblemId::Pprime_p;
+    const bool patch =
+        r.spec.problem == schema::ProblemId::P_p || r.spec.problem == schema::ProblemId::Pprime_p;
     if (patch)
       continue;
     ++n;
