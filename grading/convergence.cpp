@@ -97,4 +97,14 @@ bool luck_of_one_mesh(double e_c, double e_m, double e_f) {
          !schema::is_worse(grade_of_error(e_f), schema::Grade::g);
 }
 
+RefinementStep refinement_step(double e_f, double e_vf) {
+  if (!std::isfinite(e_f) || !std::isfinite(e_vf))
+    return RefinementStep::farther;
+  const double f = std::abs(e_f), vf = std::abs(e_vf);
+  const double floor = std::max(kErrorResolutionPercent, kPlateauFraction * f);
+  if (vf < f - floor)
+    return RefinementStep::closer;
+  return std::abs(vf - f) <= floor ? RefinementStep::settled : RefinementStep::farther;
+}
+
 }  // namespace cs::grading

@@ -47,6 +47,15 @@ inline constexpr double kPlateauFraction = 0.1;
 /// study's flag tells the two apart on a 0.001-point difference.
 ConvergenceAssessment assess_convergence(double e_c, double e_m, double e_f);
 
+/// One more refinement (F -> VF) of a row, with floor = max(kErrorResolutionPercent,
+/// kPlateauFraction |e_F|):
+///   closer   when |e_VF| < |e_F| - floor;
+///   settled  when ||e_VF| - |e_F|| <= floor (a plateau, or an error at round-off: refinement
+///            cannot improve it);
+///   farther  otherwise, and when an error is not finite.
+enum class RefinementStep { closer, settled, farther };
+RefinementStep refinement_step(double e_f, double e_vf);
+
 /// The observed order of one mesh pair (h halving), log2(|e_coarse| / |e_fine|); empty where
 /// an error is missing or below schema::kErrorNoiseFloorPercent (round-off: no order fitted).
 std::optional<double> pair_order(const std::optional<double>& e_coarse,

@@ -118,3 +118,19 @@ TEST(LuckOfOneMesh, AFineGradeAfterAnUnresolvedMesh) {
 
 }  // namespace
 }  // namespace cs::grading
+
+// Requirement: one more refinement is judged against the same noise floor as the C-M-F trend:
+// round-off changes and plateaus are settled, never "farther"; a real move either way is seen.
+TEST(RefinementStep, RoundOffAndPlateausAreSettled) {
+  using cs::grading::refinement_step;
+  using cs::grading::RefinementStep;
+  EXPECT_EQ(refinement_step(-2.0e-12, -1.6e-11), RefinementStep::settled);  // round-off
+  EXPECT_EQ(refinement_step(0.71, 0.712), RefinementStep::settled);         // a plateau
+  EXPECT_EQ(refinement_step(2.0, 1.0), RefinementStep::closer);
+  EXPECT_EQ(refinement_step(-2.0, 1.0), RefinementStep::closer);  // sign does not matter
+  EXPECT_EQ(refinement_step(1.0, 1.5), RefinementStep::farther);
+  // The floor is 10 % of |e_F| above 0.1 points: 5 % -> 4.6 % is within it, 4.4 % is not.
+  EXPECT_EQ(refinement_step(5.0, 4.6), RefinementStep::settled);
+  EXPECT_EQ(refinement_step(5.0, 4.4), RefinementStep::closer);
+  EXPECT_EQ(refinement_step(1.0, std::nan("")), RefinementStep::farther);
+}
