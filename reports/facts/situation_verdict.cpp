@@ -104,9 +104,14 @@ std::vector<OptionCell> make_cells(const ResultsIndex& index,
   return out;
 }
 
-/// The checks every cell fails (none for the flat punch, graded by divergence).
+/// The checks every cell fails (none for the flat punch, graded by divergence). Only cells of
+/// more than one option family can show that a failure is not the option's: a lone family's
+/// failure stays its own.
 std::vector<std::string> common_failures(const SituationVerdict& v) {
-  if (v.singular || v.cells.empty())
+  const bool several_families =
+      std::any_of(v.cells.begin(), v.cells.end(),
+                  [&](const OptionCell& c) { return c.family != v.cells.front().family; });
+  if (v.singular || !several_families)
     return {};
   std::set<std::string> common = v.cells.front().failed_checks;
   for (const auto& c : v.cells) {

@@ -288,6 +288,14 @@ TEST(VerdictPage, ACheckEveryOptionFailsIsSharedNotAReasonToAvoidOne) {
   ASSERT_EQ(s2.size(), 1U);
   EXPECT_TRUE(s2[0].common_failures.empty());
   EXPECT_EQ(s2[0].avoid.size(), 3U);
+  // One family alone cannot show that a failure is not its own.
+  const auto s3 = situation_verdicts(
+      battery().index,
+      {rounded_punch_row(Algorithm::LMP, {outside}), rounded_punch_row(Algorithm::PLM, {outside})},
+      {});
+  ASSERT_EQ(s3.size(), 1U);
+  EXPECT_TRUE(s3[0].common_failures.empty());
+  EXPECT_EQ(s3[0].avoid.size(), 1U);
 }
 
 TEST(VerdictPage, FitsOnTheFirstScreen) {
