@@ -61,9 +61,7 @@ TEST(OldResultsCli, ReportRefreshesTheProblemRecords) {
   const auto r = run_cli({"report", "--results", old, "--out", dir + "/report", "--no-figures"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const std::string report = read_text(dir + "/report/report.md");
-  EXPECT_NE(
-      report.find("| Option | Flat contact, nodes aligned |"),
-      std::string::npos)
+  EXPECT_NE(report.find("| Option | Flat contact, nodes aligned |"), std::string::npos)
       << report.substr(0, 2000);
 }
 
