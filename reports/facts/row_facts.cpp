@@ -60,27 +60,31 @@ OptionFamily family_of(schema::Algorithm algorithm) {
   return OptionFamily::mpc;
 }
 
+RowFacts facts_of_row(const ResultsIndex& index, const schema::RowVerdict& r) {
+  RowFacts f;
+  f.row = &r;
+  f.problem = r.spec.problem;
+  if (const schema::ProblemRecord* p = index.problem(f.problem))
+    f.situation = p->situation;
+  f.quantity = r.quantity;
+  f.element = r.spec.element;
+  f.option = {r.spec.algorithm, r.spec.contact};
+  f.errors = r.errors;
+  if (r.errors[2])
+    f.grade = grading::grade_of_error(*r.errors[2]);
+  f.study_c = r.converging.value_or(false);
+  add_trend(f);
+  add_credibility(index, f);
+  if (const schema::RowVerdict* twin = index.extrapolated_twin(r))
+    f.extrapolated_error = twin->errors[2];
+  return f;
+}
+
 std::vector<RowFacts> row_facts(const ResultsIndex& index) {
   std::vector<RowFacts> out;
   for (const schema::RowVerdict* r : index.baseline_rows()) {
-    if (index.singular(r->spec.problem) || !r->errors[2])
-      continue;
-    RowFacts f;
-    f.row = r;
-    f.problem = r->spec.problem;
-    if (const schema::ProblemRecord* p = index.problem(f.problem))
-      f.situation = p->situation;
-    f.quantity = r->quantity;
-    f.element = r->spec.element;
-    f.option = {r->spec.algorithm, r->spec.contact};
-    f.errors = r->errors;
-    f.grade = grading::grade_of_error(*r->errors[2]);
-    f.study_c = r->converging.value_or(false);
-    add_trend(f);
-    add_credibility(index, f);
-    if (const schema::RowVerdict* twin = index.extrapolated_twin(*r))
-      f.extrapolated_error = twin->errors[2];
-    out.push_back(std::move(f));
+    if (!index.singular(r->spec.problem) && r->errors[2])
+      out.push_back(facts_of_row(index, *r));
   }
   return out;
 }

@@ -63,6 +63,9 @@ struct DivergenceFacts {
   bool fine_converged = false;
 };
 
+/// The facts of any row (another code's, a rigid target's): ungraded without an F value.
+RowFacts facts_of_row(const ResultsIndex& index, const schema::RowVerdict& row);
+
 /// Every graded quantity of every nonsingular baseline row that has an F value, in index order.
 std::vector<RowFacts> row_facts(const ResultsIndex& index);
 

@@ -1,9 +1,8 @@
 #pragma once
-// The solvers of a results document and, per solver, the row of one of the study's option sets
-// (for the cross-code comparison, generic over any number of solvers). A solver's row is the one
-// with the study's settings (a discretized target, no parameter overrides) and, for our solver,
-// patch-recovered nodal stresses (the baseline row); another solver's nodal stresses are its own,
-// whatever the case's `recovery` says, so its row of either recovery counts (spr first).
+// The codes of a results document: ours ("builtin") first, then the others by name. A code is
+// the part of a case's solver label before ':' ("calculix" of "calculix:hard-ss"); what follows
+// is the code's own label of its option ("hard-ss"). An imported code without a label is a code
+// of one option.
 
 #include <string>
 #include <vector>
@@ -15,30 +14,21 @@ namespace cs::reports {
 /// The solver label of our solver in results.json ("builtin").
 std::string builtin_solver_label();
 
-/// The solvers of the document's cases, ours first, then the others in order of their names:
-/// {"builtin", "calculix"}.
+/// The code of a case: "builtin", "calculix", "getfem", an imported code's name.
+std::string code_of(const schema::CaseSpec& spec);
+
+/// The code's own label of the case's option: "hard-ss"; ours (and an imported code without a
+/// label): the study's option set, "PM ss".
+std::string option_label_of(const schema::CaseSpec& spec);
+
+/// The codes of the document's cases, ours first, then the others in order of their names:
+/// {"builtin", "calculix", "getfem"}.
 std::vector<std::string> solvers_in(const ResultsIndex& index);
 
-/// How the report names a solver: "ours" for the built-in solver, else the label its results
-/// carry (an imported code's name, a registered code's "calculix:hard-ss").
-std::string solver_display_name(const std::string& solver);
+/// How the report names a code: "ours" for the built-in solver, else its name.
+std::string solver_display_name(const std::string& code);
 
-/// True when the document has cases of more than one solver.
+/// True when the document has cases of more than one code.
 bool is_cross_code(const ResultsIndex& index);
-
-/// The row of `solver` for (problem, quantity, element, option) with the study's settings, or
-/// nullptr.
-const schema::RowVerdict* solver_row(const ResultsIndex& index, const std::string& solver,
-                                     schema::ProblemId problem, schema::Quantity quantity,
-                                     schema::Element element, const Option& option);
-
-/// The option sets any solver other than ours has a row of, for (problem, quantity, element),
-/// in all_options() order.
-std::vector<Option> cross_code_options(const ResultsIndex& index, schema::ProblemId problem,
-                                       schema::Quantity quantity, schema::Element element);
-
-/// A case's id without its solver and recovery fields: the key under which the same case of
-/// two solvers is matched ("H_p/F/Q4/PM/ss").
-std::string same_case_key(const schema::CaseSpec& spec);
 
 }  // namespace cs::reports
