@@ -97,7 +97,7 @@ void add_report_command(CLI::App& app) {
                   "report's Figure 3");
   cmd->add_option("--companion", args->companions,
                   "another report, relative to --out and written before this one (e.g. "
-                  "calculix/report.md): linked under the title with its own title "
+                  "cross-code/report.md): linked under the title with its own title "
                   "(repeatable)");
   cmd->add_flag("--no-figures", args->no_figures, "do not run gnuplot");
   cmd->callback([args] { run_report(*args); });

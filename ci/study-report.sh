@@ -7,8 +7,9 @@
 # ci/extent.sh (out/extent/) and ci/sweeps.sh (out/sweeps/) unless --reuse is given, in which case it uses the results already in out/. Results of the
 # VF refinement (ci/refine.sh: out/refine/results.json and out/refine/steuermann/results.json;
 # its C, M and F cases repeat the main job's and are kept once) are added when present; the
-# CalculiX battery's parts (ci/calculix-battery.sh: out/calculix-parts/) are merged into a report
-# of their own, reports/study/calculix/ (the cross-code comparison), when present;
+# other codes' battery parts (ci/calculix-battery.sh: out/calculix-parts/, ci/getfem-battery.sh:
+# out/getfem-parts/) are merged into a report of their own, reports/study/cross-code/ (ours,
+# CalculiX and GetFEM graded alike), when present;
 # they take long, so they are not run here. The coarse meshes of four problems are exported
 # for Figure 3, and the committed benchmark JSON files are shown as the benchmarks appendix.
 set -euo pipefail
@@ -40,17 +41,24 @@ bench=()
 for f in bench_all_meshes bench_F_H_p_Pprime_p_median5 bench_F_H_p_Q8_median7; do
   if [ -f "reports/study/bench/$f.json" ]; then bench+=(--bench "reports/study/bench/$f.json"); fi
 done
-# The CalculiX battery as a report of its own: both solvers' parts of one battery run, so that
-# its cost ratios compare the same cases run the same way (one job, one model per part).
-if compgen -G "out/calculix-parts/calculix-*/results.json" > /dev/null; then
-  # exit 1: some case did not converge or timed out, a finding recorded in the results
-  # its parts may span commits (the battery resumes): the merged run names each build
-  "$exe" merge --mixed-builds out/calculix out/calculix-parts/*/results.json || [ $? -le 1 ]
-  "$exe" report --results out/calculix/results.json --out reports/study/calculix
+# The other codes' batteries (ci/calculix-battery.sh, ci/getfem-battery.sh) as one report of their
+# own: each battery's parts hold both its code's and our cases of the same models, run the same
+# way (one job, one model per part), so that the cost ratios compare like with like.
+others=()
+for code in calculix getfem; do
+  if compgen -G "out/$code-parts/*/results.json" > /dev/null; then
+    # exit 1: some case did not converge or timed out, a finding recorded in the results;
+    # its parts may span commits (the battery resumes): the merged run names each build
+    "$exe" merge --mixed-builds "out/$code" "out/$code-parts"/*/results.json || [ $? -le 1 ]
+    others+=(--results "out/$code/results.json")
+  fi
+done
+if [ ${#others[@]} -gt 0 ]; then
+  "$exe" report "${others[@]}" --out reports/study/cross-code
 fi
 # linked from the main report's header when present
 companion=()
-if [ -f reports/study/calculix/report.md ]; then companion=(--companion calculix/report.md); fi
+if [ -f reports/study/cross-code/report.md ]; then companion=(--companion cross-code/report.md); fi
 "$exe" report "${results[@]}" --mesh-pictures out/meshes "${bench[@]}" "${companion[@]}" \
   --out reports/study
 echo "ci/study-report.sh: reports/study/report.md from ${#results[@]} results arguments"

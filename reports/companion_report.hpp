@@ -1,5 +1,5 @@
 #pragma once
-// Another report linked from a report's header (`report --companion calculix/report.md`): the
+// Another report linked from a report's header (`report --companion cross-code/report.md`): the
 // committed study report points its reader to the cross-code report written beside it. The
 // link's text is the companion's own title, read from its first line, so the link says what the
 // other report is without being typed in.
@@ -11,7 +11,7 @@
 namespace cs::reports {
 
 struct CompanionReport {
-  std::string path;   ///< relative to the linking report's directory: "calculix/report.md"
+  std::string path;   ///< relative to the linking report's directory: "cross-code/report.md"
   std::string title;  ///< its title less "contact-suite report: "
 };
 
