@@ -1,5 +1,7 @@
 #include "suites/calculix_executor.hpp"
 
+#include "suites/interface_checks.hpp"
+
 #include <stdlib.h>
 
 #include <cmath>
@@ -54,6 +56,14 @@ std::string calculix_options(const CaseSpec& spec, const ProblemSetup& setup,
   return {};
 }
 
+/// CalculiX's nodal displacements as one vector, 2 DOFs per node of our mesh.
+Eigen::VectorXd displacement_of(const ProblemSetup& setup, const ccx::CalculixResult& run) {
+  Eigen::VectorXd u = Eigen::VectorXd::Zero(2 * setup.model.mesh.n_nodes());
+  for (std::size_t n = 0; n < run.displacement.size() && 2 * n + 1 < std::size_t(u.size()); ++n)
+    u.segment<2>(2 * static_cast<Eigen::Index>(n)) = run.displacement[n];
+  return u;
+}
+
 /// The sampled surface's stresses on the case's basis: CalculiX's own extrapolated nodal
 /// stresses (recovery own), or our recovery of its nodal displacements (spr: the common basis;
 /// extrapolated).
@@ -62,14 +72,12 @@ std::vector<solver::SurfaceStressSample> surface_of(const ProblemSetup& setup,
                                                     const CaseSpec& spec) {
   if (spec.recovery == Recovery::own)
     return surface_of_nodal_stresses(setup, run.nodal_stress);
-  Eigen::VectorXd u = Eigen::VectorXd::Zero(2 * setup.model.mesh.n_nodes());
-  for (std::size_t n = 0; n < run.displacement.size() && 2 * n + 1 < std::size_t(u.size()); ++n)
-    u.segment<2>(2 * static_cast<Eigen::Index>(n)) = run.displacement[n];
-  const auto field = solver::recover_stresses(setup.model, u, recovery_options(spec));
+  const auto field =
+      solver::recover_stresses(setup.model, displacement_of(setup, run), recovery_options(spec));
   return solver::surface_stresses(setup.model, field, kSampledSurface);
 }
 
-/// Fills the values of a converged run: quantities, profiles.
+/// Fills the values of a converged run: quantities, profiles, interface checks.
 void fill_values(const ProblemSetup& setup, const ccx::CalculixResult& run, CaseResult& result) {
   const auto surface = surface_of(setup, run, result.spec);
   std::vector<ContactPressureSample> pressures;
@@ -78,6 +86,8 @@ void fill_values(const ProblemSetup& setup, const ccx::CalculixResult& run, Case
     pressures.push_back({n.position.x(), n.pressure});
   sample_quantities(setup, surface, pressures, result);
   result.exact_profile = exact_profile(setup);
+  result.interface =
+      check_interface_of_displacements(setup, displacement_of(setup, run), pressures);
 }
 
 std::string with_kept_directory(std::string reason, const std::filesystem::path& dir) {

@@ -1,5 +1,7 @@
 #include "suites/external_executor.hpp"
 
+#include "suites/interface_checks.hpp"
+
 #include <stdlib.h>
 
 #include <algorithm>
@@ -213,6 +215,8 @@ CaseResult ExternalExecutor::run(const CaseSpec& spec) {
     pressures.push_back({setup_->model.mesh.nodes[p.node].x(), p.pressure});
   sample_quantities(*setup_, surface, pressures, result);
   result.exact_profile = exact_profile(*setup_);
+  if (result.status == CaseStatus::converged)
+    result.interface = check_interface_of_displacements(*setup_, run.files.displacement, pressures);
   return result;
 }
 

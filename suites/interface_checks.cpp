@@ -2,6 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <set>
+
+#include "solver/internal_forces.hpp"
+#include "solver/load_vector.hpp"
+#include "solver/surface_path.hpp"
 
 namespace cs::suites {
 namespace {
@@ -12,7 +18,75 @@ bool outside_patch(const ProblemSetup& setup, double x, double h) {
   return x > setup.contact_half_width_a + h * (1.0 + 1e-9);
 }
 
+/// Each node's share of the path's length: half of each side at its ends (Q4); Simpson's
+/// 1/6, 2/3, 1/6 on a Q8 side.
+std::map<int, double> tributary_lengths(const solver::Mesh& mesh, const solver::SurfacePath& path) {
+  std::map<int, double> out;
+  const int per_side = solver::nodes_per_side(mesh.type);
+  for (std::size_t k = 0; k < path.sides.size(); ++k) {
+    const std::array<int, 3> nodes = mesh.side_nodes(path.sides[k]);
+    for (int a = 0; a < per_side; ++a) {
+      const double w = per_side == 3 ? (a == 2 ? 2.0 / 3.0 : 1.0 / 6.0) : 0.5;
+      out[nodes[a]] += w * path.side_length[k];
+    }
+  }
+  return out;
+}
+
 }  // namespace
+
+double interface_load(const ProblemSetup& setup, const Eigen::VectorXd& f) {
+  if (setup.load_control)
+    return setup.load_control->target_load;
+  if (!setup.load_steps.empty())
+    return std::nan("");
+  double z = 0.0;
+  for (Eigen::Index i = 1; i < f.size(); i += 2)
+    z += f[i];
+  return std::abs(z);
+}
+
+schema::InterfaceChecks check_interface_of_displacements(
+    const ProblemSetup& setup, const Eigen::VectorXd& u,
+    const std::vector<ContactPressureSample>& pressures) {
+  const solver::Model& model = setup.model;
+  const Eigen::VectorXd f = solver::assemble_load_vector(model, model.loads);
+  const Eigen::VectorXd residual = solver::internal_forces(model, u) - f;
+  const solver::SurfacePath path = solver::surface_path(model.mesh, kSampledSurface);
+  const auto lengths = tributary_lengths(model.mesh, path);
+  solver::ContactResult contact;
+  for (std::size_t k = 0; k < path.nodes.size(); ++k) {
+    solver::ContactNodeResult node;
+    node.node = path.nodes[k];
+    node.position = path.positions[k];
+    node.force = residual[2 * node.node + 1];
+    contact.nodes.push_back(node);
+  }
+  // The total over every node of the elements on the surface, not its nodes alone: a method
+  // whose contact term acts through the boundary elements' stresses (Nitsche) leaves part of
+  // the transmitted force at their inner nodes; for a Galerkin method those residuals are 0.
+  std::set<int> layer;
+  for (const auto& side : path.sides) {
+    const auto& e = model.mesh.elements[side.element];
+    layer.insert(e.begin(), e.begin() + model.mesh.n_element_nodes());
+  }
+  for (const int n : layer)
+    contact.total_normal_force += residual[2 * n + 1];
+  // Compression is positive: the interface pushes the block away from the target.
+  const double sign = contact.total_normal_force < 0.0 ? -1.0 : 1.0;
+  contact.total_normal_force *= sign;
+  std::map<double, double> own;
+  for (const auto& p : pressures)
+    own[p.x] = p.pressure;
+  for (auto& node : contact.nodes) {
+    const auto given = own.find(node.position.x());
+    node.pressure = !pressures.empty() ? (given == own.end() ? 0.0 : given->second)
+                                       : sign * node.force / lengths.at(node.node);
+  }
+  schema::InterfaceChecks checks = check_interface(setup, contact, interface_load(setup, f));
+  checks.max_penetration_over_h.reset();
+  return checks;
+}
 
 schema::InterfaceChecks check_interface(const ProblemSetup& setup,
                                         const solver::ContactResult& contact, double applied_load) {

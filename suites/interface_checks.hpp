@@ -3,9 +3,14 @@
 // contact solution: the nodal contact forces against the applied load, the most tensile
 // pressure, the pressure beyond the exact contact patch, the deepest penetration.
 
+#include <vector>
+
+#include <Eigen/Core>
+
 #include "schema/interface_checks.hpp"
 #include "solver/contact/contact_result.hpp"
 #include "suites/problem_setup.hpp"
+#include "suites/surface_sampling.hpp"
 
 namespace cs::suites {
 
@@ -14,5 +19,21 @@ namespace cs::suites {
 /// <= 0 or non-finite: no force balance (e.g. a problem loaded in steps).
 schema::InterfaceChecks check_interface(const ProblemSetup& setup,
                                         const solver::ContactResult& contact, double applied_load);
+
+/// The load the interface carries, written once for every solver: a rigid punch's target load;
+/// NaN for a problem loaded in steps (no single load to balance); else the magnitude of the z
+/// resultant of the external loads `f` (one body carries them and the contact alone holds it
+/// in z, the other body being supported).
+double interface_load(const ProblemSetup& setup, const Eigen::VectorXd& f);
+
+/// The same checks for another code's solution, on our model: the force its contact transmits
+/// is the residual K u - f of its displacements `u` summed over the nodes of the elements on
+/// the sampled surface (so the force balance is the equilibrium of its displacement field
+/// everywhere else), its pressures its own nodal contact pressures where it writes them, else
+/// each surface node's residual over its tributary length. The penetration is not checked
+/// (absent): it needs the code's own contact geometry.
+schema::InterfaceChecks check_interface_of_displacements(
+    const ProblemSetup& setup, const Eigen::VectorXd& u,
+    const std::vector<ContactPressureSample>& pressures);
 
 }  // namespace cs::suites

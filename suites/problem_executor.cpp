@@ -197,21 +197,8 @@ CaseResult ProblemExecutor::run(const CaseSpec& spec) {
 }
 
 double ProblemExecutor::applied_load() {
-  if (!applied_load_) {
-    if (setup_->load_control) {
-      applied_load_ = setup_->load_control->target_load;
-    } else if (!setup_->load_steps.empty()) {
-      applied_load_ = std::nan("");  // loaded in steps: no single load to balance
-    } else {
-      // One body carries the loads and the contact alone holds it in z (the other body is
-      // supported): the interface carries the z resultant of the external loads.
-      const Eigen::VectorXd f = elastic_->external_load(setup_->model.loads);
-      double z = 0.0;
-      for (Eigen::Index i = 1; i < f.size(); i += 2)
-        z += f[i];
-      applied_load_ = std::abs(z);
-    }
-  }
+  if (!applied_load_)
+    applied_load_ = interface_load(*setup_, elastic_->external_load(setup_->model.loads));
   return *applied_load_;
 }
 

@@ -10,7 +10,9 @@
 
 #include "grading/interface_check_rules.hpp"
 #include "schema/interface_checks.hpp"
+#include "solver/surface_path.hpp"
 #include "suites/case_matrix.hpp"
+#include "suites/interface_checks.hpp"
 #include "suites/problem_executor.hpp"
 
 namespace cs::suites {
@@ -103,6 +105,38 @@ TEST(InterfaceChecks, EqualModuliPatchTestsSeparateMortar) {
       ASSERT_EQ(r.status, CaseStatus::converged) << r.reason;
       EXPECT_GT(std::abs(r.quantities.front().error_percent), 1e-2) << case_id(r.spec);
     }
+  }
+}
+
+// Requirement: another code's solution is checked on our model from its displacements alone:
+// our own converged displacement field, handed in as if another code's, balances the load as
+// our contact forces do (to the solve's accuracy), its nodal forces over tributary lengths
+// neither pull nor press outside the patch; the same field scaled by 1.01 (a solution off
+// equilibrium by 1 % of the load) fails the force balance by that 1 %, and a code's own
+// tensile pressure, handed in, fails the tensile check.
+TEST(InterfaceChecks, AnotherCodesDisplacementsCheckedOnOurModel) {
+  for (const Element e : {Element::Q4, Element::Q8}) {
+    const CaseSpec spec = spec_of(ProblemId::H_p, Algorithm::LMP, ContactKind::ss, e);
+    ProblemExecutor executor(spec);
+    const CaseResult ours = executor.run(spec);
+    ASSERT_EQ(ours.status, CaseStatus::converged) << ours.reason;
+    const Eigen::VectorXd u = executor.last_displacement();
+    const auto checks = check_interface_of_displacements(executor.setup(), u, {});
+    ASSERT_TRUE(checks.force_balance);
+    EXPECT_LT(std::abs(*checks.force_balance), schema::kForceBalanceTolerance) << case_id(spec);
+    EXPECT_NEAR(*checks.force_balance, *ours.interface->force_balance, 1e-6) << case_id(spec);
+    EXPECT_TRUE(grading::interface_failures(checks).empty()) << case_id(spec);
+    EXPECT_FALSE(checks.max_penetration_over_h);  // not checked for another code
+
+    const auto off = check_interface_of_displacements(executor.setup(), 1.01 * u, {});
+    EXPECT_NEAR(*off.force_balance, 0.01, 1e-4) << case_id(spec);
+    EXPECT_FALSE(grading::interface_failures(off).empty());
+
+    const double p = executor.setup().p;
+    const auto path = solver::surface_path(executor.setup().model.mesh, kSampledSurface);
+    const auto pulling = check_interface_of_displacements(
+        executor.setup(), u, {{path.positions[0].x(), p}, {path.positions[1].x(), -0.5 * p}});
+    EXPECT_NEAR(*pulling.max_tensile_over_p, 0.5, 1e-12);
   }
 }
 
