@@ -41,7 +41,7 @@ bool in_plain_extent_study(const schema::CaseSpec& s) {
 /// The point of a row at its extent: the F value and its error.
 SeriesPoint row_point(double extent, const schema::RowVerdict& row) {
   const std::size_t f = mesh_index(kFinestMesh);
-  return {extent, row.values[f], row.errors[f], schema::CaseStatus::converged, 0, nullptr, &row};
+  return {.parameter = extent, .value = row.values[f], .error = row.errors[f], .row = &row};
 }
 
 /// `point` into `s`, in place of any point at the same extent.
@@ -65,7 +65,7 @@ std::vector<ParameterSeries> collect_series(const ResultsIndex& index) {
     // the contact half-width moves in half-element steps: the peak stresses decide the extent
     if ((!plain && !in_gap_study(r->spec)) || r->quantity == schema::Quantity::contact_half_width)
       continue;
-    ParameterSeries first{kExtentKey, r->spec, r->quantity, {}};
+    ParameterSeries first{r->spec, r->quantity, {}};
     first.spec.overrides.erase(kExtentKey);
     const std::string id =
         schema::case_key(first.spec) + "/" + std::string(schema::to_string(r->quantity));

@@ -64,7 +64,10 @@ std::vector<ParameterSeries> SeriesGroups::sorted() && {
 
 SeriesPoint case_point(double parameter, const schema::CaseResult& result,
                        schema::Quantity quantity) {
-  SeriesPoint p{parameter, {}, {}, result.status, result.iterations, &result, nullptr};
+  SeriesPoint p{.parameter = parameter,
+                .status = result.status,
+                .iterations = result.iterations,
+                .result = &result};
   for (const auto& q : result.quantities) {
     if (q.quantity == quantity && std::isfinite(q.error_percent)) {
       p.value = q.value;

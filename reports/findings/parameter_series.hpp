@@ -20,8 +20,8 @@ namespace cs::reports {
 /// One point of a series: the parameter's value and what was measured there.
 struct SeriesPoint {
   double parameter = 0.0;
-  std::optional<double> value;  ///< the quantity's value (a row's: on mesh F)
-  std::optional<double> error;  ///< its signed error (%), when finite
+  std::optional<double> value{};  ///< the quantity's value (a row's: on mesh F)
+  std::optional<double> error{};  ///< its signed error (%), when finite
   schema::CaseStatus status = schema::CaseStatus::converged;
   int iterations = 0;
   const schema::CaseResult* result = nullptr;  ///< the case, in a series of cases
@@ -30,10 +30,9 @@ struct SeriesPoint {
   bool converged() const { return status == schema::CaseStatus::converged; }
 };
 
-/// One quantity of one option set over the parameter `key`.
+/// One quantity of one option set over a varied parameter.
 struct ParameterSeries {
-  std::string key;
-  schema::CaseSpec spec;  ///< the common spec, `key` removed from its overrides
+  schema::CaseSpec spec;  ///< the common spec, the varied parameter removed from its overrides
   schema::Quantity quantity = schema::Quantity::sigma_c;
   std::vector<SeriesPoint> points;  ///< by ascending parameter
 

@@ -447,20 +447,20 @@ std::vector<std::string> swept_keys(const schema::ResultsDocument& doc) {
 
 std::vector<ParameterSeries> sweep_series(const schema::ResultsDocument& doc,
                                           const std::string& key) {
-  SeriesGroups sets;  // per option set, its cases
+  SeriesGroups sets;  // per option set, its cases; then one series per quantity
   for (const auto& c : doc.cases) {
     const auto it = c.spec.overrides.find(key);
     if (it == c.spec.overrides.end())
       continue;
-    ParameterSeries first{key, c.spec, {}, {}};
+    ParameterSeries first{c.spec, {}, {}};
     first.spec.overrides.erase(key);
     sets.of(schema::case_id(first.spec), first)
-        .points.push_back({it->second, {}, {}, c.status, c.iterations, &c, nullptr});
+        .points.push_back({.parameter = it->second, .result = &c});
   }
   std::vector<ParameterSeries> out;
   for (const auto& set : std::move(sets).sorted()) {
     for (const auto& q : set.points.front().result->quantities) {
-      ParameterSeries& s = out.emplace_back(ParameterSeries{key, set.spec, q.quantity, {}});
+      ParameterSeries& s = out.emplace_back(ParameterSeries{set.spec, q.quantity, {}});
       for (const auto& p : set.points)
         s.points.push_back(case_point(p.parameter, *p.result, q.quantity));
     }

@@ -19,7 +19,7 @@ SeriesPoint point(double parameter, double error, bool converged = true) {
 
 TEST(ParameterSeries, GroupsInFirstPointOrderAndSortsByParameter) {
   SeriesGroups groups;
-  ParameterSeries lmp{"fkn", {}, schema::Quantity::sigma_c, {}};
+  ParameterSeries lmp{{}, schema::Quantity::sigma_c, {}};
   ParameterSeries al = lmp;
   al.spec.algorithm = schema::Algorithm::AL;
   groups.of("LMP", lmp).points.push_back(point(10, -1.0));
