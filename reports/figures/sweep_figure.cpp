@@ -2,11 +2,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <tuple>
 
 #include <fmt/format.h>
 
 #include "reports/figures/figures.hpp"
 #include "reports/figures/gnuplot.hpp"
+#include "reports/findings/sweep_section.hpp"
 #include "reports/render/template_text.hpp"
 
 namespace cs::reports {
@@ -17,23 +20,22 @@ constexpr double kLogSpan = 100.0;
 
 /// The curve of one series: a line through the drawn points, filled symbols where the case
 /// converged, open circles where it did not. Returns how many points were left out.
-int add_curves(PlotPanel& panel, const SweepSeries& s, schema::Quantity q) {
-  const auto& contact = schema::traits(s.base.contact);
-  const std::string colour = option_colour({s.base.algorithm, s.base.contact});
+int add_curves(PlotPanel& panel, const ParameterSeries& s) {
+  const auto& contact = schema::traits(s.spec.contact);
+  const std::string colour = option_colour({s.spec.algorithm, s.spec.contact});
   PlotSeries line{s.option_label(), colour, Mark::line, contact.dash};
   PlotSeries done{"", colour, Mark::points, 1, contact.point},
       failed{"", colour, Mark::open_points};
   int left_out = 0;
   for (const auto& p : s.points) {
-    const auto e = SweepSeries::error(p, q);
-    if (!e)
+    if (!p.error)
       continue;
-    if (std::abs(*e) < schema::kErrorNoiseFloorPercent) {
+    if (std::abs(*p.error) < schema::kErrorNoiseFloorPercent) {
       ++left_out;
       continue;
     }
-    line.xy.emplace_back(p.value, std::abs(*e));
-    (SweepSeries::converged(p) ? done : failed).xy.emplace_back(p.value, std::abs(*e));
+    line.xy.emplace_back(p.parameter, std::abs(*p.error));
+    (p.converged() ? done : failed).xy.emplace_back(p.parameter, std::abs(*p.error));
   }
   for (auto* c : {&line, &done, &failed})
     panel.series.push_back(std::move(*c));
@@ -42,15 +44,29 @@ int add_curves(PlotPanel& panel, const SweepSeries& s, schema::Quantity q) {
 
 }  // namespace
 
+std::vector<SweepPanel> sweep_panels(const std::vector<ParameterSeries>& series) {
+  using Key = std::tuple<schema::ProblemId, schema::Quantity, schema::MeshLevel, schema::Element>;
+  std::map<Key, std::size_t> slot;
+  std::vector<SweepPanel> panels;
+  for (const auto& s : series) {
+    if (s.quantity == schema::Quantity::contact_half_width || !on_finest_mesh(s, series))
+      continue;  // the half-width is graded apart: it moves by whole nodes
+    const Key key{s.spec.problem, s.quantity, s.spec.mesh, s.spec.element};
+    const auto [it, fresh] = slot.try_emplace(key, panels.size());
+    if (fresh)
+      panels.push_back({s.spec.problem, s.quantity, s.spec.mesh, s.spec.element, {}});
+    panels[it->second].series.push_back(&s);
+  }
+  return panels;
+}
+
 Plot sweep_plot(const schema::ResultsDocument& doc, const std::string& key,
                 const std::vector<SweepPanel>& panels, Figure& figure) {
-  Plot plot{fmt::format("|error| against {} (open circles: not converged)", key),
-            {},
-            3,
-            520,
-            400,
-            KeyPlace::below,
-            2};
+  Plot plot{.title = fmt::format("|error| against {} (open circles: not converged)", key),
+            .panels = {},
+            .columns = 3,
+            .panel_width = 520,
+            .panel_height = 400};
   int left_out = 0;
   bool no_default = false;
   for (const auto& p : panels) {
@@ -59,15 +75,12 @@ Plot sweep_plot(const schema::ResultsDocument& doc, const std::string& key,
                     schema::to_string(p.mesh), schema::to_string(p.element)),
         {key},
         {"|error| (%)", Scale::log}};
-    double lo = INFINITY, hi = -INFINITY;
-    for (const SweepSeries* s : p.series) {
-      left_out += add_curves(panel, *s, p.quantity);
-      for (const auto& point : s->points) {
-        lo = std::min(lo, point.value);
-        hi = std::max(hi, point.value);
-      }
-    }
-    panel.x.scale = lo > 0 && hi / lo >= kLogSpan ? Scale::log : Scale::linear;
+    for (const ParameterSeries* s : p.series)
+      left_out += add_curves(panel, *s);
+    const auto values = parameter_values(p.series);
+    panel.x.scale = values.front() > 0 && values.back() / values.front() >= kLogSpan
+                        ? Scale::log
+                        : Scale::linear;
     const auto defaults = doc.parameter_defaults.find(p.problem);
     if (defaults != doc.parameter_defaults.end() && defaults->second.contains(key))
       panel.marks.push_back({defaults->second.at(key), "default"});

@@ -8,11 +8,25 @@
 
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include "reports/figures/plot_model.hpp"
-#include "reports/findings/sweep_series.hpp"
+#include "reports/findings/parameter_series.hpp"
 
 namespace cs::reports {
+
+/// One panel of a sweep figure: the series of one problem, quantity, mesh and element.
+struct SweepPanel {
+  schema::ProblemId problem = schema::ProblemId::P_p;
+  schema::Quantity quantity = schema::Quantity::sigma_c;
+  schema::MeshLevel mesh = schema::MeshLevel::F;
+  schema::Element element = schema::Element::Q4;
+  SeriesRefs series;
+};
+
+/// The panels of a key's series (sweep_series), in their order: the finest mesh swept of each
+/// problem and element, every stress quantity (not the contact half-width, graded apart).
+std::vector<SweepPanel> sweep_panels(const std::vector<ParameterSeries>& series);
 
 /// The plot of a key's panels; what it leaves out goes to `figure`'s notes.
 Plot sweep_plot(const schema::ResultsDocument& doc, const std::string& key,

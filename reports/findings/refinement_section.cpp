@@ -57,34 +57,17 @@ std::string trend_cell(const std::optional<grading::ConvergenceAssessment>& t) {
 /// The VF error, marked unless its case converged.
 std::string vf_cell(const VfRow& v) {
   const auto& e = v.row->refinement->error;
+  if (v.vf == MeshState::failed || v.vf == MeshState::missing)
+    return v.vf == MeshState::failed ? "failed" : kMissing;
   const std::string value = e ? format_error_resolved(*e) : std::string(kMissing);
-  switch (v.vf) {
-    case MeshState::converged:
-      return value;
-    case MeshState::not_converged:
-      return value + " (not converged)";
-    case MeshState::failed:
-      return "failed";
-    case MeshState::missing:
-      return kMissing;
-  }
-  return kMissing;
+  return v.vf == MeshState::converged ? value : value + " (not converged)";
 }
 
+/// A claim as the table and estimates.csv print it, in RefinementClaim's order.
 std::string claim_cell(RefinementClaim claim) {
-  switch (claim) {
-    case RefinementClaim::not_applicable:
-      return "n/a";
-    case RefinementClaim::holds:
-      return "holds";
-    case RefinementClaim::fails:
-      return "fails";
-    case RefinementClaim::vf_not_converged:
-      return "open: VF not converged";
-    case RefinementClaim::no_vf:
-      return "open: no VF";
-  }
-  return kMissing;
+  constexpr const char* kText[] = {"n/a", "holds", "fails", "open: VF not converged",
+                                   "open: no VF"};
+  return kText[static_cast<int>(claim)];
 }
 
 void add_estimate(EstimateSummary& s, std::vector<double>& gci, const ResultsIndex& index,

@@ -2,18 +2,16 @@
 
 #include <algorithm>
 #include <cmath>
-#include <functional>
-#include <limits>
 #include <map>
+#include <set>
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
 #include "grading/accuracy.hpp"
 #include "reports/figures/sweep_figure.hpp"
-#include "reports/findings/sweep_series.hpp"
+#include "reports/findings/extent_section.hpp"
 #include "reports/render/template_text.hpp"
-#include "reports/tables/markdown_table.hpp"
 
 namespace cs::reports {
 namespace {
@@ -22,162 +20,95 @@ using schema::Algorithm;
 using schema::Grade;
 using schema::Quantity;
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
-
-std::string values_text(const std::vector<double>& values) {
-  std::vector<std::string> parts;
-  for (double v : values)
-    parts.push_back(format_swept_value(v));
-  return parts.empty() ? "none" : fmt::format("{}", fmt::join(parts, ", "));
+bool stress(const ParameterSeries& s) {
+  return s.quantity != Quantity::contact_half_width;  // graded apart: it moves by whole nodes
 }
 
-/// "1e-3 to 1e4" when `chosen` is a contiguous run of `all`, else the list.
-std::string window_text(const std::vector<double>& chosen, const std::vector<double>& all) {
-  const auto first = chosen.empty() ? all.end() : std::find(all.begin(), all.end(), chosen.front());
-  const bool contiguous = chosen.size() >= 2 && all.end() - first >= std::ssize(chosen) &&
-                          std::equal(chosen.begin(), chosen.end(), first);
-  return contiguous ? fmt::format("{} to {}", format_swept_value(chosen.front()),
-                                  format_swept_value(chosen.back()))
-                    : values_text(chosen);
+bool graded_at_most(const SeriesPoint* p, Grade worst) {
+  return p && p->error && p->converged() &&
+         !schema::is_worse(grading::grade_of_error(*p->error), worst);
 }
 
-/// One quantity of one series.
-struct Curve {
-  const SweepSeries* series;
-  Quantity quantity;
-  std::string label() const {
-    const auto& b = series->base;
-    return fmt::format("{} {} {} {} {}", schema::to_string(b.problem), schema::to_string(quantity),
-                       schema::to_string(b.mesh), schema::to_string(b.element),
-                       series->option_label());
-  }
-};
-
-using Keep = std::function<bool(const SweepSeries&)>;
-
-/// Every (series, quantity) pair the kept series have; the contact half-width (it moves by
-/// whole nodes) is left out where `stresses_only`.
-std::vector<Curve> curves(const std::vector<SweepSeries>& series, const Keep& keep,
-                          bool stresses_only = false) {
-  std::vector<Curve> out;
-  for (const auto& s : series) {
-    if (s.points.empty() || (keep && !keep(s)))
-      continue;
-    for (const auto& q : s.points.front().result->quantities) {
-      if (!stresses_only || q.quantity != Quantity::contact_half_width)
-        out.push_back({&s, q.quantity});
-    }
-  }
-  return out;
-}
-
-const SweepPoint* point_at(const SweepSeries& s, double v) {
-  const auto it = std::find_if(s.points.begin(), s.points.end(),
-                               [v](const SweepPoint& p) { return p.value == v; });
-  return it == s.points.end() ? nullptr : &*it;
-}
-
-bool graded_at_most(const SweepPoint* p, Quantity q, Grade worst) {
-  const auto e = p ? SweepSeries::error(*p, q) : std::nullopt;
-  return e && SweepSeries::converged(*p) && !schema::is_worse(grading::grade_of_error(*e), worst);
-}
-
-/// The swept values at which every curve is graded `worst` or better (converged).
-std::vector<double> values_where_all(const std::vector<Curve>& cs, const std::vector<double>& all,
+/// The swept values at which every series is graded `worst` or better (converged).
+std::vector<double> values_where_all(const SeriesRefs& series, const std::vector<double>& all,
                                      Grade worst) {
   std::vector<double> out;
   for (double v : all) {
-    if (!cs.empty() && std::all_of(cs.begin(), cs.end(), [&](const Curve& c) {
-          return graded_at_most(point_at(*c.series, v), c.quantity, worst);
+    if (!series.empty() && std::all_of(series.begin(), series.end(), [&](const auto* s) {
+          return graded_at_most(s->at(v), worst);
         }))
       out.push_back(v);
   }
   return out;
 }
 
-int count_not_converged(const std::vector<SweepSeries>& series, double v, const Keep& keep) {
-  int n = 0;
+/// The cases of the series `keep` accepts at a value that did not converge.
+template <typename Keep>
+int count_not_converged(const std::vector<ParameterSeries>& series, double v, Keep&& keep) {
+  std::set<const schema::CaseResult*> cases;
   for (const auto& s : series) {
-    const SweepPoint* p = keep(s) ? point_at(s, v) : nullptr;
-    n += p && !SweepSeries::converged(*p) ? 1 : 0;
+    if (const SeriesPoint* p = keep(s) ? s.at(v) : nullptr; p && !p->converged())
+      cases.insert(p->result);
   }
-  return n;
+  return static_cast<int>(cases.size());
 }
 
 /// The most iterations of the cases of one algorithm at a value, or -1.
-int most_iterations(const std::vector<SweepSeries>& series, double v, Algorithm a) {
+int most_iterations(const std::vector<ParameterSeries>& series, double v, Algorithm a) {
   int most = -1;
   for (const auto& s : series) {
-    if (const SweepPoint* p = s.base.algorithm == a ? point_at(s, v) : nullptr)
-      most = std::max(most, p->result->iterations);
+    if (const SeriesPoint* p = s.spec.algorithm == a ? s.at(v) : nullptr)
+      most = std::max(most, p->iterations);
   }
   return most;
 }
 
-bool penalty_based(const SweepSeries& s) {
-  return schema::traits(s.base.algorithm).penalty_based;
+bool penalty_based(const ParameterSeries& s) {
+  return schema::traits(s.spec.algorithm).penalty_based;
 }
 
-/// A table whose first columns are `header` (aligned as `align`), then one right-aligned
-/// column per swept value.
-MarkdownTable value_table(std::vector<std::string> header, std::vector<Align> align,
-                          const std::vector<double>& values) {
-  for (double v : values) {
-    header.push_back(format_swept_value(v));
-    align.push_back(Align::right);
-  }
-  return MarkdownTable(std::move(header), std::move(align));
-}
-
-/// One key's table: per curve on the finest mesh swept, per value the signed error, grade and
+/// One key's table: per series on the finest mesh swept, per value the signed error, grade and
 /// iterations, or the status of a case without an error.
-std::string error_table(const std::vector<SweepSeries>& series, const std::vector<double>& values) {
+std::string error_table(const std::vector<ParameterSeries>& series,
+                        const std::vector<double>& values) {
   constexpr Align l = Align::left, c = Align::center;
-  MarkdownTable t =
-      value_table({"Problem", "Quantity", "Mesh", "Element", "Option"}, {l, l, c, c, l}, values);
-  for (const Curve& curve :
-       curves(series, [&](const SweepSeries& s) { return on_finest_mesh(s, series); })) {
-    const auto& b = curve.series->base;
-    std::vector<std::string> row{
-        std::string(schema::to_string(b.problem)), std::string(schema::to_string(curve.quantity)),
-        std::string(schema::to_string(b.mesh)), std::string(schema::to_string(b.element)),
-        curve.series->option_label()};
+  MarkdownTable t = parameter_table({"Problem", "Quantity", "Mesh", "Element", "Option"},
+                                    {l, l, c, c, l}, values);
+  for (const auto& s : series) {
+    if (!on_finest_mesh(s, series))
+      continue;
+    std::vector<std::string> row{std::string(schema::to_string(s.spec.problem)),
+                                 std::string(schema::to_string(s.quantity)),
+                                 std::string(schema::to_string(s.spec.mesh)),
+                                 std::string(schema::to_string(s.spec.element)), s.option_label()};
     for (double v : values) {
-      const SweepPoint* p = point_at(*curve.series, v);
-      const auto e = p ? SweepSeries::error(*p, curve.quantity) : std::nullopt;
-      row.push_back(!e ? (p ? std::string(to_string(p->result->status)) : kMissing)
-                       : fmt::format("{} {}, {} it{}", format_error_resolved(*e),
-                                     schema::to_string(grading::grade_of_error(*e)),
-                                     p->result->iterations,
-                                     SweepSeries::converged(*p) ? "" : " (not converged)"));
+      const SeriesPoint* p = s.at(v);
+      row.push_back(!p || !p->error
+                        ? (p ? std::string(to_string(p->status)) : kMissing)
+                        : fmt::format("{} {}, {} it{}", format_error_resolved(*p->error),
+                                      schema::to_string(grading::grade_of_error(*p->error)),
+                                      p->iterations, p->converged() ? "" : " (not converged)"));
     }
     t.add_row(std::move(row));
   }
   return t.render();
 }
 
-/// The largest spread (max - min, percentage points) of a curve's converged errors.
-TemplateData spread(const std::vector<Curve>& cs, const std::string& key,
+/// The largest spread (max - min, percentage points) of a series' converged errors.
+TemplateData spread(const SeriesRefs& series, const std::string& key,
                     const std::vector<double>& values) {
   double worst = -1;
-  const Curve* at = nullptr;
-  for (const auto& c : cs) {
-    double lo = kInf, hi = -kInf;
-    for (const auto& p : c.series->points) {
-      if (const auto e = SweepSeries::error(p, c.quantity); e && SweepSeries::converged(p)) {
-        lo = std::min(lo, *e);
-        hi = std::max(hi, *e);
-      }
-    }
-    if (hi >= lo && hi - lo > worst) {
-      worst = hi - lo;
-      at = &c;
+  const ParameterSeries* at = nullptr;
+  for (const ParameterSeries* s : series) {
+    if (const auto range = s->error_range(); range && range->second - range->first > worst) {
+      worst = range->second - range->first;
+      at = s;
     }
   }
   TemplateData d;
   d.set("key", key);
   d.set("has_spread", at != nullptr);
-  d.set("values", window_text(values, values));
+  d.set("values", parameter_window(values, values));
   d.set("spread", fmt::format("{:.3g}", worst));
   d.set("curve", at ? at->label() : std::string());
   d.set("nothing", worst <= kSamePoints);
@@ -187,25 +118,22 @@ TemplateData spread(const std::vector<Curve>& cs, const std::string& key,
 
 /// AL against PM: the largest |e_AL - e_PM| per value over the series pairs that differ only in
 /// the algorithm, and whether their iteration counts differ.
-TemplateData al_pm(const std::vector<SweepSeries>& series, const std::vector<double>& values) {
+TemplateData al_pm(const std::vector<ParameterSeries>& series, const std::vector<double>& values) {
   std::map<double, double> gap;
   std::map<double, bool> iterations_differ;
   for (const auto& al : series) {
-    schema::CaseSpec pm_spec = al.base;
+    schema::CaseSpec pm_spec = al.spec;
     pm_spec.algorithm = Algorithm::PM;
-    const auto pm = std::find_if(series.begin(), series.end(), [&](const SweepSeries& s) {
-      return schema::case_id(s.base) == schema::case_id(pm_spec);
+    const auto pm = std::find_if(series.begin(), series.end(), [&](const ParameterSeries& s) {
+      return s.quantity == al.quantity && schema::case_id(s.spec) == schema::case_id(pm_spec);
     });
-    if (al.base.algorithm != Algorithm::AL || pm == series.end())
+    if (al.spec.algorithm != Algorithm::AL || pm == series.end())
       continue;
     for (const auto& a : al.points) {
-      const SweepPoint* p = point_at(*pm, a.value);
-      for (const auto& q : p ? a.result->quantities : std::vector<schema::QuantityResult>{}) {
-        const auto ea = SweepSeries::error(a, q.quantity), ep = SweepSeries::error(*p, q.quantity);
-        if (ea && ep)
-          gap[a.value] = std::max(gap[a.value], std::abs(*ea - *ep));
-      }
-      iterations_differ[a.value] |= p && a.result->iterations != p->result->iterations;
+      const SeriesPoint* p = pm->at(a.parameter);
+      if (p && a.error && p->error)
+        gap[a.parameter] = std::max(gap[a.parameter], std::abs(*a.error - *p->error));
+      iterations_differ[a.parameter] |= p && a.iterations != p->iterations;
     }
   }
   std::vector<double> apart, same, it_apart;
@@ -215,24 +143,41 @@ TemplateData al_pm(const std::vector<SweepSeries>& series, const std::vector<dou
     if (g > widest)
       std::tie(widest, widest_at) = std::make_pair(g, v);
   }
-  for (double v : values) {
-    if (iterations_differ[v])
-      it_apart.push_back(v);
-  }
+  std::copy_if(values.begin(), values.end(), std::back_inserter(it_apart),
+               [&](double v) { return iterations_differ[v]; });
   TemplateData d;
   d.set("same_points", fmt::format("{:g}", kSamePoints));
   d.set("separate", !apart.empty());
-  d.set("apart", values_text(apart));
+  d.set("apart", parameter_list(apart));
   d.set("widest", fmt::format("{:.3g}", widest));
-  d.set("widest_at", format_swept_value(widest_at));
-  d.set("it_apart", values_text(it_apart));
-  d.set("same", values_text(same));
+  d.set("widest_at", format_parameter(widest_at));
+  d.set("it_apart", parameter_list(it_apart));
+  d.set("same", parameter_list(same));
   return gap.empty() ? TemplateData(false) : d;
 }
 
-/// Can any FKN reproduce the study's AL error on S(1/3) (sigma_c, Q4, ss, mesh F)? A crossing is
-/// interpolated in log FKN: the errors change with the order of magnitude of FKN.
-TemplateData study_al(const std::vector<SweepSeries>& series, const schema::StudyReference& study) {
+/// Where the errors of `s` cross `target` between two converged points, interpolated in log of
+/// the parameter (the errors change with its order of magnitude).
+std::vector<std::string> crossings(const ParameterSeries& s, double target) {
+  std::vector<std::string> out;
+  const SeriesPoint* prev = nullptr;
+  for (const auto& p : s.points) {
+    if (!p.error || !p.converged())
+      continue;
+    const double ep = prev ? *prev->error : *p.error;
+    if (prev && (ep - target) * (*p.error - target) <= 0 && ep != *p.error) {
+      const double t = (target - ep) / (*p.error - ep);
+      out.push_back(fmt::format("{:.2g}", std::exp(std::log(prev->parameter) +
+                                                   t * std::log(p.parameter / prev->parameter))));
+    }
+    prev = &p;
+  }
+  return out;
+}
+
+/// Can any FKN reproduce the study's AL error on S(1/3) (sigma_c, Q4, ss, mesh F)?
+TemplateData study_al(const std::vector<ParameterSeries>& series,
+                      const schema::StudyReference& study) {
   const auto match =
       study.find_value(schema::ProblemId::S_1_3, Quantity::sigma_c, schema::Element::Q4,
                        Algorithm::AL, schema::ContactKind::ss, schema::MeshLevel::F);
@@ -241,45 +186,29 @@ TemplateData study_al(const std::vector<SweepSeries>& series, const schema::Stud
   const double target = grading::error_percent(match.value->value, *match.value->exact);
   TemplateData list{TemplateData::type::list};
   for (const auto& s : series) {
-    const auto& b = s.base;
-    if (b.problem != schema::ProblemId::S_1_3 || b.algorithm != Algorithm::AL ||
-        b.element != schema::Element::Q4 || b.contact != schema::ContactKind::ss ||
-        b.mesh != schema::MeshLevel::F || !b.overrides.empty())
+    const auto& b = s.spec;
+    const auto range = s.error_range();
+    if (b.problem != schema::ProblemId::S_1_3 || s.quantity != Quantity::sigma_c ||
+        b.algorithm != Algorithm::AL || b.element != schema::Element::Q4 ||
+        b.contact != schema::ContactKind::ss || b.mesh != schema::MeshLevel::F ||
+        !b.overrides.empty() || !range)
       continue;
-    std::vector<std::string> crossings;
-    double lo = kInf, hi = -kInf;
-    const SweepPoint* prev = nullptr;
-    for (const auto& p : s.points) {
-      const auto e = SweepSeries::error(p, Quantity::sigma_c);
-      if (!e || !SweepSeries::converged(p))
-        continue;
-      lo = std::min(lo, *e);
-      hi = std::max(hi, *e);
-      const double ep = prev ? *SweepSeries::error(*prev, Quantity::sigma_c) : *e;
-      if (prev && (ep - target) * (*e - target) <= 0 && ep != *e) {
-        const double t = (target - ep) / (*e - ep);
-        crossings.push_back(fmt::format(
-            "{:.2g}", std::exp(std::log(prev->value) + t * std::log(p.value / prev->value))));
-      }
-      prev = &p;
-    }
-    if (hi < lo)
-      continue;
+    const auto near = crossings(s, target);
     TemplateData d;
     d.set("printed", match.value->printed);
     d.set("exact", match.value->exact_printed);
     d.set("target", format_percent(target));
-    d.set("reproduced", !crossings.empty());
-    d.set("crossings", fmt::format("{}", fmt::join(crossings, ", ")));
-    d.set("lo", format_percent(lo));
-    d.set("hi", format_percent(hi));
+    d.set("reproduced", !near.empty());
+    d.set("crossings", fmt::format("{}", fmt::join(near, ", ")));
+    d.set("lo", format_percent(range->first));
+    d.set("hi", format_percent(range->second));
     list.push_back(d);
   }
   return list;
 }
 
 /// Whether every swept AL/PM row run on C, M and F converges (the study's c), per value.
-TemplateData fkn_convergence(const ResultsIndex& index, const std::vector<Curve>& cs,
+TemplateData fkn_convergence(const ResultsIndex& index, const SeriesRefs& series,
                              const std::vector<double>& values) {
   std::map<std::string, const schema::RowVerdict*> rows;
   for (const auto& r : index.results().rows)
@@ -288,11 +217,11 @@ TemplateData fkn_convergence(const ResultsIndex& index, const std::vector<Curve>
   bool any_row = false;
   for (double v : values) {
     bool every = true, some = false;
-    for (const auto& c : cs) {
-      schema::CaseSpec spec = c.series->base;
+    for (const ParameterSeries* s : series) {
+      schema::CaseSpec spec = s->spec;
       spec.overrides["fkn"] = v;
       const auto it =
-          rows.find(schema::case_key(spec) + "/" + std::string(schema::to_string(c.quantity)));
+          rows.find(schema::case_key(spec) + "/" + std::string(schema::to_string(s->quantity)));
       if (it == rows.end() || !ResultsIndex::complete(*it->second))
         continue;
       some = true;
@@ -302,60 +231,35 @@ TemplateData fkn_convergence(const ResultsIndex& index, const std::vector<Curve>
     if (some && every)
       converging.push_back(v);
   }
-  return any_row ? TemplateData("window", window_text(converging, values)) : TemplateData(false);
+  return any_row ? TemplateData("window", parameter_window(converging, values))
+                 : TemplateData(false);
 }
 
-TemplateData fkn(const ResultsIndex& index, const std::vector<SweepSeries>& series,
-                 const std::vector<double>& values, const schema::StudyReference& study) {
-  const auto cs = curves(
-      series, [&](const SweepSeries& s) { return penalty_based(s) && on_finest_mesh(s, series); },
-      true);
-  TemplateData d;
-  d.set("any", !cs.empty());
-  if (cs.empty())
-    return d;
-  const auto e = values_where_all(cs, values, Grade::e);
-  const auto eg = values_where_all(cs, values, Grade::g);
-  d.set("n_rows", std::to_string(cs.size()));
-  d.set("e", window_text(e, values));
-  d.set("eg", window_text(eg, values));
-  std::vector<Curve> never;
-  std::copy_if(cs.begin(), cs.end(), std::back_inserter(never),
-               [&](const Curve& c) { return values_where_all({c}, values, Grade::e).empty(); });
-  d.set("never_e",
-        template_list(never, [](const Curve& c) { return TemplateData("row", c.label()); }));
-  d.set("convergence", fkn_convergence(index, cs, values));
-  std::vector<std::string> not_converged;
-  for (double v : values) {
-    if (const int n = count_not_converged(series, v, penalty_based); n > 0)
-      not_converged.push_back(fmt::format("{} at FKN = {}", n, format_swept_value(v)));
-  }
-  d.set("it_first", std::to_string(most_iterations(series, values.front(), Algorithm::AL)));
-  d.set("v_first", format_swept_value(values.front()));
-  d.set("it_last", std::to_string(most_iterations(series, values.back(), Algorithm::AL)));
-  d.set("v_last", format_swept_value(values.back()));
-  d.set("all_converge", not_converged.empty());
-  d.set("not_converged", fmt::format("{}", fmt::join(not_converged, ", ")));
-  if (!eg.empty()) {
-    TemplateData def;
-    const double lo = eg.front();
-    def.set("fkn", format_swept_value(lo));
-    def.set("al_it", std::to_string(most_iterations(series, lo, Algorithm::AL)));
-    const int lmp = most_iterations(series, lo, Algorithm::LMP);
-    def.set("has_lmp", lmp >= 0);
-    def.set("lmp_it", std::to_string(lmp));
-    def.set("has_e", !e.empty());
-    def.set("e_from", e.empty() ? std::string() : format_swept_value(e.front()));
-    const auto nc = std::find_if(values.begin(), values.end(), [&](double v) {
-      return v > lo && count_not_converged(series, v, penalty_based) > 0;
-    });
-    def.set("has_nc", nc != values.end());
-    def.set("nc_at", nc != values.end() ? format_swept_value(*nc) : std::string());
-    d.set("default", def);
-  }
-  d.set("al_pm", al_pm(series, values));
-  d.set("study_al", study_al(series, study));
-  MarkdownTable iterations = value_table({"Algorithm"}, {Align::left}, values);
+/// The default FKN: the smallest at which every swept AL/PM row is e or g (`eg` not empty).
+TemplateData fkn_default(const std::vector<ParameterSeries>& series,
+                         const std::vector<double>& values, const std::vector<double>& e,
+                         const std::vector<double>& eg) {
+  TemplateData def;
+  const double lo = eg.front();
+  def.set("fkn", format_parameter(lo));
+  def.set("al_it", std::to_string(most_iterations(series, lo, Algorithm::AL)));
+  const int lmp = most_iterations(series, lo, Algorithm::LMP);
+  def.set("has_lmp", lmp >= 0);
+  def.set("lmp_it", std::to_string(lmp));
+  def.set("has_e", !e.empty());
+  def.set("e_from", e.empty() ? std::string() : format_parameter(e.front()));
+  const auto nc = std::find_if(values.begin(), values.end(), [&](double v) {
+    return v > lo && count_not_converged(series, v, penalty_based) > 0;
+  });
+  def.set("has_nc", nc != values.end());
+  def.set("nc_at", nc != values.end() ? format_parameter(*nc) : std::string());
+  return def;
+}
+
+/// Most iterations of any swept case per algorithm and value, with the cases not converged.
+std::string iterations_table(const std::vector<ParameterSeries>& series,
+                             const std::vector<double>& values) {
+  MarkdownTable t = parameter_table({"Algorithm"}, {Align::left}, values);
   for (const Algorithm a : schema::values<Algorithm>()) {
     if (most_iterations(series, values.front(), a) < 0)
       continue;
@@ -363,73 +267,106 @@ TemplateData fkn(const ResultsIndex& index, const std::vector<SweepSeries>& seri
     for (double v : values) {
       const int it = most_iterations(series, v, a);
       const int nc = count_not_converged(
-          series, v, [a](const SweepSeries& s) { return s.base.algorithm == a; });
+          series, v, [a](const ParameterSeries& s) { return s.spec.algorithm == a; });
       row.push_back(it < 0 ? std::string(kMissing)
                            : fmt::format("{}{}", it, nc > 0 ? fmt::format(" ({} n.c.)", nc) : ""));
     }
-    iterations.add_row(std::move(row));
+    t.add_row(std::move(row));
   }
-  d.set("iterations", iterations.render());
+  return t.render();
+}
+
+TemplateData fkn(const ResultsIndex& index, const std::vector<ParameterSeries>& series,
+                 const std::vector<double>& values, const schema::StudyReference& study) {
+  const SeriesRefs penalty = select_series(series, [&](const ParameterSeries& s) {
+    return penalty_based(s) && stress(s) && on_finest_mesh(s, series);
+  });
+  TemplateData d;
+  d.set("any", !penalty.empty());
+  if (penalty.empty())
+    return d;
+  const auto e = values_where_all(penalty, values, Grade::e);
+  const auto eg = values_where_all(penalty, values, Grade::g);
+  d.set("n_rows", std::to_string(penalty.size()));
+  d.set("e", parameter_window(e, values));
+  d.set("eg", parameter_window(eg, values));
+  SeriesRefs never;
+  std::copy_if(penalty.begin(), penalty.end(), std::back_inserter(never),
+               [&](const auto* s) { return values_where_all({s}, values, Grade::e).empty(); });
+  d.set("never_e",
+        template_list(never, [](const auto* s) { return TemplateData("row", s->label()); }));
+  d.set("convergence", fkn_convergence(index, penalty, values));
+  std::vector<std::string> not_converged;
+  for (double v : values) {
+    if (const int n = count_not_converged(series, v, penalty_based); n > 0)
+      not_converged.push_back(fmt::format("{} at FKN = {}", n, format_parameter(v)));
+  }
+  d.set("it_first", std::to_string(most_iterations(series, values.front(), Algorithm::AL)));
+  d.set("v_first", format_parameter(values.front()));
+  d.set("it_last", std::to_string(most_iterations(series, values.back(), Algorithm::AL)));
+  d.set("v_last", format_parameter(values.back()));
+  d.set("all_converge", not_converged.empty());
+  d.set("not_converged", fmt::format("{}", fmt::join(not_converged, ", ")));
+  if (!eg.empty())
+    d.set("default", fkn_default(series, values, e, eg));
+  d.set("al_pm", al_pm(series, values));
+  d.set("study_al", study_al(series, study));
+  d.set("iterations", iterations_table(series, values));
   return d;
 }
 
 /// What the pinball does to MPC: its error at each value, and where it failed.
-TemplateData pinball(const std::vector<SweepSeries>& series) {
-  const auto mpc = curves(
-      series,
-      [&](const SweepSeries& s) {
-        return s.base.algorithm == Algorithm::MPC && on_finest_mesh(s, series);
-      },
-      true);
-  return template_list(mpc, [](const Curve& c) {
+TemplateData pinball(const std::vector<ParameterSeries>& series) {
+  const SeriesRefs mpc = select_series(series, [&](const ParameterSeries& s) {
+    return s.spec.algorithm == Algorithm::MPC && stress(s) && on_finest_mesh(s, series);
+  });
+  return template_list(mpc, [](const ParameterSeries* s) {
     std::vector<double> failed;
     std::vector<std::string> cells;
-    for (const auto& p : c.series->points) {
-      const auto e = SweepSeries::error(p, c.quantity);
-      if (SweepSeries::converged(p) && e)
-        cells.push_back(fmt::format("{} at {}", format_percent(*e), format_swept_value(p.value)));
+    for (const auto& p : s->points) {
+      if (p.converged() && p.error)
+        cells.push_back(
+            fmt::format("{} at {}", format_percent(*p.error), format_parameter(p.parameter)));
       else
-        failed.push_back(p.value);
+        failed.push_back(p.parameter);
     }
-    TemplateData d("row", c.label());
+    TemplateData d("row", s->label());
     d.set("errors", cells.empty() ? std::string("no converged case")
                                   : fmt::format("{}", fmt::join(cells, ", ")));
     d.set("has_failed", !failed.empty());
-    d.set("failed", values_text(failed));
+    d.set("failed", parameter_list(failed));
     return d;
   });
 }
 
 /// From which E ratio on every stress error stays within kSettledPoints of its value at the
 /// largest ratio swept.
-TemplateData e_ratio(const std::vector<SweepSeries>& series) {
+TemplateData e_ratio(const std::vector<ParameterSeries>& series) {
   double latest = 0;
   TemplateData rows{TemplateData::type::list};
-  for (const auto& c : curves(series, nullptr, true)) {
-    const auto& pts = c.series->points;
-    const auto last = SweepSeries::error(pts.back(), c.quantity);
-    if (!last)
+  for (const ParameterSeries* s : select_series(series, stress)) {
+    const auto& last = s->points.back();
+    if (!last.error)
       continue;
-    double settled = pts.back().value;
-    for (auto it = pts.rbegin(); it != pts.rend(); ++it) {
-      const auto e = SweepSeries::error(*it, c.quantity);
-      if (!e || std::abs(*e - *last) > kSettledPoints)
+    double settled = last.parameter;
+    for (auto it = s->points.rbegin(); it != s->points.rend(); ++it) {
+      if (!it->error || std::abs(*it->error - *last.error) > kSettledPoints)
         break;
-      settled = it->value;
+      settled = it->parameter;
     }
     latest = std::max(latest, settled);
-    TemplateData d("row", c.label());
-    d.set("from", format_swept_value(settled));
-    d.set("last", format_percent(*last));
-    d.set("at", format_swept_value(pts.back().value));
+    TemplateData d("row", s->label());
+    d.set("from", format_parameter(settled));
+    d.set("last", format_percent(*last.error));
+    d.set("at", format_parameter(last.parameter));
     rows.push_back(d);
   }
   TemplateData d;
   d.set("any", !rows.is_empty_list());
   d.set("rows", rows);
   d.set("settled_points", fmt::format("{:g}", kSettledPoints));
-  d.set("latest", format_swept_value(latest));
-  d.set("at_smallest", latest == swept_values(series).front());
+  d.set("latest", format_parameter(latest));
+  d.set("at_smallest", latest == parameter_values(series).front());
   return d;
 }
 
@@ -446,9 +383,9 @@ std::string key_title(const std::string& key) {
 
 /// The answers of one key: those its kind asks for, else the spread of the errors.
 void set_answers(TemplateData& d, const ResultsIndex& index, const std::string& key,
-                 const std::vector<SweepSeries>& series, const std::vector<double>& values,
+                 const std::vector<ParameterSeries>& series, const std::vector<double>& values,
                  const schema::StudyReference& study) {
-  const auto all = curves(series, nullptr);
+  const auto all = select_series(series, [](const ParameterSeries&) { return true; });
   if (key == "fkn") {
     d.set("fkn", fkn(index, series, values, study));
   } else if (key == "pinball") {
@@ -461,8 +398,8 @@ void set_answers(TemplateData& d, const ResultsIndex& index, const std::string& 
   } else if (key == "E_ratio") {
     d.set("e_ratio", e_ratio(series));
   } else if (key == "ftoln") {
-    const auto al =
-        curves(series, [](const SweepSeries& s) { return s.base.algorithm == Algorithm::AL; });
+    const auto al = select_series(
+        series, [](const ParameterSeries& s) { return s.spec.algorithm == Algorithm::AL; });
     d.set("spread", spread(al.empty() ? all : al, "FTOLN", values));
   } else {
     d.set("spread", spread(all, key == "p_over_E" ? "p/E" : key, values));
@@ -482,21 +419,80 @@ TemplateData key_figure(const FigureSet& figures, const std::string& key) {
 
 }  // namespace
 
+std::vector<std::string> swept_keys(const schema::ResultsDocument& doc) {
+  std::vector<std::string> keys;
+  const auto add = [&](const std::string& key) {
+    if (std::find(keys.begin(), keys.end(), key) == keys.end())
+      keys.push_back(key);
+  };
+  for (const auto& axis : doc.run.sweep)
+    add(axis.key);
+  for (const auto& [source, run] : doc.added_runs) {  // files combined by `report --results`
+    for (const auto& axis : run.sweep)
+      add(axis.key);
+  }
+  std::map<std::string, std::set<double>> seen;
+  for (const auto& c : doc.cases) {
+    if (in_extent_study(c.spec))  // the extent study has a section of its own
+      continue;
+    for (const auto& [name, value] : c.spec.overrides)
+      seen[name].insert(value);
+  }
+  for (const auto& [name, values] : seen) {
+    if (values.size() >= 2)
+      add(name);
+  }
+  return keys;
+}
+
+std::vector<ParameterSeries> sweep_series(const schema::ResultsDocument& doc,
+                                          const std::string& key) {
+  SeriesGroups sets;  // per option set, its cases; then one series per quantity
+  for (const auto& c : doc.cases) {
+    const auto it = c.spec.overrides.find(key);
+    if (it == c.spec.overrides.end())
+      continue;
+    ParameterSeries first{c.spec, {}, {}};
+    first.spec.overrides.erase(key);
+    sets.of(schema::case_id(first.spec), first)
+        .points.push_back({.parameter = it->second, .result = &c});
+  }
+  std::vector<ParameterSeries> out;
+  for (const auto& set : std::move(sets).sorted()) {
+    for (const auto& q : set.points.front().result->quantities) {
+      ParameterSeries& s = out.emplace_back(ParameterSeries{set.spec, q.quantity, {}});
+      for (const auto& p : set.points)
+        s.points.push_back(case_point(p.parameter, *p.result, q.quantity));
+    }
+  }
+  return out;
+}
+
+bool on_finest_mesh(const ParameterSeries& s, const std::vector<ParameterSeries>& all) {
+  return std::none_of(all.begin(), all.end(), [&](const ParameterSeries& o) {
+    return o.spec.problem == s.spec.problem && o.spec.element == s.spec.element &&
+           o.spec.mesh > s.spec.mesh;
+  });
+}
+
 std::string sweep_section(const ResultsIndex& index, const schema::StudyReference& study,
                           const FigureSet& figures) {
   const auto& doc = index.results();
   TemplateData keys{TemplateData::type::list};
   for (const auto& key : swept_keys(doc)) {
     const auto series = sweep_series(doc, key);
-    const auto values = swept_values(series);
+    const auto values = parameter_values(series);
     if (values.empty())
       continue;
     TemplateData d;
     d.set("title", key_title(key));
     d.set("key", key);
     d.set("n_values", std::to_string(values.size()));
-    d.set("values", values_text(values));
-    d.set("n_series", std::to_string(series.size()));
+    d.set("values", parameter_list(values));
+    std::set<std::string> option_sets;
+    for (const auto& s : series)
+      option_sets.insert(schema::case_id(s.spec));
+    d.set("n_series", std::to_string(option_sets.size()));
     set_answers(d, index, key, series, values, study);
     d.set("figure", key_figure(figures, key));
     d.set("table", error_table(series, values));

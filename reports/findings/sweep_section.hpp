@@ -12,10 +12,13 @@
 //  - E_ratio: from which ratio the error stops changing (within kSettledPoints);
 //  - p_over_E: the spread of the normalized errors (linearity in the load);
 //  - any other key: the spread of the errors.
+// The swept cases are series of the one model (findings/parameter_series.hpp).
 
 #include <string>
+#include <vector>
 
-#include "reports/figures/figures.hpp"
+#include "reports/figures/plot_model.hpp"
+#include "reports/findings/parameter_series.hpp"
 #include "reports/results/results_index.hpp"
 #include "schema/study_reference.hpp"
 
@@ -26,6 +29,20 @@ inline constexpr double kSamePoints = 0.01;
 /// The E ratio "stops mattering" once every larger ratio is within this (percentage points)
 /// of the error at the largest ratio swept.
 inline constexpr double kSettledPoints = 0.05;
+
+/// The swept keys: those of run.sweep in their order, then any other key with two or more
+/// override values among the cases (the extent study's left out), alphabetically.
+std::vector<std::string> swept_keys(const schema::ResultsDocument& doc);
+
+/// The series of one key: the cases that differ only in its value, one series per quantity of
+/// the case with the smallest value, option sets in document order of their first case. Cases
+/// without the key are left out; a series of a single point is kept (still a swept case).
+std::vector<ParameterSeries> sweep_series(const schema::ResultsDocument& doc,
+                                          const std::string& key);
+
+/// True when no series of the same problem and element has a finer mesh: the mesh the study
+/// grades, and the one the section's tables, figures and windows show.
+bool on_finest_mesh(const ParameterSeries& series, const std::vector<ParameterSeries>& all);
 
 /// The section ("## Parameter sweeps ..."), or an empty string when nothing was swept.
 /// `figures`: those of render_sweep_figures (linked when drawn).

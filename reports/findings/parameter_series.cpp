@@ -1,0 +1,123 @@
+#include "reports/findings/parameter_series.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+namespace cs::reports {
+
+const SeriesPoint* ParameterSeries::at(double parameter) const {
+  const auto it = std::find_if(points.begin(), points.end(), [parameter](const SeriesPoint& p) {
+    return p.parameter == parameter;
+  });
+  return it == points.end() ? nullptr : &*it;
+}
+
+std::string ParameterSeries::option_label() const {
+  std::string out =
+      fmt::format("{} {}", schema::to_string(spec.algorithm), schema::to_string(spec.contact));
+  if (spec.target == schema::TargetKind::Rigid)
+    out += ", rigid";
+  if (spec.recovery != schema::Recovery::spr)
+    out += fmt::format(", {}", schema::to_string(spec.recovery));
+  for (const auto& [name, value] : spec.overrides)
+    out += fmt::format(", {}={}", name, format_parameter(value));
+  if (spec.solver != schema::SolverKind::builtin)
+    out += ", @" + schema::solver_label(spec);
+  return out;
+}
+
+std::string ParameterSeries::label() const {
+  return fmt::format("{} {} {} {} {}", schema::to_string(spec.problem), schema::to_string(quantity),
+                     schema::to_string(spec.mesh), schema::to_string(spec.element), option_label());
+}
+
+std::optional<std::pair<double, double>> ParameterSeries::error_range() const {
+  std::optional<std::pair<double, double>> range;
+  for (const auto& p : points) {
+    if (p.error && p.converged())
+      range = range ? std::make_pair(std::min(range->first, *p.error),
+                                     std::max(range->second, *p.error))
+                    : std::make_pair(*p.error, *p.error);
+  }
+  return range;
+}
+
+ParameterSeries& SeriesGroups::of(const std::string& id, const ParameterSeries& first) {
+  const auto [it, fresh] = slot_.try_emplace(id, series_.size());
+  if (fresh)
+    series_.push_back(first);
+  return series_[it->second];
+}
+
+std::vector<ParameterSeries> SeriesGroups::sorted() && {
+  for (auto& s : series_) {
+    std::stable_sort(
+        s.points.begin(), s.points.end(),
+        [](const SeriesPoint& a, const SeriesPoint& b) { return a.parameter < b.parameter; });
+  }
+  return std::move(series_);
+}
+
+SeriesPoint case_point(double parameter, const schema::CaseResult& result,
+                       schema::Quantity quantity) {
+  SeriesPoint p{.parameter = parameter,
+                .status = result.status,
+                .iterations = result.iterations,
+                .result = &result};
+  for (const auto& q : result.quantities) {
+    if (q.quantity == quantity && std::isfinite(q.error_percent)) {
+      p.value = q.value;
+      p.error = q.error_percent;
+      break;
+    }
+  }
+  return p;
+}
+
+std::vector<double> parameter_values(const SeriesRefs& series) {
+  std::set<double> values;
+  for (const ParameterSeries* s : series) {
+    for (const auto& p : s->points)
+      values.insert(p.parameter);
+  }
+  return {values.begin(), values.end()};
+}
+
+std::vector<double> parameter_values(const std::vector<ParameterSeries>& series) {
+  return parameter_values(select_series(series, [](const ParameterSeries&) { return true; }));
+}
+
+std::string format_parameter(double value) {
+  return fmt::format("{:g}", value);
+}
+
+std::string parameter_list(const std::vector<double>& values) {
+  std::vector<std::string> names;
+  for (double v : values)
+    names.push_back(format_parameter(v));
+  return values.empty() ? "none" : fmt::format("{}", fmt::join(names, ", "));
+}
+
+std::string parameter_window(const std::vector<double>& chosen, const std::vector<double>& all) {
+  const auto first = chosen.empty() ? all.end() : std::find(all.begin(), all.end(), chosen.front());
+  const bool contiguous = chosen.size() >= 2 && all.end() - first >= std::ssize(chosen) &&
+                          std::equal(chosen.begin(), chosen.end(), first);
+  return contiguous ? fmt::format("{} to {}", format_parameter(chosen.front()),
+                                  format_parameter(chosen.back()))
+                    : parameter_list(chosen);
+}
+
+MarkdownTable parameter_table(std::vector<std::string> lead, std::vector<Align> align,
+                              const std::vector<double>& values) {
+  for (double v : values) {
+    lead.push_back(format_parameter(v));
+    align.push_back(Align::right);
+  }
+  return MarkdownTable(std::move(lead), std::move(align));
+}
+
+}  // namespace cs::reports
