@@ -83,23 +83,25 @@ TemplateData comparison_data(const RecoveryComparison& c) {
 }
 
 std::string pairs_table(const ResultsIndex& index, const std::vector<RecoveryPair>& pairs) {
-  constexpr Align l = Align::left, c = Align::center, r = Align::right;
-  MarkdownTable t({"Problem", "Element", "Option", "Patch recovery", "Extrapolated",
-                   "Contact pressure", "Converging (patch / extrapolated)"},
-                  {l, c, l, r, r, r, c});
-  for (const RecoveryPair& p : pairs) {
+  const auto cells = [&](const RecoveryPair& p) -> std::vector<std::string> {
     const schema::ProblemRecord* info = index.problem(p.spr->spec.problem);
     std::string name(schema::label(p.spr->spec.problem));
     if (info != nullptr && info->quantities.size() > 1)
       name += fmt::format(" {}", schema::label(p.spr->quantity));
-    t.add_row(
-        {name, std::string(schema::to_string(p.spr->spec.element)),
-         Option{p.spr->spec.algorithm, p.spr->spec.contact}.label(), error_cell(*p.spr, p.mesh),
-         error_cell(*p.extrapolated, p.mesh),
-         p.pressure_error ? format_percent(*p.pressure_error) : kMissing,
-         converging_text(p.spr->converging) + " / " + converging_text(p.extrapolated->converging)});
-  }
-  return t.render();
+    return {
+        name,
+        std::string(schema::to_string(p.spr->spec.element)),
+        Option{p.spr->spec.algorithm, p.spr->spec.contact}.label(),
+        error_cell(*p.spr, p.mesh),
+        error_cell(*p.extrapolated, p.mesh),
+        p.pressure_error ? format_percent(*p.pressure_error) : kMissing,
+        converging_text(p.spr->converging) + " / " + converging_text(p.extrapolated->converging)};
+  };
+  constexpr Align l = Align::left, c = Align::center, r = Align::right;
+  return table_of({"Problem", "Element", "Option", "Patch recovery", "Extrapolated",
+                   "Contact pressure", "Converging (patch / extrapolated)"},
+                  pairs, cells, {l, c, l, r, r, r, c})
+      .render();
 }
 
 }  // namespace

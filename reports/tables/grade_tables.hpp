@@ -20,6 +20,7 @@
 
 #include "reports/results/results_index.hpp"
 #include "reports/tables/markdown_table.hpp"
+#include "reports/tables/option_classes.hpp"
 #include "schema/study_reference.hpp"
 
 namespace cs::reports {
@@ -46,11 +47,9 @@ struct AnsysComparison {
 
 /// How two of our option sets that the study groups compare (option_classes.hpp).
 struct PairFacts {
-  std::string names;  ///< "AL and PM (ss)"
-  bool coincide = false, same_method = false;
-  int compared = 0, differing = 0, only_one = 0, states_differ = 0;
-  std::optional<double> max_difference_percent;  ///< when above the coincidence resolution
-  std::string where_max;
+  std::string names;          ///< "AL and PM (ss)"
+  bool same_method = false;   ///< they coincide and are one method without friction
+  OptionComparison compared;  ///< over the table's rows
 };
 
 /// One Table 2′ (one element) and what it shows.
