@@ -9,7 +9,6 @@
 
 #include "grading/accuracy.hpp"
 #include "reports/render/template_text.hpp"
-#include "reports/tables/grade_tables.hpp"
 #include "reports/tables/markdown_table.hpp"
 
 namespace cs::reports {
@@ -120,10 +119,10 @@ std::vector<RecoveryComparison> compare_recoveries(const ResultsIndex& index) {
       const double e_spr = *p.spr->errors[m], e_ext = *p.extrapolated->errors[m];
       spr.push_back(std::abs(e_spr));
       ext.push_back(std::abs(e_ext));
-      const int d = grade_rank(*p.spr->grade) - grade_rank(*p.extrapolated->grade);
-      c.better += d < 0 ? 1 : 0;
-      c.worse += d > 0 ? 1 : 0;
-      if (d != 0 && p.pressure_error) {
+      const schema::Grade g_spr = *p.spr->grade, g_ext = *p.extrapolated->grade;
+      c.better += g_spr < g_ext ? 1 : 0;  // schema::Grade is ordered best first
+      c.worse += g_spr > g_ext ? 1 : 0;
+      if (g_spr != g_ext && p.pressure_error) {
         ++c.differing_with_pressure;
         const bool closer =
             std::abs(e_spr - *p.pressure_error) < std::abs(e_ext - *p.pressure_error);

@@ -8,7 +8,6 @@
 
 #include "reports/render/template_text.hpp"
 #include "reports/results/results_index.hpp"
-#include "reports/tables/grade_tables.hpp"
 #include "reports/tables/markdown_table.hpp"
 
 namespace cs::reports {
@@ -93,14 +92,14 @@ std::string marked_change(const QuantityDrift& q) {
 }  // namespace
 
 bool QuantityDrift::grade_worse() const {
-  return grade_rank(new_grade) > grade_rank(old_grade);
+  return new_grade > old_grade;  // schema::Grade is ordered best first
 }
 bool QuantityDrift::grade_better() const {
-  return grade_rank(new_grade) < grade_rank(old_grade);
+  return new_grade < old_grade;
 }
 
 bool RowVerdictChange::worse() const {
-  if (old_grade && new_grade && grade_rank(*new_grade) > grade_rank(*old_grade))
+  if (old_grade && new_grade && *new_grade > *old_grade)
     return true;
   if (old_grade && !new_grade)
     return true;

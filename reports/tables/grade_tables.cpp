@@ -124,10 +124,10 @@ std::string ansys_physical_regrade(const ResultsIndex& index, const schema::Stud
 void count(AnsysComparison& c, schema::Grade ours, schema::Grade theirs, const std::string& where,
            const std::optional<double>& error) {
   ++c.compared;
-  const int o = grade_rank(ours), t = grade_rank(theirs);
-  c.same += o == t ? 1 : 0;
-  c.better += o < t ? 1 : 0;
-  if (o > t) {
+  // schema::Grade is ordered best first.
+  c.same += ours == theirs ? 1 : 0;
+  c.better += ours < theirs ? 1 : 0;
+  if (ours > theirs) {
     ++c.worse;
     c.worse_cells.push_back(
         fmt::format("{}: {}", where, error ? format_percent(*error) : std::string(kMissing)));

@@ -76,11 +76,6 @@ std::optional<GradeTableFacts> build_grade_table(const ResultsIndex& index,
 /// ! some mesh did not converge (values are the last iterate).
 std::string format_grade_cell(const ResultsIndex& index, const schema::RowVerdict* row);
 
-/// Rank of a grade, best first: e 0, g 1, s 2, u 3.
-constexpr int grade_rank(schema::Grade grade) {
-  return static_cast<int>(grade);
-}
-
 /// The section "Tables 2a and 2b" of the report (empty if neither table has rows).
 std::string grade_tables_section(const ResultsIndex& index, const schema::StudyReference& study);
 
