@@ -27,6 +27,7 @@
 #include "reports/pages/run_page.hpp"
 #include "reports/pages/verdict_page.hpp"
 #include "reports/render/template_text.hpp"
+#include "reports/report_error.hpp"
 #include "reports/results/results_csv.hpp"
 #include "reports/tables/appendix_tables.hpp"
 #include "reports/tables/conformal_section.hpp"
@@ -46,6 +47,16 @@ std::string appendix_key(const std::string& file) {
   std::string key = file.substr(9, file.size() - 12);
   std::replace(key.begin(), key.end(), '-', '_');
   return key;
+}
+
+/// Part `part` ("title" or "omitted") of the appendix `key` in templates/appendices.mustache.
+std::string appendix_text(const std::string& key, const std::string& part) {
+  std::string text =
+      render_template(templates::appendices, TemplateData(key, TemplateData(part, true)));
+  std::erase(text, '\n');
+  if (text.empty())
+    throw ReportError(fmt::format("templates/appendices.mustache has no {} for {}", part, key));
+  return text;
 }
 
 bool has_content(const ReportPage& page) {
@@ -70,24 +81,21 @@ std::string variants_section(const ResultsIndex& index) {
   for (const auto mesh : kMeshes)
     header.emplace_back(schema::to_string(mesh));
   header.emplace_back("Grade");
-  MarkdownTable table(header);
-  for (const schema::RowVerdict* r : rows) {
-    std::array<std::string, 3> cells;
-    for (std::size_t m = 0; m < kMeshes.size(); ++m) {
-      cells[m] = format_value(r->values[m]);
-      if (r->errors[m])
-        cells[m] += fmt::format(" ({})", format_percent(*r->errors[m]));
-    }
-    std::string grade = format_grade_cell(index, r);
-    if (r->diverging)
-      grade = *r->diverging ? "diverges" : "does not diverge";
+  const auto cells = [&](const schema::RowVerdict* r) -> std::vector<std::string> {
     const schema::CaseSpec& s = r->spec;
-    table.add_row({fmt::format("{} {} {} {} {}", schema::to_string(s.problem),
-                               schema::to_string(r->quantity), schema::to_string(s.element),
-                               schema::to_string(s.algorithm), schema::to_string(s.contact)),
-                   variant_of(s), cells[0], cells[1], cells[2], grade});
-  }
-  return render_template(templates::variants_section, TemplateData("table", table.render()));
+    return {fmt::format("{} {} {} {} {}", schema::to_string(s.problem),
+                        schema::to_string(r->quantity), schema::to_string(s.element),
+                        schema::to_string(s.algorithm), schema::to_string(s.contact)),
+            variant_of(s),
+            format_value_and_error(r->values[0], r->errors[0]),
+            format_value_and_error(r->values[1], r->errors[1]),
+            format_value_and_error(r->values[2], r->errors[2]),
+            !r->diverging   ? format_grade_cell(index, r)
+            : *r->diverging ? "diverges"
+                            : "does not diverge"};
+  };
+  return render_template(templates::variants_section,
+                         TemplateData("table", table_of(header, rows, cells).render()));
 }
 
 std::string report_title(const ResultsIndex& index) {
@@ -99,31 +107,31 @@ std::string report_title(const ResultsIndex& index) {
 std::vector<ReportPage> appendix_pages(const ResultsIndex& index,
                                        const schema::StudyReference& study,
                                        const ReportContent& content) {
-  std::vector<ReportPage> pages = {
-      {"appendix-tables-2.md", "Tables 2a′ and 2b′ beside the study's ANSYS grades",
-       mesh_table_section(index, study) + grade_tables_section(index, study) +
-           divergence_section(index, study)},
-      {"appendix-study-tables.md", "The study's appendix tables, our values beside ANSYS's",
-       appendix_section(index, study)},
-      {"appendix-meshes.md", "The meshes (the study's Figure 3)",
-       mesh_figures_section(content.mesh_figures)},
-      {"appendix-estimates.md", "Error estimates and refinement", refinement_section(index)},
-      {"appendix-cross-code.md", "Other codes beside ours", content.cross_code_md},
-      {"appendix-interface-checks.md", "Interface checks", interface_section(index)},
-      {"appendix-anomalies.md", "Anomalies explained", anomalies_section(index)},
-      {"appendix-extent.md", "The block's extent: finite block or half-space",
-       extent_section(index)},
-      {"appendix-sweeps.md", "Parameter sweeps",
-       sweep_section(index, study, content.sweep_figures)},
-      {"appendix-friction.md", "Friction", friction_section(index)},
-      {"appendix-conformal.md", "Conformal contact", conformal_section(index)},
-      {"appendix-variants.md", "Other option sets (rigid target, parameter overrides)",
-       variants_section(index)},
-      {"appendix-recovery.md", "Nodal stress recovery: patch recovery beside extrapolation",
-       recovery_section(index)},
-      {"appendix-benchmarks.md", "Benchmarks", content.bench_md},
-      {"appendix-run.md", "The run: files, machine, versions", run_page(index.results())},
+  // Keyed as in templates/appendices.mustache, which holds their titles.
+  const std::pair<std::string, std::string> sections[] = {
+      {"tables_2", mesh_table_section(index, study) + grade_tables_section(index, study) +
+                       divergence_section(index, study)},
+      {"study_tables", appendix_section(index, study)},
+      {"meshes", mesh_figures_section(content.mesh_figures)},
+      {"estimates", refinement_section(index)},
+      {"cross_code", content.cross_code_md},
+      {"interface_checks", interface_section(index)},
+      {"anomalies", anomalies_section(index)},
+      {"extent", extent_section(index)},
+      {"sweeps", sweep_section(index, study, content.sweep_figures)},
+      {"friction", friction_section(index)},
+      {"conformal", conformal_section(index)},
+      {"variants", variants_section(index)},
+      {"recovery", recovery_section(index)},
+      {"benchmarks", content.bench_md},
+      {"run", run_page(index.results())},
   };
+  std::vector<ReportPage> pages;
+  for (const auto& [key, markdown] : sections) {
+    std::string file = "appendix-" + key + ".md";
+    std::replace(file.begin(), file.end(), '_', '-');
+    pages.push_back({file, appendix_text(key, "title"), markdown});
+  }
   return pages;
 }
 
@@ -145,16 +153,17 @@ std::string report_markdown(const ResultsIndex& index, const schema::StudyRefere
   };
   d.set("problems", template_list(problems, links));
   std::vector<ReportPage> present;
-  TemplateData omitted(TemplateData::type::object);
+  std::vector<std::string> omitted;
   for (const ReportPage& p : appendices) {
     if (!p.markdown.empty())
       present.push_back(p);
     else
-      omitted.set(appendix_key(p.file), true);
+      omitted.push_back(appendix_text(appendix_key(p.file), "omitted"));
   }
   d.set("appendices", template_list(present, links));
-  d.set("omitted", omitted);
-  d.set("has_omitted", present.size() < appendices.size());
+  d.set("omitted",
+        template_list(omitted, [](const std::string& r) { return TemplateData("reason", r); }));
+  d.set("has_omitted", !omitted.empty());
   d.set("companions", companions_markdown(content.companions));
   d.set("has_regression", content.has_regression);
   return tidy_markdown(render_template(templates::report, d));

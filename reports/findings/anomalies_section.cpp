@@ -104,19 +104,13 @@ std::optional<std::pair<double, std::string>> weighted_force_balance(const Resul
 }
 
 std::string errors_text(const RowFacts& f) {
-  std::string out;
-  for (const auto& e : f.errors)
-    out += (out.empty() ? "" : " / ") + (e ? format_error_resolved(*e) : std::string(kMissing));
-  return out;
+  return join_meshes({format_error_resolved(f.errors[0]), format_error_resolved(f.errors[1]),
+                      format_error_resolved(f.errors[2])});
 }
 
 std::string row_name(const RowFacts& f) {
   return fmt::format("{} {} {} {}", schema::label(f.problem), schema::label(f.quantity),
                      schema::to_string(f.element), f.option.label());
-}
-
-std::string optional_percent(const std::optional<double>& e) {
-  return e ? format_error_resolved(*e) : std::string(kMissing);
 }
 
 }  // namespace
@@ -210,8 +204,8 @@ std::string anomalies_section(const ResultsIndex& index) {
     return Fields{{"row", fmt::format("{} {}", schema::label(r.pm_q8->problem),
                                       schema::label(r.pm_q8->quantity))},
                   {"pm_q8", format_error_resolved(*r.pm_q8->errors[2])},
-                  {"lmp_q8", optional_percent(r.lmp_q8)},
-                  {"pm_q4", optional_percent(r.pm_q4)}};
+                  {"lmp_q8", format_error_resolved(r.lmp_q8)},
+                  {"pm_q4", format_error_resolved(r.pm_q4)}};
   });
   d["on_axis"] = fmt::format("{} of {}", on_axis, profiles);
   d["has_axis"] = !a.axis_rows.empty();
@@ -220,20 +214,21 @@ std::string anomalies_section(const ResultsIndex& index) {
     d["basis"] = Fields{{"force_balance", g("{:.2g}", w->first)}, {"case", w->second}};
   if (const auto& v = a.fa_q8_lmp_ss)
     d["fa"] =
-        Fields{{"values", fmt::format("{} / {} / {}", format_value((*v)[0]), format_value((*v)[1]),
-                                      format_value((*v)[2]))},
+        Fields{{"values",
+                join_meshes({format_value((*v)[0]), format_value((*v)[1]), format_value((*v)[2])})},
                {"ratios", fmt::format("{:.3f} and {:.3f}", (*v)[1] / (*v)[0], (*v)[2] / (*v)[1])},
                {"sqrt2", g("{:.3f}", std::sqrt(2.0))}};
   d["n_luck"] = std::to_string(a.luck.size());
   d["n_luck_c"] = std::to_string(
       std::count_if(a.luck.begin(), a.luck.end(), [](const RowFacts* f) { return f->study_c; }));
-  MarkdownTable luck({"Row", "Error C / M / F", "Grade", "c", "Credible"},
-                     {Align::left, Align::left, Align::center, Align::center, Align::center});
-  for (const RowFacts* f : a.luck)
-    luck.add_row({row_name(*f), errors_text(*f),
-                  f->grade ? std::string(schema::to_string(*f->grade)) : kMissing,
-                  f->study_c ? "c" : "", f->credible ? "yes" : "no"});
-  d["luck"] = luck.render();
+  const auto luck_cells = [](const RowFacts* f) -> std::vector<std::string> {
+    return {row_name(*f), errors_text(*f),
+            f->grade ? std::string(schema::to_string(*f->grade)) : kMissing, f->study_c ? "c" : "",
+            f->credible ? "yes" : "no"};
+  };
+  d["luck"] = table_of({"Row", "Error C / M / F", "Grade", "c", "Credible"}, a.luck, luck_cells,
+                       {Align::left, Align::left, Align::center, Align::center, Align::center})
+                  .render();
   return render_template(templates::anomalies_section, d);
 }
 

@@ -9,7 +9,6 @@
 
 #include "grading/accuracy.hpp"
 #include "reports/render/template_text.hpp"
-#include "reports/tables/grade_tables.hpp"
 #include "reports/tables/markdown_table.hpp"
 
 namespace cs::reports {
@@ -83,23 +82,25 @@ TemplateData comparison_data(const RecoveryComparison& c) {
 }
 
 std::string pairs_table(const ResultsIndex& index, const std::vector<RecoveryPair>& pairs) {
-  constexpr Align l = Align::left, c = Align::center, r = Align::right;
-  MarkdownTable t({"Problem", "Element", "Option", "Patch recovery", "Extrapolated",
-                   "Contact pressure", "Converging (patch / extrapolated)"},
-                  {l, c, l, r, r, r, c});
-  for (const RecoveryPair& p : pairs) {
+  const auto cells = [&](const RecoveryPair& p) -> std::vector<std::string> {
     const schema::ProblemRecord* info = index.problem(p.spr->spec.problem);
     std::string name(schema::label(p.spr->spec.problem));
     if (info != nullptr && info->quantities.size() > 1)
       name += fmt::format(" {}", schema::label(p.spr->quantity));
-    t.add_row(
-        {name, std::string(schema::to_string(p.spr->spec.element)),
-         Option{p.spr->spec.algorithm, p.spr->spec.contact}.label(), error_cell(*p.spr, p.mesh),
-         error_cell(*p.extrapolated, p.mesh),
-         p.pressure_error ? format_percent(*p.pressure_error) : kMissing,
-         converging_text(p.spr->converging) + " / " + converging_text(p.extrapolated->converging)});
-  }
-  return t.render();
+    return {
+        name,
+        std::string(schema::to_string(p.spr->spec.element)),
+        Option{p.spr->spec.algorithm, p.spr->spec.contact}.label(),
+        error_cell(*p.spr, p.mesh),
+        error_cell(*p.extrapolated, p.mesh),
+        p.pressure_error ? format_percent(*p.pressure_error) : kMissing,
+        converging_text(p.spr->converging) + " / " + converging_text(p.extrapolated->converging)};
+  };
+  constexpr Align l = Align::left, c = Align::center, r = Align::right;
+  return table_of({"Problem", "Element", "Option", "Patch recovery", "Extrapolated",
+                   "Contact pressure", "Converging (patch / extrapolated)"},
+                  pairs, cells, {l, c, l, r, r, r, c})
+      .render();
 }
 
 }  // namespace
@@ -118,10 +119,10 @@ std::vector<RecoveryComparison> compare_recoveries(const ResultsIndex& index) {
       const double e_spr = *p.spr->errors[m], e_ext = *p.extrapolated->errors[m];
       spr.push_back(std::abs(e_spr));
       ext.push_back(std::abs(e_ext));
-      const int d = grade_rank(*p.spr->grade) - grade_rank(*p.extrapolated->grade);
-      c.better += d < 0 ? 1 : 0;
-      c.worse += d > 0 ? 1 : 0;
-      if (d != 0 && p.pressure_error) {
+      const schema::Grade g_spr = *p.spr->grade, g_ext = *p.extrapolated->grade;
+      c.better += g_spr < g_ext ? 1 : 0;  // schema::Grade is ordered best first
+      c.worse += g_spr > g_ext ? 1 : 0;
+      if (g_spr != g_ext && p.pressure_error) {
         ++c.differing_with_pressure;
         const bool closer =
             std::abs(e_spr - *p.pressure_error) < std::abs(e_ext - *p.pressure_error);

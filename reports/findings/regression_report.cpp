@@ -8,7 +8,6 @@
 
 #include "reports/render/template_text.hpp"
 #include "reports/results/results_index.hpp"
-#include "reports/tables/grade_tables.hpp"
 #include "reports/tables/markdown_table.hpp"
 
 namespace cs::reports {
@@ -75,17 +74,32 @@ std::string drift_text(const QuantityDrift& d) {
   return kMissing;
 }
 
+/// "e → s" when the grade changed, else the grade.
+std::string grade_change(const QuantityDrift& q) {
+  return q.old_grade == q.new_grade ? name(q.new_grade)
+                                    : fmt::format("{} → {}", name(q.old_grade), name(q.new_grade));
+}
+
+/// The grade change marked "**worse**" or "better", and any status change.
+std::string marked_change(const QuantityDrift& q) {
+  const std::string mark = q.grade_worse() ? "**worse** " : q.grade_better() ? "better " : "";
+  if (q.old_status == q.new_status)
+    return mark + grade_change(q);
+  return fmt::format("{}{} (status {} → {})", mark, grade_change(q), name(q.old_status),
+                     name(q.new_status));
+}
+
 }  // namespace
 
 bool QuantityDrift::grade_worse() const {
-  return grade_rank(new_grade) > grade_rank(old_grade);
+  return new_grade > old_grade;  // schema::Grade is ordered best first
 }
 bool QuantityDrift::grade_better() const {
-  return grade_rank(new_grade) < grade_rank(old_grade);
+  return new_grade < old_grade;
 }
 
 bool RowVerdictChange::worse() const {
-  if (old_grade && new_grade && grade_rank(*new_grade) > grade_rank(*old_grade))
+  if (old_grade && new_grade && *new_grade > *old_grade)
     return true;
   if (old_grade && !new_grade)
     return true;
@@ -159,37 +173,44 @@ Regression compare_results(const schema::ResultsDocument& baseline,
 }
 
 std::string regression_markdown(const Regression& r) {
-  std::vector<const QuantityDrift*> drifted;
+  std::vector<const QuantityDrift*> drifted, changed;
   for (const auto& q : r.quantities) {
     if (drift_magnitude(q) > kIdenticalRelative)
       drifted.push_back(&q);
+    if (q.old_grade != q.new_grade || q.old_status != q.new_status)
+      changed.push_back(&q);
   }
   std::sort(drifted.begin(), drifted.end(), [](const QuantityDrift* a, const QuantityDrift* b) {
     return drift_magnitude(*a) > drift_magnitude(*b);
   });
-  const auto grade_change = [](const QuantityDrift& q) {
-    return q.old_grade == q.new_grade
-               ? name(q.new_grade)
-               : fmt::format("{} → {}", name(q.old_grade), name(q.new_grade));
+  constexpr Align l = Align::left, right = Align::right;
+  const MarkdownTable changes = table_of(
+      {"Case", "Quantity", "Grade", "Baseline", "Current", "Drift"}, changed,
+      [](const QuantityDrift* q) -> std::vector<std::string> {
+        return {fmt::format("`{}`", q->case_id), name(q->quantity),          marked_change(*q),
+                format_value(q->old_value),      format_value(q->new_value), drift_text(*q)};
+      },
+      {l, l, l, right, right, right});
+  const auto arrow = [](const std::string& a, const std::string& b) { return a + " → " + b; };
+  const MarkdownTable rows =
+      table_of({"Row", "Grade", "Converging", "Diverging (Eq. 47)"}, r.row_changes,
+               [&](const RowVerdictChange& c) -> std::vector<std::string> {
+                 return {fmt::format("{}`{}`", c.worse() ? "**worse** " : "", c.row_id),
+                         arrow(grade_text(c.old_grade), grade_text(c.new_grade)),
+                         arrow(flag(c.old_converging, "c"), flag(c.new_converging, "c")),
+                         arrow(flag(c.old_diverging, "yes"), flag(c.new_diverging, "yes"))};
+               },
+               {l, l, l, l});
+  const MarkdownTable drifts = table_of(
+      {"Case", "Quantity", "Baseline", "Current", "Drift (relative)", "Grade"}, drifted,
+      [&](const QuantityDrift* q) -> std::vector<std::string> {
+        return {fmt::format("`{}`", q->case_id), name(q->quantity), format_value(q->old_value),
+                format_value(q->new_value),      drift_text(*q),    grade_change(*q)};
+      },
+      {l, l, right, right, right, l});
+  const auto table = [](const MarkdownTable& t) {
+    return text_or_false(t.n_rows() == 0 ? std::string() : t.render());
   };
-  const auto drift_data = [&](const QuantityDrift* q) -> TemplateData {
-    return Fields{{"case", q->case_id},
-                  {"quantity", name(q->quantity)},
-                  {"old", format_value(q->old_value)},
-                  {"new", format_value(q->new_value)},
-                  {"drift", drift_text(*q)},
-                  {"grade", grade_change(*q)},
-                  {"worse", q->grade_worse()},
-                  {"better", q->grade_better()},
-                  {"status", q->old_status != q->new_status},
-                  {"old_status", name(q->old_status)},
-                  {"new_status", name(q->new_status)}};
-  };
-  std::vector<const QuantityDrift*> changed;
-  for (const auto& q : r.quantities) {
-    if (q.old_grade != q.new_grade || q.old_status != q.new_status)
-      changed.push_back(&q);
-  }
   const auto ids = [](const std::vector<std::string>& list) {
     return template_list(list, [](const std::string& id) { return TemplateData("id", id); });
   };
@@ -208,29 +229,21 @@ std::string regression_markdown(const Regression& r) {
                                           [](const RowVerdictChange& c) { return c.worse(); }))},
            {"n_only_in_new", n(r.only_in_new.size())},
            {"n_only_in_old", n(r.only_in_old.size())},
-           {"has_changed", !changed.empty()},
-           {"changed", template_list(changed, drift_data)},
-           {"has_rows", !r.row_changes.empty()},
-           {"has_drifted", !drifted.empty()},
-           {"drifted", template_list(drifted, drift_data)},
+           {"changed", table(changes)},
+           {"rows", table(rows)},
+           {"drifted", table(drifts)},
            {"only_in_new", ids(r.only_in_new)},
            {"has_only_in_new", !r.only_in_new.empty()},
            {"only_in_old", ids(r.only_in_old)},
            {"has_only_in_old", !r.only_in_old.empty()},
            {"only_in_one", ids(r.quantities_only_in_one)},
            {"has_only_in_one", !r.quantities_only_in_one.empty()}};
-  if (!drifted.empty())
-    d["largest"] = drift_data(drifted.front());
-  d["rows"] = template_list(r.row_changes, [](const RowVerdictChange& c) -> TemplateData {
-    const auto change = [](const std::string& a, const std::string& b) { return a + " → " + b; };
-    return Fields{
-        {"row", c.row_id},
-        {"worse", c.worse()},
-        {"grade", change(grade_text(c.old_grade), grade_text(c.new_grade))},
-        {"converging", change(flag(c.old_converging, "c"), flag(c.new_converging, "c"))},
-        {"diverging", change(flag(c.old_diverging, "yes"), flag(c.new_diverging, "yes"))}};
-  });
-  return render_template(templates::regression_report, d);
+  if (!drifted.empty()) {
+    const QuantityDrift* q = drifted.front();
+    d["largest"] =
+        Fields{{"case", q->case_id}, {"quantity", name(q->quantity)}, {"drift", drift_text(*q)}};
+  }
+  return tidy_markdown(render_template(templates::regression_report, d));
 }
 
 }  // namespace cs::reports

@@ -24,12 +24,12 @@ bool overrides_a_swept_key(const schema::ResultsDocument& doc, const schema::Cas
   return false;
 }
 
-}  // namespace
-
 bool has_own_section(const ResultsIndex& index, const schema::RowVerdict& row) {
   return row.spec.solver != schema::SolverKind::builtin || in_extent_study(row.spec) ||
          overrides_a_swept_key(index.results(), row.spec);
 }
+
+}  // namespace
 
 std::vector<const schema::RowVerdict*> other_variant_rows(const ResultsIndex& index) {
   std::vector<const schema::RowVerdict*> rows;

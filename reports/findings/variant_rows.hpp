@@ -8,12 +8,9 @@
 
 namespace cs::reports {
 
-/// True when a section of its own shows the row: another solver's (the cross-code section),
-/// the extent study's (extent_section.hpp), or a sweep's (a row overriding a key that a run of
-/// the document swept: the parameter-sweeps section).
-bool has_own_section(const ResultsIndex& index, const schema::RowVerdict& row);
-
-/// The variant rows, in document order, less those with a section of their own.
+/// The variant rows, in document order, less those with a section of their own: another
+/// solver's (the cross-code section), the extent study's (extent_section.hpp), or a sweep's (a row
+/// overriding a key that a run of the document swept: the parameter-sweeps section).
 std::vector<const schema::RowVerdict*> other_variant_rows(const ResultsIndex& index);
 
 }  // namespace cs::reports

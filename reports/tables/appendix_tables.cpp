@@ -5,6 +5,7 @@
 #include <cstdlib>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "grading/accuracy.hpp"
 #include "reports/render/template_text.hpp"
@@ -27,12 +28,10 @@ std::string our_value_cell(const ResultsIndex& index, const RowVerdict* row,
     return kMissing;
   const MeshState state = index.state(*row, mesh);
   const std::size_t m = mesh_index(mesh);
-  if (state == MeshState::failed || !row->values[m])
-    return state == MeshState::failed ? kFailed : kMissing;
-  std::string text = format_value(*row->values[m]);
-  if (row->errors[m])
-    text += fmt::format(" ({})", format_percent(*row->errors[m]));
-  return state == MeshState::not_converged ? text + "!" : text;
+  if (state == MeshState::failed)
+    return kFailed;
+  const std::string text = format_value_and_error(row->values[m], row->errors[m]);
+  return state == MeshState::not_converged && row->values[m] ? text + "!" : text;
 }
 
 std::string element_size_cell(const ResultsIndex& index, const std::vector<const RowVerdict*>& rows,
@@ -123,13 +122,10 @@ std::optional<double> parse_printed(const std::string& printed) {
 
 TemplateData table_data(const AppendixTableFacts& t) {
   TemplateData d;
-  std::string tables;
-  for (const auto& name : t.study_tables)
-    tables += (tables.empty() ? "" : ", ") + name;
   d.set("quantity", std::string(schema::label(t.quantity)));
   d.set("contact", std::string(schema::traits(t.contact).words));
   d.set("element", std::string(schema::to_string(t.element)));
-  d.set("study_tables", text_or_false(tables));
+  d.set("study_tables", text_or_false(fmt::format("{}", fmt::join(t.study_tables, ", "))));
   d.set("table", t.table.render());
   d.set("merged", t.merged);
   d.set("via_note", t.via_note);
@@ -209,23 +205,15 @@ std::string appendix_section(const ResultsIndex& index, const schema::StudyRefer
   if (tables.empty())
     return {};
   TemplateData groups{TemplateData::type::list};
-  TemplateData group;
-  std::optional<std::pair<schema::ProblemId, schema::Quantity>> current;
-  TemplateData list{TemplateData::type::list};
-  for (const auto& t : tables) {
-    if (!current || *current != std::pair(t.problem, t.quantity)) {
-      if (current) {
-        group.set("tables", list);
-        groups.push_back(group);
-      }
-      current = std::pair(t.problem, t.quantity);
-      group = group_data(index, study, t);
-      list = TemplateData{TemplateData::type::list};
-    }
-    list.push_back(table_data(t));
+  for (auto t = tables.begin(); t != tables.end();) {
+    TemplateData group = group_data(index, study, *t);
+    TemplateData list{TemplateData::type::list};
+    for (const auto first = t;
+         t != tables.end() && t->problem == first->problem && t->quantity == first->quantity; ++t)
+      list.push_back(table_data(*t));
+    group.set("tables", list);
+    groups.push_back(group);
   }
-  group.set("tables", list);
-  groups.push_back(group);
   TemplateData d;
   d.set("groups", groups);
   return tidy_markdown(render_template(templates::appendix_tables, d));

@@ -31,11 +31,8 @@ std::string option_cell(const ResultsIndex& index, schema::ProblemId id, schema:
   const auto* arc = index.row(id, Quantity::p_arc, element, option);
   if (mean == nullptr && arc == nullptr)
     return {};
-  auto err = [](const schema::RowVerdict* r) {
-    const auto e = fine_error(r);
-    return e ? format_error_resolved(*e) : std::string(kMissing);
-  };
-  return fmt::format("{} / {} ({} / {})", err(mean), err(arc), format_grade_cell(index, mean),
+  return fmt::format("{} / {} ({} / {})", format_error_resolved(fine_error(mean)),
+                     format_error_resolved(fine_error(arc)), format_grade_cell(index, mean),
                      format_grade_cell(index, arc));
 }
 
@@ -61,23 +58,6 @@ std::string options_table(const ResultsIndex& index, const schema::ProblemRecord
   return table.n_rows() == 0 ? std::string() : table.render();
 }
 
-/// The option with the largest (worst) or smallest |p_arc error| on F.
-std::optional<ArcExtreme> arc_extreme(const ResultsIndex& index, schema::ProblemId id, bool worst) {
-  std::optional<ArcExtreme> out;
-  for (const auto element : schema::values<schema::Element>()) {
-    for (const Option& option : all_options()) {
-      const auto e = fine_error(index.row(id, Quantity::p_arc, element, option));
-      if (!e)
-        continue;
-      const bool better = !out || (worst ? std::abs(*e) > std::abs(out->deviation_percent)
-                                         : std::abs(*e) < std::abs(out->deviation_percent));
-      if (better)
-        out = ArcExtreme{*e, element, option};
-    }
-  }
-  return out;
-}
-
 /// The largest |p_mean error| on F over the LM options (LMP, PLM) with ss and mortar.
 std::optional<double> lm_mean_error(const ResultsIndex& index, schema::ProblemId id) {
   std::optional<double> out;
@@ -95,12 +75,23 @@ std::optional<double> lm_mean_error(const ResultsIndex& index, schema::ProblemId
 
 }  // namespace
 
-std::optional<ArcExtreme> worst_arc_option(const ResultsIndex& index, schema::ProblemId problem) {
-  return arc_extreme(index, problem, true);
-}
-
-std::optional<ArcExtreme> best_arc_option(const ResultsIndex& index, schema::ProblemId problem) {
-  return arc_extreme(index, problem, false);
+std::optional<ArcRange> arc_range(const ResultsIndex& index, schema::ProblemId problem) {
+  std::optional<ArcRange> out;
+  for (const auto element : schema::values<schema::Element>()) {
+    for (const Option& option : all_options()) {
+      const auto e = fine_error(index.row(problem, Quantity::p_arc, element, option));
+      if (!e)
+        continue;
+      const ArcExtreme x{*e, element, option};
+      if (!out)
+        out = ArcRange{x, x};
+      if (std::abs(*e) < std::abs(out->best.deviation_percent))
+        out->best = x;
+      if (std::abs(*e) > std::abs(out->worst.deviation_percent))
+        out->worst = x;
+    }
+  }
+  return out;
 }
 
 std::string conformal_section(const ResultsIndex& index) {
@@ -119,13 +110,12 @@ std::string conformal_section(const ResultsIndex& index) {
     const auto lm = lm_mean_error(index, p->id);
     d.set("lm", text_or_false(lm ? format_error_resolved(*lm) : ""));
     d.set("lm_within", lm && std::abs(*lm) < 1.0);
-    const auto worst = worst_arc_option(index, p->id), best = best_arc_option(index, p->id);
-    d.set("arc", worst && best);
-    for (const auto& [key, e] : {std::pair{"worst", worst}, {"best", best}}) {
-      if (e) {
-        d.set(key, format_error_resolved(e->deviation_percent));
+    if (const auto arc = arc_range(index, p->id)) {
+      d.set("arc", true);
+      for (const auto& [key, e] : {std::pair{"worst", arc->worst}, {"best", arc->best}}) {
+        d.set(key, format_error_resolved(e.deviation_percent));
         d.set(std::string(key) + "_option",
-              fmt::format("{} {}", schema::to_string(e->element), e->option.label()));
+              fmt::format("{} {}", schema::to_string(e.element), e.option.label()));
       }
     }
     problems.push_back(d);

@@ -10,16 +10,20 @@
 
 namespace cs::reports {
 
-/// The option of a problem with the largest (or smallest) |deviation along the arc| on F.
+/// An option of a problem and its deviation along the arc on F.
 struct ArcExtreme {
   double deviation_percent = 0.0;  ///< signed, the error of p_arc on F
   schema::Element element = schema::Element::Q4;
   Option option;
 };
 
-/// The worst and the best option of `problem` by |p_arc error| on F (nullopt: no row on F).
-std::optional<ArcExtreme> worst_arc_option(const ResultsIndex& index, schema::ProblemId problem);
-std::optional<ArcExtreme> best_arc_option(const ResultsIndex& index, schema::ProblemId problem);
+/// The options of a problem with the smallest (best) and the largest (worst) |p_arc error| on F.
+struct ArcRange {
+  ArcExtreme best, worst;
+};
+
+/// The arc range of `problem` (nullopt: no p_arc row on F).
+std::optional<ArcRange> arc_range(const ResultsIndex& index, schema::ProblemId problem);
 
 /// The section (empty when the results hold no baseline row of a conformal problem).
 std::string conformal_section(const ResultsIndex& index);

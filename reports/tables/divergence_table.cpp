@@ -31,7 +31,7 @@ std::array<std::string, 3> verdict_cells(const std::array<std::optional<double>,
 std::string values_text(const std::array<std::optional<double>, 3>& v) {
   if (!v[0] && !v[1] && !v[2])
     return kMissing;
-  return fmt::format("{} / {} / {}", format_value(v[0]), format_value(v[1]), format_value(v[2]));
+  return join_meshes({format_value(v[0]), format_value(v[1]), format_value(v[2])});
 }
 
 }  // namespace

@@ -23,7 +23,7 @@ bool is_friction_problem(const schema::ProblemRecord& p) {
 /// "+0.81 % (e, c)" for a row's fine-mesh error and grade; "—" without one.
 std::string fine_cell(const ResultsIndex& index, const schema::RowVerdict* row) {
   if (row == nullptr || !row->errors[kF])
-    return row == nullptr ? std::string(kMissing) : format_grade_cell(index, row);
+    return format_grade_cell(index, row);
   return fmt::format("{} ({})", format_error_resolved(*row->errors[kF]),
                      format_grade_cell(index, row));
 }

@@ -93,24 +93,15 @@ std::vector<std::pair<Option, Option>> stated_pairs(const schema::StudyReference
 PairFacts pair_facts(const Option& a, const Option& b, const OptionComparison& cmp) {
   const auto name = [](auto v) { return schema::to_string(v); };
   const bool same_contact = a.contact == b.contact;
-  PairFacts p;
-  p.names = same_contact ? fmt::format("{} and {} ({})", name(a.algorithm), name(b.algorithm),
-                                       name(a.contact))
-                         : fmt::format("{} {} and {} {}", name(a.algorithm), name(a.contact),
-                                       name(b.algorithm), name(b.contact));
-  p.coincide = cmp.coincide();
   // Without friction, the Lagrange-multiplier variants of one study column are one method.
-  p.same_method = p.coincide && same_contact && a.algorithm != b.algorithm &&
-                  schema::same_study_column(a.algorithm, b.algorithm) &&
-                  !schema::traits(a.algorithm).penalty_based;
-  p.compared = cmp.compared;
-  p.differing = cmp.differing;
-  p.only_one = cmp.only_one;
-  p.states_differ = cmp.states_differ;
-  if (cmp.max_relative > kCoincidenceRelative)
-    p.max_difference_percent = cmp.max_relative * 100;
-  p.where_max = cmp.where_max;
-  return p;
+  const bool same_method = cmp.coincide() && same_contact && a.algorithm != b.algorithm &&
+                           schema::same_study_column(a.algorithm, b.algorithm) &&
+                           !schema::traits(a.algorithm).penalty_based;
+  return {same_contact
+              ? fmt::format("{} and {} ({})", name(a.algorithm), name(b.algorithm), name(a.contact))
+              : fmt::format("{} {} and {} {}", name(a.algorithm), name(a.contact),
+                            name(b.algorithm), name(b.contact)),
+          same_method, cmp};
 }
 
 /// Where the study graded against a printed exact value other than ours (the Steuermann rows),
@@ -133,10 +124,10 @@ std::string ansys_physical_regrade(const ResultsIndex& index, const schema::Stud
 void count(AnsysComparison& c, schema::Grade ours, schema::Grade theirs, const std::string& where,
            const std::optional<double>& error) {
   ++c.compared;
-  const int o = grade_rank(ours), t = grade_rank(theirs);
-  c.same += o == t ? 1 : 0;
-  c.better += o < t ? 1 : 0;
-  if (o > t) {
+  // schema::Grade is ordered best first.
+  c.same += ours == theirs ? 1 : 0;
+  c.better += ours < theirs ? 1 : 0;
+  if (ours > theirs) {
     ++c.worse;
     c.worse_cells.push_back(
         fmt::format("{}: {}", where, error ? format_percent(*error) : std::string(kMissing)));
@@ -229,20 +220,20 @@ TemplateData table_data(const GradeTableFacts& t) {
   d.set("not_credible", std::to_string(t.not_credible));
   d.set("luck", std::to_string(t.luck));
   d.set("pairs", template_list(t.pairs, [](const PairFacts& p) {
+          const OptionComparison& c = p.compared;
+          const auto count = [](int n) { return text_or_false(n > 0 ? std::to_string(n) : ""); };
           TemplateData e;
           e.set("names", p.names);
-          e.set("coincide", p.coincide);
+          e.set("coincide", c.coincide());
           e.set("same_method", p.same_method);
-          e.set("compared", std::to_string(p.compared));
-          e.set("differing", std::to_string(p.differing));
-          e.set("only_one", text_or_false(p.only_one > 0 ? std::to_string(p.only_one) : ""));
-          e.set("states_differ",
-                text_or_false(p.states_differ > 0 ? std::to_string(p.states_differ) : ""));
-          e.set("max_difference",
-                text_or_false(p.max_difference_percent
-                                  ? fmt::format("{:.2g} %", *p.max_difference_percent)
-                                  : ""));
-          e.set("where_max", p.where_max);
+          e.set("compared", std::to_string(c.compared));
+          e.set("differing", std::to_string(c.differing));
+          e.set("only_one", count(c.only_one));
+          e.set("states_differ", count(c.states_differ));
+          e.set("max_difference", text_or_false(c.max_relative > kCoincidenceRelative
+                                                    ? fmt::format("{:.2g} %", c.max_relative * 100)
+                                                    : ""));
+          e.set("where_max", c.where_max);
           e.set("resolution", fmt::format("{:g} %", kCoincidenceRelative * 100));
           return e;
         }));

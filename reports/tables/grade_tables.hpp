@@ -20,6 +20,7 @@
 
 #include "reports/results/results_index.hpp"
 #include "reports/tables/markdown_table.hpp"
+#include "reports/tables/option_classes.hpp"
 #include "schema/study_reference.hpp"
 
 namespace cs::reports {
@@ -46,11 +47,9 @@ struct AnsysComparison {
 
 /// How two of our option sets that the study groups compare (option_classes.hpp).
 struct PairFacts {
-  std::string names;  ///< "AL and PM (ss)"
-  bool coincide = false, same_method = false;
-  int compared = 0, differing = 0, only_one = 0, states_differ = 0;
-  std::optional<double> max_difference_percent;  ///< when above the coincidence resolution
-  std::string where_max;
+  std::string names;          ///< "AL and PM (ss)"
+  bool same_method = false;   ///< they coincide and are one method without friction
+  OptionComparison compared;  ///< over the table's rows
 };
 
 /// One Table 2′ (one element) and what it shows.
@@ -76,11 +75,6 @@ std::optional<GradeTableFacts> build_grade_table(const ResultsIndex& index,
 /// Markers: (M) graded on the medium mesh because F is missing; * not all of C, M, F present;
 /// ! some mesh did not converge (values are the last iterate).
 std::string format_grade_cell(const ResultsIndex& index, const schema::RowVerdict* row);
-
-/// Rank of a grade, best first: e 0, g 1, s 2, u 3.
-constexpr int grade_rank(schema::Grade grade) {
-  return static_cast<int>(grade);
-}
 
 /// The section "Tables 2a and 2b" of the report (empty if neither table has rows).
 std::string grade_tables_section(const ResultsIndex& index, const schema::StudyReference& study);

@@ -97,6 +97,22 @@ std::string format_value(const std::optional<double>& v) {
   return v ? format_value(*v) : std::string(kMissing);
 }
 
+std::string format_error_resolved(const std::optional<double>& percent) {
+  return percent ? format_error_resolved(*percent) : std::string(kMissing);
+}
+
+std::string format_value_and_error(const std::optional<double>& value,
+                                   const std::optional<double>& error_percent) {
+  if (!value)
+    return kMissing;
+  const std::string text = format_value(*value);
+  return error_percent ? fmt::format("{} ({})", text, format_percent(*error_percent)) : text;
+}
+
+std::string join_meshes(const std::array<std::string, 3>& cells) {
+  return fmt::format("{} / {} / {}", cells[0], cells[1], cells[2]);
+}
+
 std::string format_percent(double percent) {
   const double magnitude = std::abs(percent);
   const std::string sign = percent < 0 ? "−" : "+";

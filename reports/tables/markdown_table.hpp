@@ -2,6 +2,7 @@
 // A GitHub-flavoured Markdown table, and the number formats every section of the report uses
 // (values to the study's 4 decimals, signed percentages).
 
+#include <array>
 #include <optional>
 #include <string>
 #include <vector>
@@ -33,6 +34,16 @@ class MarkdownTable {
   std::vector<std::vector<std::string>> rows_;
 };
 
+/// The table of `rows`: one body row per element, in order, its cells `cells(row)` under `header`.
+template <class Rows, class Cells>
+MarkdownTable table_of(std::vector<std::string> header, const Rows& rows, Cells&& cells,
+                       std::vector<Align> align = {}) {
+  MarkdownTable table(std::move(header), std::move(align));
+  for (const auto& row : rows)
+    table.add_row(cells(row));
+  return table;
+}
+
 /// `markdown` with every run of blank lines (left by a template's skipped sections) cut to one.
 std::string tidy_markdown(const std::string& markdown);
 
@@ -49,6 +60,14 @@ std::string format_error_resolved(double percent);
 
 /// format_value, or the em dash for nullopt.
 std::string format_value(const std::optional<double>& v);
+/// format_error_resolved, or the em dash for nullopt.
+std::string format_error_resolved(const std::optional<double>& percent);
+/// A value and its signed error: "1.2741 (+0.07 %)"; the value alone without an error, the em
+/// dash without a value.
+std::string format_value_and_error(const std::optional<double>& value,
+                                   const std::optional<double>& error_percent);
+/// "a / b / c": the three cells of a C, M, F sequence.
+std::string join_meshes(const std::array<std::string, 3>& cells);
 
 /// "a, b and c": `items` joined by ", ", the last two by `last` (" and ", " or ", ", ").
 std::string join_words(const std::vector<std::string>& items, const char* last = " and ");

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 namespace cs::reports {
 namespace {
@@ -17,16 +18,6 @@ std::vector<std::string> unique_in_order(std::vector<E> values) {
   for (const E v : values)
     names.emplace_back(schema::to_string(v));
   return names;
-}
-
-std::string join(const std::vector<std::string>& parts, const std::string& sep) {
-  std::string out;
-  for (const auto& p : parts) {
-    if (!out.empty())
-      out += sep;
-    out += p;
-  }
-  return out;
 }
 
 bool has_rows(const ResultsIndex& index, const Option& o, const std::vector<Slot>& slots) {
@@ -83,19 +74,17 @@ OptionComparison compare_options(const ResultsIndex& index, const Option& a, con
 std::string OptionClass::label() const {
   std::vector<schema::Algorithm> member_algorithms;
   std::vector<schema::ContactKind> member_contacts;
+  std::vector<std::string> labels;
   for (const auto& m : members) {
     member_algorithms.push_back(m.algorithm);
     member_contacts.push_back(m.contact);
+    labels.push_back(m.label());
   }
   const auto algorithms = unique_in_order(member_algorithms);
   const auto contacts = unique_in_order(member_contacts);
-  if (algorithms.size() * contacts.size() == members.size()) {
-    return fmt::format("{} ({})", join(algorithms, " = "), join(contacts, " = "));
-  }
-  std::vector<std::string> labels;
-  for (const auto& m : members)
-    labels.push_back(m.label());
-  return join(labels, " = ");
+  if (algorithms.size() * contacts.size() == members.size())
+    return fmt::format("{} ({})", fmt::join(algorithms, " = "), fmt::join(contacts, " = "));
+  return fmt::format("{}", fmt::join(labels, " = "));
 }
 
 std::vector<OptionClass> coincidence_classes(const ResultsIndex& index,

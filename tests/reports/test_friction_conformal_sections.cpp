@@ -65,9 +65,9 @@ schema::ResultsDocument conformal_document() {
 TEST(ConformalSection, FindsTheWorstAndBestArcOptionsAndJudgesTheLmMean) {
   const schema::ResultsDocument doc = conformal_document();
   const ResultsIndex index(doc);
-  const auto worst = worst_arc_option(index, ProblemId::IF_p);
-  const auto best = best_arc_option(index, ProblemId::IF_p);
-  ASSERT_TRUE(worst && best);
+  const auto arc = arc_range(index, ProblemId::IF_p);
+  ASSERT_TRUE(arc.has_value());
+  const ArcExtreme *worst = &arc->worst, *best = &arc->best;
   EXPECT_DOUBLE_EQ(worst->deviation_percent, 35.0);
   EXPECT_EQ(worst->element, Element::Q8);
   EXPECT_EQ(worst->option.label(), "LMP ns");
