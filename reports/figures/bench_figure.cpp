@@ -20,7 +20,7 @@ constexpr double kGap = 1.0;
 
 /// One panel: bars of the algorithms (one colour each) clustered by discretization, the ratio
 /// above each bar ('*': not converged), the reference time and the target's limit as lines.
-PlotPanel bar_panel(const std::vector<const ContactBenchmark*>& cases, double max_ratio) {
+PlotPanel bar_panel(const std::vector<const BenchRow*>& cases, double max_ratio) {
   std::vector<ContactKind> contacts;
   std::vector<BenchMethod> methods;
   std::optional<double> reference;
@@ -51,10 +51,10 @@ PlotPanel bar_panel(const std::vector<const ContactBenchmark*>& cases, double ma
             static_cast<double>(i) + (static_cast<double>(j) - (n - 1) / 2) / (n + kGap);
         bars.xy.emplace_back(x, *b->time_ms);
         top = std::max(top, *b->time_ms);
-        reference = reference ? reference : b->reference_ms;
-        if (b->ratio)
+        reference = reference ? reference : b->reference_ms();
+        if (b->ratio())
           panel.labels.push_back(
-              {x, *b->time_ms, fmt::format("{:.2f}{}", *b->ratio, b->converged() ? "" : "*")});
+              {x, *b->time_ms, fmt::format("{:.2f}{}", *b->ratio(), b->converged() ? "" : "*")});
       }
     }
     panel.series.push_back(std::move(bars));
