@@ -257,6 +257,20 @@ const std::vector<schema::ContactKind>& bench_contacts() {
   return order;
 }
 
+BenchOptions options_of(const std::vector<const BenchRow*>& cases) {
+  const auto has = [&](auto pred) { return std::any_of(cases.begin(), cases.end(), pred); };
+  BenchOptions out;
+  for (const auto c : bench_contacts()) {
+    if (has([c](const BenchRow* b) { return b->contact == c; }))
+      out.contacts.push_back(c);
+  }
+  for (const auto a : schema::values<BenchMethod>()) {
+    if (has([a](const BenchRow* b) { return b->algorithm == a; }))
+      out.methods.push_back(a);
+  }
+  return out;
+}
+
 std::tuple<int, int, int> model_order(const BenchModel& model) {
   return {static_cast<int>(model.problem), static_cast<int>(model.mesh),
           static_cast<int>(model.element)};

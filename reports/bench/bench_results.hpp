@@ -131,6 +131,14 @@ struct BenchResults {
 /// ns, ss, mortar.
 const std::vector<schema::ContactKind>& bench_contacts();
 
+/// The options that Contact rows measure: their discretizations in bench_contacts()' order and
+/// their methods in the solver's.
+struct BenchOptions {
+  std::vector<schema::ContactKind> contacts;
+  std::vector<BenchMethod> methods;
+};
+BenchOptions options_of(const std::vector<const BenchRow*>& cases);
+
 /// The rank of a model in the report's order: the battery's problem order, then C, M, F, then
 /// Q4, Q8. Compare with <.
 std::tuple<int, int, int> model_order(const BenchModel& model);

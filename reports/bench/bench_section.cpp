@@ -260,19 +260,9 @@ std::string case_cell(const BenchRow& b) {
 
 TemplateData model_data(const BenchModel& model, const std::vector<const BenchRow*>& cases) {
   std::optional<double> reference;
-  std::vector<ContactKind> contacts;
-  std::vector<BenchMethod> algorithms;
-  const auto has = [&](auto pred) { return std::any_of(cases.begin(), cases.end(), pred); };
   for (const BenchRow* b : cases)
     reference = reference ? reference : b->reference_ms();
-  for (const auto c : bench_contacts()) {
-    if (has([&](const auto* b) { return b->contact == c; }))
-      contacts.push_back(c);
-  }
-  for (const auto a : schema::values<BenchMethod>()) {
-    if (has([&](const auto* b) { return b->algorithm == a; }))
-      algorithms.push_back(a);
-  }
+  const auto [contacts, algorithms] = options_of(cases);
   MarkdownTable table([&] {
     std::vector<std::string> header{"Algorithm"};
     for (const auto c : contacts)
