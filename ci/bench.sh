@@ -20,6 +20,10 @@
 #                 ContactAllOptions/<problem>/<mesh>/<element>, e.g.
 #                   BENCH_FILTER='^Contact(AllOptions)?/[^/]+/(C|M)/'   C and M meshes only
 #                   BENCH_FILTER='^Contact/H_p/F/'                      H_p at mesh F
+#                 ModelCases/<problem>/<mesh>/<element> (a model's full set of cases against
+#                 one analysis of it, shown in its own table) is not in the default, e.g.
+#                   BENCH_FILTER='^ModelCases/(S_1_7|H_p)/F/Q8'        reports/study/bench/
+#                                                  bench_model_cases.json, with 3 repetitions
 #   BENCH_ARGS    further arguments of the benchmark program, e.g. --benchmark_repetitions=3
 #                 (the report shows the median).
 set -euo pipefail

@@ -39,11 +39,6 @@ struct Entry {
   std::optional<double> time_ms;
   std::map<std::string, double> counters;
   std::string label, error;
-
-  std::optional<double> counter(const char* key) const {
-    const auto it = counters.find(key);
-    return it == counters.end() ? std::nullopt : std::optional(it->second);
-  }
   /// Throws unless `decoded`: the name has the form a kind of benchmark needs.
   void require(bool decoded, const std::string& form, const std::string& source) const {
     if (!decoded)
@@ -96,14 +91,6 @@ Entry read_entry(const json& e, std::size_t i, const std::string& source) {
   return out;
 }
 
-std::optional<double> seconds_to_ms(const std::optional<double>& seconds) {
-  return seconds ? std::optional(*seconds * 1000) : std::nullopt;
-}
-
-std::optional<int> count(const std::optional<double>& value) {
-  return value ? std::optional(static_cast<int>(std::lround(*value))) : std::nullopt;
-}
-
 /// The model of parts[1..3]; throws naming the expected form when a part is not a known name.
 BenchModel decode_model(const Entry& e, const std::string& form, const std::string& source) {
   const auto problem = schema::try_parse<schema::ProblemId>(e.parts[1]);
@@ -117,81 +104,90 @@ BenchModel decode_model(const Entry& e, const std::string& form, const std::stri
   return {*problem, *mesh, *element};
 }
 
-ContactBenchmark contact_benchmark(const Entry& e, const std::string& source) {
-  const std::string form = "Contact/<problem>/<mesh>/<element>/<contact>/<algorithm>";
-  e.require(e.parts.size() >= 6, form, source);
-  ContactBenchmark b;
+/// The family a benchmark name starts with; nullopt for the others.
+std::optional<BenchFamily> family_of(const std::string& first_part) {
+  static const std::map<std::string, BenchFamily> families{
+      {"Contact", BenchFamily::Contact},
+      {"ContactAllOptions", BenchFamily::ContactAllOptions},
+      {"ModelCases", BenchFamily::ModelCases}};
+  const auto it = families.find(first_part);
+  return it == families.end() ? std::nullopt : std::optional(it->second);
+}
+
+/// The row of an entry of `family`: its model (and for Contact its option) decoded from the name.
+BenchRow bench_row(const Entry& e, BenchFamily family, const std::string& source) {
+  const bool contact = family == BenchFamily::Contact;
+  const std::string form =
+      e.parts.front() + (contact ? "/<problem>/<mesh>/<element>/<contact>/<algorithm>"
+                                 : "/<problem>/<mesh>/<element>");
+  e.require(e.parts.size() >= (contact ? 6u : 4u), form, source);
+  BenchRow b;
+  b.family = family;
   b.name = e.name;
   b.model = decode_model(e, form, source);
-  const auto contact = schema::try_parse<schema::ContactKind>(e.parts[4]);
-  const auto algorithm = schema::try_parse<BenchMethod>(e.parts[5]);
-  e.require(contact && algorithm, form, source);
-  b.contact = *contact;
-  b.algorithm = *algorithm;
+  if (contact) {
+    const auto kind = schema::try_parse<schema::ContactKind>(e.parts[4]);
+    const auto algorithm = schema::try_parse<BenchMethod>(e.parts[5]);
+    e.require(kind && algorithm, form, source);
+    b.contact = *kind;
+    b.algorithm = *algorithm;
+  }
   b.time_ms = e.time_ms;
-  b.ratio = e.counter("ratio");
-  b.reference_ms = seconds_to_ms(e.counter("reference_s"));
-  b.active_set_iterations = e.counter("active_set_iterations");
-  b.augmentations = e.counter("augmentations");
   b.counters = e.counters;
   b.label = e.label;
   b.error = e.error;
   return b;
 }
 
-AllOptionsBenchmark all_options_benchmark(const Entry& e, const std::string& source) {
-  const std::string form = "ContactAllOptions/<problem>/<mesh>/<element>";
-  e.require(e.parts.size() >= 4, form, source);
-  AllOptionsBenchmark b;
-  b.name = e.name;
-  b.model = decode_model(e, form, source);
-  b.time_ms = e.time_ms;
-  b.ratio_per_case = e.counter("ratio_per_case");
-  b.reference_ms = seconds_to_ms(e.counter("reference_s"));
-  b.cases = count(e.counter("cases"));
-  b.converged = count(e.counter("converged"));
-  b.label = e.label;
-  b.error = e.error;
-  return b;
-}
-
-/// The case a record measures, to find repetitions and the same case in another file.
-std::string case_key(const ContactBenchmark& b) {
-  return fmt::format("{}/{}/{}", model_md(b.model), schema::to_string(b.contact),
-                     schema::to_string(b.algorithm));
-}
-std::string case_key(const AllOptionsBenchmark& b) {
-  return model_md(b.model);
+/// The case a row measures, to find repetitions and the same case in another file.
+std::string case_key(const BenchRow& b) {
+  const std::string model = fmt::format("{}/{}", static_cast<int>(b.family), model_md(b.model));
+  return b.family != BenchFamily::Contact
+             ? model
+             : fmt::format("{}/{}/{}", model, schema::to_string(b.contact),
+                           schema::to_string(b.algorithm));
 }
 
 /// Per case, in order of first appearance, the measurement that represents it: the median
 /// aggregate, else the mean aggregate, else the repetition of median time (the lower median of
-/// an even count; errors last). `runs` pairs each record with its aggregate name.
-template <class Record>
-std::vector<Record> representatives(const std::vector<std::pair<std::string, Record>>& runs) {
-  std::vector<Record> out;
+/// an even count; errors last). `runs` pairs each row with its aggregate name.
+std::vector<BenchRow> representatives(const std::vector<std::pair<std::string, BenchRow>>& runs) {
+  std::vector<BenchRow> out;
   std::vector<std::string> done;
   for (const auto& [unused, first] : runs) {
     const std::string key = case_key(first);
     if (std::find(done.begin(), done.end(), key) != done.end())
       continue;
     done.push_back(key);
-    std::map<std::string, std::vector<const Record*>> by_aggregate;
+    std::map<std::string, std::vector<const BenchRow*>> by_aggregate;
     for (const auto& [aggregate, r] : runs) {
       if (case_key(r) == key)
         by_aggregate[aggregate].push_back(&r);
     }
-    std::vector<const Record*> reps = by_aggregate[""];
-    std::stable_sort(reps.begin(), reps.end(), [](const Record* a, const Record* b) {
+    std::vector<const BenchRow*> reps = by_aggregate[""];
+    std::stable_sort(reps.begin(), reps.end(), [](const BenchRow* a, const BenchRow* b) {
       return a->time_ms.value_or(INFINITY) < b->time_ms.value_or(INFINITY);
     });
-    const Record* chosen = !by_aggregate["median"].empty() ? by_aggregate["median"].front()
-                           : !by_aggregate["mean"].empty() ? by_aggregate["mean"].front()
-                           : !reps.empty()                 ? reps[(reps.size() - 1) / 2]
-                                                           : &first;
+    const BenchRow* chosen = !by_aggregate["median"].empty() ? by_aggregate["median"].front()
+                             : !by_aggregate["mean"].empty() ? by_aggregate["mean"].front()
+                             : !reps.empty()                 ? reps[(reps.size() - 1) / 2]
+                                                             : &first;
     out.push_back(*chosen);
   }
   return out;
+}
+
+/// The rows of `family`, in order.
+std::vector<BenchRow>& rows_of(BenchResults& results, BenchFamily family) {
+  switch (family) {
+    case BenchFamily::Contact:
+      return results.contact;
+    case BenchFamily::ContactAllOptions:
+      return results.all_options;
+    case BenchFamily::ModelCases:
+      return results.model_cases;
+  }
+  return results.contact;
 }
 
 BenchContext read_context(const json& doc) {
@@ -211,14 +207,14 @@ BenchContext read_context(const json& doc) {
   return c;
 }
 
-/// Appends `records` (of source `source`) to `into`, replacing the same case measured earlier.
-template <class Record>
-int merge_into(std::vector<Record>& into, std::vector<Record> records, std::size_t source) {
+/// Appends `rows` (of source `source`) to `into`, replacing the same case measured earlier.
+int merge_into(std::vector<BenchRow>& into, std::vector<BenchRow> rows, std::size_t source) {
   int replaced = 0;
-  for (Record& r : records) {
+  for (BenchRow& r : rows) {
     r.source = source;
-    const auto same = std::find_if(into.begin(), into.end(),
-                                   [&](const Record& old) { return case_key(old) == case_key(r); });
+    const auto same = std::find_if(into.begin(), into.end(), [&](const BenchRow& old) {
+      return case_key(old) == case_key(r);
+    });
     replaced += same != into.end() ? 1 : 0;
     if (same != into.end())
       *same = std::move(r);
@@ -230,11 +226,26 @@ int merge_into(std::vector<Record>& into, std::vector<Record> records, std::size
 
 }  // namespace
 
-bool ContactBenchmark::converged() const {
+std::optional<double> BenchRow::counter(std::string_view key) const {
+  const auto it = counters.find(std::string(key));
+  return it == counters.end() ? std::nullopt : std::optional(it->second);
+}
+
+std::optional<double> BenchRow::counter_ms(std::string_view key) const {
+  const auto seconds = counter(key);
+  return seconds ? std::optional(*seconds * 1000) : std::nullopt;
+}
+
+std::optional<int> BenchRow::count(std::string_view key) const {
+  const auto value = counter(key);
+  return value ? std::optional(static_cast<int>(std::lround(*value))) : std::nullopt;
+}
+
+bool BenchRow::converged() const {
   return failure().empty();
 }
 
-std::string ContactBenchmark::failure() const {
+std::string BenchRow::failure() const {
   if (!error.empty())
     return "error: " + error;
   return label.starts_with("not converged") ? label : std::string();
@@ -244,6 +255,20 @@ const std::vector<schema::ContactKind>& bench_contacts() {
   static const std::vector<schema::ContactKind> order{
       schema::ContactKind::ns, schema::ContactKind::ss, schema::ContactKind::mortar};
   return order;
+}
+
+BenchOptions options_of(const std::vector<const BenchRow*>& cases) {
+  const auto has = [&](auto pred) { return std::any_of(cases.begin(), cases.end(), pred); };
+  BenchOptions out;
+  for (const auto c : bench_contacts()) {
+    if (has([c](const BenchRow* b) { return b->contact == c; }))
+      out.contacts.push_back(c);
+  }
+  for (const auto a : schema::values<BenchMethod>()) {
+    if (has([a](const BenchRow* b) { return b->algorithm == a; }))
+      out.methods.push_back(a);
+  }
+  return out;
 }
 
 std::tuple<int, int, int> model_order(const BenchModel& model) {
@@ -292,29 +317,28 @@ BenchResults parse_bench_document(const json& doc, const std::string& source) {
   if (!doc.contains("benchmarks") || !doc["benchmarks"].is_array())
     fail(source, "has no 'benchmarks' array (not Google Benchmark JSON output?)");
   BenchResults out;
+  std::map<BenchFamily, std::vector<std::pair<std::string, BenchRow>>> runs;
   try {
     out.sources.push_back({source, read_context(doc), 0});
-    std::vector<std::pair<std::string, ContactBenchmark>> contact;
-    std::vector<std::pair<std::string, AllOptionsBenchmark>> all_options;
     const json& list = doc["benchmarks"];
     for (std::size_t i = 0; i < list.size(); ++i) {
       const Entry e = read_entry(list[i], i, source);
       if (!e.aggregate.empty() && e.aggregate != "median" && e.aggregate != "mean")
         continue;  // stddev, cv: not a time
-      if (e.parts.front() == "Contact")
-        contact.emplace_back(e.aggregate, contact_benchmark(e, source));
-      else if (e.parts.front() == "ContactAllOptions")
-        all_options.emplace_back(e.aggregate, all_options_benchmark(e, source));
+      const auto family = family_of(e.parts.front());
+      if (family)
+        runs[*family].emplace_back(e.aggregate, bench_row(e, *family, source));
       else
         ++out.sources.front().n_other;
     }
-    out.contact = representatives(contact);
-    out.all_options = representatives(all_options);
+    for (auto& [family, family_runs] : runs)
+      rows_of(out, family) = representatives(family_runs);
   } catch (const json::exception& e) {  // a field of the wrong type
     fail(source, e.what());
   }
-  if (out.contact.empty() && out.all_options.empty()) {
-    fail(source, fmt::format("has no Contact or ContactAllOptions benchmark ({} of other families; "
+  if (runs.empty()) {
+    fail(source, fmt::format("has no Contact, ContactAllOptions or ModelCases benchmark ({} of "
+                             "other families; "
                              "written by bench_contact_algorithms?)",
                              out.sources.front().n_other));
   }
@@ -347,13 +371,14 @@ BenchResults load_bench_files(const std::vector<std::filesystem::path>& files) {
     BenchResults one = load_bench_file(file);
     const std::size_t source = all.sources.size();
     all.sources.push_back(std::move(one.sources.front()));
-    all.n_replaced += merge_into(all.contact, std::move(one.contact), source);
-    all.n_replaced += merge_into(all.all_options, std::move(one.all_options), source);
+    for (const auto family :
+         {BenchFamily::Contact, BenchFamily::ContactAllOptions, BenchFamily::ModelCases})
+      all.n_replaced += merge_into(rows_of(all, family), std::move(rows_of(one, family)), source);
   }
   return all;
 }
 
-std::vector<std::vector<const ContactBenchmark*>> finest_models(const BenchResults& bench) {
+std::vector<std::vector<const BenchRow*>> finest_models(const BenchResults& bench) {
   std::map<std::tuple<int, int>, BenchModel> finest;  // (problem, element) rank -> model
   for (const auto& b : bench.contact) {
     if (!b.time_ms)
@@ -363,7 +388,7 @@ std::vector<std::vector<const ContactBenchmark*>> finest_models(const BenchResul
     if (!added && std::get<1>(model_order(it->second)) < mesh)
       it->second = b.model;
   }
-  std::vector<std::vector<const ContactBenchmark*>> out;
+  std::vector<std::vector<const BenchRow*>> out;
   for (const auto& [rank, model] : finest) {
     out.emplace_back();
     for (const auto& b : bench.contact)

@@ -5,14 +5,16 @@
 //
 // What is read: `context` (the machine: date, host_name, num_cpus, mhz_per_cpu,
 // library_build_type, load_avg) and each entry of `benchmarks` whose name decodes as
-//   Contact/<problem>/<mesh>/<element>/<contact>/<algorithm>[/...]   or
-//   ContactAllOptions/<problem>/<mesh>/<element>[/...]
+//   Contact/<problem>/<mesh>/<element>/<contact>/<algorithm>[/...],
+//   ContactAllOptions/<problem>/<mesh>/<element>[/...]   or
+//   ModelCases/<problem>/<mesh>/<element>[/...]
 // (problem, mesh, element and contact named as in results.json, e.g. Pprime_p/F/Q4/ss, read with
 // the vocabulary of schema/; the algorithm as the solver names its methods, see bench_method.hpp;
 // Google Benchmark's own suffixes such as /iterations:1/manual_time are ignored): real_time
 // converted to milliseconds from its time_unit, the counters (every other numeric top-level key),
-// `label` ("not converged: ..."), error_occurred/error_message and skipped/skip_message. Benchmarks
-// of other families are counted and left out.
+// `label` ("not converged: ..."), error_occurred/error_message and skipped/skip_message, into one
+// shape of row (BenchRow) for every family. Benchmarks of other families are counted and left
+// out.
 //
 // Repetitions: a case measured more than once is represented by its `median` aggregate when the
 // file has one, else its `mean` aggregate, else the repetition of median time.
@@ -22,10 +24,11 @@
 //
 // A file that is missing, unreadable, not JSON, without a `benchmarks` array, with an entry
 // that cannot be read, with a Contact entry whose name does not decode (e.g. the index-coded
-// names of older versions), or with no Contact or ContactAllOptions entry at all is an error
+// names of older versions), or with no entry of the three families at all is an error
 // (ReportError, one line naming the file and the cause).
 
 #include <cstddef>
+#include <cstdint>
 #include <filesystem>
 #include <map>
 #include <optional>
@@ -61,40 +64,50 @@ struct BenchModel {
   bool operator==(const BenchModel&) const = default;
 };
 
-/// One Contact/<problem>/<mesh>/<element>/<contact>/<algorithm> benchmark: one contact analysis.
-struct ContactBenchmark {
+/// The benchmark families the report reads (their names' first part).
+enum class BenchFamily : std::uint8_t {
+  /// Contact/<problem>/<mesh>/<element>/<contact>/<algorithm>: one contact analysis; counters
+  /// ratio (time / reference), reference_s (one assembly + factorization + solve),
+  /// active_set_iterations (linear solves of the condensed problem), augmentations (AL).
+  Contact,
+  /// ContactAllOptions/<problem>/<mesh>/<element>: every contact discretization x algorithm of
+  /// one model on one shared factorization; counters cases, converged, ratio_per_case
+  /// (time / cases / reference), reference_s.
+  ContactAllOptions,
+  /// ModelCases/<problem>/<mesh>/<element>: the main job's full set of cases of one model on one
+  /// executor; counters cases, converged, one_case_s (one analysis of the model), ratio
+  /// (time / one_case_s), one_case_cpu_s and ratio_cpu (the same in process CPU time),
+  /// blas_threads.
+  ModelCases,
+};
+
+/// One benchmark of any family: its model, its time and its counters by name.
+struct BenchRow {
+  BenchFamily family = BenchFamily::Contact;
   std::string name;  ///< as in the file
   BenchModel model;
-  schema::ContactKind contact = schema::ContactKind::ss;
-  BenchMethod algorithm = BenchMethod::PM;
-  /// The time of the contact analysis (real, i.e. manual, time) in milliseconds, whatever the
-  /// file's time_unit; nullopt when the run stopped with an error.
+  schema::ContactKind contact = schema::ContactKind::ss;  ///< Contact rows only
+  BenchMethod algorithm = BenchMethod::PM;                ///< Contact rows only
+  /// The benchmark's real (i.e. manual) time in milliseconds, whatever the file's time_unit;
+  /// nullopt when the run stopped with an error.
   std::optional<double> time_ms;
-  std::optional<double> ratio;                  ///< time / reference (counter `ratio`)
-  std::optional<double> reference_ms;           ///< one assembly + factorization + solve
-  std::optional<double> active_set_iterations;  ///< linear solves of the condensed problem
-  std::optional<double> augmentations;          ///< AL multiplier updates
-  std::map<std::string, double> counters;       ///< every finite counter, by name
+  std::map<std::string, double> counters;  ///< every finite counter, by name
   std::string label;       ///< Google Benchmark's label, e.g. "not converged: <reason>"
   std::string error;       ///< error or skip message; non-empty when the run did not finish
   std::size_t source = 0;  ///< index of its file in BenchResults::sources
+
+  /// The counter `key`; nullopt when the file has none (or a non-finite one).
+  std::optional<double> counter(std::string_view key) const;
+  /// The counter `key`, written in seconds, in milliseconds.
+  std::optional<double> counter_ms(std::string_view key) const;
+  /// The counter `key` rounded to a count (cases, converged, threads).
+  std::optional<int> count(std::string_view key) const;
+  std::optional<double> ratio() const { return counter("ratio"); }
+  std::optional<double> reference_ms() const { return counter_ms("reference_s"); }
   /// Ran to the end and is not labelled "not converged".
   bool converged() const;
   /// "" when converged, else what went wrong ("error: ...", or the label).
   std::string failure() const;
-};
-
-/// One ContactAllOptions/<problem>/<mesh>/<element> benchmark: every contact discretization x
-/// algorithm of one model on one shared factorization.
-struct AllOptionsBenchmark {
-  std::string name;  ///< as in the file
-  BenchModel model;
-  std::optional<double> time_ms;         ///< all cases together, in milliseconds
-  std::optional<double> ratio_per_case;  ///< time / cases / reference
-  std::optional<double> reference_ms;
-  std::optional<int> cases, converged;  ///< how many cases ran, how many converged
-  std::string label, error;
-  std::size_t source = 0;
 };
 
 /// One benchmark file as read.
@@ -107,8 +120,9 @@ struct BenchSource {
 /// Every benchmark of one or more files.
 struct BenchResults {
   std::vector<BenchSource> sources;
-  std::vector<ContactBenchmark> contact;
-  std::vector<AllOptionsBenchmark> all_options;
+  std::vector<BenchRow> contact;      ///< BenchFamily::Contact
+  std::vector<BenchRow> all_options;  ///< BenchFamily::ContactAllOptions
+  std::vector<BenchRow> model_cases;  ///< BenchFamily::ModelCases
   /// Cases measured in more than one file: the later file's measurement is kept.
   int n_replaced = 0;
 };
@@ -116,6 +130,14 @@ struct BenchResults {
 /// The contact discretizations in the order the benchmarks are registered (the solver's):
 /// ns, ss, mortar.
 const std::vector<schema::ContactKind>& bench_contacts();
+
+/// The options that Contact rows measure: their discretizations in bench_contacts()' order and
+/// their methods in the solver's.
+struct BenchOptions {
+  std::vector<schema::ContactKind> contacts;
+  std::vector<BenchMethod> methods;
+};
+BenchOptions options_of(const std::vector<const BenchRow*>& cases);
 
 /// The rank of a model in the report's order: the battery's problem order, then C, M, F, then
 /// Q4, Q8. Compare with <.
@@ -134,7 +156,7 @@ std::string model_md(const BenchModel& model);
 
 /// Per problem and element, in the report's order, the benchmarks of its finest mesh with a
 /// timed case.
-std::vector<std::vector<const ContactBenchmark*>> finest_models(const BenchResults& bench);
+std::vector<std::vector<const BenchRow*>> finest_models(const BenchResults& bench);
 
 /// Reads one parsed benchmark document; `source` names it in errors. Throws ReportError.
 BenchResults parse_bench_document(const nlohmann::json& doc, const std::string& source);

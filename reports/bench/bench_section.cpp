@@ -1,6 +1,7 @@
 #include "reports/bench/bench_section.hpp"
 
 #include <algorithm>
+#include <functional>
 #include <map>
 #include <tuple>
 
@@ -22,7 +23,7 @@ int contact_rank(ContactKind c) {
 }
 
 /// The report's order of cases: model, then contact discretization, then algorithm.
-auto case_rank(const ContactBenchmark& b) {
+auto case_rank(const BenchRow& b) {
   return std::tuple_cat(model_order(b.model),
                         std::make_tuple(contact_rank(b.contact), static_cast<int>(b.algorithm)));
 }
@@ -48,9 +49,10 @@ std::string format_ratio(const std::optional<double>& ratio) {
   return ratio ? fmt::format("{:.2f}", *ratio) : std::string(kMissing);
 }
 
-std::vector<const ContactBenchmark*> sorted_cases(const BenchResults& bench) {
-  std::vector<const ContactBenchmark*> out;
-  for (const auto& b : bench.contact)
+/// `rows` in the report's order of cases (of models, for the families without options).
+std::vector<const BenchRow*> sorted_cases(const std::vector<BenchRow>& rows) {
+  std::vector<const BenchRow*> out;
+  for (const auto& b : rows)
     out.push_back(&b);
   std::stable_sort(out.begin(), out.end(),
                    [](const auto* a, const auto* b) { return case_rank(*a) < case_rank(*b); });
@@ -58,12 +60,12 @@ std::vector<const ContactBenchmark*> sorted_cases(const BenchResults& bench) {
 }
 
 /// The models of the Contact benchmarks, each with its cases, in the report's order.
-std::vector<std::pair<BenchModel, std::vector<const ContactBenchmark*>>> by_model(
+std::vector<std::pair<BenchModel, std::vector<const BenchRow*>>> by_model(
     const BenchResults& bench) {
-  std::vector<std::pair<BenchModel, std::vector<const ContactBenchmark*>>> out;
-  for (const ContactBenchmark* b : sorted_cases(bench)) {
+  std::vector<std::pair<BenchModel, std::vector<const BenchRow*>>> out;
+  for (const BenchRow* b : sorted_cases(bench.contact)) {
     if (out.empty() || !(out.back().first == b->model))
-      out.emplace_back(b->model, std::vector<const ContactBenchmark*>{});
+      out.emplace_back(b->model, std::vector<const BenchRow*>{});
     out.back().second.push_back(b);
   }
   return out;
@@ -72,13 +74,13 @@ std::vector<std::pair<BenchModel, std::vector<const ContactBenchmark*>>> by_mode
 /// The cases with a ratio below the physical floor of 1, and the lowest of them.
 TemplateData below_floor(const BenchResults& bench) {
   int below = 0, with_ratio = 0;
-  const ContactBenchmark* lowest = nullptr;
+  const BenchRow* lowest = nullptr;
   for (const auto& b : bench.contact) {
-    with_ratio += b.ratio ? 1 : 0;
-    if (!b.ratio || *b.ratio >= 1)
+    with_ratio += b.ratio() ? 1 : 0;
+    if (!b.ratio() || *b.ratio() >= 1)
       continue;
     ++below;
-    if (lowest == nullptr || *b.ratio < *lowest->ratio)
+    if (lowest == nullptr || *b.ratio() < *lowest->ratio())
       lowest = &b;
   }
   if (below == 0)
@@ -86,8 +88,9 @@ TemplateData below_floor(const BenchResults& bench) {
   TemplateData d;
   d.set("below", std::to_string(below));
   d.set("with_ratio", std::to_string(with_ratio));
-  d.set("lowest", fmt::format("{}: {} {} {}", format_ratio(lowest->ratio), model_md(lowest->model),
-                              name(lowest->contact), name(lowest->algorithm)));
+  d.set("lowest",
+        fmt::format("{}: {} {} {}", format_ratio(lowest->ratio()), model_md(lowest->model),
+                    name(lowest->contact), name(lowest->algorithm)));
   return d;
 }
 
@@ -136,16 +139,16 @@ TemplateData target_data(const BenchResults& bench, const BenchTarget& target) {
   d.set("met", std::to_string(check.met.size()));
   d.set("n_missed", text_or_false(check.missed.empty() ? "" : std::to_string(check.missed.size())));
   MarkdownTable missed({"Model", "Contact", "Algorithm", "Ratio", "Time (ms)", "Note"});
-  for (const ContactBenchmark* b : check.missed) {
+  for (const BenchRow* b : check.missed) {
     missed.add_row({model_md(b->model), name(b->contact), name(b->algorithm),
-                    format_ratio(b->ratio), format_ms(b->time_ms),
+                    format_ratio(b->ratio()), format_ms(b->time_ms),
                     b->converged() ? "" : b->failure()});
   }
   d.set("missed", missed.render());
   std::vector<std::pair<std::string, std::string>> met;  // model, "ss PM 1.40, ..."
-  for (const ContactBenchmark* b : check.met) {
+  for (const BenchRow* b : check.met) {
     const std::string item =
-        fmt::format("{} {} {}", name(b->contact), name(b->algorithm), format_ratio(b->ratio));
+        fmt::format("{} {} {}", name(b->contact), name(b->algorithm), format_ratio(b->ratio()));
     if (met.empty() || met.back().first != model_md(b->model))
       met.emplace_back(model_md(b->model), item);
     else
@@ -162,56 +165,102 @@ TemplateData target_data(const BenchResults& bench, const BenchTarget& target) {
   return d;
 }
 
-MarkdownTable all_options_table(const BenchResults& bench) {
-  std::vector<const AllOptionsBenchmark*> rows;
-  for (const auto& b : bench.all_options)
-    rows.push_back(&b);
-  std::stable_sort(rows.begin(), rows.end(), [](const auto* a, const auto* b) {
-    return model_order(a->model) < model_order(b->model);
-  });
-  MarkdownTable table(
-      {"Model", "Time (ms)", "Cases", "Converged", "Ratio per case", "Reference (ms)"});
-  const auto count = [](const std::optional<int>& n) {
-    return n ? std::to_string(*n) : std::string(kMissing);
-  };
-  for (const AllOptionsBenchmark* b : rows) {
-    table.add_row({model_md(b->model),
-                   b->error.empty() ? format_ms(b->time_ms) : "error: " + b->error, count(b->cases),
-                   count(b->converged), format_ratio(b->ratio_per_case),
-                   format_ms(b->reference_ms)});
+/// A column of a table with one row per model: its header and its cell of a row.
+struct ModelColumn {
+  const char* header;
+  std::function<std::string(const BenchRow&)> cell;
+};
+
+std::string count_cell(const std::optional<int>& n) {
+  return n ? std::to_string(*n) : std::string(kMissing);
+}
+
+/// One row per benchmark of `rows`, in the report's order of models.
+std::string model_table(const std::vector<BenchRow>& rows,
+                        const std::vector<ModelColumn>& columns) {
+  std::vector<std::string> header{"Model"};
+  for (const auto& c : columns)
+    header.emplace_back(c.header);
+  MarkdownTable table(header);
+  for (const BenchRow* b : sorted_cases(rows)) {
+    std::vector<std::string> row{model_md(b->model)};
+    for (const auto& c : columns)
+      row.push_back(c.cell(*b));
+    table.add_row(std::move(row));
   }
-  return table;
+  return table.render();
+}
+
+std::string all_options_table(const BenchResults& bench) {
+  return model_table(
+      bench.all_options,
+      {{"Time (ms)",
+        [](const BenchRow& b) {
+          return b.error.empty() ? format_ms(b.time_ms) : "error: " + b.error;
+        }},
+       {"Cases", [](const BenchRow& b) { return count_cell(b.count("cases")); }},
+       {"Converged", [](const BenchRow& b) { return count_cell(b.count("converged")); }},
+       {"Ratio per case",
+        [](const BenchRow& b) { return format_ratio(b.counter("ratio_per_case")); }},
+       {"Reference (ms)", [](const BenchRow& b) { return format_ms(b.reference_ms()); }}});
+}
+
+/// The ModelCases benchmarks: a model's full set of cases against one analysis of it, in wall
+/// and process CPU time, checked against `max_ratio` (issue #27). A wall-time ratio below the
+/// physical floor of 1 (the load changed between the two measurements) does not count as met.
+TemplateData model_cases_data(const BenchResults& bench, double max_ratio) {
+  if (bench.model_cases.empty())
+    return TemplateData(false);
+  const auto converged = [](const BenchRow& b) {
+    const auto n = b.count("converged"), cases = b.count("cases");
+    return b.error.empty() ? fmt::format("{} of {}", count_cell(n), count_cell(cases))
+                           : "error: " + b.error;
+  };
+  int wall = 0, cpu = 0, below_one = 0;
+  for (const auto& b : bench.model_cases) {
+    below_one += b.ratio() && *b.ratio() < 1 ? 1 : 0;
+    wall += b.ratio() && *b.ratio() >= 1 && *b.ratio() <= max_ratio ? 1 : 0;
+    cpu += b.counter("ratio_cpu") && *b.counter("ratio_cpu") <= max_ratio ? 1 : 0;
+  }
+  TemplateData d;
+  d.set("max_ratio", fmt::format("{:g}", max_ratio));
+  d.set("models", std::to_string(bench.model_cases.size()));
+  d.set("met_wall", std::to_string(wall));
+  d.set("met_cpu", std::to_string(cpu));
+  d.set("below_one", text_or_false(below_one > 0 ? std::to_string(below_one) : ""));
+  d.set(
+      "table",
+      model_table(
+          bench.model_cases,
+          {{"Cases converged", converged},
+           {"Time of the cases (ms)", [](const BenchRow& b) { return format_ms(b.time_ms); }},
+           {"One analysis (ms)",
+            [](const BenchRow& b) { return format_ms(b.counter_ms("one_case_s")); }},
+           {"Ratio (wall)", [](const BenchRow& b) { return format_ratio(b.ratio()); }},
+           {"Ratio (CPU)", [](const BenchRow& b) { return format_ratio(b.counter("ratio_cpu")); }},
+           {"BLAS threads",
+            [](const BenchRow& b) { return count_cell(b.count("blas_threads")); }}}));
+  return d;
 }
 
 /// One cell of a model table: "4.10 ms · 1.28× · 2 it." (+ " + 3 aug." for AL, " ✗" when the
 /// case did not converge or stopped with an error).
-std::string case_cell(const ContactBenchmark& b) {
+std::string case_cell(const BenchRow& b) {
   std::string out = b.time_ms ? format_milliseconds(*b.time_ms) + " ms" : std::string("error");
-  if (b.ratio)
-    out += " · " + format_ratio(b.ratio) + "×";
-  if (b.active_set_iterations)
-    out += fmt::format(" · {:.0f} it.", *b.active_set_iterations);
-  if (b.augmentations && *b.augmentations > 0)
-    out += fmt::format(" + {:.0f} aug.", *b.augmentations);
+  if (b.ratio())
+    out += " · " + format_ratio(b.ratio()) + "×";
+  if (const auto iterations = b.counter("active_set_iterations"))
+    out += fmt::format(" · {:.0f} it.", *iterations);
+  if (const auto augmentations = b.counter("augmentations"); augmentations && *augmentations > 0)
+    out += fmt::format(" + {:.0f} aug.", *augmentations);
   return b.converged() ? out : out + " ✗";
 }
 
-TemplateData model_data(const BenchModel& model,
-                        const std::vector<const ContactBenchmark*>& cases) {
+TemplateData model_data(const BenchModel& model, const std::vector<const BenchRow*>& cases) {
   std::optional<double> reference;
-  std::vector<ContactKind> contacts;
-  std::vector<BenchMethod> algorithms;
-  const auto has = [&](auto pred) { return std::any_of(cases.begin(), cases.end(), pred); };
-  for (const ContactBenchmark* b : cases)
-    reference = reference ? reference : b->reference_ms;
-  for (const auto c : bench_contacts()) {
-    if (has([&](const auto* b) { return b->contact == c; }))
-      contacts.push_back(c);
-  }
-  for (const auto a : schema::values<BenchMethod>()) {
-    if (has([&](const auto* b) { return b->algorithm == a; }))
-      algorithms.push_back(a);
-  }
+  for (const BenchRow* b : cases)
+    reference = reference ? reference : b->reference_ms();
+  const auto [contacts, algorithms] = options_of(cases);
   MarkdownTable table([&] {
     std::vector<std::string> header{"Algorithm"};
     for (const auto c : contacts)
@@ -229,7 +278,7 @@ TemplateData model_data(const BenchModel& model,
     table.add_row(std::move(row));
   }
   std::vector<std::string> failures;
-  for (const ContactBenchmark* b : cases) {
+  for (const BenchRow* b : cases) {
     if (!b->converged())
       failures.push_back(
           fmt::format("✗ {} {}: {}", name(b->contact), name(b->algorithm), b->failure()));
@@ -256,19 +305,19 @@ TemplateData figure_set_data(const FigureSet& figures) {
 
 TargetCheck check_target(const BenchResults& bench, const BenchTarget& target) {
   TargetCheck check;
-  for (const ContactBenchmark* b : sorted_cases(bench)) {
+  for (const BenchRow* b : sorted_cases(bench.contact)) {
     const bool listed = std::find(target.problems.begin(), target.problems.end(),
                                   b->model.problem) != target.problems.end();
     const bool timed_algorithm = std::find(target.algorithms.begin(), target.algorithms.end(),
                                            b->algorithm) != target.algorithms.end();
     if (!listed || !timed_algorithm || b->model.mesh != target.mesh)
       continue;
-    const bool meets = b->converged() && b->ratio && *b->ratio <= target.max_ratio;
+    const bool meets = b->converged() && b->ratio() && *b->ratio() <= target.max_ratio;
     (meets ? check.met : check.missed).push_back(b);
   }
   // The worst first: the largest ratio, then those without one.
   std::stable_sort(check.missed.begin(), check.missed.end(), [](const auto* a, const auto* b) {
-    return a->ratio.value_or(-1) > b->ratio.value_or(-1);
+    return a->ratio().value_or(-1) > b->ratio().value_or(-1);
   });
   for (const auto problem : target.problems) {
     for (const auto element : schema::values<schema::Element>()) {
@@ -330,8 +379,8 @@ std::string bench_section(const BenchResults& bench, const FigureSet& figures,
   d.set("replaced", text_or_false(bench.n_replaced > 0 ? std::to_string(bench.n_replaced) : ""));
   d.set("target", target_data(bench, target));
   d.set("figures", figure_set_data(figures));
-  d.set("all_options",
-        text_or_false(bench.all_options.empty() ? "" : all_options_table(bench).render()));
+  d.set("all_options", text_or_false(bench.all_options.empty() ? "" : all_options_table(bench)));
+  d.set("model_cases", model_cases_data(bench, target.max_model_cases_ratio));
   d.set("al", name(BenchMethod::AL));
   d.set("has_models", !bench.contact.empty());
   d.set("models", template_list(by_model(bench),

@@ -20,24 +20,11 @@ constexpr double kGap = 1.0;
 
 /// One panel: bars of the algorithms (one colour each) clustered by discretization, the ratio
 /// above each bar ('*': not converged), the reference time and the target's limit as lines.
-PlotPanel bar_panel(const std::vector<const ContactBenchmark*>& cases, double max_ratio) {
-  std::vector<ContactKind> contacts;
-  std::vector<BenchMethod> methods;
+PlotPanel bar_panel(const std::vector<const BenchRow*>& cases, double max_ratio) {
+  const auto [contacts, methods] = options_of(cases);
   std::optional<double> reference;
   double top = 0;
-  for (const auto c : bench_contacts()) {
-    if (std::any_of(cases.begin(), cases.end(), [c](const auto* b) { return b->contact == c; }))
-      contacts.push_back(c);
-  }
-  for (const auto a : schema::values<BenchMethod>()) {
-    if (std::any_of(cases.begin(), cases.end(), [a](const auto* b) { return b->algorithm == a; }))
-      methods.push_back(a);
-  }
-  const BenchModel& m = cases.front()->model;
-  PlotPanel panel{fmt::format("{}, mesh {}, {}", schema::label(m.problem),
-                              schema::to_string(m.mesh), schema::to_string(m.element)),
-                  {""},
-                  {"time (ms)"}};
+  PlotPanel panel{model_md(cases.front()->model), {""}, {"time (ms)"}};
   const double n = static_cast<double>(methods.size());
   panel.bar_width = 1.0 / (n + kGap);
   for (std::size_t j = 0; j < methods.size(); ++j) {
@@ -51,10 +38,10 @@ PlotPanel bar_panel(const std::vector<const ContactBenchmark*>& cases, double ma
             static_cast<double>(i) + (static_cast<double>(j) - (n - 1) / 2) / (n + kGap);
         bars.xy.emplace_back(x, *b->time_ms);
         top = std::max(top, *b->time_ms);
-        reference = reference ? reference : b->reference_ms;
-        if (b->ratio)
+        reference = reference ? reference : b->reference_ms();
+        if (b->ratio())
           panel.labels.push_back(
-              {x, *b->time_ms, fmt::format("{:.2f}{}", *b->ratio, b->converged() ? "" : "*")});
+              {x, *b->time_ms, fmt::format("{:.2f}{}", *b->ratio(), b->converged() ? "" : "*")});
       }
     }
     panel.series.push_back(std::move(bars));
@@ -66,20 +53,11 @@ PlotPanel bar_panel(const std::vector<const ContactBenchmark*>& cases, double ma
   if (reference) {
     panel.title += fmt::format(": reference {} ms", format_milliseconds(*reference));
     top = std::max(top, max_ratio * *reference);
-    panel.series.push_back({"reference (ratio 1)",
-                            "#000000",
-                            Mark::line,
-                            2,
-                            7,
-                            1.5,
-                            {{-0.5, *reference}, {right, *reference}}});
-    panel.series.push_back({fmt::format("ratio {:g} (target)", max_ratio),
-                            "#d62728",
-                            Mark::line,
-                            4,
-                            7,
-                            1.5,
-                            {{-0.5, max_ratio * *reference}, {right, max_ratio * *reference}}});
+    panel.series.push_back(line_series("reference (ratio 1)", "#000000",
+                                       {{-0.5, *reference}, {right, *reference}}, 2));
+    panel.series.push_back(
+        line_series(fmt::format("ratio {:g} (target)", max_ratio), "#d62728",
+                    {{-0.5, max_ratio * *reference}, {right, max_ratio * *reference}}, 4));
   }
   panel.y.range = std::pair(0.0, top > 0 ? 1.15 * top : 1.0);
   return panel;
@@ -90,13 +68,10 @@ PlotPanel bar_panel(const std::vector<const ContactBenchmark*>& cases, double ma
 FigureSet render_bench_figures(const BenchResults& bench, const std::filesystem::path& out_root,
                                const BenchTarget& target, const FigureOptions& options) {
   FigureSet set;
-  Plot plot{"Time of the contact analysis per algorithm (ratio to the reference above each bar)",
-            {},
-            2,
-            620,
-            420,
-            KeyPlace::below,
-            4};
+  Plot plot{
+      .title = "Time of the contact analysis per algorithm (ratio to the reference above each bar)",
+      .panel_width = 620,
+      .key_columns = 4};
   std::vector<std::string> models;
   bool any_failed = false;
   for (const auto& cases : finest_models(bench)) {

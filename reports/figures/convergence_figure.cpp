@@ -54,13 +54,8 @@ void add_reference_slopes(PlotPanel& panel, bool singular) {
   std::sort(start.begin(), start.end());
   const double y0 = start[start.size() / 2];
   for (const double slope : singular ? std::vector{-0.5} : std::vector{1.0, 2.0}) {
-    panel.series.push_back({fmt::format("slope {:g}", slope),
-                            "#999999",
-                            Mark::line,
-                            4,
-                            7,
-                            1.0,
-                            {{hi, y0}, {lo, y0 * std::pow(lo / hi, slope)}}});
+    panel.series.push_back(line_series(fmt::format("slope {:g}", slope), "#999999",
+                                       {{hi, y0}, {lo, y0 * std::pow(lo / hi, slope)}}, 4, 1.0));
   }
 }
 
@@ -69,14 +64,10 @@ void add_reference_slopes(PlotPanel& panel, bool singular) {
 Plot convergence_plot(const ResultsIndex& index, const std::vector<RowFacts>& rows,
                       const std::vector<DivergenceFacts>& singular, const schema::ProblemRecord& p,
                       const schema::QuantityDefinition& q, Figure& figure) {
-  Plot plot{fmt::format("{} ({}): {} against element size", schema::label(p.id), q.definition_plain,
-                        p.singular ? "edge stress" : "|error|"),
-            {},
-            2,
-            700,
-            480,
-            KeyPlace::below,
-            2};
+  Plot plot{.title = fmt::format("{} ({}): {} against element size", schema::label(p.id),
+                                 q.definition_plain, p.singular ? "edge stress" : "|error|"),
+            .panel_width = 700,
+            .panel_height = 480};
   bool relative = false, round_off = false;
   for (const auto element : schema::values<schema::Element>()) {
     if (!index.has(p.id, q.quantity, element))

@@ -31,12 +31,12 @@ Points outlines(const ExportedModel& m, int body) {
 /// The whole model beside a zoom on the contact (twice the contact half-width across); z
 /// points down, into the block.
 Plot mesh_plot(const ExportedModel& m) {
-  Plot plot{"", {}, 2, 620, 500, KeyPlace::below, 2};
+  Plot plot{.panel_width = 620, .panel_height = 500};
   PlotPanel whole{m.name + ": the whole model", {"x"}, {"z (into the block)"}};
   whole.y.reversed = true;
   whole.equal_aspect = true;
-  whole.series = {{"indented block", "#1f77b4", Mark::line, 1, 7, 0.6, outlines(m, 0)},
-                  {"indenter", "#d62728", Mark::line, 1, 7, 0.6, outlines(m, 1)}};
+  whole.series = {line_series("indented block", "#1f77b4", outlines(m, 0), 1, 0.6),
+                  line_series("indenter", "#d62728", outlines(m, 1), 1, 0.6)};
   PlotPanel zoom = whole;
   zoom.title = fmt::format("{}: near the contact (a = {:.4g})", m.name, m.a);
   zoom.x.range = std::pair(0.0, 2.0 * m.a);

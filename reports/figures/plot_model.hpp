@@ -41,6 +41,12 @@ struct PlotSeries {
   Points xy;     ///< a NaN point breaks the line
 };
 
+/// A plain line of one colour through `xy` (an exact curve, a reference line or slope).
+inline PlotSeries line_series(std::string title, std::string colour, Points xy, int dash = 1,
+                              double width = 1.5) {
+  return {std::move(title), std::move(colour), Mark::line, dash, 7, width, std::move(xy)};
+}
+
 struct PlotAxis {
   PlotAxis(std::string label = {}, Scale scale = Scale::linear,
            std::optional<std::pair<double, double>> range = {})

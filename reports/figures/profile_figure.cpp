@@ -123,7 +123,7 @@ std::optional<PlotPanel> peak_zoom(const std::vector<PlotPanel>& panels, const P
     }
   }
   zoom.y.range = std::pair(y_lo, y_hi);
-  zoom.series.push_back({"exact", "#000000", Mark::line, 1, 7, 1.0, exact});
+  zoom.series.push_back(line_series("exact", "#000000", exact, 1, 1.0));
   return zoom;
 }
 
@@ -131,14 +131,13 @@ std::optional<PlotPanel> peak_zoom(const std::vector<PlotPanel>& panels, const P
 
 Plot profile_plot(const ResultsIndex& index, ProblemId problem, schema::Element element,
                   Figure& figure) {
-  Plot plot{fmt::format("{} {}: -sigma_z/p on z = 0, meshes C (dotted), M (dashed), F (solid)",
-                        schema::label(problem), schema::to_string(element)),
-            {},
-            3,
-            520,
-            380,
-            KeyPlace::below,
-            4};
+  Plot plot{.title = fmt::format("{} {}: -sigma_z/p on z = 0, meshes C (dotted), M (dashed), F "
+                                 "(solid)",
+                                 schema::label(problem), schema::to_string(element)),
+            .columns = 3,
+            .panel_width = 520,
+            .panel_height = 380,
+            .key_columns = 4};
   const schema::ProblemRecord* p = index.problem(problem);
   if (p == nullptr || p->quantities.empty())
     return plot;
@@ -158,7 +157,7 @@ Plot profile_plot(const ResultsIndex& index, ProblemId problem, schema::Element 
   for (auto& panel : plot.panels) {
     panel.x.range = shared;
     if (!exact.empty())
-      panel.series.push_back({"exact", "#000000", Mark::line, 1, 7, 1.0, exact});
+      panel.series.push_back(line_series("exact", "#000000", exact, 1, 1.0));
   }
   if (zoom)
     plot.panels.push_back(*zoom);

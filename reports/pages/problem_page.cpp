@@ -40,21 +40,11 @@ std::string credible_cell(const RowFacts& f) {
 /// The option label of a row, "AL, PM ss" when its twin coincides (the twin is then skipped).
 std::string option_label(const RowFacts& f, const std::vector<const RowFacts*>& rows, bool& skip) {
   skip = false;
-  const auto twin_algorithm = [](schema::Algorithm a) -> std::optional<schema::Algorithm> {
-    switch (a) {
-      case schema::Algorithm::AL:
-        return schema::Algorithm::PM;
-      case schema::Algorithm::PM:
-        return schema::Algorithm::AL;
-      case schema::Algorithm::LMP:
-        return schema::Algorithm::PLM;
-      case schema::Algorithm::PLM:
-        return schema::Algorithm::LMP;
-      case schema::Algorithm::MPC:
-        return std::nullopt;
-    }
-    return std::nullopt;
-  }(f.option.algorithm);
+  std::optional<schema::Algorithm> twin_algorithm;  // the other of its family: AL-PM, LMP-PLM
+  for (const auto a : schema::values<schema::Algorithm>()) {
+    if (a != f.option.algorithm && family_of(a) == family_of(f.option.algorithm))
+      twin_algorithm = a;
+  }
   for (const RowFacts* t : rows) {
     if (!twin_algorithm || t->option.algorithm != *twin_algorithm ||
         t->option.contact != f.option.contact || t->element != f.element ||

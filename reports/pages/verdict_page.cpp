@@ -7,6 +7,7 @@
 #include <set>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "reports/pages/page_format.hpp"
 #include "reports/render/template_text.hpp"
@@ -79,18 +80,7 @@ std::string failure_evidence(const std::vector<const OptionCell*>& cells,
     parts.push_back(fmt::format("Eq. 47 fails on {} of {} rows", eq47_failures, singular));
   if (parts.empty() && worst_error != 0.0)
     parts.push_back("F error " + format_error_resolved(worst_error));
-  std::string out;
-  for (const auto& p : parts)
-    out += (out.empty() ? "" : "; ") + p;
-  return out;
-}
-
-/// "pressure outside the patch" or "force balance and tensile pressure".
-std::string checks_label(const std::vector<std::string>& checks) {
-  std::string out;
-  for (std::size_t i = 0; i < checks.size(); ++i)
-    out += (i == 0 ? "" : i + 1 == checks.size() ? " and " : ", ") + checks[i];
-  return out;
+  return fmt::format("{}", fmt::join(parts, "; "));
 }
 
 TemplateData failures(const SituationVerdict& s) {
@@ -132,7 +122,7 @@ TemplateData advice(const SituationVerdict& s) {
   d.set("has_avoid", !s.avoid.empty());
   d.set("avoid", cells_label(s.avoid));
   d.set("has_common", !s.common_failures.empty());
-  d.set("common", checks_label(s.common_failures));
+  d.set("common", join_words(s.common_failures));  // "force balance and tensile pressure"
   if (s.best_grade && s.best_min && s.best_max) {
     const double spread = *s.best_max - *s.best_min;
     d.set("grade", std::string(schema::to_string(*s.best_grade)));
