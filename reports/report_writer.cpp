@@ -135,7 +135,7 @@ std::vector<ReportPage> appendix_pages(const ResultsIndex& index,
   return pages;
 }
 
-std::string report_markdown(const ResultsIndex& index, const schema::StudyReference& study,
+std::string report_markdown(const ResultsIndex& index, const schema::StudyReference& /*study*/,
                             const ReportContent& content, const std::vector<ReportPage>& problems,
                             const std::vector<ReportPage>& appendices) {
   const std::vector<RowFacts> rows = row_facts(index);
