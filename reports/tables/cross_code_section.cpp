@@ -263,33 +263,44 @@ std::vector<CodeRow> code_rows(const ResultsIndex& index, schema::ProblemId prob
 }
 
 std::vector<OptionTally> option_tallies(const ResultsIndex& index) {
-  std::map<RowKey, OptionTally> tallies;
+  using Cell = std::tuple<schema::ProblemId, schema::Quantity, schema::Element>;
+  std::map<RowKey, std::map<Cell, const RowVerdict*>> by_option;
   for (const schema::ProblemRecord* p : index.problems()) {
-    if (index.singular(p->id))
-      continue;
     for (const auto& q : p->quantities) {
       for (const auto element : schema::values<schema::Element>()) {
         for (const auto& r : code_rows(index, p->id, q.quantity, element)) {
-          if (r.common == nullptr || !r.common->errors[2])
-            continue;
-          OptionTally& t =
-              tallies.try_emplace(key_of(r), OptionTally{r.code, r.option, r.target}).first->second;
-          const RowFacts f = facts_of_row(index, *r.common);
-          ++t.rows;
-          if (!f.evidence())
-            ++t.not_evidence;
-          else
-            ++(*f.grade == schema::Grade::e   ? t.e
-               : *f.grade == schema::Grade::g ? t.g
-               : *f.grade == schema::Grade::s ? t.s
-                                              : t.u);
+          if (r.common != nullptr && r.common->errors[2] && !index.singular(p->id))
+            by_option[key_of(r)][{p->id, q.quantity, element}] = r.common;
         }
       }
     }
   }
+  // Like with like within a code: only the rows every option of the code has.
+  std::map<std::string, std::set<Cell>> shared;
+  for (const auto& [key, rows] : by_option) {
+    std::set<Cell> cells;
+    for (const auto& [cell, row] : rows)
+      cells.insert(cell);
+    auto [it, first] = shared.try_emplace(std::get<1>(key), cells);
+    if (!first)
+      std::erase_if(it->second, [&](const Cell& c) { return !cells.count(c); });
+  }
   std::vector<OptionTally> out;
-  for (auto& [key, t] : tallies)
+  for (const auto& [key, rows] : by_option) {
+    OptionTally t{std::get<1>(key), std::get<3>(key), std::get<2>(key)};
+    for (const Cell& cell : shared.at(t.code)) {
+      const RowFacts f = facts_of_row(index, *rows.at(cell));
+      ++t.rows;
+      if (!f.evidence())
+        ++t.not_evidence;
+      else
+        ++(*f.grade == schema::Grade::e   ? t.e
+           : *f.grade == schema::Grade::g ? t.g
+           : *f.grade == schema::Grade::s ? t.s
+                                          : t.u);
+    }
     out.push_back(t);
+  }
   return out;
 }
 

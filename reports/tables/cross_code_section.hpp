@@ -51,7 +51,9 @@ struct CodeRow {
 std::vector<CodeRow> code_rows(const ResultsIndex& index, schema::ProblemId problem,
                                schema::Quantity quantity, schema::Element element);
 
-/// One option of a code over every nonsingular row it has an F value of (common basis).
+/// One option of a code over the nonsingular rows with an F value (common basis) that every
+/// option of the code has, so that a code's options are counted on the same rows (an option
+/// without a contact pressure has no contact half-width row).
 struct OptionTally {
   std::string code, option;
   schema::TargetKind target = schema::TargetKind::Discretized;

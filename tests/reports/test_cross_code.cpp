@@ -173,9 +173,7 @@ TEST(CrossCodeRows, TimeoutOnTheFineMeshIsShownAsSuch) {
   const auto doc = document(hertz_pair(true));
   const ResultsIndex index(doc);
   const std::string md = cross_code_section(index, study(), {}, {});
-  EXPECT_NE(md.find("| +8.00 % | +4.00 % | timeout | no grade | — |"),
-            std::string::npos)
-      << md;
+  EXPECT_NE(md.find("| +8.00 % | +4.00 % | timeout | no grade | — |"), std::string::npos) << md;
 }
 
 // Requirement: an error is printed with its sign: an under-estimate of the peak reads "−52.3 %",
@@ -224,6 +222,33 @@ TEST(CrossCodeAdvice, MostERowsTiesTogetherNotCredibleLeftOut) {
   EXPECT_NE(md.find("**calculix**: use linear-ns or linear-ss (e on 1 of 1 rows)."),
             std::string::npos)
       << md;
+}
+
+// Requirement: a code's options are counted on the same rows: a quantity only one option has
+// (an option without contact pressure has no contact half-width) does not add to its count.
+TEST(CrossCodeAdvice, OptionsCountedOnTheRowsTheyShare) {
+  std::vector<CaseResult> cases;
+  for (const auto m : kMeshes) {
+    cases.push_back(hertz_case(SolverKind::builtin, m, 0.5));
+    cases.push_back(hertz_case(kCalculix, m, 0.5, 1.0, 10.0, CaseStatus::converged, "linear-ns"));
+    CaseResult extra = hertz_case(kCalculix, m, 0.5, 1.0, 10.0, CaseStatus::converged, "linear-ss");
+    schema::QuantityResult q = extra.quantities.front();
+    q.quantity = Quantity::sigma_h;
+    extra.quantities.push_back(q);
+    cases.push_back(std::move(extra));
+  }
+  const auto doc = document(cases);
+  const ResultsIndex index(doc);
+  int calculix_options = 0;
+  for (const auto& t : option_tallies(index)) {
+    if (t.code != "calculix")
+      continue;
+    ++calculix_options;
+    EXPECT_EQ(t.rows, 1) << t.option;
+    EXPECT_EQ(t.e, 1) << t.option;
+  }
+  EXPECT_EQ(calculix_options, 2);
+  EXPECT_EQ(advised(option_tallies(index), "calculix").size(), 2U);
 }
 
 // Requirement: a code's cost is its recorded wall time per case beside ours on the same models:
