@@ -57,7 +57,7 @@ std::string mesh_cell(const ResultsIndex& index, const RowVerdict* row, std::siz
   if (row == nullptr)
     return kMissing;
   if (row->errors[m])
-    return format_percent(*row->errors[m]);
+    return format_error_resolved(*row->errors[m]);
   if (row->values[m])
     return format_value(*row->values[m]);
   const CaseResult* c = index.case_of(*row, kMeshes[m]);
