@@ -34,6 +34,7 @@ PENALTY_FKN = 50.0  # penalty stiffness r = FKN E / h (CalculiX's HARD contact: 
 GAMMA0_FKN = 50.0  # Nitsche: gamma = gamma0 / h with gamma0 = FKN E
 AL_FKN = 1.0  # augmentation parameter r = FKN E / h (GetFEM's guide: close to E)
 CONTACT = 1  # the GetFEM region number of the contact surface
+MAX_ITER = 100  # Newton iterations before GetFEM's solve stops
 
 # Our counter-clockwise order -> GetFEM's lexicographic QK order.
 Q4_TO_GETFEM = (0, 1, 3, 2)
@@ -230,9 +231,9 @@ class Problem:
         self.md.set_variable("u", self.start_u(delta))
         if self.load_controlled:
             self.md.set_variable("w", [-delta])
-        out = self.md.solve("max_res", 1e-9, "max_iter", 100, "lsearch", "simplest")
+        out = self.md.solve("max_res", 1e-9, "max_iter", MAX_ITER, "lsearch", "simplest")
         nit = int(out[0]) if np.ndim(out) else int(out)
-        converged = bool(out[1]) if np.ndim(out) and len(out) > 1 else nit < 100
+        converged = bool(out[1]) if np.ndim(out) and len(out) > 1 else nit < MAX_ITER
         return nit, converged
 
     def start_u(self, delta):
@@ -326,6 +327,14 @@ def integral_pressure(problem):
     return nodes, np.where(multiplier - r * gap > 0.0, np.maximum(multiplier, 0.0), 0.0)
 
 
+def not_converged_reason(iterations):
+    """Why the case did not converge: GetFEM's Newton reports 0 iterations when it gives up (a
+    failed line search or a diverging residual), else its iteration cap was reached."""
+    if iterations == 0:
+        return "GetFEM's Newton gave up (line search failed or the residual diverged)"
+    return f"GetFEM's Newton did not converge in {iterations} iterations (its cap: {MAX_ITER})"
+
+
 def solve_and_write(case, option, version):
     import getfem as gf
 
@@ -345,7 +354,7 @@ def solve_and_write(case, option, version):
         contact_pressure=None if pressure is None else pressure[1],
         pressure_nodes=None if pressure is None else pressure[0], converged=converged,
         iterations=iterations, n_equations=2 * len(disc.nodes),
-        reason="" if converged else f"GetFEM's Newton did not converge in {iterations} iterations",
+        reason="" if converged else not_converged_reason(iterations),
         solver_version=version, case=case)
 
 
