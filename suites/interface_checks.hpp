@@ -1,7 +1,9 @@
 #pragma once
 // The interface checks of a case (schema/interface_checks.hpp) from the built-in solver's
 // contact solution: the nodal contact forces against the applied load, the most tensile
-// pressure, the pressure beyond the exact contact patch, the deepest penetration.
+// pressure, the pressure beyond the exact contact patch (at the node's position where it meets
+// the target: its deformed x when gaps are measured along the target's normal), the deepest
+// penetration.
 
 #include <vector>
 
