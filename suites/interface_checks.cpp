@@ -1,6 +1,7 @@
 #include "suites/interface_checks.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
 #include <set>
@@ -71,6 +72,20 @@ std::map<int, double> tributary_lengths(const solver::Mesh& mesh, const solver::
   return out;
 }
 
+/// The z component of the contact surface's outward normal, +1 or -1 (the surface faces the
+/// target along z in every problem): the side's midpoint against its element's centroid. The
+/// contact pushes the block against it, so a compressive contact force has the opposite sign.
+double outward_z(const solver::Mesh& mesh, const solver::SurfacePath& path) {
+  const solver::ElementSide& side = path.sides.front();
+  const auto& e = mesh.elements[side.element];
+  Eigen::Vector2d centroid = Eigen::Vector2d::Zero();
+  for (int k = 0; k < 4; ++k)
+    centroid += mesh.nodes[e[k]] / 4.0;
+  const std::array<int, 3> ends = mesh.side_nodes(side);
+  const double mid_z = 0.5 * (mesh.nodes[ends[0]].y() + mesh.nodes[ends[1]].y());
+  return mid_z > centroid.y() ? 1.0 : -1.0;
+}
+
 }  // namespace
 
 double interface_load(const ProblemSetup& setup, const Eigen::VectorXd& f) {
@@ -110,8 +125,9 @@ schema::InterfaceChecks check_interface_of_displacements(
   }
   for (const int n : layer)
     contact.total_normal_force += residual[2 * n + 1];
-  // Compression is positive: the interface pushes the block away from the target.
-  const double sign = contact.total_normal_force < 0.0 ? -1.0 : 1.0;
+  // Compression is positive: the interface pushes the block against its outward normal. The
+  // direction is the geometry's, never the result's: an interface that pulls reads negative.
+  const double sign = -outward_z(model.mesh, path);
   contact.total_normal_force *= sign;
   std::map<double, double> own;
   for (const auto& p : pressures)

@@ -31,8 +31,9 @@ double interface_load(const ProblemSetup& setup, const Eigen::VectorXd& f);
 /// The same checks for another code's solution, on our model: the force its contact transmits
 /// is the residual K u - f of its displacements `u` summed over the nodes of the elements on
 /// the sampled surface (so the force balance is the equilibrium of its displacement field
-/// everywhere else), its pressures its own nodal contact pressures where it writes them, else
-/// each surface node's residual over its tributary length. The penetration is not checked
+/// everywhere else) and counted compressive against the surface's outward normal (an interface
+/// that pulls reads negative), its pressures its own nodal contact pressures where it writes
+/// them, else each surface node's residual over its tributary length. The penetration is not checked
 /// (absent): it needs the code's own contact geometry.
 schema::InterfaceChecks check_interface_of_displacements(
     const ProblemSetup& setup, const Eigen::VectorXd& u,

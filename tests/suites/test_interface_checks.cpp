@@ -157,5 +157,33 @@ TEST(InterfaceChecks, AnotherCodesDisplacementsCheckedOnOurModel) {
   }
 }
 
+// Requirement: another code's interface is read in the geometry's direction, never its own:
+// the same field reversed pulls with the whole load and fails the force balance (-2) and the
+// tensile check, on P, H and S alike. Where the code writes no pressure, each node's residual
+// over its tributary length stands for it: on MPC ns, whose node pressure is its force over that
+// length, the derived pressure beyond the patch equals the solver's own (0.36 p, to 5e-6).
+TEST(InterfaceChecks, AnotherCodesInterfaceReadInTheGeometrysDirection) {
+  for (const ProblemId problem : {ProblemId::P_p, ProblemId::H_p, ProblemId::S_1_3}) {
+    const CaseSpec spec = spec_of(problem, Algorithm::LMP, ContactKind::ss);
+    ProblemExecutor executor(spec);
+    ASSERT_EQ(executor.run(spec).status, CaseStatus::converged);
+    const Eigen::VectorXd u = executor.last_displacement();
+    const auto pulled = check_interface_of_displacements(executor.setup(), -u, {});
+    ASSERT_TRUE(pulled.force_balance && pulled.max_tensile_over_p) << case_id(spec);
+    EXPECT_NEAR(*pulled.force_balance, -2.0, 1e-3) << case_id(spec);
+    EXPECT_GT(*pulled.max_tensile_over_p, schema::kTensileTolerance) << case_id(spec);
+  }
+  const CaseSpec mpc = spec_of(ProblemId::H_p, Algorithm::MPC, ContactKind::ns);
+  ProblemExecutor executor(mpc);
+  const CaseResult own = executor.run(mpc);
+  ASSERT_TRUE(own.interface && own.interface->max_outside_over_p);
+  const auto derived =
+      check_interface_of_displacements(executor.setup(), executor.last_displacement(), {});
+  ASSERT_TRUE(derived.max_outside_over_p);
+  EXPECT_GT(*derived.max_outside_over_p, schema::kOutsideTolerance);
+  EXPECT_NEAR(*derived.max_outside_over_p, *own.interface->max_outside_over_p,
+              1e-4 * *own.interface->max_outside_over_p);
+}
+
 }  // namespace
 }  // namespace cs::suites
