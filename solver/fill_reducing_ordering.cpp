@@ -8,6 +8,11 @@
 
 namespace cs::solver {
 
+std::unique_lock<std::mutex> metis_turn() {
+  static std::mutex metis;
+  return std::unique_lock(metis);
+}
+
 std::vector<int> metis_quotient_ordering(const Eigen::SparseMatrix<double>& A,
                                          const std::vector<int>& group_of_equation) {
   const int n = static_cast<int>(A.rows());
@@ -103,6 +108,7 @@ std::vector<int> metis_quotient_ordering(const Eigen::SparseMatrix<double>& A,
     idx_t options[METIS_NOPTIONS];
     METIS_SetDefaultOptions(options);
     options[METIS_OPTION_NUMBERING] = 0;
+    const auto turn = metis_turn();
     const int status =
         METIS_NodeND(&nv, xadj.data(), adjncy.data(), nullptr, options, perm.data(), iperm.data());
     if (status != METIS_OK) {

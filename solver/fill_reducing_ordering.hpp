@@ -6,17 +6,26 @@
 // the edges (2 DOFs per node), so METIS runs several times faster, and keeps the DOFs of a node
 // together, which helps supernode formation.
 
+#include <mutex>
 #include <vector>
 
 #include <Eigen/SparseCore>
 
 namespace cs::solver {
 
+/// The turn that every call into METIS holds, direct or through CHOLMOD's analysis with its
+/// METIS or NESDIS orderings. METIS reseeds one random generator of the whole process at each
+/// call and draws from it while it orders: two calls at once interleave their draws and return
+/// other orderings, so the same matrix was factored with other round-off and the results moved
+/// with the schedule of a run's workers.
+std::unique_lock<std::mutex> metis_turn();
+
 /// The METIS nested-dissection ordering of the symmetric matrix whose lower triangle is
 /// `A_lower`, computed on the graph whose vertices are the groups of `group_of_equation`
 /// (group index per equation, 0 <= group < n_groups; equations of a group are eliminated
 /// consecutively, in increasing order). Returns perm with perm[k] = the equation eliminated
-/// k-th (CHOLMOD's and METIS's convention). Throws std::runtime_error if METIS fails.
+/// k-th (CHOLMOD's and METIS's convention), the same from any thread (calls into METIS take
+/// turns). Throws std::runtime_error if METIS fails.
 std::vector<int> metis_quotient_ordering(const Eigen::SparseMatrix<double>& A_lower,
                                          const std::vector<int>& group_of_equation);
 

@@ -133,6 +133,9 @@ bool cholmod_analysis(SupernodalLLT& llt, const SparseMatrix& A, FillReducingOrd
   }
   if (!groups || ordering != FillReducingOrdering::Automatic) {
     configure(c, ordering);
+    std::unique_lock<std::mutex> turn;  // every ordering but AMD may call METIS
+    if (ordering != FillReducingOrdering::Amd)
+      turn = metis_turn();
     llt.analyzePattern(A);
     return false;
   }
