@@ -1,11 +1,27 @@
-# Build speed (issue 27): precompiled headers for the heavy third-party includes, and test
-# programs compiled at -O1.
+# Build speed (issue 27): precompiled headers for the heavy third-party includes, unity builds,
+# and test programs compiled at -O1.
 #
 # Each target precompiles the third-party headers that most of its translation units include
 # anyway (measured with `ninja -t deps`): parsing Eigen, nlohmann-json or GoogleTest once per
 # target instead of once per file. Headers a target's files rarely include stay out of its
 # precompiled header, since every file of the target pays for what the header holds.
 option(CONTACT_SUITE_PCH "Precompile the heavy third-party headers of each target" ON)
+
+# Unity builds: each target compiles its files in batches of 8, one translation unit per batch,
+# so the headers every file includes (ours, the standard library's, what the precompiled header
+# leaves out) are parsed once per batch instead of once per file. A file whose file-local names
+# (an anonymous namespace's helpers and constants) clash with another's in the same target is
+# compiled on its own: cs_unity_exclude, next to the target.
+option(CONTACT_SUITE_UNITY "Compile each target's files in batches (unity build)" ON)
+if(CONTACT_SUITE_UNITY)
+  set(CMAKE_UNITY_BUILD ON)
+  set(CMAKE_UNITY_BUILD_BATCH_SIZE 8)
+endif()
+
+# cs_unity_exclude(<file>...): compile these files of the current directory on their own.
+function(cs_unity_exclude)
+  set_source_files_properties(${ARGN} PROPERTIES SKIP_UNITY_BUILD_INCLUSION ON)
+endfunction()
 
 set(cs_pch_eigen <Eigen/Core> <Eigen/SparseCore>)
 set(cs_pch_json <nlohmann/json.hpp>)
