@@ -21,6 +21,7 @@ TemplateData claim_data(const ClaimEvidence& c) {
   d.set("has_n2", c.n2 > 0);
   d.set("has_figure", c.figure.has_value());
   d.set("figure", c.figure ? fmt::format("{:.3g}", *c.figure) : std::string());
+  d.set("figure2", c.figure2 ? fmt::format("{:.3g}", *c.figure2) : std::string());
   d.set("has_examples", !c.examples.empty());
   d.set("examples", c.examples);
   return d;

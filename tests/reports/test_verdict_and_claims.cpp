@@ -169,8 +169,9 @@ TEST(ClaimsLedger, MpcClaimNeverCountsAFailedRowAsGood) {
 }
 
 // Requirement: "IMC fastest" is measured: per fine-mesh model, MPC's case time against the
-// fastest other option's.
-TEST(ClaimsLedger, MpcFastestIsMeasuredPerModel) {
+// fastest other option's, beyond the run's timing noise (the median relative difference of the
+// LMP and PLM case times of one model, which solve the same equations); within it is a tie.
+TEST(ClaimsLedger, MpcFastestIsMeasuredPerModelBeyondTheTimingNoise) {
   std::map<std::string, std::map<Algorithm, double>> times;
   for (const auto& c : battery().doc.cases) {
     if (c.spec.mesh != MeshLevel::F || !c.is_baseline() ||
@@ -180,7 +181,15 @@ TEST(ClaimsLedger, MpcFastestIsMeasuredPerModel) {
     model.algorithm = Algorithm::AL;
     times[schema::case_id(model)][c.spec.algorithm] = c.wall_seconds;
   }
-  int n = 0, fastest = 0;
+  std::vector<double> same_work;
+  for (const auto& [model, t] : times) {
+    if (t.count(Algorithm::LMP) && t.count(Algorithm::PLM))
+      same_work.push_back(std::abs(t.at(Algorithm::LMP) / t.at(Algorithm::PLM) - 1.0));
+  }
+  ASSERT_FALSE(same_work.empty());
+  std::sort(same_work.begin(), same_work.end());
+  const double noise = same_work[same_work.size() / 2];
+  int n = 0, faster = 0, slower = 0, tied = 0;
   for (const auto& [model, t] : times) {
     if (!t.count(Algorithm::MPC) || t.size() < 2)
       continue;
@@ -188,11 +197,20 @@ TEST(ClaimsLedger, MpcFastestIsMeasuredPerModel) {
     double other = INFINITY;
     for (const auto& [a, s] : t)
       other = a == Algorithm::MPC ? other : std::min(other, s);
-    fastest += t.at(Algorithm::MPC) < other;
+    const double ratio = t.at(Algorithm::MPC) / other;
+    faster += ratio < 1.0 / (1.0 + noise);
+    slower += ratio > 1.0 + noise;
+    tied += ratio >= 1.0 / (1.0 + noise) && ratio <= 1.0 + noise;
   }
+  const ClaimEvidence& c = claim("mpc_fastest");
   EXPECT_GT(n, 0);
-  EXPECT_EQ(claim("mpc_fastest").n, n);
-  EXPECT_EQ(claim("mpc_fastest").n_hold, fastest);
+  EXPECT_GT(noise, 0.0);
+  EXPECT_EQ(c.n, n);
+  EXPECT_EQ(c.n_hold, faster);
+  EXPECT_EQ(c.n2_hold, slower);
+  EXPECT_EQ(c.n2, tied);
+  ASSERT_TRUE(c.figure2);
+  EXPECT_NEAR(*c.figure2, 100.0 * noise, 1e-9);
 }
 
 // Requirement: each verdict cell is the worst signed F error over its rows, graded by Eq. 46,
