@@ -33,8 +33,8 @@ double interface_load(const ProblemSetup& setup, const Eigen::VectorXd& f);
 /// the sampled surface (so the force balance is the equilibrium of its displacement field
 /// everywhere else) and counted compressive against the surface's outward normal (an interface
 /// that pulls reads negative), its pressures its own nodal contact pressures where it writes
-/// them, else each surface node's residual over its tributary length. The penetration is not checked
-/// (absent): it needs the code's own contact geometry.
+/// them, else each surface node's residual over its tributary length. The penetration is not
+/// checked (absent): it needs the code's own contact geometry.
 schema::InterfaceChecks check_interface_of_displacements(
     const ProblemSetup& setup, const Eigen::VectorXd& u,
     const std::vector<ContactPressureSample>& pressures);
