@@ -22,6 +22,7 @@
 #include "platform/interrupts.hpp"
 #include "platform/platform_error.hpp"
 #include "schema/schema_error.hpp"
+#include "suites/run_environment.hpp"
 
 namespace {
 
@@ -38,6 +39,7 @@ std::string one_line(std::string text) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  cs::suites::run_openmp_regions_serially();
   CLI::App app{
       "contact-suite: frictionless contact problems with exact solutions, solved by finite "
       "elements and graded against the exact answer"};

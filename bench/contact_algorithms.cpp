@@ -319,8 +319,10 @@ void register_benchmarks() {
 
 }  // namespace
 
-/// BENCHMARK_MAIN with the benchmarks registered by name first.
+/// BENCHMARK_MAIN with the benchmarks registered by name first, and the OpenMP regions run as
+/// `contact-suite` runs them (suites::run_openmp_regions_serially), so that the timings are its.
 int main(int argc, char** argv) {
+  cs::suites::run_openmp_regions_serially();
   register_benchmarks();
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv))

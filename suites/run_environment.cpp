@@ -4,6 +4,7 @@
 #include <sys/utsname.h>
 #include <unistd.h>
 
+#include <cstdlib>
 #include <ctime>
 #include <fstream>
 #include <string>
@@ -89,6 +90,15 @@ int blas_threads() {
   if (auto fn = reinterpret_cast<GetFn>(dlsym(RTLD_DEFAULT, "openblas_get_num_threads")))
     return fn();
   return 1;
+}
+
+bool run_openmp_regions_serially() {
+  using SetFn = void (*)(int);
+  const auto fn = reinterpret_cast<SetFn>(dlsym(RTLD_DEFAULT, "omp_set_max_active_levels"));
+  if (fn == nullptr || std::getenv("OMP_THREAD_LIMIT") != nullptr)
+    return false;
+  fn(0);  // no level of parallel regions is active: each runs on the thread that meets it
+  return true;
 }
 
 std::string contact_suite_version() {

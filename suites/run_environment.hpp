@@ -21,4 +21,15 @@ bool set_blas_threads(int threads);
 /// The number of OpenBLAS threads; 1 when the BLAS in use is not OpenBLAS.
 int blas_threads();
 
+/// Makes the libraries' OpenMP regions run on the calling thread alone (max-active-levels 0),
+/// unless the user set OMP_THREAD_LIMIT. CHOLMOD 3 runs the clearing and scattering loops of
+/// every supernodal factorization as OpenMP regions of a fixed 4 threads
+/// (CHOLMOD_OMP_NUM_THREADS, compiled into the library), for any matrix of more than 128 rows.
+/// The loops are short and memory-bound; with fewer cores than threads, or two workers
+/// factorizing at once, the threads wait for each other (libgomp spins, then sleeps on a futex)
+/// longer than the loops take. The dense kernels, where a factorization spends its time, are
+/// threaded by OpenBLAS (set_blas_threads), which this does not touch. Returns false when no
+/// OpenMP runtime is loaded or the user's limit is kept. Call once, before any factorization.
+bool run_openmp_regions_serially();
+
 }  // namespace cs::suites
