@@ -1,4 +1,4 @@
-// Requirement: the one series model of the sweep, extent and refinement sections groups points
+// Requirement: the one series model of the sweep and extent sections groups points
 // by series in the order of their first point, orders each series by its parameter, finds a
 // point by its parameter, ranges only converged errors, and prints a run of parameter values
 // as a window only when it is contiguous among the values swept.
