@@ -35,7 +35,7 @@ bool penalty_based(const ParameterSeries& s) {
   return schema::traits(s.spec.algorithm).penalty_based;
 }
 
-/// The swept values at which every series is graded `worst` or better (converged).
+/// The swept values at which every series (not none) is graded `worst` or better (converged).
 std::vector<double> values_where_all(const SeriesRefs& series, const std::vector<double>& all,
                                      Grade worst) {
   std::vector<double> out;
@@ -124,7 +124,9 @@ TemplateData al_pm(const std::vector<ParameterSeries>& series) {
     const auto pm = std::ranges::find_if(series, [&](const ParameterSeries& s) {
       return s.quantity == al->quantity && schema::case_id(s.spec) == schema::case_id(pm_spec);
     });
-    for (const auto& a : pm == series.end() ? std::vector<SeriesPoint>{} : al->points) {
+    if (pm == series.end())
+      continue;
+    for (const auto& a : al->points) {
       const SeriesPoint* p = pm->at(a.parameter);
       if (p && a.error && p->error)
         gap[a.parameter] = std::max(gap[a.parameter], std::abs(*a.error - *p->error));
@@ -351,17 +353,25 @@ TemplateData e_ratio(const std::vector<ParameterSeries>& series, double smallest
   return d;
 }
 
-/// The title and answers of one key: those its kind asks for, else the spread of the errors.
+std::string key_title(const std::string& key) {
+  static const std::map<std::string, std::string> titles{
+      {"fkn", "FKN, the normal penalty stiffness"},
+      {"ftoln", "FTOLN, the penetration tolerance"},
+      {"pinball", "Pinball region"},
+      {"E_ratio", "E ratio, indenter over indented body"},
+      {"p_over_E", "Load p/E"}};
+  const auto it = titles.find(key);
+  return it == titles.end() ? key : it->second;
+}
+
+/// The answers of one key: those its kind asks for, else the spread of the errors.
 void set_answers(TemplateData& d, const ResultsIndex& index, const std::string& key,
                  const std::vector<ParameterSeries>& series, const std::vector<double>& values,
                  const schema::StudyReference& study) {
   const auto all = select_series(series, [](const ParameterSeries&) { return true; });
-  d.set("title", key);
   if (key == "fkn") {
-    d.set("title", "FKN, the normal penalty stiffness");
     d.set("fkn", fkn(index, series, values, study));
   } else if (key == "pinball") {
-    d.set("title", "Pinball region");
     const TemplateData mpc = pinball(series);
     TemplateData p("mpc", mpc);
     p.set("has_mpc", !mpc.is_empty_list());
@@ -369,19 +379,14 @@ void set_answers(TemplateData& d, const ResultsIndex& index, const std::string& 
     if (mpc.is_empty_list())
       d.set("spread", spread(all, key, values));
   } else if (key == "E_ratio") {
-    d.set("title", "E ratio, indenter over indented body");
     d.set("e_ratio", e_ratio(series, values.front()));
   } else if (key == "ftoln") {
-    d.set("title", "FTOLN, the penetration tolerance");
     const auto al = select_series(
         series, [](const ParameterSeries& s) { return s.spec.algorithm == Algorithm::AL; });
     d.set("spread", spread(al.empty() ? all : al, "FTOLN", values));
-  } else if (key == "p_over_E") {
-    d.set("title", "Load p/E");
-    d.set("spread", spread(all, "p/E", values));
-    d.set("load", true);
   } else {
-    d.set("spread", spread(all, key, values));
+    d.set("spread", spread(all, key == "p_over_E" ? "p/E" : key, values));
+    d.set("load", key == "p_over_E");
   }
 }
 
@@ -474,6 +479,7 @@ std::string sweep_section(const ResultsIndex& index, const schema::StudyReferenc
     if (values.empty())
       continue;
     TemplateData d;
+    d.set("title", key_title(key));
     d.set("key", key);
     d.set("n_values", std::to_string(values.size()));
     d.set("values", parameter_list(values));
