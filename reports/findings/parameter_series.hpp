@@ -17,7 +17,7 @@ namespace cs::reports {
 /// One point of a series: the parameter's value and what was measured there.
 struct SeriesPoint {
   double parameter = 0.0;
-  std::optional<double> value{};  ///< the quantity's value (a row's: on mesh F)
+  std::optional<double> value{};  ///< the quantity's value on mesh F, in a series of rows
   std::optional<double> error{};  ///< its signed error (%), when finite
   schema::CaseStatus status = schema::CaseStatus::converged;
   int iterations = 0;

@@ -450,13 +450,13 @@ std::vector<ParameterSeries> sweep_series(const schema::ResultsDocument& doc,
   for (const auto& set : std::move(sets).sorted()) {
     for (const auto& q : set.points.front().result->quantities) {
       ParameterSeries& s = out.emplace_back(ParameterSeries{set.spec, q.quantity, {}});
-      for (SeriesPoint p : set.points) {  // no value or error when the case has none
+      for (SeriesPoint p : set.points) {  // no error when the case has none
         const auto& all = p.result->quantities;
         const auto r = std::ranges::find_if(all, [&](const schema::QuantityResult& o) {
           return o.quantity == q.quantity && std::isfinite(o.error_percent);
         });
         if (r != all.end())
-          std::tie(p.value, p.error) = std::pair(r->value, r->error_percent);
+          p.error = r->error_percent;
         s.points.push_back(p);
       }
     }
