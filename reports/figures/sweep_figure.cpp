@@ -2,8 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <map>
-#include <tuple>
 
 #include <fmt/format.h>
 
@@ -37,31 +35,32 @@ int add_curves(PlotPanel& panel, const ParameterSeries& s) {
     line.xy.emplace_back(p.parameter, std::abs(*p.error));
     (p.converged() ? done : failed).xy.emplace_back(p.parameter, std::abs(*p.error));
   }
-  for (auto* c : {&line, &done, &failed})
-    panel.series.push_back(std::move(*c));
+  panel.series.insert(panel.series.end(), {line, done, failed});
   return left_out;
 }
 
 }  // namespace
 
-std::vector<SweepPanel> sweep_panels(const std::vector<ParameterSeries>& series) {
-  using Key = std::tuple<schema::ProblemId, schema::Quantity, schema::MeshLevel, schema::Element>;
-  std::map<Key, std::size_t> slot;
-  std::vector<SweepPanel> panels;
+std::vector<SeriesRefs> sweep_panels(const std::vector<ParameterSeries>& series) {
+  std::vector<SeriesRefs> panels;
   for (const auto& s : series) {
-    if (s.quantity == schema::Quantity::contact_half_width || !on_finest_mesh(s, series))
-      continue;  // the half-width is graded apart: it moves by whole nodes
-    const Key key{s.spec.problem, s.quantity, s.spec.mesh, s.spec.element};
-    const auto [it, fresh] = slot.try_emplace(key, panels.size());
-    if (fresh)
-      panels.push_back({s.spec.problem, s.quantity, s.spec.mesh, s.spec.element, {}});
-    panels[it->second].series.push_back(&s);
+    if (!shown_in_answers(s, series))
+      continue;
+    const auto same_panel = [&](const SeriesRefs& panel) {
+      const ParameterSeries& o = *panel.front();  // of the same mesh: the finest swept
+      return o.spec.problem == s.spec.problem && o.quantity == s.quantity &&
+             o.spec.element == s.spec.element;
+    };
+    if (const auto it = std::ranges::find_if(panels, same_panel); it != panels.end())
+      it->push_back(&s);
+    else
+      panels.push_back({&s});
   }
   return panels;
 }
 
 Plot sweep_plot(const schema::ResultsDocument& doc, const std::string& key,
-                const std::vector<SweepPanel>& panels, Figure& figure) {
+                const std::vector<SeriesRefs>& panels, Figure& figure) {
   Plot plot{.title = fmt::format("|error| against {} (open circles: not converged)", key),
             .panels = {},
             .columns = 3,
@@ -69,19 +68,20 @@ Plot sweep_plot(const schema::ResultsDocument& doc, const std::string& key,
             .panel_height = 400};
   int left_out = 0;
   bool no_default = false;
-  for (const auto& p : panels) {
-    PlotPanel panel{
-        fmt::format("{} {}, mesh {}, {}", schema::label(p.problem), schema::label(p.quantity),
-                    schema::to_string(p.mesh), schema::to_string(p.element)),
-        {key},
-        {"|error| (%)", Scale::log}};
-    for (const ParameterSeries* s : p.series)
+  for (const SeriesRefs& series : panels) {
+    const schema::CaseSpec& spec = series.front()->spec;
+    PlotPanel panel{fmt::format("{} {}, mesh {}, {}", schema::label(spec.problem),
+                                schema::label(series.front()->quantity),
+                                schema::to_string(spec.mesh), schema::to_string(spec.element)),
+                    {key},
+                    {"|error| (%)", Scale::log}};
+    for (const ParameterSeries* s : series)
       left_out += add_curves(panel, *s);
-    const auto values = parameter_values(p.series);
+    const auto values = parameter_values(series);
     panel.x.scale = values.front() > 0 && values.back() / values.front() >= kLogSpan
                         ? Scale::log
                         : Scale::linear;
-    const auto defaults = doc.parameter_defaults.find(p.problem);
+    const auto defaults = doc.parameter_defaults.find(spec.problem);
     if (defaults != doc.parameter_defaults.end() && defaults->second.contains(key))
       panel.marks.push_back({defaults->second.at(key), "default"});
     else

@@ -3,9 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
-#include <optional>
 #include <tuple>
-#include <vector>
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -21,38 +19,10 @@ namespace {
 constexpr const char* kExtentKey = "extent";
 constexpr const char* kGapKey = "half_space_gap";
 
-bool ours_with_patch_recovery(const schema::CaseSpec& s) {
-  return s.solver == schema::SolverKind::builtin && s.target == schema::TargetKind::Discretized &&
-         s.recovery == schema::Recovery::spr;
-}
-
-/// A case with `extent` and `half_space_gap=1` as its only overrides.
-bool in_gap_study(const schema::CaseSpec& s) {
-  return s.overrides.size() == 2 && s.overrides.contains(kExtentKey) &&
-         s.overrides.contains(kGapKey) && s.overrides.at(kGapKey) == 1.0 &&
-         ours_with_patch_recovery(s);
-}
-
-/// A case with `extent` as its only override.
-bool in_plain_extent_study(const schema::CaseSpec& s) {
-  return s.overrides.size() == 1 && s.overrides.contains(kExtentKey) && ours_with_patch_recovery(s);
-}
-
 /// The point of a row at its extent: the F value and its error.
 SeriesPoint row_point(double extent, const schema::RowVerdict& row) {
   const std::size_t f = mesh_index(kFinestMesh);
   return {.parameter = extent, .value = row.values[f], .error = row.errors[f], .row = &row};
-}
-
-/// `point` into `s`, in place of any point at the same extent.
-void put(ParameterSeries& s, const SeriesPoint& point) {
-  const auto it = std::find_if(s.points.begin(), s.points.end(), [&](const SeriesPoint& p) {
-    return p.parameter == point.parameter;
-  });
-  if (it == s.points.end())
-    s.points.push_back(point);
-  else
-    *it = point;
 }
 
 /// Per option set and stress quantity, the F values over the extent (the study's extent 1 is
@@ -61,10 +31,10 @@ void put(ParameterSeries& s, const SeriesPoint& point) {
 std::vector<ParameterSeries> collect_series(const ResultsIndex& index) {
   SeriesGroups groups;
   for (const schema::RowVerdict* r : index.variant_rows()) {
-    const bool plain = in_plain_extent_study(r->spec);
     // the contact half-width moves in half-element steps: the peak stresses decide the extent
-    if ((!plain && !in_gap_study(r->spec)) || r->quantity == schema::Quantity::contact_half_width)
+    if (!in_extent_study(r->spec) || r->quantity == schema::Quantity::contact_half_width)
       continue;
+    const bool plain = r->spec.overrides.size() == 1;  // no half-space gap
     ParameterSeries first{r->spec, r->quantity, {}};
     first.spec.overrides.erase(kExtentKey);
     const std::string id =
@@ -74,7 +44,12 @@ std::vector<ParameterSeries> collect_series(const ResultsIndex& index) {
                                                {r->spec.algorithm, r->spec.contact});
     if (s.points.empty() && plain && base)
       s.points.push_back(row_point(1.0, *base));
-    put(s, row_point(r->spec.overrides.at(kExtentKey), *r));
+    const SeriesPoint point = row_point(r->spec.overrides.at(kExtentKey), *r);
+    const auto same = std::ranges::find(s.points, point.parameter, &SeriesPoint::parameter);
+    if (same == s.points.end())
+      s.points.push_back(point);
+    else
+      *same = point;  // in place of the baseline row at extent 1
   }
   return std::move(groups).sorted();
 }
@@ -84,26 +59,21 @@ const ParameterSeries* block_normal_of(const std::vector<ParameterSeries>& all,
                                        const ParameterSeries& s) {
   schema::CaseSpec spec = s.spec;
   spec.overrides[kGapKey] = 1.0;
-  const auto it = std::find_if(all.begin(), all.end(), [&](const ParameterSeries& o) {
+  const auto it = std::ranges::find_if(all, [&](const ParameterSeries& o) {
     return o.quantity == s.quantity && schema::case_key(o.spec) == schema::case_key(spec);
   });
   return it == all.end() ? nullptr : &*it;
 }
 
 std::optional<double> richardson(const schema::RowVerdict& r) {
-  if (r.estimate && r.estimate->asymptotic)
-    return r.estimate->richardson;
-  return std::nullopt;
+  return r.estimate && r.estimate->asymptotic ? std::optional(r.estimate->richardson)
+                                              : std::nullopt;
 }
 
 std::optional<double> percent_of(std::optional<double> value, std::optional<double> exact) {
   if (!value || !exact || *exact == 0.0)
     return std::nullopt;
   return 100.0 * (*value / *exact - 1.0);
-}
-
-std::string percent_cell(std::optional<double> p) {
-  return p ? format_error_resolved(*p) : std::string(kMissing);
 }
 
 /// Per extent k, the largest relative change (percent) of a fine-mesh value from k to the next
@@ -121,18 +91,10 @@ std::map<double, double> steps_of(const SeriesRefs& series) {
   return steps;
 }
 
-/// The largest step from extent `k` on, if any.
-std::optional<double> largest_step_from(const std::map<double, double>& steps, double k) {
-  std::optional<double> worst;
-  for (auto it = steps.lower_bound(k); it != steps.end(); ++it)
-    worst = std::max(worst.value_or(0.0), it->second);
-  return worst;
-}
-
 std::string mesh_errors(const schema::RowVerdict& row, std::optional<double> exact) {
   std::vector<std::string> cells;
   for (std::size_t m = 0; m < 3; ++m)
-    cells.push_back(percent_cell(percent_of(row.values[m], exact)));
+    cells.push_back(format_error_resolved(percent_of(row.values[m], exact)));
   return fmt::format("{}", fmt::join(cells, ", "));
 }
 
@@ -150,7 +112,8 @@ std::string series_table(const ResultsIndex& index, const SeriesRefs& series) {
       const auto exact = index.exact_of(row);
       const auto lim = richardson(row);
       const auto with_error = [&](std::optional<double> v) {
-        return v ? fmt::format("{} ({})", format_value(*v), percent_cell(percent_of(v, exact)))
+        return v ? fmt::format("{} ({})", format_value(*v),
+                               format_error_resolved(percent_of(v, exact)))
                  : std::string(kMissing);
       };
       t.add_row({std::string(schema::label(s->quantity)),
@@ -158,8 +121,8 @@ std::string series_table(const ResultsIndex& index, const SeriesRefs& series) {
                  format_parameter(p.parameter), with_error(row.values[0]),
                  with_error(row.values[1]), with_error(row.values[2]),
                  lim ? with_error(lim) : (row.estimate ? row.estimate->note : kMissing),
-                 percent_cell(lim && p.value ? percent_of(p.value, lim) : std::nullopt),
-                 percent_cell(previous && p.value ? percent_of(p.value, previous) : std::nullopt)});
+                 format_error_resolved(percent_of(p.value, lim)),
+                 format_error_resolved(percent_of(p.value, previous))});
       previous = p.value;
     }
   }
@@ -190,10 +153,10 @@ std::vector<ErrorSplit> error_splits(const ResultsIndex& index, const SeriesRefs
 /// (every option is run at the widest all-options extent, a few only further out).
 double widest_extent_of_most_options(const SeriesRefs& series, double from) {
   double best = from;
-  std::size_t most = 0;
+  std::ptrdiff_t most = 0;
   for (double k : parameter_values(series)) {
-    const auto n = static_cast<std::size_t>(std::count_if(
-        series.begin(), series.end(), [k](const ParameterSeries* s) { return s->at(k); }));
+    const auto n =
+        std::ranges::count_if(series, [k](const ParameterSeries* s) { return s->at(k); });
     if (k >= from && n >= most) {
       most = n;
       best = k;
@@ -227,7 +190,9 @@ ExtentFacts facts_of(const ResultsIndex& index, schema::ProblemId problem,
   const auto ks = parameter_values(series);
   const auto steps = steps_of(series);
   for (std::size_t i = 0; i + 1 < ks.size() && !f.half_space; ++i) {
-    const auto change = largest_step_from(steps, ks[i]);
+    std::optional<double> change;  // the largest step from ks[i] on
+    for (auto it = steps.lower_bound(ks[i]); it != steps.end(); ++it)
+      change = std::max(change.value_or(0.0), it->second);
     if (change && *change < kHalfSpaceChangePercent)
       std::tie(f.half_space, f.change_after_half_space) = std::make_pair(ks[i], *change);
   }
@@ -241,9 +206,9 @@ ExtentFacts facts_of(const ResultsIndex& index, schema::ProblemId problem,
   return f;
 }
 
-/// One template row per series with a point at `first_at` and a `second` point: the quantity,
-/// element and option, and of both points the F errors (`all_meshes`: C, M, F) against the exact
-/// value of the first, and their grades.
+/// One template row per series with a point at `first_at` and a `second` point (false for none):
+/// the quantity, element and option, and of both points the F errors (`all_meshes`: C, M, F)
+/// against the exact value of the first, and their grades.
 template <typename Second>
 TemplateData pair_rows(const ResultsIndex& index, const SeriesRefs& series, double first_at,
                        Second&& second, bool all_meshes) {
@@ -254,7 +219,8 @@ TemplateData pair_rows(const ResultsIndex& index, const SeriesRefs& series, doub
       continue;
     const auto exact = index.exact_of(*a->row);
     const auto errors = [&](const SeriesPoint* p) {
-      return all_meshes ? mesh_errors(*p->row, exact) : percent_cell(percent_of(p->value, exact));
+      return all_meshes ? mesh_errors(*p->row, exact)
+                        : format_error_resolved(percent_of(p->value, exact));
     };
     TemplateData d;
     d.set("quantity", std::string(schema::label(s->quantity)));
@@ -266,7 +232,7 @@ TemplateData pair_rows(const ResultsIndex& index, const SeriesRefs& series, doub
     d.set("second_grade", format_grade_cell(index, b->row));
     list.push_back(d);
   }
-  return list;
+  return list.is_empty_list() ? TemplateData(false) : TemplateData("rows", list);
 }
 
 TemplateData problem_data(const ResultsIndex& index, const ExtentFacts& f,
@@ -289,42 +255,29 @@ TemplateData problem_data(const ResultsIndex& index, const ExtentFacts& f,
           t.set("widest", format_parameter(s.widest));
           return t;
         }));
-  const auto num = [](const std::optional<double>& v) {
-    return v ? format_parameter(*v) : kMissing;
+  const auto num = [](std::optional<double> v, const char* format = "{:g}") {
+    return v ? TemplateData(fmt::format(fmt::runtime(format), *v)) : TemplateData(false);
   };
-  const auto pct = [](const std::optional<double>& v) {
-    return fmt::format("{:.3f}", v.value_or(0.0));
-  };
-  d.set("has_half_space", f.half_space.has_value());
   d.set("half_space", num(f.half_space));
-  d.set("change_after", pct(f.change_after_half_space));
+  d.set("change_after", num(f.change_after_half_space, "{:.3f}"));
   d.set("threshold", fmt::format("{:g}", kHalfSpaceChangePercent));
-  d.set("no_half_space", f.last_change.has_value());
   d.set("second_widest", num(f.second_widest));
   d.set("widest", num(f.widest));
-  d.set("last_change", pct(f.last_change));
+  d.set("last_change", num(f.last_change, "{:.3f}"));
   d.set("grades_extent", num(f.grades_extent));
-  const auto set_rows = [&](const char* has, const char* key, const TemplateData& rows) {
-    d.set(has, !rows.is_empty_list());
-    d.set(key, rows);
-  };
   if (f.grades_extent) {
     const double k = *f.grades_extent;
-    set_rows("has_grades", "grades",
-             pair_rows(
-                 index, series, 1.0, [k](const auto& s) { return s.at(k); }, false));
+    d.set("grades", pair_rows(
+                        index, series, 1.0, [k](const auto& s) { return s.at(k); }, false));
   }
   d.set("gap_extent", num(f.gap_extent));
   if (f.gap_extent) {
     const double k = *f.gap_extent;
-    set_rows("has_gap", "gap_rows",
-             pair_rows(
-                 index, series, k,
-                 [&](const ParameterSeries& s) {
-                   const ParameterSeries* twin = block_normal_of(all, s);
-                   return twin ? twin->at(k) : nullptr;
-                 },
-                 true));
+    const auto block_normal = [&](const ParameterSeries& s) {
+      const ParameterSeries* twin = block_normal_of(all, s);
+      return twin ? twin->at(k) : nullptr;
+    };
+    d.set("gap", pair_rows(index, series, k, block_normal, true));
   }
   return d;
 }
@@ -346,7 +299,11 @@ std::vector<std::pair<schema::ProblemId, SeriesRefs>> by_problem(
 }  // namespace
 
 bool in_extent_study(const schema::CaseSpec& s) {
-  return in_plain_extent_study(s) || in_gap_study(s);
+  const auto gap = s.overrides.find(kGapKey);
+  const std::size_t n_overrides = gap == s.overrides.end() ? 1 : gap->second == 1.0 ? 2 : 0;
+  return s.overrides.contains(kExtentKey) && s.overrides.size() == n_overrides &&
+         s.solver == schema::SolverKind::builtin && s.target == schema::TargetKind::Discretized &&
+         s.recovery == schema::Recovery::spr;
 }
 
 std::vector<ExtentFacts> extent_facts(const ResultsIndex& index) {
@@ -359,8 +316,7 @@ std::vector<ExtentFacts> extent_facts(const ResultsIndex& index) {
 
 std::string extent_section(const ResultsIndex& index) {
   const std::vector<ParameterSeries> all = collect_series(index);
-  if (std::none_of(all.begin(), all.end(),
-                   [](const ParameterSeries& s) { return s.spec.overrides.empty(); }))
+  if (std::ranges::none_of(all, [](const ParameterSeries& s) { return s.spec.overrides.empty(); }))
     return {};
   TemplateData list{TemplateData::type::list};
   for (const auto& [problem, series] : by_problem(index, all))

@@ -1,7 +1,6 @@
 #include "reports/findings/parameter_series.hpp"
 
 #include <algorithm>
-#include <cmath>
 #include <set>
 
 #include <fmt/format.h>
@@ -10,9 +9,7 @@
 namespace cs::reports {
 
 const SeriesPoint* ParameterSeries::at(double parameter) const {
-  const auto it = std::find_if(points.begin(), points.end(), [parameter](const SeriesPoint& p) {
-    return p.parameter == parameter;
-  });
+  const auto it = std::ranges::find(points, parameter, &SeriesPoint::parameter);
   return it == points.end() ? nullptr : &*it;
 }
 
@@ -30,9 +27,14 @@ std::string ParameterSeries::option_label() const {
   return out;
 }
 
+std::vector<std::string> ParameterSeries::label_cells() const {
+  return {std::string(schema::to_string(spec.problem)), std::string(schema::to_string(quantity)),
+          std::string(schema::to_string(spec.mesh)), std::string(schema::to_string(spec.element)),
+          option_label()};
+}
+
 std::string ParameterSeries::label() const {
-  return fmt::format("{} {} {} {} {}", schema::to_string(spec.problem), schema::to_string(quantity),
-                     schema::to_string(spec.mesh), schema::to_string(spec.element), option_label());
+  return fmt::format("{}", fmt::join(label_cells(), " "));
 }
 
 std::optional<std::pair<double, double>> ParameterSeries::error_range() const {
@@ -54,28 +56,9 @@ ParameterSeries& SeriesGroups::of(const std::string& id, const ParameterSeries& 
 }
 
 std::vector<ParameterSeries> SeriesGroups::sorted() && {
-  for (auto& s : series_) {
-    std::stable_sort(
-        s.points.begin(), s.points.end(),
-        [](const SeriesPoint& a, const SeriesPoint& b) { return a.parameter < b.parameter; });
-  }
+  for (auto& s : series_)
+    std::ranges::stable_sort(s.points, {}, &SeriesPoint::parameter);
   return std::move(series_);
-}
-
-SeriesPoint case_point(double parameter, const schema::CaseResult& result,
-                       schema::Quantity quantity) {
-  SeriesPoint p{.parameter = parameter,
-                .status = result.status,
-                .iterations = result.iterations,
-                .result = &result};
-  for (const auto& q : result.quantities) {
-    if (q.quantity == quantity && std::isfinite(q.error_percent)) {
-      p.value = q.value;
-      p.error = q.error_percent;
-      break;
-    }
-  }
-  return p;
 }
 
 std::vector<double> parameter_values(const SeriesRefs& series) {
@@ -87,19 +70,12 @@ std::vector<double> parameter_values(const SeriesRefs& series) {
   return {values.begin(), values.end()};
 }
 
-std::vector<double> parameter_values(const std::vector<ParameterSeries>& series) {
-  return parameter_values(select_series(series, [](const ParameterSeries&) { return true; }));
-}
-
 std::string format_parameter(double value) {
   return fmt::format("{:g}", value);
 }
 
 std::string parameter_list(const std::vector<double>& values) {
-  std::vector<std::string> names;
-  for (double v : values)
-    names.push_back(format_parameter(v));
-  return values.empty() ? "none" : fmt::format("{}", fmt::join(names, ", "));
+  return values.empty() ? "none" : fmt::format("{:g}", fmt::join(values, ", "));
 }
 
 std::string parameter_window(const std::vector<double>& chosen, const std::vector<double>& all) {

@@ -1,10 +1,7 @@
 #pragma once
-// One model of a quantity over a varied parameter, shared by the sections that vary one: a swept
-// value (`run --sweep KEY=...`: sweep_section.hpp, figures/sweep_figure.hpp), the block's extent
-// (`--set extent=K`: extent_section.hpp) and the mesh level (C, M, F and VF:
-// refinement_section.hpp). A series is one option set's quantity and its points (parameter,
-// value, signed error, status) by ascending parameter; a set of series is grouped in the order
-// of its first point and tabulated with one column per parameter value.
+// One quantity of one option set over a varied parameter, shared by the sections that vary one:
+// a swept value (`run --sweep KEY=...`: sweep_section.hpp) and the block's extent (`--set
+// extent=K`: extent_section.hpp).
 
 #include <map>
 #include <optional>
@@ -20,7 +17,7 @@ namespace cs::reports {
 /// One point of a series: the parameter's value and what was measured there.
 struct SeriesPoint {
   double parameter = 0.0;
-  std::optional<double> value{};  ///< the quantity's value (a row's: on mesh F)
+  std::optional<double> value{};  ///< the quantity's value on mesh F, in a series of rows
   std::optional<double> error{};  ///< its signed error (%), when finite
   schema::CaseStatus status = schema::CaseStatus::converged;
   int iterations = 0;
@@ -40,7 +37,9 @@ struct ParameterSeries {
   const SeriesPoint* at(double parameter) const;
   /// "AL ss" plus any other variant ("AL ss, rigid, E_ratio=1e+09"), for legends and tables.
   std::string option_label() const;
-  /// "H_p sigma_c F Q4 AL ss": problem, quantity, mesh, element and option_label().
+  /// Problem, quantity, mesh, element and option_label(): the lead cells of a table row.
+  std::vector<std::string> label_cells() const;
+  /// label_cells() joined by spaces: "H_p sigma_c F Q4 AL ss".
   std::string label() const;
   /// The smallest and the largest error of a converged point, if any.
   std::optional<std::pair<double, double>> error_range() const;
@@ -63,9 +62,9 @@ SeriesRefs select_series(const std::vector<ParameterSeries>& all, Keep&& keep) {
 /// Series grouped by an id the caller chooses, in the order of their first point.
 class SeriesGroups {
  public:
-  /// The series of `id`; a new one, copied from `first`, when there is none yet.
+  /// The series of `id`; a copy of `first` when there is none yet.
   ParameterSeries& of(const std::string& id, const ParameterSeries& first);
-  /// The series, each with its points by ascending parameter (stable among equals).
+  /// The series, their points by ascending parameter (stable among equals).
   std::vector<ParameterSeries> sorted() &&;
 
  private:
@@ -73,13 +72,8 @@ class SeriesGroups {
   std::vector<ParameterSeries> series_;
 };
 
-/// The point of `quantity` in `result` at `parameter` (no value or error when the case has none).
-SeriesPoint case_point(double parameter, const schema::CaseResult& result,
-                       schema::Quantity quantity);
-
 /// The parameter values of a set of series, ascending and distinct.
 std::vector<double> parameter_values(const SeriesRefs& series);
-std::vector<double> parameter_values(const std::vector<ParameterSeries>& series);
 
 /// A parameter value as the report prints it ({:g}: "0.001", "1e+04").
 std::string format_parameter(double value);
@@ -88,8 +82,7 @@ std::string parameter_list(const std::vector<double>& values);
 /// "0.01 to 100" when `chosen` is a contiguous run of two or more of `all`, else the list.
 std::string parameter_window(const std::vector<double>& chosen, const std::vector<double>& all);
 
-/// A table with the `lead` columns (aligned as `align`), then one right-aligned column per
-/// parameter value, named by format_parameter.
+/// A table with the `lead` columns, then one right-aligned column per parameter value.
 MarkdownTable parameter_table(std::vector<std::string> lead, std::vector<Align> align,
                               const std::vector<double>& values);
 

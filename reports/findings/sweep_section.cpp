@@ -20,25 +20,32 @@ using schema::Algorithm;
 using schema::Grade;
 using schema::Quantity;
 
+bool on_finest_mesh(const ParameterSeries& s, const std::vector<ParameterSeries>& all) {
+  return std::ranges::none_of(all, [&](const ParameterSeries& o) {
+    return o.spec.problem == s.spec.problem && o.spec.element == s.spec.element &&
+           o.spec.mesh > s.spec.mesh;
+  });
+}
+
 bool stress(const ParameterSeries& s) {
   return s.quantity != Quantity::contact_half_width;  // graded apart: it moves by whole nodes
 }
 
-bool graded_at_most(const SeriesPoint* p, Grade worst) {
-  return p && p->error && p->converged() &&
-         !schema::is_worse(grading::grade_of_error(*p->error), worst);
+bool penalty_based(const ParameterSeries& s) {
+  return schema::traits(s.spec.algorithm).penalty_based;
 }
 
-/// The swept values at which every series is graded `worst` or better (converged).
+/// The swept values at which every series (not none) is graded `worst` or better (converged).
 std::vector<double> values_where_all(const SeriesRefs& series, const std::vector<double>& all,
                                      Grade worst) {
   std::vector<double> out;
-  for (double v : all) {
-    if (!series.empty() && std::all_of(series.begin(), series.end(), [&](const auto* s) {
-          return graded_at_most(s->at(v), worst);
-        }))
-      out.push_back(v);
-  }
+  std::ranges::copy_if(all, std::back_inserter(out), [&](double v) {
+    return std::ranges::all_of(series, [&](const ParameterSeries* s) {
+      const SeriesPoint* p = s->at(v);
+      return p && p->error && p->converged() &&
+             !schema::is_worse(grading::grade_of_error(*p->error), worst);
+    });
+  });
   return out;
 }
 
@@ -63,10 +70,6 @@ int most_iterations(const std::vector<ParameterSeries>& series, double v, Algori
   return most;
 }
 
-bool penalty_based(const ParameterSeries& s) {
-  return schema::traits(s.spec.algorithm).penalty_based;
-}
-
 /// One key's table: per series on the finest mesh swept, per value the signed error, grade and
 /// iterations, or the status of a case without an error.
 std::string error_table(const std::vector<ParameterSeries>& series,
@@ -77,10 +80,7 @@ std::string error_table(const std::vector<ParameterSeries>& series,
   for (const auto& s : series) {
     if (!on_finest_mesh(s, series))
       continue;
-    std::vector<std::string> row{std::string(schema::to_string(s.spec.problem)),
-                                 std::string(schema::to_string(s.quantity)),
-                                 std::string(schema::to_string(s.spec.mesh)),
-                                 std::string(schema::to_string(s.spec.element)), s.option_label()};
+    std::vector<std::string> row = s.label_cells();
     for (double v : values) {
       const SeriesPoint* p = s.at(v);
       row.push_back(!p || !p->error
@@ -97,63 +97,57 @@ std::string error_table(const std::vector<ParameterSeries>& series,
 /// The largest spread (max - min, percentage points) of a series' converged errors.
 TemplateData spread(const SeriesRefs& series, const std::string& key,
                     const std::vector<double>& values) {
-  double worst = -1;
-  const ParameterSeries* at = nullptr;
-  for (const ParameterSeries* s : series) {
-    if (const auto range = s->error_range(); range && range->second - range->first > worst) {
-      worst = range->second - range->first;
-      at = s;
-    }
-  }
+  const auto width = [](const ParameterSeries* s) {
+    const auto range = s->error_range();
+    return range ? range->second - range->first : -1.0;
+  };
+  const auto widest = std::ranges::max_element(series, {}, width);  // the first of equals
+  const double worst = widest == series.end() ? -1.0 : width(*widest);
   TemplateData d;
   d.set("key", key);
-  d.set("has_spread", at != nullptr);
   d.set("values", parameter_window(values, values));
   d.set("spread", fmt::format("{:.3g}", worst));
-  d.set("curve", at ? at->label() : std::string());
+  d.set("curve", worst >= 0 ? TemplateData((*widest)->label()) : TemplateData(false));
   d.set("nothing", worst <= kSamePoints);
-  d.set("same_points", fmt::format("{:g}", kSamePoints));
   return d;
 }
 
 /// AL against PM: the largest |e_AL - e_PM| per value over the series pairs that differ only in
-/// the algorithm, and whether their iteration counts differ.
-TemplateData al_pm(const std::vector<ParameterSeries>& series, const std::vector<double>& values) {
+/// the algorithm, and the values where their iteration counts differ.
+TemplateData al_pm(const std::vector<ParameterSeries>& series) {
   std::map<double, double> gap;
-  std::map<double, bool> iterations_differ;
-  for (const auto& al : series) {
-    schema::CaseSpec pm_spec = al.spec;
+  std::set<double> iterations_differ;
+  for (const ParameterSeries* al : select_series(
+           series, [](const ParameterSeries& s) { return s.spec.algorithm == Algorithm::AL; })) {
+    schema::CaseSpec pm_spec = al->spec;
     pm_spec.algorithm = Algorithm::PM;
-    const auto pm = std::find_if(series.begin(), series.end(), [&](const ParameterSeries& s) {
-      return s.quantity == al.quantity && schema::case_id(s.spec) == schema::case_id(pm_spec);
+    const auto pm = std::ranges::find_if(series, [&](const ParameterSeries& s) {
+      return s.quantity == al->quantity && schema::case_id(s.spec) == schema::case_id(pm_spec);
     });
-    if (al.spec.algorithm != Algorithm::AL || pm == series.end())
+    if (pm == series.end())
       continue;
-    for (const auto& a : al.points) {
+    for (const auto& a : al->points) {
       const SeriesPoint* p = pm->at(a.parameter);
       if (p && a.error && p->error)
         gap[a.parameter] = std::max(gap[a.parameter], std::abs(*a.error - *p->error));
-      iterations_differ[a.parameter] |= p && a.iterations != p->iterations;
+      if (p && a.iterations != p->iterations)
+        iterations_differ.insert(a.parameter);
     }
   }
-  std::vector<double> apart, same, it_apart;
-  double widest = 0, widest_at = 0;
-  for (const auto& [v, g] : gap) {
+  if (gap.empty())
+    return TemplateData(false);
+  std::vector<double> apart, same;
+  for (const auto& [v, g] : gap)
     (g > kSamePoints ? apart : same).push_back(v);
-    if (g > widest)
-      std::tie(widest, widest_at) = std::make_pair(g, v);
-  }
-  std::copy_if(values.begin(), values.end(), std::back_inserter(it_apart),
-               [&](double v) { return iterations_differ[v]; });
+  const auto widest = std::ranges::max_element(gap, {}, [](const auto& vg) { return vg.second; });
   TemplateData d;
-  d.set("same_points", fmt::format("{:g}", kSamePoints));
   d.set("separate", !apart.empty());
   d.set("apart", parameter_list(apart));
-  d.set("widest", fmt::format("{:.3g}", widest));
-  d.set("widest_at", format_parameter(widest_at));
-  d.set("it_apart", parameter_list(it_apart));
+  d.set("widest", fmt::format("{:.3g}", widest->second));
+  d.set("widest_at", format_parameter(widest->first));
+  d.set("it_apart", parameter_list({iterations_differ.begin(), iterations_differ.end()}));
   d.set("same", parameter_list(same));
-  return gap.empty() ? TemplateData(false) : d;
+  return d;
 }
 
 /// Where the errors of `s` cross `target` between two converged points, interpolated in log of
@@ -175,36 +169,32 @@ std::vector<std::string> crossings(const ParameterSeries& s, double target) {
   return out;
 }
 
-/// Can any FKN reproduce the study's AL error on S(1/3) (sigma_c, Q4, ss, mesh F)?
-TemplateData study_al(const std::vector<ParameterSeries>& series,
-                      const schema::StudyReference& study) {
-  const auto match =
-      study.find_value(schema::ProblemId::S_1_3, Quantity::sigma_c, schema::Element::Q4,
-                       Algorithm::AL, schema::ContactKind::ss, schema::MeshLevel::F);
+/// Can any FKN reproduce the study's AL error on S(1/3) (sigma_c, Q4, ss, mesh F)? Into `d`.
+void set_study_al(TemplateData& d, const std::vector<ParameterSeries>& series,
+                  const schema::StudyReference& study) {
+  using schema::ProblemId, schema::Element, schema::ContactKind, schema::MeshLevel;
+  const auto match = study.find_value(ProblemId::S_1_3, Quantity::sigma_c, Element::Q4,
+                                      Algorithm::AL, ContactKind::ss, MeshLevel::F);
   if (match.value == nullptr || !match.value->exact)
-    return TemplateData(false);
+    return;
   const double target = grading::error_percent(match.value->value, *match.value->exact);
-  TemplateData list{TemplateData::type::list};
-  for (const auto& s : series) {
-    const auto& b = s.spec;
-    const auto range = s.error_range();
-    if (b.problem != schema::ProblemId::S_1_3 || s.quantity != Quantity::sigma_c ||
-        b.algorithm != Algorithm::AL || b.element != schema::Element::Q4 ||
-        b.contact != schema::ContactKind::ss || b.mesh != schema::MeshLevel::F ||
-        !b.overrides.empty() || !range)
-      continue;
-    const auto near = crossings(s, target);
-    TemplateData d;
-    d.set("printed", match.value->printed);
-    d.set("exact", match.value->exact_printed);
-    d.set("target", format_percent(target));
-    d.set("reproduced", !near.empty());
-    d.set("crossings", fmt::format("{}", fmt::join(near, ", ")));
-    d.set("lo", format_percent(range->first));
-    d.set("hi", format_percent(range->second));
-    list.push_back(d);
-  }
-  return list;
+  d.set("printed", match.value->printed);
+  d.set("exact", match.value->exact_printed);
+  d.set("target", format_percent(target));
+  const SeriesRefs ours = select_series(series, [](const ParameterSeries& s) {
+    const schema::CaseSpec& b = s.spec;
+    return b.problem == ProblemId::S_1_3 && s.quantity == Quantity::sigma_c &&
+           b.algorithm == Algorithm::AL && b.element == Element::Q4 &&
+           b.contact == ContactKind::ss && b.mesh == MeshLevel::F && b.overrides.empty() &&
+           s.error_range();
+  });
+  d.set("study_al", template_list(ours, [&](const ParameterSeries* s) {
+          TemplateData r("crossings",
+                         text_or_false(fmt::format("{}", fmt::join(crossings(*s, target), ", "))));
+          r.set("lo", format_percent(s->error_range()->first));
+          r.set("hi", format_percent(s->error_range()->second));
+          return r;
+        }));
 }
 
 /// Whether every swept AL/PM row run on C, M and F converges (the study's c), per value.
@@ -244,15 +234,12 @@ TemplateData fkn_default(const std::vector<ParameterSeries>& series,
   def.set("fkn", format_parameter(lo));
   def.set("al_it", std::to_string(most_iterations(series, lo, Algorithm::AL)));
   const int lmp = most_iterations(series, lo, Algorithm::LMP);
-  def.set("has_lmp", lmp >= 0);
-  def.set("lmp_it", std::to_string(lmp));
-  def.set("has_e", !e.empty());
-  def.set("e_from", e.empty() ? std::string() : format_parameter(e.front()));
-  const auto nc = std::find_if(values.begin(), values.end(), [&](double v) {
+  def.set("lmp_it", text_or_false(lmp >= 0 ? std::to_string(lmp) : ""));
+  def.set("e_from", e.empty() ? TemplateData(false) : TemplateData(format_parameter(e.front())));
+  const auto nc = std::ranges::find_if(values, [&](double v) {
     return v > lo && count_not_converged(series, v, penalty_based) > 0;
   });
-  def.set("has_nc", nc != values.end());
-  def.set("nc_at", nc != values.end() ? format_parameter(*nc) : std::string());
+  def.set("nc_at", nc == values.end() ? TemplateData(false) : TemplateData(format_parameter(*nc)));
   return def;
 }
 
@@ -279,7 +266,7 @@ std::string iterations_table(const std::vector<ParameterSeries>& series,
 TemplateData fkn(const ResultsIndex& index, const std::vector<ParameterSeries>& series,
                  const std::vector<double>& values, const schema::StudyReference& study) {
   const SeriesRefs penalty = select_series(series, [&](const ParameterSeries& s) {
-    return penalty_based(s) && stress(s) && on_finest_mesh(s, series);
+    return penalty_based(s) && shown_in_answers(s, series);
   });
   TemplateData d;
   d.set("any", !penalty.empty());
@@ -291,8 +278,9 @@ TemplateData fkn(const ResultsIndex& index, const std::vector<ParameterSeries>& 
   d.set("e", parameter_window(e, values));
   d.set("eg", parameter_window(eg, values));
   SeriesRefs never;
-  std::copy_if(penalty.begin(), penalty.end(), std::back_inserter(never),
-               [&](const auto* s) { return values_where_all({s}, values, Grade::e).empty(); });
+  std::ranges::copy_if(penalty, std::back_inserter(never), [&](const ParameterSeries* s) {
+    return values_where_all({s}, values, Grade::e).empty();
+  });
   d.set("never_e",
         template_list(never, [](const auto* s) { return TemplateData("row", s->label()); }));
   d.set("convergence", fkn_convergence(index, penalty, values));
@@ -305,12 +293,11 @@ TemplateData fkn(const ResultsIndex& index, const std::vector<ParameterSeries>& 
   d.set("v_first", format_parameter(values.front()));
   d.set("it_last", std::to_string(most_iterations(series, values.back(), Algorithm::AL)));
   d.set("v_last", format_parameter(values.back()));
-  d.set("all_converge", not_converged.empty());
-  d.set("not_converged", fmt::format("{}", fmt::join(not_converged, ", ")));
+  d.set("not_converged", text_or_false(fmt::format("{}", fmt::join(not_converged, ", "))));
   if (!eg.empty())
     d.set("default", fkn_default(series, values, e, eg));
-  d.set("al_pm", al_pm(series, values));
-  d.set("study_al", study_al(series, study));
+  d.set("al_pm", al_pm(series));
+  set_study_al(d, series, study);
   d.set("iterations", iterations_table(series, values));
   return d;
 }
@@ -318,7 +305,7 @@ TemplateData fkn(const ResultsIndex& index, const std::vector<ParameterSeries>& 
 /// What the pinball does to MPC: its error at each value, and where it failed.
 TemplateData pinball(const std::vector<ParameterSeries>& series) {
   const SeriesRefs mpc = select_series(series, [&](const ParameterSeries& s) {
-    return s.spec.algorithm == Algorithm::MPC && stress(s) && on_finest_mesh(s, series);
+    return s.spec.algorithm == Algorithm::MPC && shown_in_answers(s, series);
   });
   return template_list(mpc, [](const ParameterSeries* s) {
     std::vector<double> failed;
@@ -333,27 +320,24 @@ TemplateData pinball(const std::vector<ParameterSeries>& series) {
     TemplateData d("row", s->label());
     d.set("errors", cells.empty() ? std::string("no converged case")
                                   : fmt::format("{}", fmt::join(cells, ", ")));
-    d.set("has_failed", !failed.empty());
-    d.set("failed", parameter_list(failed));
+    d.set("failed", failed.empty() ? TemplateData(false) : TemplateData(parameter_list(failed)));
     return d;
   });
 }
 
 /// From which E ratio on every stress error stays within kSettledPoints of its value at the
 /// largest ratio swept.
-TemplateData e_ratio(const std::vector<ParameterSeries>& series) {
+TemplateData e_ratio(const std::vector<ParameterSeries>& series, double smallest) {
   double latest = 0;
   TemplateData rows{TemplateData::type::list};
   for (const ParameterSeries* s : select_series(series, stress)) {
     const auto& last = s->points.back();
     if (!last.error)
       continue;
-    double settled = last.parameter;
-    for (auto it = s->points.rbegin(); it != s->points.rend(); ++it) {
-      if (!it->error || std::abs(*it->error - *last.error) > kSettledPoints)
-        break;
-      settled = it->parameter;
-    }
+    const auto moved = std::find_if(s->points.rbegin(), s->points.rend(), [&](const auto& p) {
+      return !p.error || std::abs(*p.error - *last.error) > kSettledPoints;
+    });
+    const double settled = moved.base()->parameter;  // the first point of the settled run
     latest = std::max(latest, settled);
     TemplateData d("row", s->label());
     d.set("from", format_parameter(settled));
@@ -364,9 +348,8 @@ TemplateData e_ratio(const std::vector<ParameterSeries>& series) {
   TemplateData d;
   d.set("any", !rows.is_empty_list());
   d.set("rows", rows);
-  d.set("settled_points", fmt::format("{:g}", kSettledPoints));
   d.set("latest", format_parameter(latest));
-  d.set("at_smallest", latest == parameter_values(series).front());
+  d.set("at_smallest", latest == smallest);
   return d;
 }
 
@@ -396,7 +379,7 @@ void set_answers(TemplateData& d, const ResultsIndex& index, const std::string& 
     if (mpc.is_empty_list())
       d.set("spread", spread(all, key, values));
   } else if (key == "E_ratio") {
-    d.set("e_ratio", e_ratio(series));
+    d.set("e_ratio", e_ratio(series, values.front()));
   } else if (key == "ftoln") {
     const auto al = select_series(
         series, [](const ParameterSeries& s) { return s.spec.algorithm == Algorithm::AL; });
@@ -409,28 +392,31 @@ void set_answers(TemplateData& d, const ResultsIndex& index, const std::string& 
 
 /// The key's figure (figure_data), or why there is none.
 TemplateData key_figure(const FigureSet& figures, const std::string& key) {
-  for (const auto& f : figures.figures) {
-    if (f.file == sweep_figure_file(key))
-      return figure_data(f);
-  }
+  const auto f = std::ranges::find(figures.figures, sweep_figure_file(key), &Figure::file);
+  if (f != figures.figures.end())
+    return figure_data(*f);
   return figures.unavailable.empty() ? TemplateData(false)
                                      : TemplateData("unavailable", figures.unavailable);
 }
 
 }  // namespace
 
-std::vector<std::string> swept_keys(const schema::ResultsDocument& doc) {
+std::vector<std::string> run_sweep_keys(const schema::ResultsDocument& doc) {
   std::vector<std::string> keys;
-  const auto add = [&](const std::string& key) {
-    if (std::find(keys.begin(), keys.end(), key) == keys.end())
-      keys.push_back(key);
+  const auto add = [&](const schema::RunInfo& run) {
+    for (const auto& axis : run.sweep) {
+      if (std::ranges::find(keys, axis.key) == keys.end())
+        keys.push_back(axis.key);
+    }
   };
-  for (const auto& axis : doc.run.sweep)
-    add(axis.key);
-  for (const auto& [source, run] : doc.added_runs) {  // files combined by `report --results`
-    for (const auto& axis : run.sweep)
-      add(axis.key);
-  }
+  add(doc.run);
+  for (const auto& [source, run] : doc.added_runs)  // files combined by `report --results`
+    add(run);
+  return keys;
+}
+
+std::vector<std::string> swept_keys(const schema::ResultsDocument& doc) {
+  std::vector<std::string> keys = run_sweep_keys(doc);
   std::map<std::string, std::set<double>> seen;
   for (const auto& c : doc.cases) {
     if (in_extent_study(c.spec))  // the extent study has a section of its own
@@ -439,8 +425,8 @@ std::vector<std::string> swept_keys(const schema::ResultsDocument& doc) {
       seen[name].insert(value);
   }
   for (const auto& [name, values] : seen) {
-    if (values.size() >= 2)
-      add(name);
+    if (values.size() >= 2 && std::ranges::find(keys, name) == keys.end())
+      keys.push_back(name);
   }
   return keys;
 }
@@ -455,24 +441,31 @@ std::vector<ParameterSeries> sweep_series(const schema::ResultsDocument& doc,
     ParameterSeries first{c.spec, {}, {}};
     first.spec.overrides.erase(key);
     sets.of(schema::case_id(first.spec), first)
-        .points.push_back({.parameter = it->second, .result = &c});
+        .points.push_back({.parameter = it->second,
+                           .status = c.status,
+                           .iterations = c.iterations,
+                           .result = &c});
   }
   std::vector<ParameterSeries> out;
   for (const auto& set : std::move(sets).sorted()) {
     for (const auto& q : set.points.front().result->quantities) {
       ParameterSeries& s = out.emplace_back(ParameterSeries{set.spec, q.quantity, {}});
-      for (const auto& p : set.points)
-        s.points.push_back(case_point(p.parameter, *p.result, q.quantity));
+      for (SeriesPoint p : set.points) {  // no error when the case has none
+        const auto& all = p.result->quantities;
+        const auto r = std::ranges::find_if(all, [&](const schema::QuantityResult& o) {
+          return o.quantity == q.quantity && std::isfinite(o.error_percent);
+        });
+        if (r != all.end())
+          p.error = r->error_percent;
+        s.points.push_back(p);
+      }
     }
   }
   return out;
 }
 
-bool on_finest_mesh(const ParameterSeries& s, const std::vector<ParameterSeries>& all) {
-  return std::none_of(all.begin(), all.end(), [&](const ParameterSeries& o) {
-    return o.spec.problem == s.spec.problem && o.spec.element == s.spec.element &&
-           o.spec.mesh > s.spec.mesh;
-  });
+bool shown_in_answers(const ParameterSeries& s, const std::vector<ParameterSeries>& all) {
+  return stress(s) && on_finest_mesh(s, all);
 }
 
 std::string sweep_section(const ResultsIndex& index, const schema::StudyReference& study,
@@ -481,7 +474,8 @@ std::string sweep_section(const ResultsIndex& index, const schema::StudyReferenc
   TemplateData keys{TemplateData::type::list};
   for (const auto& key : swept_keys(doc)) {
     const auto series = sweep_series(doc, key);
-    const auto values = parameter_values(series);
+    const auto values =
+        parameter_values(select_series(series, [](const ParameterSeries&) { return true; }));
     if (values.empty())
       continue;
     TemplateData d;
@@ -500,7 +494,10 @@ std::string sweep_section(const ResultsIndex& index, const schema::StudyReferenc
   }
   if (keys.is_empty_list())
     return {};
-  return tidy_markdown(render_template(templates::sweep_section, TemplateData("keys", keys)));
+  TemplateData d("keys", keys);
+  d.set("same_points", fmt::format("{:g}", kSamePoints));
+  d.set("settled_points", fmt::format("{:g}", kSettledPoints));
+  return tidy_markdown(render_template(templates::sweep_section, d));
 }
 
 }  // namespace cs::reports

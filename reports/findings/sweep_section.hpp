@@ -1,18 +1,10 @@
 #pragma once
 // The report's parameter-sweep section (`run --sweep KEY=V1,V2,...`), shown only when the
 // results document holds swept cases: per swept key a table of the error (%), grade and
-// iterations of each option set at each value, its figure (figures/sweep_figure.hpp), and plain
-// answers computed from the numbers:
-//  - fkn: the FKN window where AL/PM reach e (and e or g, and c where C, M and F were run), AL
-//    iterations against FKN, whether AL and PM separate, whether any FKN reproduces the study's
-//    AL error on S(1/3), and the range a default FKN can take (smallest FKN at which every
-//    swept AL/PM row is e or g, largest before a case fails to converge);
-//  - ftoln: the largest change FTOLN makes;
-//  - pinball: what it does to MPC (error range, cases not converged);
-//  - E_ratio: from which ratio the error stops changing (within kSettledPoints);
-//  - p_over_E: the spread of the normalized errors (linearity in the load);
-//  - any other key: the spread of the errors.
-// The swept cases are series of the one model (findings/parameter_series.hpp).
+// iterations of each option set at each value, its figure (figures/sweep_figure.hpp), and the
+// answers its kind asks for (fkn: the FKN window of e and g and a default; pinball: MPC's errors;
+// E_ratio: where the error settles; any other key: the spread of the errors), computed from the
+// numbers. Words: templates/sweep_section.mustache.
 
 #include <string>
 #include <vector>
@@ -30,8 +22,11 @@ inline constexpr double kSamePoints = 0.01;
 /// of the error at the largest ratio swept.
 inline constexpr double kSettledPoints = 0.05;
 
-/// The swept keys: those of run.sweep in their order, then any other key with two or more
-/// override values among the cases (the extent study's left out), alphabetically.
+/// The keys the document's runs swept: run.sweep's, then those of the runs combined with it.
+std::vector<std::string> run_sweep_keys(const schema::ResultsDocument& doc);
+
+/// run_sweep_keys, then any other key with two or more override values among the cases (the
+/// extent study's left out), alphabetically.
 std::vector<std::string> swept_keys(const schema::ResultsDocument& doc);
 
 /// The series of one key: the cases that differ only in its value, one series per quantity of
@@ -40,9 +35,9 @@ std::vector<std::string> swept_keys(const schema::ResultsDocument& doc);
 std::vector<ParameterSeries> sweep_series(const schema::ResultsDocument& doc,
                                           const std::string& key);
 
-/// True when no series of the same problem and element has a finer mesh: the mesh the study
-/// grades, and the one the section's tables, figures and windows show.
-bool on_finest_mesh(const ParameterSeries& series, const std::vector<ParameterSeries>& all);
+/// True for a series the answers and figures show: a stress quantity (the contact half-width
+/// moves by whole nodes: graded apart) on the finest mesh of its problem and element swept.
+bool shown_in_answers(const ParameterSeries& series, const std::vector<ParameterSeries>& all);
 
 /// The section ("## Parameter sweeps ..."), or an empty string when nothing was swept.
 /// `figures`: those of render_sweep_figures (linked when drawn).

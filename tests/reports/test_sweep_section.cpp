@@ -105,7 +105,7 @@ TEST(SweepSection, FknAnswersFromTheNumbers) {
   EXPECT_EQ(series[0].points.size(), 4u);
   const auto panels = sweep_panels(series);
   ASSERT_EQ(panels.size(), 1u);
-  EXPECT_EQ(panels[0].series.size(), 3u);
+  EXPECT_EQ(panels[0].size(), 3u);
 }
 
 // Requirement: the S(1/3) question is answered against the study's own printed AL value
