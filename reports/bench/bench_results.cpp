@@ -223,31 +223,32 @@ std::vector<const BenchRow*> BenchResults::of(BenchFamily family) const {
   return out;
 }
 
-BenchOptions options_of(const std::vector<const BenchRow*>& cases) {
-  BenchOptions out;
-  std::ranges::copy_if(kBenchContacts, std::back_inserter(out.contacts), [&](auto c) {
-    return std::ranges::any_of(cases, [c](const BenchRow* b) { return b->contact == c; });
-  });
-  std::ranges::copy_if(schema::values<BenchMethod>(), std::back_inserter(out.methods), [&](auto a) {
-    return std::ranges::any_of(cases, [a](const BenchRow* b) { return b->algorithm == a; });
-  });
-  return out;
-}
-
-const BenchRow* find_case(const std::vector<const BenchRow*>& cases, schema::ContactKind contact,
-                          BenchMethod method) {
+const BenchRow* BenchGrid::at(schema::ContactKind contact, BenchMethod method) const {
   const auto it = std::ranges::find_if(
       cases, [&](const BenchRow* b) { return b->contact == contact && b->algorithm == method; });
   return it == cases.end() ? nullptr : *it;
 }
 
-std::vector<std::vector<const BenchRow*>> by_model(const std::vector<const BenchRow*>& cases) {
-  std::vector<std::vector<const BenchRow*>> out;
-  for (const BenchRow* b : cases) {
-    if (out.empty() || out.back().front()->model != b->model)
-      out.emplace_back();
-    out.back().push_back(b);
+std::optional<double> BenchGrid::reference_ms() const {
+  const auto it =
+      std::ranges::find_if(cases, [](const BenchRow* b) { return b->reference_ms().has_value(); });
+  return it == cases.end() ? std::nullopt : (*it)->reference_ms();
+}
+
+std::vector<BenchGrid> contact_grids(const BenchResults& bench) {
+  std::vector<BenchGrid> out;
+  for (const BenchRow* b : bench.of(BenchFamily::Contact)) {
+    if (out.empty() || out.back().model != b->model)
+      out.emplace_back().model = b->model;
+    BenchGrid& grid = out.back();
+    grid.cases.push_back(b);
+    if (std::ranges::find(grid.contacts, b->contact) == grid.contacts.end())
+      grid.contacts.push_back(b->contact);  // the cases come in kBenchContacts' order
+    if (std::ranges::find(grid.methods, b->algorithm) == grid.methods.end())
+      grid.methods.push_back(b->algorithm);
   }
+  for (BenchGrid& grid : out)
+    std::ranges::sort(grid.methods);
   return out;
 }
 

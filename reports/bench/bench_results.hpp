@@ -7,9 +7,10 @@
 //   ModelCases/<problem>/<mesh>/<element>[/...]
 // (named as in results.json, the algorithm as in bench_method.hpp; Google Benchmark's suffixes
 // such as /iterations:1/manual_time ignored). Benchmarks of other families are counted and left
-// out. A case measured more than once is represented by its `median` aggregate, else its `mean`
-// aggregate, else the repetition of median time. Google Benchmark writes a non-finite counter as
-// a bare NaN or Infinity, which is not JSON: it reads as no value.
+// out. A case measured more than once is represented by the median aggregate Google Benchmark
+// writes after its repetitions: in a file as across files, a later measurement of a case
+// replaces an earlier one. Google Benchmark writes a non-finite counter as a bare NaN or
+// Infinity, which is not JSON: it reads as no value.
 //
 // A file that cannot be used (missing, not JSON, an entry that cannot be read or whose name does
 // not decode, e.g. the index-coded names of older versions, or no entry of the three families)
@@ -97,20 +98,20 @@ struct BenchResults {
   std::vector<const BenchRow*> of(BenchFamily family) const;
 };
 
-/// The options that `cases` measure: their discretizations in kBenchContacts' order and their
-/// methods in the solver's.
-struct BenchOptions {
-  std::vector<schema::ContactKind> contacts;
-  std::vector<BenchMethod> methods;
+/// The Contact benchmarks of one model: a grid of the options measured.
+struct BenchGrid {
+  BenchModel model;
+  std::vector<const BenchRow*> cases;         ///< in the report's order
+  std::vector<schema::ContactKind> contacts;  ///< in kBenchContacts' order
+  std::vector<BenchMethod> methods;           ///< in the solver's order
+  /// The case of this option; nullptr when there is none.
+  const BenchRow* at(schema::ContactKind contact, BenchMethod method) const;
+  /// The model's reference time: that of its first case with one.
+  std::optional<double> reference_ms() const;
 };
-BenchOptions options_of(const std::vector<const BenchRow*>& cases);
 
-/// The case of `cases` with this option; nullptr when there is none.
-const BenchRow* find_case(const std::vector<const BenchRow*>& cases, schema::ContactKind contact,
-                          BenchMethod method);
-
-/// `cases`, in the report's order, in one group per model.
-std::vector<std::vector<const BenchRow*>> by_model(const std::vector<const BenchRow*>& cases);
+/// The Contact benchmarks of `bench`, one grid per model in the report's order.
+std::vector<BenchGrid> contact_grids(const BenchResults& bench);
 
 /// "H<sub>p</sub>, mesh F, Q4".
 std::string model_md(const BenchModel& model);

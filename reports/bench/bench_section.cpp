@@ -1,6 +1,7 @@
 #include "reports/bench/bench_section.hpp"
 
 #include <algorithm>
+#include <regex>
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -42,6 +43,31 @@ TemplateData count_or_false(std::size_t n) {
   return text_or_false(n > 0 ? std::to_string(n) : "");
 }
 
+/// `text` as a Markdown table cell: '|' escaped, line breaks as spaces.
+std::string cell_text(const std::string& text) {
+  return std::regex_replace(std::regex_replace(text, std::regex("[\r\n]"), " "), std::regex("\\|"),
+                            "\\|");
+}
+
+/// A benchmark's facts for the template's tables and lists.
+TemplateData row_data(const BenchRow* b) {
+  TemplateData d("model", model_md(b->model));
+  d.set("contact", name(b->contact));
+  d.set("algorithm", name(b->algorithm));
+  d.set("time", format_ms(b->time_ms));
+  d.set("ratio", fixed(b->ratio(), 2));
+  d.set("failure", cell_text(b->failure()));
+  d.set("error", text_or_false(cell_text(b->error)));
+  d.set("reference", format_ms(b->reference_ms()));
+  d.set("cases", fixed(b->counter("cases"), 0));
+  d.set("converged", fixed(b->counter("converged"), 0));
+  d.set("ratio_per_case", fixed(b->counter("ratio_per_case"), 2));
+  d.set("one_case", format_ms(b->counter_ms("one_case_s")));
+  d.set("ratio_cpu", fixed(b->counter("ratio_cpu"), 2));
+  d.set("blas_threads", fixed(b->counter("blas_threads"), 0));
+  return d;
+}
+
 /// The cases with a ratio below the physical floor of 1, and the lowest of them.
 TemplateData below_floor(const std::vector<const BenchRow*>& contact) {
   std::vector<const BenchRow*> below;
@@ -54,8 +80,7 @@ TemplateData below_floor(const std::vector<const BenchRow*>& contact) {
   TemplateData d("below", std::to_string(below.size()));
   d.set("with_ratio", std::to_string(std::ranges::count_if(
                           contact, [](const BenchRow* b) { return b->ratio().has_value(); })));
-  d.set("lowest", fmt::format("{}: {} {} {}", fixed(lowest->ratio(), 2), model_md(lowest->model),
-                              name(lowest->contact), name(lowest->algorithm)));
+  d.set("lowest", row_data(lowest));
   return d;
 }
 
@@ -98,14 +123,7 @@ TemplateData target_data(const BenchResults& bench, const BenchTarget& target) {
   d.set("cases", std::to_string(check.n_cases()));
   d.set("met", std::to_string(check.met.size()));
   d.set("n_missed", count_or_false(check.missed.size()));
-  d.set("missed",
-        table_of({"Model", "Contact", "Algorithm", "Ratio", "Time (ms)", "Note"}, check.missed,
-                 [](const BenchRow* b) {
-                   return std::vector<std::string>{model_md(b->model),    name(b->contact),
-                                                   name(b->algorithm),    fixed(b->ratio(), 2),
-                                                   format_ms(b->time_ms), b->failure()};
-                 })
-            .render());
+  d.set("missed", template_list(check.missed, row_data));
   std::vector<std::pair<std::string, std::string>> met;  // model, "ss PM 1.40, ..."
   for (const BenchRow* b : check.met) {
     const std::string item =
@@ -125,21 +143,6 @@ TemplateData target_data(const BenchResults& bench, const BenchTarget& target) {
   return d;
 }
 
-std::string all_options_table(const std::vector<const BenchRow*>& rows) {
-  return table_of({"Model", "Time (ms)", "Cases", "Converged", "Ratio per case", "Reference (ms)"},
-                  rows,
-                  [](const BenchRow* b) {
-                    return std::vector<std::string>{
-                        model_md(b->model),
-                        b->error.empty() ? format_ms(b->time_ms) : "error: " + b->error,
-                        fixed(b->counter("cases"), 0),
-                        fixed(b->counter("converged"), 0),
-                        fixed(b->counter("ratio_per_case"), 2),
-                        format_ms(b->reference_ms())};
-                  })
-      .render();
-}
-
 /// The ModelCases benchmarks: a model's full set of cases against one analysis of it, in wall
 /// and process CPU time, checked against `max_ratio` (issue #27). A wall-time ratio below the
 /// physical floor of 1 (the load changed between the two measurements) does not count as met.
@@ -157,23 +160,7 @@ TemplateData model_cases_data(const std::vector<const BenchRow*>& rows, double m
         })));
   d.set("below_one",
         count_or_false(count([](const BenchRow* b) { return b->ratio() && *b->ratio() < 1; })));
-  d.set("table", table_of({"Model", "Cases converged", "Time of the cases (ms)",
-                           "One analysis (ms)", "Ratio (wall)", "Ratio (CPU)", "BLAS threads"},
-                          rows,
-                          [](const BenchRow* b) {
-                            return std::vector<std::string>{
-                                model_md(b->model),
-                                b->error.empty()
-                                    ? fmt::format("{} of {}", fixed(b->counter("converged"), 0),
-                                                  fixed(b->counter("cases"), 0))
-                                    : "error: " + b->error,
-                                format_ms(b->time_ms),
-                                format_ms(b->counter_ms("one_case_s")),
-                                fixed(b->ratio(), 2),
-                                fixed(b->counter("ratio_cpu"), 2),
-                                fixed(b->counter("blas_threads"), 0)};
-                          })
-                     .render());
+  d.set("rows", template_list(rows, row_data));
   return d;
 }
 
@@ -193,29 +180,23 @@ std::string case_cell(const BenchRow* b) {
 }
 
 /// The table of one model's cases (algorithms x contact discretizations) and its failures.
-TemplateData model_data(const std::vector<const BenchRow*>& cases) {
-  const auto [contacts, methods] = options_of(cases);
+TemplateData model_data(const BenchGrid& grid) {
   std::vector<std::string> header{"Algorithm"};
-  std::ranges::transform(contacts, std::back_inserter(header), name<schema::ContactKind>);
-  const MarkdownTable table = table_of(header, methods, [&](BenchMethod a) {
+  std::ranges::transform(grid.contacts, std::back_inserter(header), name<schema::ContactKind>);
+  const MarkdownTable table = table_of(header, grid.methods, [&](BenchMethod a) {
     std::vector<std::string> row{name(a)};
-    for (const auto c : contacts)
-      row.push_back(case_cell(find_case(cases, c, a)));
+    for (const auto c : grid.contacts)
+      row.push_back(case_cell(grid.at(c, a)));
     return row;
   });
-  std::vector<std::string> failures;
-  for (const BenchRow* b : cases) {
-    if (!b->converged())
-      failures.push_back(
-          fmt::format("✗ {} {}: {}", name(b->contact), name(b->algorithm), b->failure()));
-  }
-  const auto reference =
-      std::ranges::find_if(cases, [](const BenchRow* b) { return b->reference_ms().has_value(); });
-  TemplateData d("model", model_md(cases.front()->model));
-  d.set("reference", reference == cases.end() ? kMissing : format_ms((*reference)->reference_ms()));
+  std::vector<const BenchRow*> failures;
+  std::ranges::copy_if(grid.cases, std::back_inserter(failures),
+                       [](const BenchRow* b) { return !b->converged(); });
+  TemplateData d("model", model_md(grid.model));
+  d.set("reference", format_ms(grid.reference_ms()));
   d.set("table", table.render());
   d.set("has_failures", !failures.empty());
-  d.set("failures", template_list(failures, [](const std::string& f) { return TemplateData(f); }));
+  d.set("failures", template_list(failures, row_data));
   return d;
 }
 
@@ -227,24 +208,24 @@ TemplateData figure_set_data(const FigureSet& figures) {
   return d;
 }
 
-/// The machine line of one file: host, CPUs and clock, load, library build type, date.
+/// The machine line of one file: what its context says, in the line's order.
 TemplateData machine_data(const BenchSource& source) {
   const BenchContext& c = source.context;
+  const std::pair<const char*, std::string> facts[]{
+      {"host", c.host_name},
+      {"cpus", c.num_cpus ? fixed(c.num_cpus, 0) : ""},
+      {"loads", fmt::format("{:.2f}", fmt::join(c.load_avg, " / "))},
+      {"build_type", c.library_build_type},
+      {"executable", c.executable},
+      {"date", c.date}};
   TemplateData parts{TemplateData::type::list};
-  const auto part = [&](const char* key, const std::string& value, TemplateData p = {}) {
-    if (value.empty())
-      return;
-    p.set(key, value);
-    p.set("first", parts.is_empty_list());
-    parts.push_back(p);
-  };
-  part("host", c.host_name);
-  part("cpus", c.num_cpus ? fixed(c.num_cpus, 0) : "",
-       TemplateData("mhz", text_or_false(c.mhz_per_cpu ? fixed(c.mhz_per_cpu, 0) : "")));
-  part("loads", fmt::format("{:.2f}", fmt::join(c.load_avg, " / ")));
-  part("build_type", c.library_build_type);
-  part("executable", c.executable);
-  part("date", c.date);
+  for (const auto& [key, value] : facts) {
+    TemplateData part(key, value);
+    part.set("first", parts.is_empty_list());
+    part.set("mhz", text_or_false(c.mhz_per_cpu ? fixed(c.mhz_per_cpu, 0) : ""));
+    if (!value.empty())
+      parts.push_back(part);
+  }
   TemplateData d("file", source.file);
   d.set("parts", parts);
   d.set("scaling", c.cpu_scaling_enabled);
@@ -288,11 +269,12 @@ std::string bench_section(const BenchResults& bench, const FigureSet& figures,
   d.set("replaced", count_or_false(bench.n_replaced));
   d.set("target", target_data(bench, target));
   d.set("figures", figure_set_data(figures));
-  d.set("all_options", text_or_false(all_options.empty() ? "" : all_options_table(all_options)));
+  d.set("has_all_options", !all_options.empty());
+  d.set("all_options", template_list(all_options, row_data));
   d.set("model_cases",
         model_cases_data(bench.of(BenchFamily::ModelCases), target.max_model_cases_ratio));
   d.set("has_models", !contact.empty());
-  d.set("models", template_list(by_model(contact), model_data));
+  d.set("models", template_list(contact_grids(bench), model_data));
   return tidy_markdown(render_template(templates::bench_section, d));
 }
 

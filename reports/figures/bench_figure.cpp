@@ -18,19 +18,17 @@ constexpr double kGap = 1.0;
 
 /// One panel: bars of the algorithms (one colour each) clustered by discretization, the ratio
 /// above each bar ('*': not converged), the reference time and the target's limit as lines.
-PlotPanel bar_panel(const std::vector<const BenchRow*>& cases, double max_ratio) {
-  const auto [contacts, methods] = options_of(cases);
-  const auto reference =
-      std::ranges::find_if(cases, [](const BenchRow* b) { return b->reference_ms().has_value(); });
+PlotPanel bar_panel(const BenchGrid& grid, double max_ratio) {
+  const auto& [model, cases, contacts, methods] = grid;
   double top = 0;
-  PlotPanel panel{model_md(cases.front()->model), {""}, {"time (ms)"}};
+  PlotPanel panel{model_md(model), {""}, {"time (ms)"}};
   const double n = static_cast<double>(methods.size());
   panel.bar_width = 1.0 / (n + kGap);
   for (std::size_t j = 0; j < methods.size(); ++j) {
     PlotSeries bars{std::string(schema::to_string(methods[j])),
                     std::string(schema::traits(study_algorithm(methods[j])).colour), Mark::bars};
     for (std::size_t i = 0; i < contacts.size(); ++i) {
-      const BenchRow* b = find_case(cases, contacts[i], methods[j]);
+      const BenchRow* b = grid.at(contacts[i], methods[j]);
       if (b == nullptr || !b->time_ms)
         continue;
       const double x = static_cast<double>(i) + (static_cast<double>(j) - (n - 1) / 2) / (n + kGap);
@@ -46,8 +44,8 @@ PlotPanel bar_panel(const std::vector<const BenchRow*>& cases, double max_ratio)
   for (std::size_t i = 0; i < contacts.size(); ++i)
     panel.x.tics.emplace_back(static_cast<double>(i), std::string(schema::to_string(contacts[i])));
   panel.x.range = std::pair(-0.5, right);
-  if (reference != cases.end()) {
-    const double ms = *(*reference)->reference_ms();
+  if (const auto reference = grid.reference_ms()) {
+    const double ms = *reference;
     panel.title += fmt::format(": reference {} ms", format_milliseconds(ms));
     top = std::max(top, max_ratio * ms);
     panel.series.push_back(
@@ -64,10 +62,10 @@ PlotPanel bar_panel(const std::vector<const BenchRow*>& cases, double max_ratio)
 FigureSet render_bench_figures(const BenchResults& bench, const std::filesystem::path& out_root,
                                const BenchTarget& target, const FigureOptions& options) {
   // Per problem and element, the finest mesh with a timed case.
-  std::map<std::pair<schema::ProblemId, schema::Element>, std::vector<const BenchRow*>> finest;
-  for (const auto& cases : by_model(bench.of(BenchFamily::Contact))) {
-    if (std::ranges::any_of(cases, [](const BenchRow* b) { return b->time_ms.has_value(); }))
-      finest[{cases.front()->model.problem, cases.front()->model.element}] = cases;
+  std::map<std::pair<schema::ProblemId, schema::Element>, BenchGrid> finest;
+  for (const BenchGrid& grid : contact_grids(bench)) {
+    if (std::ranges::any_of(grid.cases, [](const BenchRow* b) { return b->time_ms.has_value(); }))
+      finest[{grid.model.problem, grid.model.element}] = grid;
   }
   if (finest.empty())
     return {};
@@ -77,10 +75,11 @@ FigureSet render_bench_figures(const BenchResults& bench, const std::filesystem:
       .key_columns = 4};
   std::vector<std::string> models;
   bool any_failed = false;
-  for (const auto& [unused, cases] : finest) {
-    plot.panels.push_back(bar_panel(cases, target.max_ratio));
-    models.push_back(model_md(cases.front()->model));
-    any_failed = any_failed || std::ranges::any_of(cases, [](auto* b) { return !b->converged(); });
+  for (const auto& [unused, grid] : finest) {
+    plot.panels.push_back(bar_panel(grid, target.max_ratio));
+    models.push_back(model_md(grid.model));
+    any_failed = any_failed ||
+                 std::ranges::any_of(grid.cases, [](const BenchRow* b) { return !b->converged(); });
   }
   Figure figure(FigureKind::bench, "figures/bench_time.png");
   TemplateData caption("models", fmt::format("{}", fmt::join(models, "; ")));
