@@ -145,6 +145,16 @@ TEST(BenchSection, OneTablePerModelWithEveryCaseAndWhyItFailed) {
             std::string::npos);
 }
 
+TEST(BenchSection, ALabelCannotBreakATable) {
+  BenchResults r = sample();
+  for (auto& b : r.rows) {
+    if (!b.label.empty())
+      b.label = "not converged: a | b\nc";
+  }
+  EXPECT_NE(bench_section(r, {}).find("| ss | LM | 1.20 | 12.0 | not converged: a \\| b c |\n"),
+            std::string::npos);
+}
+
 TEST(BenchSection, WithoutMeshFTheTargetIsNotJudged) {
   BenchResults coarse = sample();
   std::erase_if(coarse.rows, [](const auto& b) {
