@@ -1,11 +1,9 @@
 #pragma once
 // The contact methods as bench/bench_contact_algorithms names its benchmarks: the solver's
-// methods, in the solver's order (penalty, augmented Lagrangian, Lagrange multiplier,
-// multipoint constraint). Each is one of the study's algorithms (schema/case_axes.hpp) and is
-// named, drawn and coloured as that algorithm, except LM: the solver's Lagrange-multiplier
-// method is both the study's LMP and PLM (they coincide without friction), and the benchmarks
-// call it LM. A table in the vocabulary's form (schema/name_table.hpp), so that to_string,
-// parse and values work on it.
+// methods, in the solver's order. Each is named, drawn and coloured as the study's algorithm it is
+// (schema/case_axes.hpp), except LM: the solver's Lagrange-multiplier method is both the study's
+// LMP and PLM (they coincide without friction). A table in the vocabulary's form
+// (schema/name_table.hpp), so that to_string, parse and values work on it.
 
 #include <cstdint>
 #include <string_view>
@@ -35,8 +33,7 @@ constexpr std::string_view axis_name(BenchMethod) {
   return "benchmarked contact method";
 }
 
-/// The names: those of the study's algorithms, but the solver's own for the Lagrange-multiplier
-/// method, which the study splits in two.
+/// The study's algorithm's names, but the solver's own for LM, which the study splits in two.
 constexpr schema::AxisEntry entry(BenchMethod m) {
   switch (m) {
     case BenchMethod::LM:
@@ -46,7 +43,7 @@ constexpr schema::AxisEntry entry(BenchMethod m) {
     case BenchMethod::MPC:
       return entry(study_algorithm(m));
   }
-  return {};
+  return {};  // past the last method: where values<BenchMethod>() stops
 }
 
 }  // namespace cs::reports

@@ -7,7 +7,6 @@
 
 #include <filesystem>
 
-#include "reports/bench/bench_results.hpp"
 #include "reports/bench/bench_section.hpp"
 #include "reports/figures/figures.hpp"
 

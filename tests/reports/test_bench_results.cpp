@@ -1,6 +1,6 @@
 // Reading Google Benchmark JSON of bench_contact_algorithms: names decoded into model and
 // options, times converted to milliseconds whatever the time_unit, counters read, a case that
-// did not converge or stopped with an error surfaced, repetitions reduced to one measurement,
+// did not converge or stopped with an error surfaced, repetitions represented by their median,
 // and every file the report cannot use rejected with one line naming it.
 //
 // data/small_bench.json is hand-written in the format of Google Benchmark 1.7 (its values are
@@ -11,6 +11,8 @@
 
 #include <algorithm>
 #include <stdexcept>
+
+#include <fmt/format.h>
 
 #include <gtest/gtest.h>
 
@@ -38,11 +40,12 @@ const BenchRow& find(const BenchResults& r, const std::string& problem, const st
   const BenchModel model{schema::parse<schema::ProblemId>(problem),
                          schema::parse<schema::MeshLevel>(mesh),
                          schema::parse<schema::Element>(element)};
-  const auto it = std::find_if(r.contact.begin(), r.contact.end(), [&](const auto& b) {
-    return b.model == model && b.contact == schema::parse<schema::ContactKind>(contact) &&
+  const auto it = std::find_if(r.rows.begin(), r.rows.end(), [&](const auto& b) {
+    return b.family == BenchFamily::Contact && b.model == model &&
+           b.contact == schema::parse<schema::ContactKind>(contact) &&
            b.algorithm == schema::parse<BenchMethod>(algorithm);
   });
-  if (it == r.contact.end())
+  if (it == r.rows.end())
     throw std::runtime_error("no case " + problem + "/" + mesh + "/" + element + "/" + contact +
                              "/" + algorithm);
   return *it;
@@ -52,63 +55,68 @@ const BenchRow& find(const BenchResults& r, const std::string& problem, const st
 constexpr cs::testing::Tolerance kRoundOff{1e-12, 1e-12};
 
 TEST(BenchResults, DecodesNamesAndReadsTheContext) {
-  const BenchResults r = load_bench_file(bench_path());
+  const BenchResults r = load_bench_files({bench_path()});
   ASSERT_EQ(r.sources.size(), 1u);
   EXPECT_EQ(r.sources[0].file, bench_path().string());
   EXPECT_EQ(r.sources[0].n_other, 1);  // BM_Assembly
   const BenchContext& c = r.sources[0].context;
   EXPECT_EQ(c.host_name, "bench-host");
-  EXPECT_EQ(c.num_cpus, 2);
+  EXPECT_EQ(c.num_cpus, 2.0);
   EXPECT_EQ(c.mhz_per_cpu, 2800.0);
   EXPECT_EQ(c.library_build_type, "release");
   EXPECT_EQ(c.load_avg, (std::vector<double>{0.5, 0.25, 0.125}));
   EXPECT_EQ(c.date, "2024-05-01T10:00:00+00:00");
-  EXPECT_EQ(c.cpu_scaling_enabled, false);
+  EXPECT_EQ(c.executable, "build/bench/bench_contact_algorithms");
+  EXPECT_FALSE(c.cpu_scaling_enabled);
 
-  EXPECT_EQ(r.contact.size(), 7u);
-  const BenchRow& pm = find(r, "H_p", "F", "Q4", "ss", "PM");
-  EXPECT_EQ(pm.name, "Contact/H_p/F/Q4/ss/PM/iterations:1/manual_time");
+  // In the report's order: P'_p before H_p, C before F, ns before ss, PM before AL.
+  std::vector<std::string> contact;
+  for (const BenchRow* b : r.of(BenchFamily::Contact)) {
+    contact.push_back(fmt::format("{}/{}/{}/{}/{}", schema::to_string(b->model.problem),
+                                  schema::to_string(b->model.mesh),
+                                  schema::to_string(b->model.element),
+                                  schema::to_string(b->contact), schema::to_string(b->algorithm)));
+  }
+  EXPECT_EQ(contact, (std::vector<std::string>{"Pprime_p/F/Q8/mortar/LM", "H_p/C/Q4/ss/AL",
+                                               "H_p/F/Q4/ns/PM", "H_p/F/Q4/ss/PM", "H_p/F/Q4/ss/AL",
+                                               "H_p/F/Q4/ss/LM", "H_p/F/Q4/ss/MPC"}));
   const BenchRow& lm = find(r, "Pprime_p", "F", "Q8", "mortar", "LM");
   EXPECT_EQ(lm.model.problem, schema::ProblemId::Pprime_p);
   EXPECT_EQ(lm.algorithm, BenchMethod::LM);
   EXPECT_EQ(study_algorithm(lm.algorithm), schema::Algorithm::LMP);
-  ASSERT_EQ(r.all_options.size(), 1u);
-  EXPECT_EQ(r.all_options[0].model,
+  const auto all_options = r.of(BenchFamily::ContactAllOptions);
+  ASSERT_EQ(all_options.size(), 1u);
+  EXPECT_EQ(all_options[0]->model,
             (BenchModel{schema::ProblemId::H_p, schema::MeshLevel::F, schema::Element::Q4}));
-  EXPECT_EQ(r.all_options[0].count("cases"), 12);
-  EXPECT_EQ(r.all_options[0].count("converged"), 11);
-  EXPECT_TRUE(cs::testing::Near(*r.all_options[0].counter("ratio_per_case"), 0.9, kRoundOff));
-  EXPECT_TRUE(cs::testing::Near(*r.all_options[0].time_ms, 108.0, kRoundOff));
+  EXPECT_EQ(all_options[0]->counter("cases"), 12.0);
+  EXPECT_EQ(all_options[0]->counter("converged"), 11.0);
+  EXPECT_TRUE(cs::testing::Near(*all_options[0]->counter("ratio_per_case"), 0.9, kRoundOff));
+  EXPECT_TRUE(cs::testing::Near(*all_options[0]->time_ms, 108.0, kRoundOff));
+  EXPECT_TRUE(r.of(BenchFamily::ModelCases).empty());
 }
 
 TEST(BenchResults, ConvertsEveryTimeUnitToMilliseconds) {
-  const BenchResults r = load_bench_file(bench_path());
+  const BenchResults r = load_bench_files({bench_path()});
   EXPECT_TRUE(cs::testing::Near(*find(r, "H_p", "F", "Q4", "ss", "PM").time_ms, 14.0, kRoundOff));
   EXPECT_TRUE(cs::testing::Near(*find(r, "H_p", "F", "Q4", "ss", "AL").time_ms, 16.0, kRoundOff));
   EXPECT_TRUE(cs::testing::Near(*find(r, "H_p", "F", "Q4", "ss", "LM").time_ms, 12.0, kRoundOff));
   EXPECT_TRUE(cs::testing::Near(*find(r, "H_p", "F", "Q4", "ss", "MPC").time_ms, 30.0, kRoundOff));
-  EXPECT_EQ(milliseconds_per("ns"), 1e-6);
-  EXPECT_EQ(milliseconds_per("us"), 1e-3);
-  EXPECT_EQ(milliseconds_per("ms"), 1.0);
-  EXPECT_EQ(milliseconds_per("s"), 1e3);
-  EXPECT_FALSE(milliseconds_per("min").has_value());
 }
 
 TEST(BenchResults, ReadsCounters) {
-  const BenchResults r = load_bench_file(bench_path());
+  const BenchResults r = load_bench_files({bench_path()});
   const BenchRow& al = find(r, "H_p", "F", "Q4", "ss", "AL");
   EXPECT_EQ(al.ratio(), 1.6);
   EXPECT_EQ(al.counter("active_set_iterations"), 5.0);
   EXPECT_EQ(al.counter("augmentations"), 3.0);
   EXPECT_TRUE(cs::testing::Near(*al.reference_ms(), 10.0, kRoundOff));  // reference_s 0.01
-  EXPECT_EQ(al.counters.at("candidates"), 88.0);
-  EXPECT_EQ(al.counters.count("iterations"), 0u);  // Google Benchmark's loop count
-  EXPECT_EQ(al.counters.count("real_time"), 0u);
-  EXPECT_EQ(find(r, "H_p", "F", "Q4", "ss", "PM").counters.at("condensation_s"), 0.006);
+  EXPECT_EQ(al.counter("candidates"), 88.0);
+  EXPECT_FALSE(al.counter("condensation_s").has_value());
+  EXPECT_EQ(find(r, "H_p", "F", "Q4", "ss", "PM").counter_ms("condensation_s"), 6.0);
 }
 
 TEST(BenchResults, SurfacesNotConvergedAndErrors) {
-  const BenchResults r = load_bench_file(bench_path());
+  const BenchResults r = load_bench_files({bench_path()});
   EXPECT_TRUE(find(r, "H_p", "F", "Q4", "ss", "PM").converged());
   const BenchRow& lm = find(r, "H_p", "F", "Q4", "ss", "LM");
   EXPECT_FALSE(lm.converged());
@@ -119,18 +127,24 @@ TEST(BenchResults, SurfacesNotConvergedAndErrors) {
   EXPECT_EQ(failed.failure(), "error: reference factorization failed");
 }
 
-TEST(BenchResults, ReplacesNonFiniteValuesByNull) {
-  EXPECT_EQ(json_without_nonfinite(R"({"a": NaN, "b": -Infinity, "c": "NaN here", "d": 1})"),
-            R"({"a": null, "b": null, "c": "NaN here", "d": 1})");
-  EXPECT_EQ(json_without_nonfinite(R"(["x\"NaN", Infinity])"), R"(["x\"NaN", null])");
-  // A NaN ratio (a failed reference factorization) reads as no ratio, not as a bad file.
+TEST(BenchResults, ReadsNonFiniteValuesAsNoValue) {
+  // A NaN ratio (a failed reference factorization) reads as no ratio, not as a bad file; NaN
+  // and Infinity inside strings stay as they are.
   TempDir tmp;
   std::string text = read_text(bench_path());
-  const std::string ratio = "\"ratio\": 1.4";
-  text.replace(text.find(ratio), ratio.size(), "\"ratio\": NaN");
+  const auto replace = [&](const std::string& from, const std::string& to) {
+    text.replace(text.find(from), from.size(), to);
+  };
+  replace("\"ratio\": 1.4", "\"ratio\": NaN");
+  replace("\"augmentations\": 3", "\"augmentations\": -Infinity");
+  replace("active set cycles between two states", R"(\"NaN\" at step Infinity)");
   write_text(tmp.path() / "nan.json", text);
-  const BenchResults r = load_bench_file(tmp.path() / "nan.json");
+  const BenchResults r = load_bench_files({tmp.path() / "nan.json"});
   EXPECT_FALSE(find(r, "H_p", "F", "Q4", "ss", "PM").ratio().has_value());
+  EXPECT_EQ(find(r, "H_p", "F", "Q4", "ss", "PM").counter("reference_s"), 0.01);
+  EXPECT_FALSE(find(r, "H_p", "F", "Q4", "ss", "AL").counter("augmentations").has_value());
+  EXPECT_EQ(find(r, "H_p", "F", "Q4", "ss", "LM").label,
+            R"(not converged: "NaN" at step Infinity)");
 }
 
 /// One entry of a benchmarks array: Contact/H_p/M/Q4/ss/PM with the given time and extras.
@@ -140,27 +154,23 @@ std::string entry(const std::string& extra, double real_time, double ratio) {
          std::to_string(real_time) + R"(, "time_unit": "ms", "ratio": )" + std::to_string(ratio);
 }
 
-TEST(BenchResults, RepetitionsGiveTheMedian) {
-  const auto parse = [](const std::string& benchmarks) {
-    return parse_bench_document(nlohmann::json::parse(R"({"benchmarks": [)" + benchmarks + "]}"),
-                                "reps.json");
-  };
-  // Three repetitions: the one of median time.
-  const std::string reps = entry("", 3, 1.3) + R"(, "run_type": "iteration"}, )" +
-                           entry("", 1, 1.1) + R"(, "run_type": "iteration"}, )" +
-                           entry("", 2, 1.2) + R"(, "run_type": "iteration"})";
-  BenchResults r = parse(reps);
-  ASSERT_EQ(r.contact.size(), 1u);
-  EXPECT_EQ(r.contact[0].time_ms, 2.0);
-  EXPECT_EQ(r.contact[0].ratio(), 1.2);
-  // With aggregates: the median aggregate, whatever the order; stddev is never a time.
-  r = parse(reps + ", " + entry("_stddev", 0.8, 0.1) +
-            R"(, "run_type": "aggregate", "aggregate_name": "stddev"}, )" +
-            entry("_median", 2.5, 1.25) +
-            R"(, "run_type": "aggregate", "aggregate_name": "median"}, )" +
-            entry("_mean", 2.2, 1.22) + R"(, "run_type": "aggregate", "aggregate_name": "mean"})");
-  ASSERT_EQ(r.contact.size(), 1u);
-  EXPECT_EQ(r.contact[0].time_ms, 2.5);
+TEST(BenchResults, RepetitionsGiveTheMedianAggregate) {
+  // As Google Benchmark writes them: the repetitions, then their aggregates.
+  TempDir tmp;
+  write_text(tmp.path() / "reps.json",
+             R"({"benchmarks": [)" + entry("", 3, 1.3) + R"(, "run_type": "iteration"}, )" +
+                 entry("", 1, 1.1) + R"(, "run_type": "iteration"}, )" + entry("", 2, 1.2) +
+                 R"(, "run_type": "iteration"}, )" + entry("_mean", 2.2, 1.22) +
+                 R"(, "run_type": "aggregate", "aggregate_name": "mean"}, )" +
+                 entry("_median", 2.5, 1.25) +
+                 R"(, "run_type": "aggregate", "aggregate_name": "median"}, )" +
+                 entry("_stddev", 0.8, 0.1) +
+                 R"(, "run_type": "aggregate", "aggregate_name": "stddev"}]})");
+  const BenchResults r = load_bench_files({tmp.path() / "reps.json"});
+  ASSERT_EQ(r.rows.size(), 1u);
+  EXPECT_EQ(r.rows[0].time_ms, 2.5);
+  EXPECT_EQ(r.rows[0].ratio(), 1.25);
+  EXPECT_EQ(r.n_replaced, 0);  // repetitions in one file are not replacements
 }
 
 TEST(BenchResults, LaterFilesReplaceTheSameCase) {
@@ -171,17 +181,15 @@ TEST(BenchResults, LaterFilesReplaceTheSameCase) {
   write_text(tmp.path() / "again.json", text);
   const BenchResults r = load_bench_files({bench_path(), tmp.path() / "again.json"});
   EXPECT_EQ(r.sources.size(), 2u);
-  EXPECT_EQ(r.contact.size(), 7u);
+  EXPECT_EQ(r.rows.size(), 8u);
   EXPECT_EQ(r.n_replaced, 8);  // 7 Contact + 1 ContactAllOptions
-  const BenchRow& pm = find(r, "H_p", "F", "Q4", "ss", "PM");
-  EXPECT_EQ(pm.time_ms, 28.0);
-  EXPECT_EQ(pm.source, 1u);
+  EXPECT_EQ(find(r, "H_p", "F", "Q4", "ss", "PM").time_ms, 28.0);
 }
 
 /// The message of the ReportError that loading `file` throws ("" if none).
 std::string load_error(const fs::path& file) {
   try {
-    load_bench_file(file);
+    load_bench_files({file});
   } catch (const ReportError& e) {
     return e.what();
   }
