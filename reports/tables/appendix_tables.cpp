@@ -120,8 +120,7 @@ std::optional<double> parse_printed(const std::string& printed) {
 }
 
 TemplateData table_data(const AppendixTableFacts& t) {
-  TemplateData d;
-  d.set("quantity", std::string(schema::label(t.quantity)));
+  TemplateData d("quantity", std::string(schema::label(t.quantity)));
   d.set("contact", std::string(schema::traits(t.contact).words));
   d.set("element", std::string(schema::to_string(t.element)));
   d.set("study_tables", joined_or_false(t.study_tables, ", "));
@@ -134,19 +133,18 @@ TemplateData table_data(const AppendixTableFacts& t) {
   return d;
 }
 
+/// The facts above a group of tables (one problem and quantity of the results).
 TemplateData group_data(const ResultsIndex& index, const schema::StudyReference& study,
                         const AppendixTableFacts& t) {
-  const schema::ProblemRecord* p = index.problem(t.problem);
-  const schema::QuantityDefinition* q = index.definition(t.problem, t.quantity);
+  const schema::ProblemRecord& p = *index.problem(t.problem);
+  const schema::QuantityDefinition& q = *index.definition(t.problem, t.quantity);
   const ExactValueFacts e = exact_value_facts(index, study, t.problem, t.quantity);
-  TemplateData d;
-  d.set("problem", std::string(schema::label(t.problem)));
-  d.set("description", p != nullptr ? p->description : "");
+  TemplateData d("problem", std::string(schema::label(t.problem)));
+  d.set("description", p.description);
   d.set("quantity_words", std::string(schema::description(t.quantity)));
-  d.set("study_table", q != nullptr ? q->study_table : "?");
-  d.set("head", q != nullptr ? fmt::format("{} = {}", schema::label(t.quantity), q->definition_md)
-                             : std::string(schema::to_string(t.quantity)));
-  d.set("source", p != nullptr ? p->exact_source : "");
+  d.set("study_table", q.study_table);
+  d.set("head", fmt::format("{} = {}", schema::label(t.quantity), q.definition_md));
+  d.set("source", p.exact_source);
   d.set("singular", e.singular);
   d.set("exact", e.exact ? format_value(*e.exact) : std::string(kMissing));
   d.set("printed", text_or_false(e.printed ? study.printed_exact(t.problem, t.quantity) : ""));
@@ -209,9 +207,7 @@ std::string appendix_section(const ResultsIndex& index, const schema::StudyRefer
     group.set("tables", list);
     groups.push_back(group);
   }
-  TemplateData d;
-  d.set("groups", groups);
-  return tidy_markdown(render_template(templates::appendix_tables, d));
+  return tidy_markdown(render_template(templates::appendix_tables, TemplateData("groups", groups)));
 }
 
 }  // namespace cs::reports

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <map>
+#include <ranges>
 #include <set>
 #include <tuple>
 
@@ -239,10 +240,8 @@ std::vector<CodeRow> code_rows(const ResultsIndex& index, schema::ProblemId prob
     CodeRow& slot = rows.try_emplace(key_of(row), row).first->second;
     (s.recovery == schema::Recovery::own ? slot.own : slot.common) = &r;
   }
-  std::vector<CodeRow> out;
-  for (auto& [key, row] : rows)
-    out.push_back(row);
-  return out;
+  const auto values = std::views::values(rows);
+  return {values.begin(), values.end()};
 }
 
 std::vector<OptionTally> option_tallies(const ResultsIndex& index) {

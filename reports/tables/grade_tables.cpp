@@ -172,8 +172,7 @@ std::string grade_cell(const ResultsIndex& index, const schema::StudyReference& 
 }
 
 TemplateData comparison_data(const AnsysComparison& c) {
-  TemplateData d;
-  d.set("compared", std::to_string(c.compared));
+  TemplateData d("compared", std::to_string(c.compared));
   d.set("same", std::to_string(c.same));
   d.set("better", std::to_string(c.better));
   d.set("worse", std::to_string(c.worse));
@@ -182,8 +181,7 @@ TemplateData comparison_data(const AnsysComparison& c) {
 }
 
 TemplateData table_data(const GradeTableFacts& t) {
-  TemplateData d;
-  d.set("study_table", t.study_table);
+  TemplateData d("study_table", t.study_table);
   d.set("element", std::string(schema::to_string(t.element)));
   d.set("study_element", std::string(schema::study_name(t.element)));
   d.set("table", t.table.render());
@@ -196,8 +194,7 @@ TemplateData table_data(const GradeTableFacts& t) {
   d.set("luck", std::to_string(t.luck));
   d.set("pairs", template_list(t.pairs, [](const PairFacts& p) {
           const OptionComparison& c = p.compared;
-          TemplateData e;
-          e.set("names", p.names);
+          TemplateData e("names", p.names);
           e.set("coincide", c.coincide());
           e.set("same_method", p.same_method);
           e.set("compared", std::to_string(c.compared));
@@ -316,8 +313,7 @@ std::string grade_tables_section(const ResultsIndex& index, const schema::StudyR
   }
   if (tables.empty())
     return {};
-  TemplateData d;
-  d.set("tables", template_list(tables, table_data));
+  TemplateData d("tables", template_list(tables, table_data));
   std::vector<std::string> renamed;
   for (const Algorithm a : schema::values<Algorithm>()) {
     if (schema::study_name(a) != schema::to_string(a))

@@ -73,8 +73,7 @@ std::string mesh_table_section(const ResultsIndex& index, const schema::StudyRef
   }
   if (table.n_rows() == 0)
     return {};
-  TemplateData d;
-  d.set("differing", std::to_string(differing.count));
+  TemplateData d("differing", std::to_string(differing.count));
   d.set("compared", std::to_string(differing.compared));
   d.set("largest",
         text_or_false(differing.count == 0 ? ""
