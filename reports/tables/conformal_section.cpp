@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 
 #include <fmt/format.h>
 
@@ -64,6 +65,24 @@ std::optional<double> lm_mean_error(const ResultsIndex& index, schema::ProblemId
   return out;
 }
 
+/// The part of one problem; false when it has no row to show.
+bool problem_part(const ResultsIndex& index, const schema::ProblemRecord& p, TemplateData& d) {
+  const std::string table = options_table(index, p);
+  d.set("table", table);
+  const auto lm = lm_mean_error(index, p.id);
+  d.set("lm", text_or_false(lm ? format_error_resolved(*lm) : ""));
+  d.set("lm_within", lm && std::abs(*lm) < 1.0);
+  if (const auto arc = arc_range(index, p.id)) {
+    d.set("arc", true);
+    for (const auto& [key, e] : {std::pair{"worst", arc->worst}, {"best", arc->best}}) {
+      d.set(key, format_error_resolved(e.deviation_percent));
+      d.set(std::string(key) + "_option",
+            fmt::format("{} {}", schema::to_string(e.element), e.option.label()));
+    }
+  }
+  return !table.empty();
+}
+
 }  // namespace
 
 std::optional<ArcRange> arc_range(const ResultsIndex& index, schema::ProblemId problem) {
@@ -86,24 +105,8 @@ std::optional<ArcRange> arc_range(const ResultsIndex& index, schema::ProblemId p
 }
 
 std::string conformal_section(const ResultsIndex& index) {
-  return per_problem_section(
-      index, Quantity::p_mean, templates::conformal_section,
-      [&](const schema::ProblemRecord& p, TemplateData& d) {
-        const std::string table = options_table(index, p);
-        d.set("table", table);
-        const auto lm = lm_mean_error(index, p.id);
-        d.set("lm", text_or_false(lm ? format_error_resolved(*lm) : ""));
-        d.set("lm_within", lm && std::abs(*lm) < 1.0);
-        if (const auto arc = arc_range(index, p.id)) {
-          d.set("arc", true);
-          for (const auto& [key, e] : {std::pair{"worst", arc->worst}, {"best", arc->best}}) {
-            d.set(key, format_error_resolved(e.deviation_percent));
-            d.set(std::string(key) + "_option",
-                  fmt::format("{} {}", schema::to_string(e.element), e.option.label()));
-          }
-        }
-        return !table.empty();
-      });
+  return per_problem_section(index, Quantity::p_mean, templates::conformal_section,
+                             std::bind_front(problem_part, std::cref(index)));
 }
 
 }  // namespace cs::reports

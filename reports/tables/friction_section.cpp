@@ -1,6 +1,7 @@
 #include "reports/tables/friction_section.hpp"
 
 #include <cmath>
+#include <functional>
 
 #include <fmt/format.h>
 
@@ -86,6 +87,21 @@ std::string lmp_plm_table(const ResultsIndex& index, const schema::ProblemRecord
   return rendered_if_any(table);
 }
 
+/// The part of one problem; false when it has no row to show.
+bool problem_part(const ResultsIndex& index, const schema::ProblemRecord& p, TemplateData& d) {
+  const std::string grades = grades_table(index, p);
+  const LmpPlmDifference diff = lmp_plm_difference(index, p.id);
+  d.set("grades", grades);
+  d.set("pairs", text_or_false(lmp_plm_table(index, p)));
+  d.set("all_equal", diff.n_pairs > 0 && diff.n_equal == diff.n_pairs);
+  d.set("n_pairs", std::to_string(diff.n_pairs));
+  d.set("n_equal", std::to_string(diff.n_equal));
+  d.set("points", fmt::format("{:.2f}", diff.points));
+  d.set("where", fmt::format("{}, {} {}", schema::label(diff.quantity),
+                             schema::to_string(diff.element), schema::to_string(diff.contact)));
+  return !grades.empty();
+}
+
 }  // namespace
 
 LmpPlmDifference lmp_plm_difference(const ResultsIndex& index, schema::ProblemId problem) {
@@ -107,20 +123,7 @@ LmpPlmDifference lmp_plm_difference(const ResultsIndex& index, schema::ProblemId
 
 std::string friction_section(const ResultsIndex& index) {
   return per_problem_section(index, schema::Quantity::tau_max, templates::friction_section,
-                             [&](const schema::ProblemRecord& p, TemplateData& d) {
-                               const std::string grades = grades_table(index, p);
-                               const LmpPlmDifference diff = lmp_plm_difference(index, p.id);
-                               d.set("grades", grades);
-                               d.set("pairs", text_or_false(lmp_plm_table(index, p)));
-                               d.set("all_equal", diff.n_pairs > 0 && diff.n_equal == diff.n_pairs);
-                               d.set("n_pairs", std::to_string(diff.n_pairs));
-                               d.set("n_equal", std::to_string(diff.n_equal));
-                               d.set("points", fmt::format("{:.2f}", diff.points));
-                               d.set("where", fmt::format("{}, {} {}", schema::label(diff.quantity),
-                                                          schema::to_string(diff.element),
-                                                          schema::to_string(diff.contact)));
-                               return !grades.empty();
-                             });
+                             std::bind_front(problem_part, std::cref(index)));
 }
 
 }  // namespace cs::reports
