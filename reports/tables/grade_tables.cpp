@@ -142,7 +142,7 @@ std::string marks(const ResultsIndex& index, const schema::RowVerdict* row, Grad
 
 /// One cell of the table, counted in `t`; a cell compared with ANSYS is graded on extrapolated
 /// stresses where the row has a twin, the patch-recovered grade beside it.
-std::string grade_cell(const ResultsIndex& index, const schema::StudyReference& study,
+std::string table_cell(const ResultsIndex& index, const schema::StudyReference& study,
                        GradeTableFacts& t, const StudyRowKey& r, const OptionClass& cls) {
   const schema::RowVerdict* row = class_row(index, cls, {r.problem, *r.quantity, t.element});
   const Option& first = cls.members.front();
@@ -294,7 +294,7 @@ std::optional<GradeTableFacts> build_grade_table(const ResultsIndex& index,
   for (const auto& r : present) {
     std::vector<std::string> row{r.label_md};
     for (const auto& cls : classes)
-      row.push_back(grade_cell(index, study, facts, r, cls));
+      row.push_back(table_cell(index, study, facts, r, cls));
     facts.table.add_row(std::move(row));
   }
   for (const auto& [a, b] : stated_pairs(study)) {
