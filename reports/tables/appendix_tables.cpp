@@ -8,8 +8,7 @@
 #include <fmt/ranges.h>
 
 #include "grading/accuracy.hpp"
-#include "reports/render/template_text.hpp"
-#include "reports/tables/option_classes.hpp"
+#include "reports/tables/section_support.hpp"
 
 namespace cs::reports {
 namespace {
@@ -65,10 +64,10 @@ AppendixTableFacts build_one(const ResultsIndex& index, const schema::StudyRefer
     }
     for (const auto& cls : coincidence_classes(index, candidates, {slot})) {
       sources.push_back({cls, first});
-      std::string label;
+      std::vector<std::string_view> names;
       for (const auto& m : cls.members)
-        label += (label.empty() ? "" : " = ") + std::string(schema::to_string(m.algorithm));
-      header.push_back(label);
+        names.push_back(schema::to_string(m.algorithm));
+      header.push_back(fmt::format("{}", fmt::join(names, " = ")));
       t.merged = t.merged || cls.members.size() > 1;
       if (const RowVerdict* r = class_row(index, cls, slot))
         our_rows.push_back(r);
@@ -121,11 +120,10 @@ std::optional<double> parse_printed(const std::string& printed) {
 }
 
 TemplateData table_data(const AppendixTableFacts& t) {
-  TemplateData d;
-  d.set("quantity", std::string(schema::label(t.quantity)));
+  TemplateData d("quantity", std::string(schema::label(t.quantity)));
   d.set("contact", std::string(schema::traits(t.contact).words));
   d.set("element", std::string(schema::to_string(t.element)));
-  d.set("study_tables", text_or_false(fmt::format("{}", fmt::join(t.study_tables, ", "))));
+  d.set("study_tables", joined_or_false(t.study_tables, ", "));
   d.set("table", t.table.render());
   d.set("merged", t.merged);
   d.set("via_note", t.via_note);
@@ -135,19 +133,18 @@ TemplateData table_data(const AppendixTableFacts& t) {
   return d;
 }
 
+/// The facts above a group of tables (one problem and quantity of the results).
 TemplateData group_data(const ResultsIndex& index, const schema::StudyReference& study,
                         const AppendixTableFacts& t) {
-  const schema::ProblemRecord* p = index.problem(t.problem);
-  const schema::QuantityDefinition* q = index.definition(t.problem, t.quantity);
+  const schema::ProblemRecord& p = *index.problem(t.problem);
+  const schema::QuantityDefinition& q = *index.definition(t.problem, t.quantity);
   const ExactValueFacts e = exact_value_facts(index, study, t.problem, t.quantity);
-  TemplateData d;
-  d.set("problem", std::string(schema::label(t.problem)));
-  d.set("description", p != nullptr ? p->description : "");
+  TemplateData d("problem", std::string(schema::label(t.problem)));
+  d.set("description", p.description);
   d.set("quantity_words", std::string(schema::description(t.quantity)));
-  d.set("study_table", q != nullptr ? q->study_table : "?");
-  d.set("head", q != nullptr ? fmt::format("{} = {}", schema::label(t.quantity), q->definition_md)
-                             : std::string(schema::to_string(t.quantity)));
-  d.set("source", p != nullptr ? p->exact_source : "");
+  d.set("study_table", q.study_table);
+  d.set("head", fmt::format("{} = {}", schema::label(t.quantity), q.definition_md));
+  d.set("source", p.exact_source);
   d.set("singular", e.singular);
   d.set("exact", e.exact ? format_value(*e.exact) : std::string(kMissing));
   d.set("printed", text_or_false(e.printed ? study.printed_exact(t.problem, t.quantity) : ""));
@@ -164,18 +161,14 @@ TemplateData group_data(const ResultsIndex& index, const schema::StudyReference&
 std::vector<AppendixTableFacts> build_appendix_tables(const ResultsIndex& index,
                                                       const schema::StudyReference& study) {
   std::vector<AppendixTableFacts> out;
-  for (const schema::ProblemRecord* p : index.problems()) {
-    for (const auto& q : p->quantities) {
-      if (q.study_table.empty())
-        continue;  // not in the study's appendix
-      for (const auto element : schema::values<schema::Element>()) {
-        const auto present = index.options_present(p->id, q.quantity, element);
-        for (const auto contact : schema::values<ContactKind>()) {
-          if (std::any_of(present.begin(), present.end(),
-                          [&](const Option& o) { return o.contact == contact; }))
-            out.push_back(build_one(index, study, {p->id, q.quantity, element, contact}));
-        }
-      }
+  for (const Slot& s : slots_of(index)) {
+    if (index.definition(s.problem, s.quantity)->study_table.empty())
+      continue;  // not in the study's appendix
+    const auto present = index.options_present(s.problem, s.quantity, s.element);
+    for (const auto contact : schema::values<ContactKind>()) {
+      if (std::any_of(present.begin(), present.end(),
+                      [&](const Option& o) { return o.contact == contact; }))
+        out.push_back(build_one(index, study, {s.problem, s.quantity, s.element, contact}));
     }
   }
   return out;
@@ -214,9 +207,7 @@ std::string appendix_section(const ResultsIndex& index, const schema::StudyRefer
     group.set("tables", list);
     groups.push_back(group);
   }
-  TemplateData d;
-  d.set("groups", groups);
-  return tidy_markdown(render_template(templates::appendix_tables, d));
+  return tidy_markdown(render_template(templates::appendix_tables, TemplateData("groups", groups)));
 }
 
 }  // namespace cs::reports

@@ -1,8 +1,7 @@
 #pragma once
-// The study's appendix Tables 3-14, side by side with ours: for each problem, quantity, element
-// and contact type, the rows C, M, F; per study column (AL, PM; LMP, PLM; IMC) our values and
-// signed errors beside the study's ANSYS value (the mapping is in schema/study_reference.hpp);
-// the exact value (ours, and the study's printed one) above each group of tables.
+// The study's appendix Tables 3-14, side by side with ours: per problem, quantity, element and
+// contact type, rows C, M, F; per study column our values and signed errors beside the study's
+// ANSYS value (schema/study_reference.hpp maps the columns); the exact values above each group.
 
 #include <optional>
 #include <set>

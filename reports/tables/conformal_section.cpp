@@ -1,36 +1,31 @@
 #include "reports/tables/conformal_section.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <functional>
 
 #include <fmt/format.h>
 
-#include "reports/render/template_text.hpp"
 #include "reports/tables/grade_tables.hpp"
-#include "reports/tables/markdown_table.hpp"
+#include "reports/tables/section_support.hpp"
 
 namespace cs::reports {
 namespace {
 
 using schema::Quantity;
 
-constexpr std::size_t kF = mesh_index(kFinestMesh);
-
-bool is_conformal_problem(const schema::ProblemRecord& p) {
-  return p.definition(Quantity::p_mean) != nullptr;
-}
-
-/// The fine-mesh error of a row, or nullopt.
 std::optional<double> fine_error(const schema::RowVerdict* row) {
-  return row == nullptr ? std::nullopt : row->errors[kF];
+  return row == nullptr ? std::nullopt : row->errors[mesh_index(kFinestMesh)];
 }
 
-/// "−0.12 % / +3.4 % (e / g)": mean pressure error / arc deviation and their grades.
+/// "−0.12 % / +3.4 % (e / g)": mean pressure error / arc deviation and their grades; "—"
+/// without either row.
 std::string option_cell(const ResultsIndex& index, schema::ProblemId id, schema::Element element,
                         const Option& option) {
   const auto* mean = index.row(id, Quantity::p_mean, element, option);
   const auto* arc = index.row(id, Quantity::p_arc, element, option);
   if (mean == nullptr && arc == nullptr)
-    return {};
+    return kMissing;
   return fmt::format("{} / {} ({} / {})", format_error_resolved(fine_error(mean)),
                      format_error_resolved(fine_error(arc)), format_grade_cell(index, mean),
                      format_grade_cell(index, arc));
@@ -39,23 +34,20 @@ std::string option_cell(const ResultsIndex& index, schema::ProblemId id, schema:
 std::string options_table(const ResultsIndex& index, const schema::ProblemRecord& p) {
   std::vector<std::string> header{"Element", "Contact"};
   for (const auto a : schema::values<schema::Algorithm>())
-    header.push_back(std::string(schema::to_string(a)));
+    header.emplace_back(schema::to_string(a));
   MarkdownTable table(header);
   for (const auto element : schema::values<schema::Element>()) {
     for (const auto contact : schema::values<schema::ContactKind>()) {
       std::vector<std::string> cells{std::string(schema::to_string(element)),
                                      std::string(schema::to_string(contact))};
-      bool any = false;
-      for (const auto a : schema::values<schema::Algorithm>()) {
-        std::string cell = option_cell(index, p.id, element, {a, contact});
-        any = any || !cell.empty();
-        cells.push_back(cell.empty() ? std::string(kMissing) : cell);
-      }
-      if (any)
+      for (const auto a : schema::values<schema::Algorithm>())
+        cells.push_back(option_cell(index, p.id, element, {a, contact}));
+      if (std::any_of(cells.begin() + 2, cells.end(),
+                      [](const std::string& c) { return c != kMissing; }))
         table.add_row(cells);
     }
   }
-  return table.n_rows() == 0 ? std::string() : table.render();
+  return rendered_if_any(table);
 }
 
 /// The largest |p_mean error| on F over the LM options (LMP, PLM) with ss and mortar.
@@ -71,6 +63,24 @@ std::optional<double> lm_mean_error(const ResultsIndex& index, schema::ProblemId
     }
   }
   return out;
+}
+
+/// The part of one problem; false when it has no row to show.
+bool problem_part(const ResultsIndex& index, const schema::ProblemRecord& p, TemplateData& d) {
+  const std::string table = options_table(index, p);
+  d.set("table", table);
+  const auto lm = lm_mean_error(index, p.id);
+  d.set("lm", text_or_false(lm ? format_error_resolved(*lm) : ""));
+  d.set("lm_within", lm && std::abs(*lm) < 1.0);
+  if (const auto arc = arc_range(index, p.id)) {
+    d.set("arc", true);
+    for (const auto& [key, e] : {std::pair{"worst", arc->worst}, {"best", arc->best}}) {
+      d.set(key, format_error_resolved(e.deviation_percent));
+      d.set(std::string(key) + "_option",
+            fmt::format("{} {}", schema::to_string(e.element), e.option.label()));
+    }
+  }
+  return !table.empty();
 }
 
 }  // namespace
@@ -95,36 +105,8 @@ std::optional<ArcRange> arc_range(const ResultsIndex& index, schema::ProblemId p
 }
 
 std::string conformal_section(const ResultsIndex& index) {
-  TemplateData problems{TemplateData::type::list};
-  for (const schema::ProblemRecord* p : index.problems()) {
-    if (!is_conformal_problem(*p))
-      continue;
-    const std::string table = options_table(index, *p);
-    if (table.empty())
-      continue;
-    TemplateData d;
-    d.set("label", std::string(schema::label(p->id)));
-    d.set("title", p->title);
-    d.set("source", p->exact_source);
-    d.set("table", table);
-    const auto lm = lm_mean_error(index, p->id);
-    d.set("lm", text_or_false(lm ? format_error_resolved(*lm) : ""));
-    d.set("lm_within", lm && std::abs(*lm) < 1.0);
-    if (const auto arc = arc_range(index, p->id)) {
-      d.set("arc", true);
-      for (const auto& [key, e] : {std::pair{"worst", arc->worst}, {"best", arc->best}}) {
-        d.set(key, format_error_resolved(e.deviation_percent));
-        d.set(std::string(key) + "_option",
-              fmt::format("{} {}", schema::to_string(e.element), e.option.label()));
-      }
-    }
-    problems.push_back(d);
-  }
-  if (problems.is_empty_list())
-    return {};
-  TemplateData d;
-  d.set("problems", problems);
-  return tidy_markdown(render_template(templates::conformal_section, d));
+  return per_problem_section(index, Quantity::p_mean, templates::conformal_section,
+                             std::bind_front(problem_part, std::cref(index)));
 }
 
 }  // namespace cs::reports

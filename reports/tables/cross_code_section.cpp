@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <map>
+#include <ranges>
 #include <set>
 #include <tuple>
 
@@ -12,7 +13,7 @@
 #include "reports/figures/figures.hpp"
 #include "reports/figures/gnuplot.hpp"
 #include "reports/pages/page_format.hpp"
-#include "reports/render/template_text.hpp"
+#include "reports/tables/section_support.hpp"
 
 namespace cs::reports {
 namespace {
@@ -30,25 +31,10 @@ bool compared(const schema::CaseSpec& s) {
                                  (s.recovery == schema::Recovery::own && !ours(code_of(s))));
 }
 
-/// The study columns (option sets) another code ran `problem` with, per target.
-std::set<std::pair<schema::TargetKind, Option>> other_columns(const ResultsIndex& index,
-                                                              schema::ProblemId problem) {
-  std::set<std::pair<schema::TargetKind, Option>> out;
-  for (const auto& c : index.results().cases) {
-    if (c.spec.problem == problem && !ours(code_of(c.spec)))
-      out.insert({c.spec.target, Option{c.spec.algorithm, c.spec.contact}});
-  }
-  return out;
-}
-
 using RowKey = std::tuple<bool, std::string, schema::TargetKind, std::string>;
 
 RowKey key_of(const CodeRow& r) {
   return {!ours(r.code), r.code, r.target, r.option};
-}
-
-std::string target_text(schema::TargetKind t) {
-  return std::string(schema::to_string(t));
 }
 
 /// A row's cell on one mesh: the signed error (the value for a singular problem), else the
@@ -92,17 +78,19 @@ std::string checks_cell(const ResultsIndex& index, const RowVerdict* row) {
 }
 
 std::string ansys_cell(const ResultsIndex& index, const schema::StudyReference& study,
-                       const CodeRow& r) {
-  const RowVerdict& row = *(r.common ? r.common : r.own);
-  const auto match = study.find_value(row.spec.problem, row.quantity, row.spec.element,
-                                      row.spec.algorithm, row.spec.contact, kFinestMesh);
-  if (match.value == nullptr)
+                       const RowVerdict& row) {
+  const schema::StudyValue* value =
+      study
+          .find_value(row.spec.problem, row.quantity, row.spec.element, row.spec.algorithm,
+                      row.spec.contact, kFinestMesh)
+          .value;
+  if (value == nullptr)
     return kMissing;
   const auto exact = index.exact_of(row);
   return exact && *exact != 0.0
-             ? fmt::format("{} ({})", match.value->printed,
-                           format_percent(100.0 * (match.value->value - *exact) / *exact))
-             : match.value->printed;
+             ? fmt::format("{} ({})", value->printed,
+                           format_percent(100.0 * (value->value - *exact) / *exact))
+             : value->printed;
 }
 
 MarkdownTable problem_table(const ResultsIndex& index, const schema::StudyReference& study,
@@ -111,73 +99,55 @@ MarkdownTable problem_table(const ResultsIndex& index, const schema::StudyRefere
                    "F interface checks", "F, own basis", "ANSYS F"});
   for (const auto& r : rows) {
     const RowVerdict& any = *(r.common ? r.common : r.own);
-    std::vector<std::string> cells{solver_display_name(r.code), r.option, target_text(r.target),
-                                   Option{any.spec.algorithm, any.spec.contact}.label()};
-    for (std::size_t m = 0; m < kMeshes.size(); ++m)
-      cells.push_back(mesh_cell(index, r.common, m));
-    cells.push_back(grade_cell(r.common));
-    cells.push_back(checks_cell(index, r.common));
-    cells.push_back(ours(r.code) ? std::string("= common") : mesh_cell(index, r.own, 2));
-    cells.push_back(ansys_cell(index, study, r));
-    t.add_row(std::move(cells));
+    t.add_row({solver_display_name(r.code), r.option, std::string(schema::to_string(r.target)),
+               Option{any.spec.algorithm, any.spec.contact}.label(), mesh_cell(index, r.common, 0),
+               mesh_cell(index, r.common, 1), mesh_cell(index, r.common, 2), grade_cell(r.common),
+               checks_cell(index, r.common),
+               ours(r.code) ? std::string("= common") : mesh_cell(index, r.own, 2),
+               ansys_cell(index, study, any)});
   }
   return t;
 }
 
-void add_case(CostLine& line, const CaseResult& c, bool is_ours) {
-  (is_ours ? line.ours_cases : line.cases) += 1;
-  (is_ours ? line.ours_seconds : line.seconds) += c.wall_seconds;
-  double& peak = is_ours ? line.ours_peak_mb : line.peak_mb;
-  peak = std::max(peak, c.peak_rss_mb);
-  line.converged += !is_ours && c.status == schema::CaseStatus::converged ? 1 : 0;
+/// Counts a case in its model's line and in the code's total.
+void add_case(CostLine& line, CostLine& total, const CaseResult& c, bool is_ours) {
+  for (CostLine* l : {&line, &total}) {
+    (is_ours ? l->ours_cases : l->cases) += 1;
+    (is_ours ? l->ours_seconds : l->seconds) += c.wall_seconds;
+    double& peak = is_ours ? l->ours_peak_mb : l->peak_mb;
+    peak = std::max(peak, c.peak_rss_mb);
+    l->converged += !is_ours && c.status == schema::CaseStatus::converged ? 1 : 0;
+  }
+}
+
+/// a / b to 3 digits; "—" unless both are positive (an empty per-case time is 0 / 0).
+std::string ratio(double a, double b) {
+  return a > 0.0 && b > 0.0 ? fmt::format("{:.3g}", a / b) : std::string(kMissing);
 }
 
 std::string per_case(double seconds, int cases) {
   return cases > 0 ? fmt::format("{:.3g}", seconds / cases) : std::string(kMissing);
 }
 
-std::string ratio(double a, double b) {
-  return a > 0.0 && b > 0.0 ? fmt::format("{:.3g}", a / b) : std::string(kMissing);
-}
-
 MarkdownTable cost_table(const CodeCost& cost) {
-  const std::string name = solver_display_name(cost.code);
-  MarkdownTable t({"Models", fmt::format("{} cases (converged)", name), "s per case", "peak MB",
-                   "ours: cases", "s per case", "peak MB", "time per case, ratio",
-                   "memory, ratio"});
-  std::vector<const CostLine*> lines;
-  for (const auto& l : cost.lines)
-    lines.push_back(&l);
-  lines.push_back(&cost.total);
-  for (const CostLine* l : lines) {
-    t.add_row({l->label, fmt::format("{} ({})", l->cases, l->converged),
-               per_case(l->seconds, l->cases), fmt::format("{:.0f}", l->peak_mb),
-               std::to_string(l->ours_cases), per_case(l->ours_seconds, l->ours_cases),
-               fmt::format("{:.0f}", l->ours_peak_mb),
-               l->cases > 0 && l->ours_cases > 0
-                   ? ratio(l->seconds / l->cases, l->ours_seconds / l->ours_cases)
-                   : std::string(kMissing),
-               ratio(l->peak_mb, l->ours_peak_mb)});
+  MarkdownTable t({"Models", fmt::format("{} cases (converged)", solver_display_name(cost.code)),
+                   "s per case", "peak MB", "ours: cases", "s per case", "peak MB",
+                   "time per case, ratio", "memory, ratio"});
+  std::vector<CostLine> lines = cost.lines;
+  lines.push_back(cost.total);
+  for (const CostLine& l : lines) {
+    t.add_row({l.label, fmt::format("{} ({})", l.cases, l.converged), per_case(l.seconds, l.cases),
+               fmt::format("{:.0f}", l.peak_mb), std::to_string(l.ours_cases),
+               per_case(l.ours_seconds, l.ours_cases), fmt::format("{:.0f}", l.ours_peak_mb),
+               ratio(l.seconds / l.cases, l.ours_seconds / l.ours_cases),
+               ratio(l.peak_mb, l.ours_peak_mb)});
   }
   return t;
-}
-
-std::string tally_text(const OptionTally& t) {
-  return fmt::format("e on {} of {} rows", t.e, t.rows);
 }
 
 std::string option_text(const OptionTally& t) {
-  return ours(t.code) ? fmt::format("{} ({} target)", t.option, target_text(t.target)) : t.option;
-}
-
-MarkdownTable tally_table(const std::vector<OptionTally>& tallies, const std::string& code) {
-  MarkdownTable t({"Option", "rows with F", "e", "g", "s", "u", "not evidence"});
-  for (const auto& x : tallies) {
-    if (x.code == code)
-      t.add_row({option_text(x), std::to_string(x.rows), std::to_string(x.e), std::to_string(x.g),
-                 std::to_string(x.s), std::to_string(x.u), std::to_string(x.not_evidence)});
-  }
-  return t;
+  return ours(t.code) ? fmt::format("{} ({} target)", t.option, schema::to_string(t.target))
+                      : t.option;
 }
 
 TemplateData advice_data(const std::vector<OptionTally>& tallies, const std::string& code,
@@ -188,15 +158,24 @@ TemplateData advice_data(const std::vector<OptionTally>& tallies, const std::str
   for (const OptionTally* t : best)
     names.push_back(option_text(*t));
   d.set("advised", text_or_false(join_words(names, " or ")));
-  d.set("score", best.empty() ? std::string() : tally_text(*best.front()));
-  d.set("tally", tally_table(tallies, code).render());
+  d.set("score", best.empty() ? std::string()
+                              : fmt::format("e on {} of {} rows", best[0]->e, best[0]->rows));
+  MarkdownTable tally({"Option", "rows with F", "e", "g", "s", "u", "not evidence"});
+  for (const auto& x : tallies) {
+    if (x.code == code)
+      tally.add_row({option_text(x), std::to_string(x.rows), std::to_string(x.e),
+                     std::to_string(x.g), std::to_string(x.s), std::to_string(x.u),
+                     std::to_string(x.not_evidence)});
+  }
+  d.set("tally", tally.render());
   MarkdownTable mapped({"Option", "family", "study column", "what it runs"});
   for (const auto& m : mappings) {
-    if (m.solver.substr(0, m.solver.find(':')) == code)
-      mapped.add_row({m.solver.substr(m.solver.find(':') + 1), m.fidelity, m.study_option,
+    const std::size_t colon = m.solver.find(':');
+    if (m.solver.substr(0, colon) == code)
+      mapped.add_row({m.solver.substr(colon + 1), m.fidelity, m.study_option,
                       m.target.empty() ? kMissing : m.target});
   }
-  d.set("mapping", text_or_false(mapped.n_rows() > 0 ? mapped.render() : std::string()));
+  d.set("mapping", text_or_false(rendered_if_any(mapped)));
   return d;
 }
 
@@ -219,20 +198,20 @@ std::optional<PlotPanel> profile_panel(const ResultsIndex& index,
       {fmt::format("x / {}", length), Scale::linear, std::pair(0.0, length == "b" ? 1.6 : 1.3)},
       {"contact pressure / p"});
   const CaseResult* with_exact = nullptr;
-  for (const auto& code : solvers_in(index)) {
-    for (const OptionTally* t : advised(tallies, code)) {
-      for (const auto& r : code_rows(index, problem, schema::Quantity::sigma_c, element)) {
-        const CaseResult* c = r.common ? index.case_of(*r.common, schema::MeshLevel::F) : nullptr;
-        if (r.code != code || r.option != t->option || r.target != t->target || c == nullptr ||
-            c->profile.pressure_over_p.empty())
-          continue;
-        panel.series.push_back(
-            curve(fmt::format("{} {}", solver_display_name(code), option_text(*t)),
-                  palette_colour(panel.series.size()), c->profile.x_over_a,
-                  c->profile.pressure_over_p, false));
-        with_exact = with_exact ? with_exact : c;
-      }
-    }
+  // code_rows and the tallies are in the same order: ours first, then by code, target, option.
+  for (const auto& r : code_rows(index, problem, schema::Quantity::sigma_c, element)) {
+    const auto best = advised(tallies, r.code);
+    const auto t = std::find_if(best.begin(), best.end(), [&](const OptionTally* t) {
+      return t->option == r.option && t->target == r.target;
+    });
+    const CaseResult* c = r.common ? index.case_of(*r.common, schema::MeshLevel::F) : nullptr;
+    if (t == best.end() || c == nullptr || c->profile.pressure_over_p.empty())
+      continue;
+    panel.series.push_back(
+        curve(fmt::format("{} {}", solver_display_name(r.code), option_text(**t)),
+              palette_colour(panel.series.size()), c->profile.x_over_a, c->profile.pressure_over_p,
+              false));
+    with_exact = with_exact ? with_exact : c;
   }
   if (with_exact == nullptr || with_exact->exact_profile.empty())
     return std::nullopt;
@@ -245,7 +224,12 @@ std::optional<PlotPanel> profile_panel(const ResultsIndex& index,
 
 std::vector<CodeRow> code_rows(const ResultsIndex& index, schema::ProblemId problem,
                                schema::Quantity quantity, schema::Element element) {
-  const auto columns = other_columns(index, problem);
+  // The study columns (option sets) another code ran `problem` with, per target.
+  std::set<std::pair<schema::TargetKind, Option>> columns;
+  for (const auto& c : index.results().cases) {
+    if (c.spec.problem == problem && !ours(code_of(c.spec)))
+      columns.insert({c.spec.target, Option{c.spec.algorithm, c.spec.contact}});
+  }
   std::map<RowKey, CodeRow> rows;
   for (const auto& r : index.results().rows) {
     const schema::CaseSpec& s = r.spec;
@@ -256,23 +240,17 @@ std::vector<CodeRow> code_rows(const ResultsIndex& index, schema::ProblemId prob
     CodeRow& slot = rows.try_emplace(key_of(row), row).first->second;
     (s.recovery == schema::Recovery::own ? slot.own : slot.common) = &r;
   }
-  std::vector<CodeRow> out;
-  for (auto& [key, row] : rows)
-    out.push_back(row);
-  return out;
+  const auto values = std::views::values(rows);
+  return {values.begin(), values.end()};
 }
 
 std::vector<OptionTally> option_tallies(const ResultsIndex& index) {
   using Cell = std::tuple<schema::ProblemId, schema::Quantity, schema::Element>;
   std::map<RowKey, std::map<Cell, const RowVerdict*>> by_option;
-  for (const schema::ProblemRecord* p : index.problems()) {
-    for (const auto& q : p->quantities) {
-      for (const auto element : schema::values<schema::Element>()) {
-        for (const auto& r : code_rows(index, p->id, q.quantity, element)) {
-          if (r.common != nullptr && r.common->errors[2] && !index.singular(p->id))
-            by_option[key_of(r)][{p->id, q.quantity, element}] = r.common;
-        }
-      }
+  for (const Slot& s : slots_of(index)) {
+    for (const auto& r : code_rows(index, s.problem, s.quantity, s.element)) {
+      if (r.common != nullptr && r.common->errors[2] && !index.singular(s.problem))
+        by_option[key_of(r)][{s.problem, s.quantity, s.element}] = r.common;
     }
   }
   // Like with like within a code: only the rows every option of the code has.
@@ -320,37 +298,33 @@ std::vector<const OptionTally*> advised(const std::vector<OptionTally>& tallies,
 std::vector<CodeCost> code_costs(const ResultsIndex& index) {
   using Model =
       std::tuple<schema::ProblemId, schema::MeshLevel, schema::Element, schema::TargetKind>;
+  const auto model_of = [](const schema::CaseSpec& s) {
+    return Model{s.problem, s.mesh, s.element, s.target};
+  };
   std::map<Model, std::vector<const CaseResult*>> ours_cases;
   for (const auto& c : index.results().cases) {
     if (ours(code_of(c.spec)) && compared(c.spec))
-      ours_cases[{c.spec.problem, c.spec.mesh, c.spec.element, c.spec.target}].push_back(&c);
+      ours_cases[model_of(c.spec)].push_back(&c);
   }
   std::map<schema::ProblemId, std::size_t> order;
   for (const schema::ProblemRecord* p : index.problems())
     order.emplace(p->id, order.size());
   std::vector<CodeCost> out;
   for (const auto& code : solvers_in(index)) {
-    if (ours(code))
-      continue;
     std::map<std::pair<std::size_t, schema::MeshLevel>, CostLine> lines;
     std::set<Model> counted;
-    CodeCost cost;
-    cost.code = code;
+    CodeCost cost{code, {}};
     for (const auto& c : index.results().cases) {
       const schema::CaseSpec& s = c.spec;
-      const Model model{s.problem, s.mesh, s.element, s.target};
-      if (code_of(s) != code || s.recovery != schema::Recovery::spr || !s.overrides.empty() ||
-          !ours_cases.count(model))
+      if (ours(code) || code_of(s) != code || s.recovery != schema::Recovery::spr ||
+          !s.overrides.empty() || !ours_cases.count(model_of(s)))
         continue;
       CostLine& line = lines[{order.count(s.problem) ? order[s.problem] : order.size(), s.mesh}];
       line.label = fmt::format("{} {}", schema::label(s.problem), schema::to_string(s.mesh));
-      add_case(line, c, false);
-      add_case(cost.total, c, false);
-      if (counted.insert(model).second) {
-        for (const CaseResult* o : ours_cases.at(model)) {
-          add_case(line, *o, true);
-          add_case(cost.total, *o, true);
-        }
+      add_case(line, cost.total, c, false);
+      if (counted.insert(model_of(s)).second) {
+        for (const CaseResult* o : ours_cases.at(model_of(s)))
+          add_case(line, cost.total, *o, true);
       }
     }
     for (auto& [k, l] : lines)
@@ -365,13 +339,11 @@ std::vector<Figure> render_cross_code_figure(const ResultsIndex& index,
                                              const std::filesystem::path& out_root,
                                              const FigureOptions& options) {
   const auto tallies = option_tallies(index);
-  Plot plot{"Contact pressure of each code's advised option against the exact one (fine mesh)",
-            {},
-            2,
-            560,
-            400,
-            KeyPlace::inside,
-            1};
+  Plot plot;
+  plot.title = "Contact pressure of each code's advised option against the exact one (fine mesh)";
+  plot.panel_height = 400;
+  plot.key = KeyPlace::inside;
+  plot.key_columns = 1;
   for (const schema::ProblemId id : {schema::ProblemId::H_p, schema::ProblemId::S_1_3}) {
     for (const auto element : schema::values<schema::Element>()) {
       if (auto panel =
@@ -395,26 +367,22 @@ std::string cross_code_section(const ResultsIndex& index, const schema::StudyRef
   const auto codes = solvers_in(index);
   const auto tallies = option_tallies(index);
   TemplateData d("names", solver_names(index));
-  std::vector<std::string> others(codes.begin() + (ours(codes.front()) ? 1 : 0), codes.end());
+  const std::vector<std::string> others(codes.begin() + (ours(codes.front()) ? 1 : 0), codes.end());
   d.set("advice", template_list(others, [&](const std::string& code) {
           return advice_data(tallies, code, mappings);
         }));
-  std::vector<TemplateData> tables;
-  for (const schema::ProblemRecord* p : index.problems()) {
-    for (const auto& q : p->quantities) {
-      for (const auto element : schema::values<schema::Element>()) {
-        const auto rows = code_rows(index, p->id, q.quantity, element);
-        if (std::none_of(rows.begin(), rows.end(), [](const CodeRow& r) { return !ours(r.code); }))
-          continue;
-        TemplateData t("title", fmt::format("{} {} ({}), {}", schema::label(p->id),
-                                            schema::description(q.quantity),
-                                            schema::label(q.quantity), schema::to_string(element)));
-        t.set("table", problem_table(index, study, rows).render());
-        tables.push_back(std::move(t));
-      }
-    }
+  TemplateData tables{TemplateData::type::list};
+  for (const Slot& s : slots_of(index)) {
+    const auto rows = code_rows(index, s.problem, s.quantity, s.element);
+    if (std::all_of(rows.begin(), rows.end(), [](const CodeRow& r) { return ours(r.code); }))
+      continue;
+    TemplateData t("title", fmt::format("{} {} ({}), {}", schema::label(s.problem),
+                                        schema::description(s.quantity), schema::label(s.quantity),
+                                        schema::to_string(s.element)));
+    t.set("table", problem_table(index, study, rows).render());
+    tables.push_back(t);
   }
-  d.set("tables", template_list(tables, [](const TemplateData& t) { return t; }));
+  d.set("tables", tables);
   d.set("has_figures", !figures.empty());
   d.set("figures", template_list(figures, figure_data));
   d.set("costs", template_list(code_costs(index), [](const CodeCost& c) {

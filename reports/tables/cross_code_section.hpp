@@ -1,20 +1,10 @@
 #pragma once
-// The comparison of codes (facts/solvers.hpp: ours, then the others by name), present when the
-// results hold cases of more than one code. Every code is graded on the same two bases:
-//   common  our patch recovery of the code's nodal displacements (spr cases), which separates
-//           the contact discretization's error from the stress recovery's;
-//   own     the code's own nodal stresses, as its users read them (own cases); ours prints
-//           patch-recovered stresses, so its own basis is the common one.
-// A code is compared with ours on the same target (a code with a rigid obstacle beside our
-// rigid-target cases) and with the study's ANSYS value of the column its option's family sits in.
-//
-// - per problem quantity and element: one row per code and option, its signed errors on C, M
-//   and F (common basis), grade and c, the F case's interface checks, the F error on its own
-//   basis and the study's ANSYS F value;
-// - per code, which option to use: the options with the most rows that are evidence (graded,
-//   converged, credible, not luck) and e on F, ties named together;
-// - per code, the cost beside ours on the same models, from the same battery run;
-// - a figure: each code's advised option's F contact pressure against the exact one.
+// The comparison of codes (facts/solvers.hpp), present when the results hold cases of more than
+// one code; its template states the two bases every code is graded on (common: our patch
+// recovery of the code's nodal displacements; own: the code's own nodal stresses). A code is
+// compared with ours on the same target and with the study's ANSYS value of the column its
+// option's family sits in: per row its signed errors, grade and F interface checks; per code
+// the advised option and the cost beside ours; a figure of the advised options' pressures.
 
 #include <filesystem>
 #include <string>

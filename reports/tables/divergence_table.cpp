@@ -7,10 +7,12 @@
 
 #include "grading/divergence.hpp"
 #include "reports/facts/row_facts.hpp"
-#include "reports/render/template_text.hpp"
+#include "reports/tables/section_support.hpp"
 
 namespace cs::reports {
 namespace {
+
+using Values = std::array<std::optional<double>, 3>;
 
 /// "0.46", "−0.05" (the minus sign as in the other tables).
 std::string format_exponent(double alpha) {
@@ -18,26 +20,23 @@ std::string format_exponent(double alpha) {
   return text[0] == '-' ? "−" + text.substr(1) : text;
 }
 
-/// The Eq. 47 cell, the exponent cell and the strict cell of one sequence.
-std::array<std::string, 3> verdict_cells(const std::array<std::optional<double>, 3>& v,
-                                         const std::optional<schema::DivergenceVerdict>& d) {
+/// The values, the Eq. 47 cell, the exponent cell and the strict cell of one sequence.
+std::array<std::string, 4> sequence_cells(const Values& v,
+                                          const std::optional<schema::DivergenceVerdict>& d) {
+  const std::string values =
+      !v[0] && !v[1] && !v[2]
+          ? std::string(kMissing)
+          : join_meshes({format_value(v[0]), format_value(v[1]), format_value(v[2])});
   if (!d)
-    return {kMissing, kMissing, kMissing};
-  return {d->eq47 ? "diverges" : "**does not diverge**",
+    return {values, kMissing, kMissing, kMissing};
+  return {values, d->eq47 ? "diverges" : "**does not diverge**",
           d->exponent ? format_exponent(*d->exponent) : std::string(kMissing),
           d->diverges ? "diverges" : "**does not diverge**: " + strict_failure_reason(v, *d)};
 }
 
-std::string values_text(const std::array<std::optional<double>, 3>& v) {
-  if (!v[0] && !v[1] && !v[2])
-    return kMissing;
-  return join_meshes({format_value(v[0]), format_value(v[1]), format_value(v[2])});
-}
-
 }  // namespace
 
-std::string strict_failure_reason(const std::array<std::optional<double>, 3>& v,
-                                  const schema::DivergenceVerdict& d) {
+std::string strict_failure_reason(const Values& v, const schema::DivergenceVerdict& d) {
   if (d.diverges)
     return {};
   if (!d.exponent) {
@@ -57,54 +56,48 @@ std::string strict_failure_reason(const std::array<std::optional<double>, 3>& v,
 
 DivergenceTableFacts build_divergence_table(const ResultsIndex& index,
                                             const schema::StudyReference& study) {
-  const std::string c(schema::to_string(kMeshes[0])), m(schema::to_string(kMeshes[1])),
-      f(schema::to_string(kMeshes[2]));
+  const std::string cmf = join_meshes({"C", "M", "F"});
   DivergenceTableFacts out{
-      .table = MarkdownTable({"Problem", "Element", "Option", c, m, f, "Eq. 47 (ours)", "α (ours)",
-                              "strict (ours)", fmt::format("ANSYS {} / {} / {}", c, m, f),
-                              "Eq. 47 (ANSYS)", "α (ANSYS)", "strict (ANSYS)"})};
+      .table = MarkdownTable({"Problem", "Element", "Option", "C", "M", "F", "Eq. 47 (ours)",
+                              "α (ours)", "strict (ours)", "ANSYS " + cmf, "Eq. 47 (ANSYS)",
+                              "α (ANSYS)", "strict (ANSYS)"})};
   std::map<const schema::RowVerdict*, DivergenceFacts> facts;
   for (const auto& d : divergence_facts(index))
     facts[d.row] = d;
-  for (const schema::ProblemRecord* p : index.problems()) {
-    if (!p->singular)
+  for (const Slot& s : slots_of(index)) {
+    if (!index.singular(s.problem))
       continue;
-    for (const auto& q : p->quantities) {
-      for (const auto element : schema::values<schema::Element>()) {
-        for (const auto& option : index.options_present(p->id, q.quantity, element)) {
-          const schema::RowVerdict* row = index.row(p->id, q.quantity, element, option);
-          std::optional<schema::DivergenceVerdict> ours;
-          if (const auto it = facts.find(row); it != facts.end()) {
-            ours = schema::DivergenceVerdict{it->second.eq47, false, it->second.exponent,
-                                             it->second.strict};
-            ours->monotone = row->divergence && row->divergence->monotone;
-            (ours->eq47 ? out.eq47 : out.eq47_fails)++;
-            (ours->diverges ? out.strict : out.strict_fails)++;
-            out.eq47_only += ours->eq47 && !ours->diverges;
-            out.fine_not_converged += it->second.fine_converged ? 0 : 1;
-          } else {
-            ++out.undecided;
-          }
-          std::array<std::optional<double>, 3> theirs;
-          for (const auto mesh : kMeshes) {
-            const auto match = study.find_value(p->id, q.quantity, element, option.algorithm,
-                                                option.contact, mesh);
-            if (match.value != nullptr)
-              theirs[mesh_index(mesh)] = match.value->value;
-          }
-          std::optional<schema::DivergenceVerdict> study_verdict;
-          if (theirs[0] && theirs[1] && theirs[2])
-            study_verdict = grading::divergence_verdict(*theirs[0], *theirs[1], *theirs[2]);
-          out.study_strict_fails += study_verdict && !study_verdict->diverges;
-          const auto a = verdict_cells(row->values, ours), b = verdict_cells(theirs, study_verdict);
-          const bool fine_ok = index.state(*row, kFinestMesh) != MeshState::not_converged;
-          out.table.add_row({std::string(schema::label(p->id)),
-                             std::string(schema::to_string(element)), option.label(),
-                             format_value(row->values[0]), format_value(row->values[1]),
-                             format_value(row->values[2]) + (fine_ok ? "" : "!"), a[0], a[1], a[2],
-                             values_text(theirs), b[0], b[1], b[2]});
-        }
+    for (const auto& option : index.options_present(s.problem, s.quantity, s.element)) {
+      const schema::RowVerdict* row = index.row(s.problem, s.quantity, s.element, option);
+      std::optional<schema::DivergenceVerdict> ours;
+      if (const auto it = facts.find(row); it != facts.end()) {
+        const DivergenceFacts& f = it->second;
+        ours = {f.eq47, row->divergence && row->divergence->monotone, f.exponent, f.strict};
+        (f.eq47 ? out.eq47 : out.eq47_fails)++;
+        (f.strict ? out.strict : out.strict_fails)++;
+        out.eq47_only += f.eq47 && !f.strict;
+        out.fine_not_converged += f.fine_converged ? 0 : 1;
+      } else {
+        ++out.undecided;
       }
+      Values theirs;
+      for (const auto mesh : kMeshes) {
+        const auto match = study.find_value(s.problem, s.quantity, s.element, option.algorithm,
+                                            option.contact, mesh);
+        if (match.value != nullptr)
+          theirs[mesh_index(mesh)] = match.value->value;
+      }
+      std::optional<schema::DivergenceVerdict> study_verdict;
+      if (theirs[0] && theirs[1] && theirs[2])
+        study_verdict = grading::divergence_verdict(*theirs[0], *theirs[1], *theirs[2]);
+      out.study_strict_fails += study_verdict && !study_verdict->diverges;
+      const auto a = sequence_cells(row->values, ours), b = sequence_cells(theirs, study_verdict);
+      const bool fine_ok = index.state(*row, kFinestMesh) != MeshState::not_converged;
+      out.table.add_row({std::string(schema::label(s.problem)),
+                         std::string(schema::to_string(s.element)), option.label(),
+                         format_value(row->values[0]), format_value(row->values[1]),
+                         format_value(row->values[2]) + (fine_ok ? "" : "!"), a[1], a[2], a[3],
+                         b[0], b[1], b[2], b[3]});
     }
   }
   return out;
@@ -114,10 +107,9 @@ std::string divergence_section(const ResultsIndex& index, const schema::StudyRef
   const DivergenceTableFacts t = build_divergence_table(index, study);
   if (t.table.n_rows() == 0)
     return {};
-  TemplateData d;
+  TemplateData d("table", t.table.render());
   d.set("min", fmt::format("{}", grading::kDivergenceExponentMin));
   d.set("max", fmt::format("{}", grading::kDivergenceExponentMax));
-  d.set("table", t.table.render());
   for (const auto& [key, n] : {std::pair{"eq47", t.eq47},
                                {"eq47_fails", t.eq47_fails},
                                {"undecided", t.undecided},
@@ -126,8 +118,7 @@ std::string divergence_section(const ResultsIndex& index, const schema::StudyRef
                                {"eq47_only", t.eq47_only},
                                {"study_strict_fails", t.study_strict_fails}})
     d.set(key, std::to_string(n));
-  d.set("fine_not_converged",
-        text_or_false(t.fine_not_converged > 0 ? std::to_string(t.fine_not_converged) : ""));
+  d.set("fine_not_converged", count_or_false(t.fine_not_converged));
   return tidy_markdown(render_template(templates::divergence_table, d));
 }
 

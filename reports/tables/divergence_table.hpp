@@ -1,9 +1,7 @@
 #pragma once
-// The flat-punch divergence table: for the singular problems (F_p, F_a), per element and option
-// set, the edge stress on C, M, F with the two verdicts of grading/divergence.hpp, taken from
-// the row facts (divergence_facts): the study's Eq. 47, |s_C - s_M| < |s_M - s_F|, and the
-// strict one, monotone growth of one sign at a rate alpha (|s| ~ h^-alpha) near the square-root
-// singularity's 1/2; beside the study's ANSYS values with both verdicts applied to them.
+// The flat-punch divergence table: for the singular problems, per element and option set, the
+// edge stress on C, M, F with the two verdicts of grading/divergence.hpp (the study's Eq. 47 and
+// the strict one), ours from the row facts, beside the study's ANSYS values and their verdicts.
 
 #include <array>
 #include <optional>

@@ -1,16 +1,12 @@
 #include "reports/tables/grade_tables.hpp"
 
 #include <algorithm>
-#include <map>
 
 #include <fmt/format.h>
-#include <fmt/ranges.h>
 
 #include "grading/accuracy.hpp"
-#include "grading/convergence.hpp"
 #include "reports/facts/row_facts.hpp"
-#include "reports/render/template_text.hpp"
-#include "reports/tables/option_classes.hpp"
+#include "reports/tables/section_support.hpp"
 
 namespace cs::reports {
 namespace {
@@ -134,80 +130,58 @@ void count(AnsysComparison& c, schema::Grade ours, schema::Grade theirs, const s
   }
 }
 
-/// Builds the cells of one table; a cell compared with ANSYS is graded on extrapolated
-/// stresses where the row has a twin.
-class CellBuilder {
- public:
-  CellBuilder(const ResultsIndex& index, const schema::StudyReference& study,
-              GradeTableFacts& facts)
-      : index_(index), study_(study), facts_(facts), rows_(row_facts(index)) {
-    for (const auto& f : rows_)
-      by_row_[f.row] = &f;
-  }
+/// " ✗" when the F case is not credible, " ‡" when the grade is the luck of one mesh; counted.
+std::string marks(const ResultsIndex& index, const schema::RowVerdict* row, GradeTableFacts& t) {
+  if (row == nullptr || !row->errors[2])
+    return {};
+  const RowFacts f = facts_of_row(index, *row);
+  t.not_credible += f.credible ? 0 : 1;
+  t.luck += f.luck ? 1 : 0;
+  return std::string(f.credible ? "" : " ✗") + (f.luck ? " ‡" : "");
+}
 
-  std::string cell(const StudyRowKey& r, const OptionClass& cls) {
-    const Slot slot{r.problem, *r.quantity, facts_.element};
-    const schema::RowVerdict* row = class_row(index_, cls, slot);
-    const Option& first = cls.members.front();
-    std::string spr = format_grade_cell(index_, row) + marks(row);
-    if (!schema::traits(first.contact).in_study)
-      return spr;
-    const schema::RowVerdict* twin = row ? index_.extrapolated_twin(*row) : nullptr;
-    std::string text = spr;
-    if (twin != nullptr) {
-      const bool twin_luck =
-          twin->errors[0] && twin->errors[1] && twin->errors[2] &&
-          grading::luck_of_one_mesh(*twin->errors[0], *twin->errors[1], *twin->errors[2]);
-      facts_.luck += twin_luck ? 1 : 0;
-      text =
-          fmt::format("{}{} · spr {}", format_grade_cell(index_, twin), twin_luck ? " ‡" : "", spr);
-    }
-    const schema::StudyGrade* g =
-        study_.find_grade(r.problem, r.study_row, facts_.element, first.algorithm, first.contact);
-    text += fmt::format(" │ ANSYS {}", g != nullptr ? g->cell() : std::string(kMissing));
-    text += ansys_physical_regrade(index_, study_, r, facts_.element, first, row);
-    facts_.in_study_any = facts_.in_study_any || g != nullptr;
-    if (g != nullptr && row != nullptr && row->grade) {
-      const std::string where = r.label_md + " " + cls.label();
-      count(facts_.patch, *row->grade, g->grade, where, row->errors[2]);
-      const schema::RowVerdict* printed = twin && twin->grade ? twin : row;
-      facts_.extrapolated = facts_.extrapolated || printed == twin;
-      count(facts_.as_printed, *printed->grade, g->grade, where, printed->errors[2]);
-    }
-    return text;
+/// One cell of the table, counted in `t`; a cell compared with ANSYS is graded on extrapolated
+/// stresses where the row has a twin, the patch-recovered grade beside it.
+std::string table_cell(const ResultsIndex& index, const schema::StudyReference& study,
+                       GradeTableFacts& t, const StudyRowKey& r, const OptionClass& cls) {
+  const schema::RowVerdict* row = class_row(index, cls, {r.problem, *r.quantity, t.element});
+  const Option& first = cls.members.front();
+  const std::string spr = format_grade_cell(index, row) + marks(index, row, t);
+  if (!schema::traits(first.contact).in_study)
+    return spr;
+  const schema::RowVerdict* twin = row ? index.extrapolated_twin(*row) : nullptr;
+  std::string text = spr;
+  if (twin != nullptr) {
+    const bool twin_luck = facts_of_row(index, *twin).luck;
+    t.luck += twin_luck ? 1 : 0;
+    text = fmt::format("{}{} · spr {}", format_grade_cell(index, twin), twin_luck ? " ‡" : "", spr);
   }
-
- private:
-  /// " ✗" when the F case is not credible, " ‡" when the grade is the luck of one mesh.
-  std::string marks(const schema::RowVerdict* row) {
-    const auto it = by_row_.find(row);
-    if (row == nullptr || it == by_row_.end())
-      return {};
-    facts_.not_credible += it->second->credible ? 0 : 1;
-    facts_.luck += it->second->luck ? 1 : 0;
-    return std::string(it->second->credible ? "" : " ✗") + (it->second->luck ? " ‡" : "");
+  const schema::StudyGrade* g =
+      study.find_grade(r.problem, r.study_row, t.element, first.algorithm, first.contact);
+  text += fmt::format(" │ ANSYS {}", g != nullptr ? g->cell() : std::string(kMissing));
+  text += ansys_physical_regrade(index, study, r, t.element, first, row);
+  t.in_study_any = t.in_study_any || g != nullptr;
+  if (g != nullptr && row != nullptr && row->grade) {
+    const std::string where = r.label_md + " " + cls.label();
+    count(t.patch, *row->grade, g->grade, where, row->errors[2]);
+    const schema::RowVerdict* printed = twin && twin->grade ? twin : row;
+    t.extrapolated = t.extrapolated || printed == twin;
+    count(t.as_printed, *printed->grade, g->grade, where, printed->errors[2]);
   }
-
-  const ResultsIndex& index_;
-  const schema::StudyReference& study_;
-  GradeTableFacts& facts_;
-  std::vector<RowFacts> rows_;
-  std::map<const schema::RowVerdict*, const RowFacts*> by_row_;
-};
+  return text;
+}
 
 TemplateData comparison_data(const AnsysComparison& c) {
-  TemplateData d;
-  d.set("compared", std::to_string(c.compared));
+  TemplateData d("compared", std::to_string(c.compared));
   d.set("same", std::to_string(c.same));
   d.set("better", std::to_string(c.better));
   d.set("worse", std::to_string(c.worse));
-  d.set("worse_cells", text_or_false(fmt::format("{}", fmt::join(c.worse_cells, "; "))));
+  d.set("worse_cells", joined_or_false(c.worse_cells, "; "));
   return d;
 }
 
 TemplateData table_data(const GradeTableFacts& t) {
-  TemplateData d;
-  d.set("study_table", t.study_table);
+  TemplateData d("study_table", t.study_table);
   d.set("element", std::string(schema::to_string(t.element)));
   d.set("study_element", std::string(schema::study_name(t.element)));
   d.set("table", t.table.render());
@@ -216,20 +190,17 @@ TemplateData table_data(const GradeTableFacts& t) {
   d.set("has_compared", t.as_printed.compared > 0);
   d.set("as_printed", comparison_data(t.as_printed));
   d.set("patch", comparison_data(t.patch));
-  d.set("has_worse", t.as_printed.worse > 0);
   d.set("not_credible", std::to_string(t.not_credible));
   d.set("luck", std::to_string(t.luck));
   d.set("pairs", template_list(t.pairs, [](const PairFacts& p) {
           const OptionComparison& c = p.compared;
-          const auto count = [](int n) { return text_or_false(n > 0 ? std::to_string(n) : ""); };
-          TemplateData e;
-          e.set("names", p.names);
+          TemplateData e("names", p.names);
           e.set("coincide", c.coincide());
           e.set("same_method", p.same_method);
           e.set("compared", std::to_string(c.compared));
           e.set("differing", std::to_string(c.differing));
-          e.set("only_one", count(c.only_one));
-          e.set("states_differ", count(c.states_differ));
+          e.set("only_one", count_or_false(c.only_one));
+          e.set("states_differ", count_or_false(c.states_differ));
           e.set("max_difference", text_or_false(c.max_relative > kCoincidenceRelative
                                                     ? fmt::format("{:.2g} %", c.max_relative * 100)
                                                     : ""));
@@ -237,8 +208,8 @@ TemplateData table_data(const GradeTableFacts& t) {
           e.set("resolution", fmt::format("{:g} %", kCoincidenceRelative * 100));
           return e;
         }));
-  d.set("rows_absent", text_or_false(fmt::format("{}", fmt::join(t.rows_absent, ", "))));
-  d.set("groups_absent", text_or_false(fmt::format("{}", fmt::join(t.groups_absent, "; "))));
+  d.set("rows_absent", joined_or_false(t.rows_absent, ", "));
+  d.set("groups_absent", joined_or_false(t.groups_absent, "; "));
   return d;
 }
 
@@ -259,13 +230,11 @@ std::vector<StudyRowKey> grade_table_rows(const ResultsIndex& index,
   }
   std::stable_sort(rows.begin(), rows.end(),
                    [](const auto& a, const auto& b) { return a.problem < b.problem; });
-  std::map<schema::ProblemId, int> rows_per_problem;
-  for (const auto& r : rows)
-    ++rows_per_problem[r.problem];
   for (auto& r : rows) {
-    r.label_md = std::string(schema::label(r.problem));
-    if (rows_per_problem[r.problem] > 1)
-      r.label_md += fmt::format(" ({})", r.study_row);
+    const auto n = std::count_if(rows.begin(), rows.end(),
+                                 [&](const StudyRowKey& o) { return o.problem == r.problem; });
+    r.label_md = fmt::format("{}{}", schema::label(r.problem),
+                             n > 1 ? fmt::format(" ({})", r.study_row) : "");
   }
   return rows;
 }
@@ -322,11 +291,10 @@ std::optional<GradeTableFacts> build_grade_table(const ResultsIndex& index,
     }
   }
   facts.table = MarkdownTable(header);
-  CellBuilder cells(index, study, facts);
   for (const auto& r : present) {
     std::vector<std::string> row{r.label_md};
     for (const auto& cls : classes)
-      row.push_back(cells.cell(r, cls));
+      row.push_back(table_cell(index, study, facts, r, cls));
     facts.table.add_row(std::move(row));
   }
   for (const auto& [a, b] : stated_pairs(study)) {
@@ -345,8 +313,7 @@ std::string grade_tables_section(const ResultsIndex& index, const schema::StudyR
   }
   if (tables.empty())
     return {};
-  TemplateData d;
-  d.set("tables", template_list(tables, table_data));
+  TemplateData d("tables", template_list(tables, table_data));
   std::vector<std::string> renamed;
   for (const Algorithm a : schema::values<Algorithm>()) {
     if (schema::study_name(a) != schema::to_string(a))

@@ -1,18 +1,10 @@
 #pragma once
-// The equivalents of the study's Tables 2a (4Q) and 2b (8Q): per Table 2 row (a problem's
-// quantity with a `study_row`) and option column, our grade beside the study's ANSYS grade.
-//
-// ANSYS prints extrapolated nodal stresses, so where a cell is compared with ANSYS our grade is
-// that of the row's extrapolated twin (ResultsIndex::extrapolated_twin), and the
-// patch-recovered grade sits beside it: "g, c · spr e, c │ ANSYS e, c". The counts of cells
-// better or worse than ANSYS come from those extrapolated grades (patch recovery where no
-// extrapolated case ran). A cell whose F case fails the interface checks (RowFacts::credible)
-// is marked ✗, a grade that is the luck of one mesh ‡.
-//
-// Columns follow the study's (AL, PM split by contact type; LMP, PLM; MPC, the study's IMC),
-// then one per contact type it did not have (mortar); our option sets share a column only
-// where their results coincide (option_classes.hpp). Rows and columns with no data are left
-// out and named.
+// The equivalents of the study's Tables 2a (4Q) and 2b (8Q): per Table 2 row and option column,
+// our grade beside the study's ANSYS grade (the template's legend says how a cell reads). Where
+// a cell is compared with ANSYS, which prints extrapolated nodal stresses, our grade is that of
+// the row's extrapolated twin, the patch-recovered grade beside it. Columns follow the study's,
+// then one per contact type it did not have; our option sets share a column only where their
+// results coincide (option_classes.hpp).
 
 #include <optional>
 #include <string>

@@ -2,13 +2,12 @@
 
 #include <algorithm>
 #include <array>
-#include <map>
+#include <span>
 
 #include <fmt/format.h>
 
 #include "grading/interface_check_rules.hpp"
-#include "reports/render/template_text.hpp"
-#include "reports/tables/markdown_table.hpp"
+#include "reports/tables/section_support.hpp"
 
 namespace cs::reports {
 namespace {
@@ -22,11 +21,6 @@ bool covered(const schema::CaseResult& c) {
   return c.interface && c.spec.recovery == schema::Recovery::spr;
 }
 
-struct Failing {
-  std::string meshes;
-  double worst = 0.0;
-};
-
 std::string summary_table(const ResultsIndex& index) {
   MarkdownTable table({"Check", "Measure", "Tolerance", "Cases checked", "Failing", "Worst case"});
   for (const auto& check : grading::interface_check_rules()) {
@@ -34,9 +28,7 @@ std::string summary_table(const ResultsIndex& index) {
     const schema::CaseResult* worst = nullptr;
     double worst_value = -1.0;
     for (const auto& c : index.results().cases) {
-      if (!covered(c))
-        continue;
-      const auto v = check.measure(*c.interface);
+      const auto v = covered(c) ? check.measure(*c.interface) : std::nullopt;
       if (!v)
         continue;
       ++checked;
@@ -55,16 +47,20 @@ std::string summary_table(const ResultsIndex& index) {
   return table.render();
 }
 
-/// The (problem, element, option, check) pairs that fail, in document order, with the meshes
-/// on which they fail and the worst value.
-MarkdownTable failing_table(const ResultsIndex& index) {
-  std::map<std::array<std::string, 4>, Failing> failing;
-  std::vector<std::array<std::string, 4>> order;
+/// A (problem, element, option, check) that fails, the meshes on which it does and its worst
+/// value.
+struct Failing {
+  std::array<std::string, 4> key;
+  std::string meshes;
+  double worst = 0.0;
+};
+
+/// The failing checks in document order.
+std::vector<Failing> failing_checks(const ResultsIndex& index) {
+  std::vector<Failing> out;
   for (const auto& c : index.results().cases) {
-    if (!covered(c))
-      continue;
     for (const auto& check : grading::interface_check_rules()) {
-      const auto v = check.measure(*c.interface);
+      const auto v = covered(c) ? check.measure(*c.interface) : std::nullopt;
       if (!v || !grading::fails(check, *v))
         continue;
       const std::string variant = variant_of(c.spec);
@@ -74,20 +70,15 @@ MarkdownTable failing_table(const ResultsIndex& index) {
           fmt::format("{} {}{}{}", schema::to_string(c.spec.algorithm),
                       schema::to_string(c.spec.contact), variant.empty() ? "" : " ", variant),
           std::string(check.name)};
-      auto [it, inserted] = failing.try_emplace(key);
-      if (inserted)
-        order.push_back(key);
-      it->second.meshes += std::string(it->second.meshes.empty() ? "" : ", ") +
-                           std::string(schema::to_string(c.spec.mesh));
-      it->second.worst = std::max(it->second.worst, *v);
+      auto it =
+          std::find_if(out.begin(), out.end(), [&](const Failing& f) { return f.key == key; });
+      if (it == out.end())
+        it = out.insert(out.end(), Failing{key, {}, 0.0});
+      it->meshes += (it->meshes.empty() ? "" : ", ") + std::string(schema::to_string(c.spec.mesh));
+      it->worst = std::max(it->worst, *v);
     }
   }
-  MarkdownTable table({"Problem", "Element", "Option", "Check", "Meshes", "Worst"});
-  for (const auto& key : order) {
-    const Failing& f = failing.at(key);
-    table.add_row({key[0], key[1], key[2], key[3], f.meshes, fmt::format("{:.3g}", f.worst)});
-  }
-  return table;
+  return out;
 }
 
 }  // namespace
@@ -96,17 +87,18 @@ std::string interface_section(const ResultsIndex& index) {
   const auto& cases = index.results().cases;
   if (std::none_of(cases.begin(), cases.end(), covered))
     return {};
-  const MarkdownTable failing = failing_table(index);
-  MarkdownTable listed(failing.header());
-  for (std::size_t i = 0; i < failing.n_rows() && i < kListed; ++i)
-    listed.add_row(failing.rows()[i]);
-  TemplateData d;
-  d.set("tolerance", fmt::format("{:g}", schema::kPenetrationTolerance));
+  const std::vector<Failing> failing = failing_checks(index);
+  const MarkdownTable listed = table_of(
+      {"Problem", "Element", "Option", "Check", "Meshes", "Worst"},
+      std::span(failing).first(std::min(failing.size(), kListed)), [](const Failing& f) {
+        return std::vector<std::string>{f.key[0], f.key[1], f.key[2],
+                                        f.key[3], f.meshes, fmt::format("{:.3g}", f.worst)};
+      });
+  TemplateData d("tolerance", fmt::format("{:g}", schema::kPenetrationTolerance));
   d.set("summary", summary_table(index));
-  d.set("n_failing", text_or_false(failing.n_rows() > 0 ? std::to_string(failing.n_rows()) : ""));
+  d.set("n_failing", count_or_false(failing.size()));
   d.set("failing", listed.render());
-  d.set("more", text_or_false(
-                    failing.n_rows() > kListed ? std::to_string(failing.n_rows() - kListed) : ""));
+  d.set("more", count_or_false(failing.size() - std::min(failing.size(), kListed)));
   return tidy_markdown(render_template(templates::interface_table, d));
 }
 
