@@ -170,6 +170,7 @@ std::vector<std::string> crossings(const ParameterSeries& s, double target) {
 }
 
 /// Can any FKN reproduce the study's AL error on S(1/3) (sigma_c, Q4, ss, mesh F)? Into `d`.
+/// Only our own series of the study's option set count (builtin, discretized target, spr).
 void set_study_al(TemplateData& d, const std::vector<ParameterSeries>& series,
                   const schema::StudyReference& study) {
   using schema::ProblemId, schema::Element, schema::ContactKind, schema::MeshLevel;
@@ -185,7 +186,7 @@ void set_study_al(TemplateData& d, const std::vector<ParameterSeries>& series,
     const schema::CaseSpec& b = s.spec;
     return b.problem == ProblemId::S_1_3 && s.quantity == Quantity::sigma_c &&
            b.algorithm == Algorithm::AL && b.element == Element::Q4 &&
-           b.contact == ContactKind::ss && b.mesh == MeshLevel::F && b.overrides.empty() &&
+           b.contact == ContactKind::ss && b.mesh == MeshLevel::F && schema::is_baseline(b) &&
            s.error_range();
   });
   d.set("study_al", template_list(ours, [&](const ParameterSeries* s) {
@@ -341,7 +342,7 @@ TemplateData e_ratio(const std::vector<ParameterSeries>& series, double smallest
     latest = std::max(latest, settled);
     TemplateData d("row", s->label());
     d.set("from", format_parameter(settled));
-    d.set("last", format_percent(*last.error));
+    d.set("last", format_error_resolved(*last.error));
     d.set("at", format_parameter(last.parameter));
     rows.push_back(d);
   }

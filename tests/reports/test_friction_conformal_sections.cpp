@@ -109,6 +109,22 @@ TEST(FrictionSection, ComparesLmpWithPlm) {
   EXPECT_EQ(conformal_section(index), "");
 }
 
+// Requirement: a fine-mesh value without an error (an exact value of zero) stands alone in the
+// LMP/PLM table; no NaN is printed.
+TEST(FrictionSection, AValueWithoutAnErrorPrintsNoNan) {
+  schema::ResultsDocument doc;
+  doc.problems.push_back(suites::problem_descriptor(ProblemId::CM_p).record);
+  for (const auto a : {Algorithm::LMP, Algorithm::PLM}) {
+    auto r = row(ProblemId::CM_p, Quantity::c_over_a, Element::Q4, a, ContactKind::ss, {8, 4, 2});
+    r.errors[2].reset();
+    doc.rows.push_back(r);
+  }
+  const ResultsIndex index(doc);
+  const std::string md = friction_section(index);
+  EXPECT_NE(md.find("| 1.0200 | 1.0200 |"), std::string::npos) << md;
+  EXPECT_EQ(md.find("nan"), std::string::npos) << md;
+}
+
 TEST(FrictionAndConformalSections, AbsentFromTheStudySample) {
   const testing::Loaded data(testing::sample_json());
   EXPECT_EQ(friction_section(data.index), "");

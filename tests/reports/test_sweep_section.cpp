@@ -127,6 +127,14 @@ TEST(SweepSection, StudyAlErrorOnSOneThird) {
   const ResultsIndex b(none);
   EXPECT_NE(sweep_section(b, testing::study(), {}).find("is reproduced by no swept FKN"),
             std::string::npos);
+  // Only our own series of the study's option set is compared with the study's value: the same
+  // crossing against a rigid target is another option set.
+  auto rigid = crossing;
+  for (auto& c : rigid.cases)
+    c.spec.target = schema::TargetKind::Rigid;
+  const ResultsIndex r(rigid);
+  const std::string rigid_md = sweep_section(r, testing::study(), {});
+  EXPECT_EQ(rigid_md.find("is reproduced near FKN"), std::string::npos) << rigid_md;
 }
 
 // Requirement: the E ratio stops mattering where every larger ratio is within kSettledPoints
@@ -153,6 +161,15 @@ TEST(SweepSection, ERatioSettlesAndFtolnSpread) {
   EXPECT_NE(md.find("the largest change of an error is 0 percentage points"), std::string::npos)
       << md;
   EXPECT_NE(md.find("it changes nothing"), std::string::npos) << md;
+  // An error at round-off level keeps its digits and sign; it is not printed as +0.00 %.
+  const auto exact = document(
+      {swept_case(ProblemId::Pprime_p, Element::Q4, Algorithm::AL, "E_ratio", 1e3, 2e-10, 4),
+       swept_case(ProblemId::Pprime_p, Element::Q4, Algorithm::AL, "E_ratio", 1e9, 1.3e-10, 4)},
+      {{"E_ratio", {1e3, 1e9}}});
+  const ResultsIndex exact_index(exact);
+  const std::string exact_md = sweep_section(exact_index, testing::study(), {});
+  EXPECT_NE(exact_md.find("(+1.3e-10 % at 1e+09)"), std::string::npos) << exact_md;
+  EXPECT_EQ(exact_md.find("+0.00 %"), std::string::npos) << exact_md;
 }
 
 }  // namespace
