@@ -25,4 +25,15 @@ struct FlamantLoad {
 /// point (0, 0), or a point so close to it that the stress overflows.
 PlaneStress flamant_stress(const FlamantLoad& load, PlanePoint at);
 
+/// The direction of a line load on the surface: into the body (e_z) or along it (e_x).
+enum class LineLoadDirection { normal, tangential };
+
+/// The radial field of a line load F per unit length along `direction` at the origin:
+///   sigma_rr = -(2F / pi) (d . e_r) / r,  d = e_z (normal) or e_x (tangential),
+/// in Cartesian components sigma_ij = sigma_rr (e_r)_i (e_r)_j; flamant_stress and
+/// flamant_tangential_stress are its two cases. Checks the point as they do (`where` names the
+/// caller); the load's own checks are the caller's.
+PlaneStress radial_line_load_stress(const char* where, double F, LineLoadDirection direction,
+                                    PlanePoint at);
+
 }  // namespace cs::oracles
