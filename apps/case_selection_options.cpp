@@ -1,5 +1,8 @@
 #include "apps/case_selection_options.hpp"
 
+#include <fmt/format.h>
+
+#include "suites/problem_catalog.hpp"
 #include "suites/problem_setup.hpp"
 
 namespace cs::apps {
@@ -18,7 +21,9 @@ std::vector<E> parse_all(const std::vector<std::string>& raw, const char* option
 }  // namespace
 
 void add_selection_options(CLI::App& cmd, SelectionArgs& args) {
-  cmd.add_option("--problems", args.problems, "Problems (default: all 11)");
+  cmd.add_option(
+      "--problems", args.problems,
+      fmt::format("Problems (default: the study's {})", suites::study_problems().size()));
   cmd.add_option("--meshes", args.meshes, "Mesh levels C M F (default: all)");
   cmd.add_option("--elements", args.elements, "Elements Q4 Q8 (default: both)");
   cmd.add_option("--algorithms", args.algorithms, "Algorithms AL PM LMP PLM MPC (default: all)");
