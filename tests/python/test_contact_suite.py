@@ -63,6 +63,7 @@ def declared_oracles():
     helpers = {"format_value", "require_positive", "require_non_negative", "require_finite",
                "require_poisson_ratio", "require_friction_coefficient",
                "require_in_half_space", "to_string", "length_scale", "mcewen_roots",
+               "radial_line_load_stress",
                "integrate", "integrate_with_breakpoints", "integrate_to_infinity",
                "integrate_algebraic_ends", "integrate_cauchy_principal_value"}
     names = set()
