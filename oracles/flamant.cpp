@@ -10,6 +10,7 @@ namespace cs::oracles {
 
 PlaneStress radial_line_load_stress(const char* where, double F, LineLoadDirection direction,
                                     PlanePoint at) {
+  require_finite(where, "line load per unit length", F);
   require_finite(where, "position x", at.x);
   require_in_half_space(where, at.z);
   if (at.x == 0.0 && at.z == 0.0) {

@@ -32,7 +32,7 @@ enum class LineLoadDirection { normal, tangential };
 ///   sigma_rr = -(2F / pi) (d . e_r) / r,  d = e_z (normal) or e_x (tangential),
 /// in Cartesian components sigma_ij = sigma_rr (e_r)_i (e_r)_j; flamant_stress and
 /// flamant_tangential_stress are its two cases. Checks the point as they do (`where` names the
-/// caller); the load's own checks are the caller's.
+/// caller) and that F is finite; the load's own conditions (P > 0, Q != 0) are the caller's.
 PlaneStress radial_line_load_stress(const char* where, double F, LineLoadDirection direction,
                                     PlanePoint at);
 

@@ -1,9 +1,9 @@
 #include "reports/bench/bench_results.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <fstream>
-#include <regex>
 #include <sstream>
 #include <tuple>
 
@@ -23,15 +23,35 @@ using nlohmann::json;
 
 /// `text` with Google Benchmark's bare NaN, -NaN, Infinity and -Infinity values replaced by
 /// null, so that it parses as JSON; strings are copied as they are.
-std::string json_without_nonfinite(const std::string& text) {
-  static const std::regex token(R"re(("(?:[^"\\]|\\.)*")|-?(?:NaN|Infinity)\b)re");
+std::string json_without_nonfinite(std::string_view text) {
+  // One pass, no recursion: a string of any length (a long label) is copied as it is.
   std::string out;
-  auto rest = text.cbegin();
-  for (std::sregex_iterator it(text.begin(), text.end(), token), end; it != end; ++it) {
-    out.append(rest, (*it)[0].first).append((*it)[1].matched ? it->str() : "null");
-    rest = (*it)[0].second;
+  out.reserve(text.size());
+  for (std::size_t i = 0; i < text.size();) {
+    if (text[i] == '"') {
+      std::size_t end = i + 1;
+      while (end < text.size() && text[end] != '"')
+        end += text[end] == '\\' ? 2 : 1;
+      end = std::min(end + 1, text.size());
+      out.append(text.substr(i, end - i));
+      i = end;
+      continue;
+    }
+    const std::size_t word = i + (text[i] == '-' ? 1 : 0);
+    const auto bare = [&](std::string_view name) {
+      const std::size_t after = word + name.size();
+      return text.substr(word, name.size()) == name &&
+             (after == text.size() || std::isalnum(static_cast<unsigned char>(text[after])) == 0);
+    };
+    const std::size_t length = bare("NaN") ? 3 : bare("Infinity") ? 8 : 0;
+    if (length > 0) {
+      out += "null";
+      i = word + length;
+    } else {
+      out += text[i++];
+    }
   }
-  return out.append(rest, text.cend());
+  return out;
 }
 
 BenchContext read_context(const json& doc) {

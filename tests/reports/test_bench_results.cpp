@@ -147,6 +147,23 @@ TEST(BenchResults, ReadsNonFiniteValuesAsNoValue) {
             R"(not converged: "NaN" at step Infinity)");
 }
 
+TEST(BenchResults, AStringOfAnyLengthIsRead) {
+  // The non-finite values are replaced in one pass: a label of 300,000 characters (with an
+  // escaped quote and a NaN in it) is read as written, and a NaN after it still reads as none.
+  TempDir tmp;
+  std::string text = read_text(bench_path());
+  const std::string label(300000, 'x');
+  const auto replace = [&](const std::string& from, const std::string& to) {
+    text.replace(text.find(from), from.size(), to);
+  };
+  replace("active set cycles between two states", R"(\"NaN\" )" + label);
+  replace("\"ratio\": 1.4", "\"ratio\": NaN");
+  write_text(tmp.path() / "long.json", text);
+  const BenchResults r = load_bench_files({tmp.path() / "long.json"});
+  EXPECT_EQ(find(r, "H_p", "F", "Q4", "ss", "LM").label, "not converged: \"NaN\" " + label);
+  EXPECT_FALSE(find(r, "H_p", "F", "Q4", "ss", "PM").ratio().has_value());
+}
+
 /// One entry of a benchmarks array: Contact/H_p/M/Q4/ss/PM with the given time and extras.
 std::string entry(const std::string& extra, double real_time, double ratio) {
   return R"({"name": "Contact/H_p/M/Q4/ss/PM/iterations:1/manual_time)" + extra +
