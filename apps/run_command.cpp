@@ -172,8 +172,8 @@ int run(const RunArgs& args) {
     std::fprintf(stderr, "contact-suite: --jobs %d on %d core%s found: workers will share cores\n",
                  jobs, cores, cores == 1 ? "" : "s");
   }
-  // BLAS threads per model from the model and the machine (apps/model_cost.hpp), never from
-  // --jobs: results stay bit-identical for every --jobs. One until a threaded model starts.
+  // One BLAS thread for every model (apps/model_cost.hpp): the cores go to models side by side,
+  // and a case's results never depend on --jobs, the schedule or the selection.
   suites::set_blas_threads(1);
   const bool interactive = isatty(fileno(stderr)) != 0;
   suites::ProgressReporter progress(cases.size(), stderr, interactive);
@@ -181,8 +181,6 @@ int run(const RunArgs& args) {
   options.jobs = jobs;
   options.on_case_done = [&progress](const suites::CaseResult& r) { progress.case_done(r); };
   options.group_cost = group_cost;
-  options.group_threads = [cores](const suites::CaseSpec& c) { return model_threads(c, cores); };
-  options.set_threads = [](int threads) { suites::set_blas_threads(threads); };
   // Memory in proportion to the cost estimate, planned against what the machine has
   // (apps/memory_plan.hpp): refused now, or scheduled to fit.
   const auto largest =

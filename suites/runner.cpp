@@ -19,22 +19,14 @@ struct Group {
   std::vector<std::size_t> members;
   double cost = 1.0;
   double memory = 0.0;  ///< estimated, for the memory-aware schedule
-  int threads = 1;      ///< BLAS threads of its model; > 1: runs alone
 };
 
 /// Hands out groups in order, holding back one whose estimated memory would take the running
-/// total beyond the budget (unless nothing runs): the next one that fits goes first. A threaded
-/// group (threads > 1) starts only when nothing runs, and nothing starts beside it; the first
-/// group in order that waits for that holds back the groups after it, so that the largest still
-/// go first. Before a group starts with another thread count than the current one, set_threads.
+/// total beyond the budget (unless nothing runs): the next one that fits goes first.
 class GroupQueue {
  public:
-  GroupQueue(const std::vector<const Group*>& groups, double budget,
-             const std::function<void(int)>& set_threads)
-      : groups_(groups),
-        started_(groups.size(), false),
-        budget_(budget),
-        set_threads_(set_threads) {}
+  GroupQueue(const std::vector<const Group*>& groups, double budget)
+      : groups_(groups), started_(groups.size(), false), budget_(budget) {}
 
   /// The next group to run, or nullopt when every group has started or `stop` says so.
   std::optional<std::size_t> take(const std::function<bool()>& stop) {
@@ -47,14 +39,8 @@ class GroupQueue {
         if (started_[g])
           continue;
         any_left = true;
-        const int threads = groups_[g]->threads;
-        if (running_ > 0 && (threads > 1 || threads_ > 1))
-          break;  // a threaded group runs alone: wait for it, or for the others to finish
         const double need = groups_[g]->memory;
         if (running_ == 0 || budget_ <= 0.0 || memory_ + need <= budget_) {
-          if (threads != threads_ && set_threads_)
-            set_threads_(threads);  // nothing runs: no group's BLAS changes under it
-          threads_ = threads;
           started_[g] = true;
           ++running_;
           memory_ += need;
@@ -80,8 +66,6 @@ class GroupQueue {
   const std::vector<const Group*>& groups_;
   std::vector<bool> started_;
   double budget_;
-  std::function<void(int)> set_threads_;
-  int threads_ = 0;  ///< the BLAS thread count of the groups running (0: not set yet)
   int running_ = 0;
   double memory_ = 0.0;
   std::mutex mutex_;
@@ -180,8 +164,6 @@ std::vector<CaseResult> run_cases(const std::vector<CaseSpec>& cases,
         it->second.cost = options.group_cost(cases[i]);
       if (options.group_memory)
         it->second.memory = options.group_memory(cases[i]);
-      if (options.group_threads)
-        it->second.threads = std::max(1, options.group_threads(cases[i]));
     }
     it->second.members.push_back(i);
   }
@@ -200,7 +182,7 @@ std::vector<CaseResult> run_cases(const std::vector<CaseSpec>& cases,
     std::lock_guard lock(done_mutex);
     options.on_case_done(r);
   };
-  GroupQueue queue(groups, options.group_memory ? options.memory_budget : 0.0, options.set_threads);
+  GroupQueue queue(groups, options.group_memory ? options.memory_budget : 0.0);
   auto worker = [&] {
     while (const auto g = queue.take(options.should_stop)) {
       run_group(*groups[*g], cases, make_executor, results, done);

@@ -5,11 +5,10 @@
 // Cases that differ only in algorithm, contact discretization or contact settings share one
 // model: the runner builds it once (an executor per group, made by the factory) and runs the
 // variants on it one after the other, so assembly and factorization are not repeated. Groups
-// are handed to workers largest first. A group whose factorization uses several BLAS threads
-// (group_threads) runs alone, with the process's BLAS thread count set to its own; the others
-// run side by side with one thread each. So a group's thread count, and with it its results, is
-// never the other groups' doing. A failure — an exception from the factory or from an
-// executor — becomes a `failed` result with the reason; the run goes on.
+// are handed to workers largest first and run side by side, each on its worker's thread: the
+// process's BLAS thread count is its caller's (one, for `run`), never the schedule's, so a
+// group's results are never the other groups' doing. A failure — an exception from the factory or
+// from an executor — becomes a `failed` result with the reason; the run goes on.
 
 #include <functional>
 #include <memory>
@@ -46,12 +45,6 @@ struct RunnerOptions {
   /// or waits. Empty or budget <= 0: no limit. Results do not depend on the schedule.
   std::function<double(const CaseSpec&)> group_memory;
   double memory_budget = 0.0;
-  /// BLAS threads of a group's model (a function of the model and the machine only); empty: 1.
-  /// A group with more than one runs alone.
-  std::function<int(const CaseSpec&)> group_threads;
-  /// Sets the process's BLAS thread count; called before a group starts whose count differs
-  /// from the current one (no group runs then). Empty: nothing is set.
-  std::function<void(int)> set_threads;
   /// Polled before each group: when it returns true no further group starts (an interrupt);
   /// the cases not run keep a default (failed) result. Empty: never stop.
   std::function<bool()> should_stop;

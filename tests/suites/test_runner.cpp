@@ -173,64 +173,6 @@ TEST(Runner, MemoryBudgetKeepsTheLargestModelsApart) {
   }
 }
 
-/// Checks, in every case of its group, that the process's BLAS thread count is the group's own
-/// and that a threaded group runs alone.
-class ThreadsExecutor : public GroupExecutor {
- public:
-  ThreadsExecutor(int threads, const std::atomic<int>& blas, std::atomic<int>& running,
-                  std::atomic<int>& violations)
-      : threads_(threads), blas_(blas), running_(running), violations_(violations) {
-    ++running_;
-  }
-  ~ThreadsExecutor() override { --running_; }
-  CaseResult run(const CaseSpec&) override {
-    std::this_thread::sleep_for(std::chrono::milliseconds(2));
-    if (blas_.load() != threads_ || (threads_ > 1 && running_.load() != 1))
-      ++violations_;
-    CaseResult r;
-    r.status = CaseStatus::converged;
-    return r;
-  }
-
- private:
-  int threads_;
-  const std::atomic<int>& blas_;
-  std::atomic<int>& running_;
-  std::atomic<int>& violations_;
-};
-
-// Requirement (issue 27): a model's BLAS thread count is its own whatever --jobs is: a threaded
-// model (here the M meshes, 2 threads) runs alone with the count set to 2, the others with 1,
-// side by side; the threaded (largest) ones still go first. Fails if a group ever runs under
-// another group's count or beside a threaded one.
-TEST(Runner, ThreadedModelsRunAloneWithTheirOwnThreadCount) {
-  const auto cases = small_matrix();  // 8 models: 4 on M, 4 on C
-  auto threads = [](const CaseSpec& s) { return s.mesh == MeshLevel::M ? 2 : 1; };
-  for (const int jobs : {1, 2, 4}) {
-    std::atomic<int> blas{-1}, running{0}, violations{0};
-    std::vector<int> set_calls;
-    RunnerOptions options;
-    options.jobs = jobs;
-    options.group_cost = [](const CaseSpec& s) { return s.mesh == MeshLevel::M ? 4.0 : 1.0; };
-    options.group_threads = threads;
-    options.set_threads = [&](int t) {
-      set_calls.push_back(t);  // called with no group running: no data race
-      blas = t;
-    };
-    const auto results = run_cases(
-        cases,
-        [&](const CaseSpec& s) {
-          return std::make_unique<ThreadsExecutor>(threads(s), blas, running, violations);
-        },
-        options);
-    for (const auto& r : results)
-      EXPECT_EQ(r.status, CaseStatus::converged);
-    EXPECT_EQ(violations.load(), 0) << "jobs " << jobs;
-    // Largest (threaded) first, then the others: the count changes once.
-    EXPECT_EQ(set_calls, (std::vector<int>{2, 1})) << "jobs " << jobs;
-  }
-}
-
 TEST(Runner, ContactOnlyParametersShareTheModel) {
   CaseSpec a, b;
   b.overrides["fkn"] = 10;
