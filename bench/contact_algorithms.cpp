@@ -33,7 +33,7 @@
 // one analysis, measured after the set, in a warm process) and ratio = time / one_case_s (the
 // target is at most 1.3: every case after the first adds little to the factorization); the same
 // in process CPU time (one_case_cpu_s, ratio_cpu), which a loaded machine leaves comparable; and
-// blas_threads, the model's BLAS threads as `run` and `case` give them.
+// blas_threads: one for the set and for the one analysis, as `run` gives every model.
 //   ModelCases/<problem>/<mesh>/<element>                       e.g. ModelCases/H_p/F/Q8
 //
 // Run:  build-*/bench/bench_contact_algorithms --benchmark_filter='Contact/H_p/M/'   (H_p, M)
@@ -58,8 +58,6 @@
 #include <benchmark/benchmark.h>
 #include <fmt/format.h>
 
-#include "apps/model_cost.hpp"
-#include "platform/available_cores.hpp"
 #include "solver/contact/contact_analysis.hpp"
 #include "solver/linear_static.hpp"
 #include "suites/case_matrix.hpp"
@@ -228,9 +226,9 @@ std::vector<suites::CaseSpec> model_cases(const suites::CaseSpec& model) {
 /// A model's full set of cases on one executor, against one analysis of the model.
 void BM_ModelCases(benchmark::State& state, const suites::CaseSpec& model) {
   const std::vector<suites::CaseSpec> cases = model_cases(model);
-  // The BLAS threads `contact-suite run` and `case` give the model (apps/model_cost.hpp).
+  // One BLAS thread, as `contact-suite run` gives every model (apps/model_cost.hpp).
   const int threads_before = suites::blas_threads();
-  const int threads = apps::model_threads(model, platform::available_cores());
+  const int threads = 1;
   suites::set_blas_threads(threads);
   int converged = 0;
   double seconds = 0.0, cpu = 0.0;
