@@ -124,6 +124,9 @@ int run_case(const CaseArgs& args) {
   std::unique_ptr<suites::GroupExecutor> executor;
   try {
     executor = suites::make_executor_for(spec);
+    auto* builtin = dynamic_cast<suites::ProblemExecutor*>(executor.get());
+    if (args.vtu_given && builtin)
+      builtin->recover_whole_field();  // the .vtu holds the whole field
     result = executor->run(spec);
   } catch (const suites::SuiteInputError&) {
     throw;  // bad input: exit 2

@@ -404,6 +404,29 @@ std::vector<SurfaceStressSample> SurfaceStressRecovery::recover(
   return surface_stresses(*model_, cs::solver::recover(*model_, u, options, &scope), edge_set_);
 }
 
+std::vector<int> SurfaceStressRecovery::nodes_read() const {
+  const Mesh& mesh = model_->mesh;
+  std::vector<char> read(mesh.n_nodes(), 0);
+  const int nen = mesh.n_element_nodes();
+  const auto mark = [&](int e) {
+    for (int a = 0; a < nen; ++a)
+      read[mesh.elements[e][a]] = 1;
+  };
+  for (int e : elements_)
+    mark(e);
+  const std::vector<char>& patch_elements = patches_.elements();
+  for (int e = 0; e < mesh.n_elements(); ++e) {
+    if (patch_elements[e])
+      mark(e);
+  }
+  std::vector<int> out;
+  for (int node = 0; node < mesh.n_nodes(); ++node) {
+    if (read[node])
+      out.push_back(node);
+  }
+  return out;
+}
+
 std::vector<SurfaceStressSample> recover_surface_stresses(const Model& model,
                                                           const Eigen::VectorXd& u,
                                                           const StressRecoveryOptions& options,

@@ -127,6 +127,9 @@ class SurfaceStressRecovery {
   /// surface_stresses(model, recover_stresses(model, u, options), edge_set), bit for bit.
   std::vector<SurfaceStressSample> recover(const Eigen::VectorXd& u,
                                            const StressRecoveryOptions& options) const;
+  /// The nodes whose displacement recover() reads (those of every element it samples),
+  /// increasing: u may be anything elsewhere.
+  std::vector<int> nodes_read() const;
 
  private:
   const Model* model_;

@@ -98,12 +98,11 @@ solver::ContactResult ProblemExecutor::solve_with_load_control(
   int iterations = 0;
   // One ContactAnalysis for every step (and every case of the group): a changed advance is a
   // changed prescribed value, which it picks up with one forward solve, not a new condensation.
-  if (!contact_)
-    contact_ = std::make_unique<solver::ContactAnalysis>(*elastic_, setup_->pair);
+  solver::ContactAnalysis& contact = contact_analysis();
   auto attempt = [&](double delta, double& load) {
     *control.delta = delta;
     elastic_->update_prescribed_values();
-    solver::ContactResult r = contact_->solve(settings);
+    solver::ContactResult r = contact.solve(settings);
     iterations += r.active_set_iterations;
     load = r.displacement.size() > 0 ? support_reaction(r.displacement) : std::nan("");
     return r;
@@ -136,6 +135,42 @@ solver::ContactResult ProblemExecutor::solve_with_load_control(
   return r;
 }
 
+void ProblemExecutor::recover_whole_field() {
+  whole_field_ = true;
+  last_contact_.reset();
+  if (contact_)
+    contact_->recover_only_at({});
+}
+
+solver::ContactAnalysis& ProblemExecutor::contact_analysis() {
+  if (!contact_) {
+    contact_ = std::make_unique<solver::ContactAnalysis>(*elastic_, setup_->pair);
+    if (!whole_field_)
+      contact_->recover_only_at(read_nodes());
+  }
+  return *contact_;
+}
+
+std::vector<int> ProblemExecutor::read_nodes() {
+  if (!surface_recovery_)
+    surface_recovery_.emplace(setup_->model, kSampledSurface);
+  std::vector<int> nodes = surface_recovery_->nodes_read();
+  if (setup_->load_control) {
+    const solver::Mesh& mesh = setup_->model.mesh;
+    std::vector<char> support(mesh.n_nodes(), 0);
+    for (int node : solver::node_set(mesh, setup_->load_control->reaction_set))
+      support[node] = 1;
+    const int nen = mesh.n_element_nodes();
+    for (const auto& element : mesh.elements) {
+      if (std::any_of(element.begin(), element.begin() + nen, [&](int n) { return support[n]; }))
+        nodes.insert(nodes.end(), element.begin(), element.begin() + nen);
+    }
+  }
+  std::sort(nodes.begin(), nodes.end());
+  nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+  return nodes;
+}
+
 const solver::ContactResult& ProblemExecutor::contact_solution(const CaseSpec& spec) {
   CaseSpec key_spec = spec;
   key_spec.recovery = Recovery::spr;  // post-processing: the same contact solution
@@ -148,11 +183,9 @@ const solver::ContactResult& ProblemExecutor::contact_solution(const CaseSpec& s
   if (setup_->load_control) {
     contact = solve_with_load_control(settings);
   } else {
-    if (!contact_)
-      contact_ = std::make_unique<solver::ContactAnalysis>(*elastic_, setup_->pair);
     contact = setup_->load_steps.empty()
-                  ? contact_->solve(settings)
-                  : solve_load_steps(*contact_, settings, setup_->load_steps);
+                  ? contact_analysis().solve(settings)
+                  : solve_load_steps(contact_analysis(), settings, setup_->load_steps);
   }
   last_contact_.emplace(key, std::move(contact));
   return last_contact_->second;
@@ -171,7 +204,9 @@ CaseResult ProblemExecutor::run(const CaseSpec& spec) {
   result.n_equations = elastic_->dof_map().n_free();
   result.iterations = contact.active_set_iterations;
   result.reason = contact.reason;
-  const bool has_values = contact.displacement.size() > 0 && contact.displacement.allFinite();
+  // A partial field is NaN where no case reads it; the analysis checked the entries it gave.
+  const bool has_values = contact.displacement.size() > 0 &&
+                          (!contact.displacement_complete || contact.displacement.allFinite());
   if (!has_values) {
     result.status = CaseStatus::failed;
     if (result.reason.empty())

@@ -43,7 +43,13 @@ class ProblemExecutor final : public GroupExecutor {
 
   /// The setup the cases run on.
   const ProblemSetup& setup() const { return *setup_; }
-  /// The displacement of the last case run (empty if it produced none).
+  /// Cases run after this call recover the whole displacement field. By default a case
+  /// recovers it only where its grading reads it (the sampled surface's patches, the contact
+  /// rows and, under load control, the support), NaN elsewhere: call this first for
+  /// last_displacement(), last_stresses() or write_vtu().
+  void recover_whole_field();
+  /// The displacement of the last case run (empty if it produced none; see
+  /// recover_whole_field()).
   const Eigen::VectorXd& last_displacement() const { return last_u_; }
   /// The nodal stresses of the last case run over the whole mesh, if it produced values
   /// (recovered on first call: a case itself recovers only its sampled surface).
@@ -58,6 +64,11 @@ class ProblemExecutor final : public GroupExecutor {
   const solver::ContactResult& contact_solution(const CaseSpec& spec);
   solver::ContactResult solve_with_load_control(const solver::ContactSettings& settings);
   double support_reaction(const Eigen::VectorXd& u) const;
+  /// The contact analysis, made on first use, recovering what the cases read.
+  solver::ContactAnalysis& contact_analysis();
+  /// The nodes whose displacement a case reads: the sampled surface's patches and, under load
+  /// control, the elements at the support whose reaction is the load.
+  std::vector<int> read_nodes();
   /// The load the interface must carry (check_interface), computed once.
   double applied_load();
 
@@ -71,6 +82,7 @@ class ProblemExecutor final : public GroupExecutor {
   std::optional<solver::SurfaceStressRecovery> surface_recovery_;
   std::optional<std::pair<std::string, solver::ContactResult>> last_contact_;
   std::optional<double> applied_load_;
+  bool whole_field_ = false;
 };
 
 /// The factory the runner uses.

@@ -3,14 +3,17 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <limits>
 #include <map>
 #include <optional>
+#include <stdexcept>
 #include <vector>
 
 #include <cholmod.h>
 #include <fmt/format.h>
 #include <Eigen/Cholesky>
 
+#include "solver/contact/backward_solve_subset.hpp"
 #include "solver/contact/dense_kernels.hpp"
 #include "solver/fill_reducing_ordering.hpp"
 #include "solver/linear_solver.hpp"
@@ -592,6 +595,55 @@ Eigen::VectorXd DofCondensation::recover(const Eigen::VectorXd& u_c) const {
   return u;
 }
 
+RecoverySubset DofCondensation::subset(const std::vector<int>& equations) const {
+  const Impl& im = *impl_;
+  if (im.solver || im.L == nullptr)
+    return {};
+  // Factor column k holds equation Perm[k].
+  const auto* perm = static_cast<const int*>(im.L->Perm);
+  std::vector<int> column_of(im.L->n);
+  for (int k = 0; k < static_cast<int>(im.L->n); ++k)
+    column_of[perm[k]] = k;
+  std::vector<int> columns;
+  columns.reserve(equations.size() + contact_dofs_.size());
+  for (int eq : equations) {
+    if (eq < 0 || eq >= static_cast<int>(im.L->n))
+      throw std::invalid_argument(
+          fmt::format("DofCondensation::subset: equation {} of {}", eq, im.L->n));
+    columns.push_back(column_of[eq]);
+  }
+  for (int eq : contact_dofs_)
+    columns.push_back(column_of[eq]);
+  RecoverySubset out;
+  out.backward = std::make_shared<const BackwardSolveSubset>(*im.L, columns);
+  for (int k : out.backward->columns())
+    out.equations.push_back(perm[k]);
+  std::sort(out.equations.begin(), out.equations.end());
+  return out;
+}
+
+Eigen::VectorXd DofCondensation::recover(const Eigen::VectorXd& u_c,
+                                         const RecoverySubset& subset) const {
+  const Impl& im = *impl_;
+  if (!subset.backward || im.solver)
+    return recover(u_c);
+  // As recover(u_c), the backward solve over the subset's supernodes only.
+  const int nc = n_contact_dofs();
+  Eigen::VectorXd u_tail(nc);
+  for (int a = 0; a < nc; ++a)
+    u_tail[a] = u_c[tail_position_[a]];
+  Eigen::VectorXd y = im.y0;
+  y.tail(nc) = L_tail_.triangularView<Eigen::Lower>().transpose() * u_tail;
+  subset.backward->solve(*im.L, y.data());
+  const auto* perm = static_cast<const int*>(im.L->Perm);
+  Eigen::VectorXd u = Eigen::VectorXd::Constant(y.size(), std::numeric_limits<double>::quiet_NaN());
+  for (int k : subset.backward->columns())
+    u[perm[k]] = y[k];
+  for (int k = 0; k < nc; ++k)
+    u[contact_dofs_[k]] = u_c[k];  // exact on c
+  return u;
+}
+
 SolveOutcome ConstraintCondensation::compute(const DofCondensation& dofs, const RowMajorSparse& B,
                                              const Eigen::VectorXd& rho) {
   const auto start = Clock::now();
@@ -640,10 +692,11 @@ void ConstraintCondensation::update_load(const DofCondensation& dofs) {
 }
 
 Eigen::VectorXd ConstraintCondensation::recover(const DofCondensation& dofs,
-                                                const Eigen::VectorXd& mu) const {
+                                                const Eigen::VectorXd& mu,
+                                                const RecoverySubset* subset) const {
   Eigen::VectorXd u_c = dofs.condensed_load() + Bt_ * mu;
   dense::cholesky_solve(L_, u_c);
-  return dofs.recover(u_c);
+  return subset != nullptr ? dofs.recover(u_c, *subset) : dofs.recover(u_c);
 }
 
 }  // namespace cs::solver

@@ -44,6 +44,15 @@
 
 namespace cs::solver {
 
+class BackwardSolveSubset;
+
+/// The equations of the free displacement a caller reads (DofCondensation::subset): recover()
+/// with it gives only those entries (and the contact DOFs').
+struct RecoverySubset {
+  std::shared_ptr<const BackwardSolveSubset> backward;  ///< null: the whole field
+  std::vector<int> equations;                           ///< the entries given, increasing
+};
+
 /// Wall-clock seconds of the condensation's phases.
 struct CondensationTimings {
   double assemble_s = 0.0;   ///< A0 = K + D, the node graph
@@ -95,6 +104,14 @@ class DofCondensation {
   const Eigen::VectorXd& condensed_load() const { return f_c_; }
   /// The free displacement with contact part u_c and the interior in equilibrium.
   Eigen::VectorXd recover(const Eigen::VectorXd& u_c) const;
+  /// The subset of recover() that gives the entries of `equations` (free equation indices) and
+  /// of the contact DOFs: the backward solve visits only the factor's supernodes those entries
+  /// need (solver/contact/backward_solve_subset.hpp). The reference method gives the whole
+  /// field (a null backward).
+  RecoverySubset subset(const std::vector<int>& equations) const;
+  /// recover(u_c) at subset.equations only, bit for bit; the other entries are NaN. With a
+  /// null subset.backward, recover(u_c).
+  Eigen::VectorXd recover(const Eigen::VectorXd& u_c, const RecoverySubset& subset) const;
 
   int n_contact_dofs() const { return static_cast<int>(contact_dofs_.size()); }
   double factor_nonzeros() const { return factor_nnz_; }
@@ -144,8 +161,10 @@ class ConstraintCondensation {
   const Eigen::VectorXd& d() const { return d_; }
   /// Recomputes d after DofCondensation::update_load.
   void update_load(const DofCondensation& dofs);
-  /// The free displacement for the condensed unknowns mu (via stage 1's recovery).
-  Eigen::VectorXd recover(const DofCondensation& dofs, const Eigen::VectorXd& mu) const;
+  /// The free displacement for the condensed unknowns mu (via stage 1's recovery), at
+  /// `subset`'s equations only when it is given (DofCondensation::recover).
+  Eigen::VectorXd recover(const DofCondensation& dofs, const Eigen::VectorXd& mu,
+                          const RecoverySubset* subset = nullptr) const;
   double condense_seconds() const { return seconds_; }
 
  private:

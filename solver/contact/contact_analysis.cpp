@@ -5,6 +5,7 @@
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <optional>
 
 #include <fmt/format.h>
 
@@ -99,6 +100,7 @@ ConstraintRows constraint_rows(const ContactSettings& s) {
 struct ContactAnalysis::DofStage {
   DofCondensation condensation;
   SolveOutcome outcome;
+  std::optional<RecoverySubset> subset;  ///< recover_only_at's, made on first use
   explicit DofStage(CondensationMethod method) : condensation(method) {}
 };
 
@@ -339,6 +341,52 @@ bool ContactAnalysis::tangent_held(const ContactConstraint& row) const {
   return free <= kHeldSlipShare * all;
 }
 
+void ContactAnalysis::recover_only_at(std::vector<int> nodes) {
+  recovered_nodes_ = std::move(nodes);
+  for (auto& [key, ds] : dof_stages_)
+    ds->subset.reset();
+}
+
+std::vector<int> ContactAnalysis::read_equations() {
+  const DofMap& dofs = elastic_.dof_map();
+  std::vector<char> read(dofs.n_free(), 0);
+  const auto mark = [&](int dof) {
+    const int eq = dofs.equation(dof);
+    if (eq >= 0)
+      read[eq] = 1;
+  };
+  for (int node : recovered_nodes_) {
+    mark(2 * node);
+    mark(2 * node + 1);
+  }
+  using RowMajor = Eigen::SparseMatrix<double, Eigen::RowMajor>;
+  for (ConstraintRows rows : {ConstraintRows::NodeToSurface, ConstraintRows::GaussPoints,
+                              ConstraintRows::NodalWeightedGaps, ConstraintRows::Mortar}) {
+    const ConstraintSet& set = constraints(rows);
+    for (const RowMajor* m : {&set.B, &set.T}) {
+      for (int j = 0; j < m->outerSize(); ++j) {
+        for (RowMajor::InnerIterator e(*m, j); e; ++e)
+          mark(static_cast<int>(e.col()));
+      }
+    }
+  }
+  std::vector<int> out;
+  for (int eq = 0; eq < dofs.n_free(); ++eq) {
+    if (read[eq])
+      out.push_back(eq);
+  }
+  return out;
+}
+
+const RecoverySubset* ContactAnalysis::recovery_subset(const StageKey& key) {
+  if (recovered_nodes_.empty())
+    return nullptr;
+  DofStage& ds = *dof_stages_.at(dof_key(key));
+  if (!ds.subset)
+    ds.subset = ds.condensation.subset(read_equations());
+  return &*ds.subset;
+}
+
 void ContactAnalysis::refresh_loads() {
   if (dof_stages_.empty())
     return;
@@ -489,9 +537,13 @@ SearchReview ContactAnalysis::recover_results(const ContactSettings& settings,
                                               const RowStage& cd, const DofStage& ds,
                                               const AlgorithmOutcome& out, ContactResult& result) {
   const ConstraintSet& set = constraints(key.rows);
-  const Eigen::VectorXd u_free = cd.condensation.recover(ds.condensation, out.step.mu);
+  const RecoverySubset* subset = recovery_subset(key);
+  const Eigen::VectorXd u_free = cd.condensation.recover(ds.condensation, out.step.mu, subset);
   result.displacement = elastic_.expand(u_free);
-  if (!result.displacement.allFinite()) {
+  result.displacement_complete = subset == nullptr || !subset->backward;
+  const bool finite =
+      result.displacement_complete ? u_free.allFinite() : u_free(subset->equations).allFinite();
+  if (!finite) {
     result.displacement.resize(0);
     result.status = ContactStatus::NotConverged;
     result.failure = ContactFailure::NonFinite;

@@ -104,6 +104,12 @@ class ContactAnalysis {
   /// The constraint rows of a kind (built on first use).
   const ConstraintSet& constraints(ConstraintRows rows);
 
+  /// Later solves recover the displacement only at the DOFs of `nodes` and at every DOF a
+  /// contact row of any kind reads (what the analysis itself reads): the backward solve visits
+  /// only the part of the factor those entries need. The other entries are NaN and
+  /// ContactResult::displacement_complete is false. Empty (the default): the whole field.
+  void recover_only_at(std::vector<int> nodes);
+
  private:
   struct DofStage;
   struct RowStage;
@@ -150,6 +156,10 @@ class ContactAnalysis {
                         ContactResult& result);
   /// Picks up changed loads and prescribed values (see solve()).
   void refresh_loads();
+  /// The subset of `key`'s stage 1 that recover_only_at asks for (made on first use), or null.
+  const RecoverySubset* recovery_subset(const StageKey& key);
+  /// The free equations recover_only_at asks for: its nodes' and every contact row's.
+  std::vector<int> read_equations();
   /// Rows of `set` within `extent` that can move (contact_search.hpp).
   std::vector<int> candidates(const ConstraintSet& set, const SearchExtent& extent) const;
   /// Whether row j of `set` has a free DOF.
@@ -163,8 +173,9 @@ class ContactAnalysis {
   /// Stage 1, keyed by dof_key() (extent, method, frictional: every row kind shares it).
   std::map<StageKey, std::shared_ptr<DofStage>> dof_stages_;  ///< shared: see dof_stage()
   std::map<StageKey, std::unique_ptr<RowStage>> row_stages_;  ///< stage 2, per row kind
-  Eigen::VectorXd load_f_;      ///< the reduced load f_f the stages were computed for
-  Eigen::VectorXd prescribed_;  ///< the prescribed values the stages were computed for
+  std::vector<int> recovered_nodes_;  ///< recover_only_at's nodes; empty: the whole field
+  Eigen::VectorXd load_f_;            ///< the reduced load f_f the stages were computed for
+  Eigen::VectorXd prescribed_;        ///< the prescribed values the stages were computed for
 };
 
 /// One-shot convenience: builds the FE core's analysis and a ContactAnalysis and solves once.

@@ -160,8 +160,10 @@ struct ContactResult {
 
   ContactTimings timings;
   /// Global displacement (2 n_nodes, DOF 2 n + c), prescribed values included. Empty when no
-  /// finite solution was obtained.
+  /// finite solution was obtained. NaN outside the nodes the caller asked for and the DOFs the
+  /// contact rows read when displacement_complete is false (ContactAnalysis::recover_only_at).
   Eigen::VectorXd displacement;
+  bool displacement_complete = true;
 
   bool converged() const { return status == ContactStatus::Converged; }
 };

@@ -8,6 +8,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <stdexcept>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -314,6 +316,78 @@ TEST(ContactCondensation, SchurComplementIsTheSameForEveryOrderingAndMethod) {
               1e-10 * reference.condensed_load().norm() + 1e-12 * f.norm());
     EXPECT_LE((fast.recover(u_c) - u_ref).norm(), 1e-10 * u_ref.norm());
   }
+}
+
+// Requirement (issue 27): the displacement at some equations costs a backward solve over the
+// supernodes they need, and equals the whole recovery there in every bit. Fails if an entry
+// differs, a wanted or contact equation is missing, the subset is the whole factor (no saving),
+// or an entry outside it is not NaN (a stale value read as an answer).
+TEST(ContactCondensation, RecoveryOfSomeEquationsIsTheWholeRecoveryThere) {
+  HertzSpec spec;
+  spec.n = 32;
+  spec.type = ElementType::Q8;
+  spec.meshed_indenter = true;
+  const Model model = contact_test::hertz_model(spec);
+  LinearStaticAnalysis elastic(model);
+  elastic.assemble();
+  const DofMap& dofs = elastic.dof_map();
+  const auto equations_of = [&](const char* set) {
+    std::vector<int> out;
+    for (int node : model.mesh.node_sets.at(set)) {
+      for (int k = 0; k < 2; ++k) {
+        if (dofs.equation(2 * node + k) >= 0)
+          out.push_back(dofs.equation(2 * node + k));
+      }
+    }
+    std::sort(out.begin(), out.end());
+    return out;
+  };
+  std::vector<int> c = equations_of("block.bottom");  // the contact DOFs hold both bodies
+  const std::vector<int> indenter = equations_of("indenter.contact");
+  c.insert(c.end(), indenter.begin(), indenter.end());
+  std::sort(c.begin(), c.end());
+  const std::vector<int> wanted = equations_of("block.top");
+  std::vector<int> node_of(dofs.n_free());
+  for (int eq = 0; eq < dofs.n_free(); ++eq)
+    node_of[eq] = dofs.free_dofs()[eq] / 2;
+  const Eigen::VectorXd f = elastic.reduced_load(model.loads);
+  const Eigen::VectorXd u_c =
+      Eigen::VectorXd::LinSpaced(static_cast<Eigen::Index>(c.size()), -1e-3, 2e-3);
+  for (FillReducingOrdering ordering : {FillReducingOrdering::Amd, FillReducingOrdering::Metis}) {
+    DofCondensation fast(CondensationMethod::TrailingFactorBlock);
+    DofCondensationInput in{elastic.stiffness().K_ff, f, c, node_of};
+    in.ordering = ordering;
+    ASSERT_TRUE(fast.compute(in).ok());
+    const Eigen::VectorXd whole = fast.recover(u_c);
+    const RecoverySubset subset = fast.subset(wanted);
+    ASSERT_TRUE(subset.backward);
+    const Eigen::VectorXd part = fast.recover(u_c, subset);
+    ASSERT_EQ(part.size(), whole.size());
+    std::vector<char> given(part.size(), 0);
+    for (int eq : subset.equations) {
+      given[eq] = 1;
+      EXPECT_EQ(part[eq], whole[eq]) << "equation " << eq;
+    }
+    for (const std::vector<int>* set : {&wanted, static_cast<const std::vector<int>*>(&c)}) {
+      for (int eq : *set)
+        EXPECT_TRUE(given[eq]) << "equation " << eq << " left out";
+    }
+    int nan = 0;
+    for (Eigen::Index eq = 0; eq < part.size(); ++eq)
+      nan += given[eq] ? 0 : (std::isnan(part[eq]) ? 1 : 0);
+    const int outside = static_cast<int>(part.size() - subset.equations.size());
+    EXPECT_EQ(nan, outside);
+    std::printf("[ info     ] ordering %d: %zu of %d equations recovered\n",
+                static_cast<int>(ordering), subset.equations.size(), dofs.n_free());
+    EXPECT_LT(subset.equations.size(), static_cast<std::size_t>(dofs.n_free()) / 2);
+    EXPECT_THROW(fast.subset({dofs.n_free()}), std::invalid_argument);
+  }
+  // The reference method has no factor to prune: its subset is the whole field.
+  DofCondensation reference(CondensationMethod::MultipleRightHandSides);
+  ASSERT_TRUE(reference.compute({elastic.stiffness().K_ff, f, c, node_of}).ok());
+  const RecoverySubset none = reference.subset(wanted);
+  EXPECT_FALSE(none.backward);
+  EXPECT_TRUE(reference.recover(u_c, none) == reference.recover(u_c));
 }
 
 TEST(ContactCondensation, BothMethodsAgree) {
