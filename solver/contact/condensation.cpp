@@ -547,7 +547,6 @@ void DofCondensation::update_load(const Eigen::VectorXd& f) {
     return;
   }
   // y = L^{-1} P f; f_c = L_cc y_c.
-  const int first = static_cast<int>(im.L->n) - nc;
   cholmod_dense fb = view_vector(f);
   cholmod_dense* Pf = cholmod_solve(CHOLMOD_P, im.L, &fb, &im.common);
   cholmod_dense* y = cholmod_solve(CHOLMOD_L, im.L, Pf, &im.common);
@@ -558,6 +557,19 @@ void DofCondensation::update_load(const Eigen::VectorXd& f) {
   const Eigen::VectorXd ft = L_tail_.triangularView<Eigen::Lower>() * y_c;
   for (int a = 0; a < nc; ++a)
     f_c_[tail_position_[a]] = ft[a];
+}
+
+Eigen::VectorXd DofCondensation::backward_right_side(const Eigen::VectorXd& u_c) const {
+  // With c last in the factor, L y = P [f_i; r_c] leaves the interior of y at y0 = L^{-1} P f
+  // whatever r_c is, and L^T (P x) = y has x_c = u_c exactly when y_c = L_cc^T u_c (tail
+  // order): one backward solve instead of a forward and a backward one.
+  const int nc = n_contact_dofs();
+  Eigen::VectorXd u_tail(nc);
+  for (int a = 0; a < nc; ++a)
+    u_tail[a] = u_c[tail_position_[a]];
+  Eigen::VectorXd y = impl_->y0;
+  y.tail(nc) = L_tail_.triangularView<Eigen::Lower>().transpose() * u_tail;
+  return y;
 }
 
 Eigen::VectorXd DofCondensation::recover(const Eigen::VectorXd& u_c) const {
@@ -575,15 +587,8 @@ Eigen::VectorXd DofCondensation::recover(const Eigen::VectorXd& u_c) const {
       u[contact_dofs_[k]] = u_c[k];  // exact on c
     return u;
   }
-  // With c last in the factor, L y = P [f_i; r_c] leaves the interior of y at y0 = L^{-1} P f
-  // whatever r_c is, and L^T (P x) = y has x_c = u_c exactly when y_c = L_cc^T u_c (tail
-  // order): one backward solve instead of a forward and a backward one.
+  Eigen::VectorXd y = backward_right_side(u_c);
   const int nc = n_contact_dofs();
-  Eigen::VectorXd u_tail(nc);
-  for (int a = 0; a < nc; ++a)
-    u_tail[a] = u_c[tail_position_[a]];
-  Eigen::VectorXd y = im.y0;
-  y.tail(nc) = L_tail_.triangularView<Eigen::Lower>().transpose() * u_tail;
   cholmod_dense yv = view_vector(y);
   cholmod_dense* Px = cholmod_solve(CHOLMOD_Lt, im.L, &yv, &im.common);
   cholmod_dense* x = cholmod_solve(CHOLMOD_Pt, im.L, Px, &im.common);
@@ -628,13 +633,9 @@ Eigen::VectorXd DofCondensation::recover(const Eigen::VectorXd& u_c,
   if (!subset.backward || im.solver)
     return recover(u_c);
   // As recover(u_c), the backward solve over the subset's supernodes only.
-  const int nc = n_contact_dofs();
-  Eigen::VectorXd u_tail(nc);
-  for (int a = 0; a < nc; ++a)
-    u_tail[a] = u_c[tail_position_[a]];
-  Eigen::VectorXd y = im.y0;
-  y.tail(nc) = L_tail_.triangularView<Eigen::Lower>().transpose() * u_tail;
+  Eigen::VectorXd y = backward_right_side(u_c);
   subset.backward->solve(*im.L, y.data());
+  const int nc = n_contact_dofs();
   const auto* perm = static_cast<const int*>(im.L->Perm);
   Eigen::VectorXd u = Eigen::VectorXd::Constant(y.size(), std::numeric_limits<double>::quiet_NaN());
   for (int k : subset.backward->columns())

@@ -137,6 +137,8 @@ class DofCondensation {
   Eigen::VectorXd delta_e_;  ///< Delta on c: chain between consecutive contact DOFs
   /// Delta u_c.
   Eigen::VectorXd delta_times(const Eigen::VectorXd& u_c) const;
+  /// Trailing-block path: the y of L^T (P x) = y whose solution has x_c = u_c.
+  Eigen::VectorXd backward_right_side(const Eigen::VectorXd& u_c) const;
   /// S -= Delta.
   void subtract_delta();
   Eigen::MatrixXd L_tail_;          ///< trailing factor block, in the factor's tail order
