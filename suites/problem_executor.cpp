@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 
 #include <fmt/format.h>
 
@@ -151,10 +152,14 @@ solver::ContactAnalysis& ProblemExecutor::contact_analysis() {
   return *contact_;
 }
 
-std::vector<int> ProblemExecutor::read_nodes() {
+const solver::SurfaceStressRecovery& ProblemExecutor::surface_recovery() {
   if (!surface_recovery_)
     surface_recovery_.emplace(setup_->model, kSampledSurface);
-  std::vector<int> nodes = surface_recovery_->nodes_read();
+  return *surface_recovery_;
+}
+
+std::vector<int> ProblemExecutor::read_nodes() {
+  std::vector<int> nodes = surface_recovery().nodes_read();
   if (setup_->load_control) {
     const solver::Mesh& mesh = setup_->model.mesh;
     std::vector<char> support(mesh.n_nodes(), 0);
@@ -218,9 +223,7 @@ CaseResult ProblemExecutor::run(const CaseSpec& spec) {
                                                                      : CaseStatus::not_converged;
   last_u_ = contact.displacement;
   // Only the sampled surface is graded: recovered there alone (the whole field on demand).
-  if (!surface_recovery_)
-    surface_recovery_.emplace(setup_->model, kSampledSurface);
-  const auto surface = surface_recovery_->recover(last_u_, last_recovery_);
+  const auto surface = surface_recovery().recover(last_u_, last_recovery_);
   std::vector<ContactPressureSample> pressures;
   pressures.reserve(contact.nodes.size());
   for (const auto& n : contact.nodes)
@@ -238,6 +241,8 @@ double ProblemExecutor::applied_load() {
 }
 
 const std::optional<solver::StressField>& ProblemExecutor::last_stresses() {
+  if (!whole_field_ && last_u_.size() > 0)
+    throw std::logic_error("the whole field was not recovered: call recover_whole_field() first");
   if (!last_stresses_ && last_u_.size() > 0)
     last_stresses_ = solver::recover_stresses(setup_->model, last_u_, last_recovery_);
   return last_stresses_;

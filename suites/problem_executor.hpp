@@ -52,7 +52,8 @@ class ProblemExecutor final : public GroupExecutor {
   /// recover_whole_field()).
   const Eigen::VectorXd& last_displacement() const { return last_u_; }
   /// The nodal stresses of the last case run over the whole mesh, if it produced values
-  /// (recovered on first call: a case itself recovers only its sampled surface).
+  /// (recovered on first call: a case itself recovers only its sampled surface). Throws
+  /// std::logic_error after a case run without recover_whole_field().
   const std::optional<solver::StressField>& last_stresses();
   /// Writes the model with the displacement and nodal stresses of the last case run as a
   /// .vtu file (atomically). Throws std::runtime_error if the last case produced no values.
@@ -66,6 +67,8 @@ class ProblemExecutor final : public GroupExecutor {
   double support_reaction(const Eigen::VectorXd& u) const;
   /// The contact analysis, made on first use, recovering what the cases read.
   solver::ContactAnalysis& contact_analysis();
+  /// The sampled surface's elements and patches, found on first use.
+  const solver::SurfaceStressRecovery& surface_recovery();
   /// The nodes whose displacement a case reads: the sampled surface's patches and, under load
   /// control, the elements at the support whose reaction is the load.
   std::vector<int> read_nodes();
