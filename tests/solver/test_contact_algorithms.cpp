@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <initializer_list>
 #include <stdexcept>
 #include <string>
 
@@ -273,30 +274,49 @@ TEST(ContactCondensation, OneFactorizationServesEveryDiscretizationAndAlgorithm)
   EXPECT_EQ(factorizations, 1);
 }
 
+/// H_p on Q8 with a meshed indenter, n elements across.
+Model meshed_hertz_q8(int n) {
+  HertzSpec spec;
+  spec.n = n;
+  spec.type = ElementType::Q8;
+  spec.meshed_indenter = true;
+  return contact_test::hertz_model(spec);
+}
+
+/// The free equations of the nodes of `sets`, increasing.
+std::vector<int> free_equations(const Model& model, const DofMap& dofs,
+                                std::initializer_list<const char*> sets) {
+  std::vector<int> out;
+  for (const char* set : sets) {
+    for (int node : model.mesh.node_sets.at(set)) {
+      for (int k = 0; k < 2; ++k) {
+        if (dofs.equation(2 * node + k) >= 0)
+          out.push_back(dofs.equation(2 * node + k));
+      }
+    }
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+/// The node of every free equation.
+std::vector<int> node_of_equations(const DofMap& dofs) {
+  std::vector<int> out(dofs.n_free());
+  for (int eq = 0; eq < dofs.n_free(); ++eq)
+    out[eq] = dofs.free_dofs()[eq] / 2;
+  return out;
+}
+
 TEST(ContactCondensation, SchurComplementIsTheSameForEveryOrderingAndMethod) {
   // The Schur complement onto the block's contact-surface DOFs (the block floats: K is
   // singular, K_ii is not) from the reference (multiple right-hand sides) and from the trailing
   // factor block with CAMD and with METIS orderings.
-  HertzSpec spec;
-  spec.n = 16;
-  spec.type = ElementType::Q8;
-  spec.meshed_indenter = true;
-  const Model model = contact_test::hertz_model(spec);
+  const Model model = meshed_hertz_q8(16);
   LinearStaticAnalysis elastic(model);
   elastic.assemble();
   const DofMap& dofs = elastic.dof_map();
-  std::vector<int> c, node_of(dofs.n_free());
-  for (const char* set : {"block.bottom", "indenter.contact"}) {
-    for (int node : model.mesh.node_sets.at(set)) {
-      for (int k = 0; k < 2; ++k) {
-        if (dofs.equation(2 * node + k) >= 0)
-          c.push_back(dofs.equation(2 * node + k));
-      }
-    }
-  }
-  std::sort(c.begin(), c.end());
-  for (int eq = 0; eq < dofs.n_free(); ++eq)
-    node_of[eq] = dofs.free_dofs()[eq] / 2;
+  const std::vector<int> c = free_equations(model, dofs, {"block.bottom", "indenter.contact"});
+  const std::vector<int> node_of = node_of_equations(dofs);
   const Eigen::VectorXd f = elastic.reduced_load(model.loads);
   const Eigen::VectorXd u_c =
       Eigen::VectorXd::LinSpaced(static_cast<Eigen::Index>(c.size()), -1e-3, 2e-3);
@@ -323,33 +343,14 @@ TEST(ContactCondensation, SchurComplementIsTheSameForEveryOrderingAndMethod) {
 // differs, a wanted or contact equation is missing, the subset is the whole factor (no saving),
 // or an entry outside it is not NaN (a stale value read as an answer).
 TEST(ContactCondensation, RecoveryOfSomeEquationsIsTheWholeRecoveryThere) {
-  HertzSpec spec;
-  spec.n = 32;
-  spec.type = ElementType::Q8;
-  spec.meshed_indenter = true;
-  const Model model = contact_test::hertz_model(spec);
+  const Model model = meshed_hertz_q8(32);
   LinearStaticAnalysis elastic(model);
   elastic.assemble();
   const DofMap& dofs = elastic.dof_map();
-  const auto equations_of = [&](const char* set) {
-    std::vector<int> out;
-    for (int node : model.mesh.node_sets.at(set)) {
-      for (int k = 0; k < 2; ++k) {
-        if (dofs.equation(2 * node + k) >= 0)
-          out.push_back(dofs.equation(2 * node + k));
-      }
-    }
-    std::sort(out.begin(), out.end());
-    return out;
-  };
-  std::vector<int> c = equations_of("block.bottom");  // the contact DOFs hold both bodies
-  const std::vector<int> indenter = equations_of("indenter.contact");
-  c.insert(c.end(), indenter.begin(), indenter.end());
-  std::sort(c.begin(), c.end());
-  const std::vector<int> wanted = equations_of("block.top");
-  std::vector<int> node_of(dofs.n_free());
-  for (int eq = 0; eq < dofs.n_free(); ++eq)
-    node_of[eq] = dofs.free_dofs()[eq] / 2;
+  // The contact DOFs hold both bodies; the wanted ones lie on the block's far side.
+  const std::vector<int> c = free_equations(model, dofs, {"block.bottom", "indenter.contact"});
+  const std::vector<int> wanted = free_equations(model, dofs, {"block.top"});
+  const std::vector<int> node_of = node_of_equations(dofs);
   const Eigen::VectorXd f = elastic.reduced_load(model.loads);
   const Eigen::VectorXd u_c =
       Eigen::VectorXd::LinSpaced(static_cast<Eigen::Index>(c.size()), -1e-3, 2e-3);
@@ -368,7 +369,7 @@ TEST(ContactCondensation, RecoveryOfSomeEquationsIsTheWholeRecoveryThere) {
       given[eq] = 1;
       EXPECT_EQ(part[eq], whole[eq]) << "equation " << eq;
     }
-    for (const std::vector<int>* set : {&wanted, static_cast<const std::vector<int>*>(&c)}) {
+    for (const std::vector<int>* set : {&wanted, &c}) {
       for (int eq : *set)
         EXPECT_TRUE(given[eq]) << "equation " << eq << " left out";
     }
