@@ -1,7 +1,6 @@
 #include "solver/contact/backward_solve_subset.hpp"
 
 #include <algorithm>
-#include <functional>
 #include <stdexcept>
 
 extern "C" {
