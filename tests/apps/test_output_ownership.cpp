@@ -244,14 +244,14 @@ TEST(OutputOwnership, DiskFullGivesAClearErrorAndKeepsTheOldSet) {
 // schedule would exceed it is scheduled to fit, and says so.
 TEST(OutputOwnership, MemoryBeyondTheLimitIsRefusedOrScheduledToFit) {
   TempDir tmp;
-  // S(1/7) F Q8: cost 16 x 30 x 3 = 1440 units, 3.5 GiB at 2.5 MiB a unit; 0.5 GiB cannot hold it.
+  // S(1/7) F Q8: cost 16 x 30 x 3 = 1440 units, 3.9 GiB at 2.75 MiB a unit; 0.5 GiB cannot hold it.
   const auto refused = run_cli({"run", "--problems", "S_1_7", "--meshes", "F", "--elements", "Q8",
                                 "--max-memory", "0.5", "--out", (tmp.path() / "big").string()});
   expect_one_line_refusal(refused, "refused before starting: the largest model");
   EXPECT_NE(refused.err.find("S_1_7/F/Q8"), std::string::npos) << refused.err;
   EXPECT_FALSE(fs::exists(tmp.path() / "big"));
-  // P_p C and M Q4: costs 1 and 4, 2.5 and 10 MiB; the default budget 15 MiB exceeds 0.012 GiB
-  // (12.3 MiB), which still holds the largest: scheduled to fit.
+  // P_p C and M Q4: costs 1 and 4, 2.75 and 11 MiB; the default budget 16.5 MiB exceeds 0.012
+  // GiB (12.3 MiB), which still holds the largest: scheduled to fit.
   const auto fitted = run_cli({"run", "--problems", "P_p", "--meshes", "C,M", "--elements", "Q4",
                                "--algorithms", "AL", "--contacts", "ss", "--max-memory", "0.012",
                                "--no-report", "--out", (tmp.path() / "fit").string()});
