@@ -55,6 +55,22 @@ TEST(RunCli, BothRecoveriesAndTheCommandLine) {
   EXPECT_NE(line.find("--recovery spr,extrapolated"), std::string::npos) << line;
 }
 
+// Requirement (issue 27): a case recovers only the displacement its grading reads, yet `case
+// --vtu` writes the whole field: every node's displacement and stresses finite. Fails if the
+// file holds NaN (the partial field written) or the case refuses to write it.
+TEST(RunCli, CaseVtuHoldsTheWholeField) {
+  TempDir tmp;
+  const std::string vtu = (tmp.path() / "h.vtu").string();
+  const auto r = run_cli({"case", "H_p", "--mesh", "M", "--element", "Q8", "--algorithm", "LMP",
+                          "--contact", "ss", "--vtu", vtu});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::string text = read_text(vtu);
+  for (const char* name : {"Name=\"displacement\"", "Name=\"sigma_z\""})
+    EXPECT_NE(text.find(name), std::string::npos) << name;
+  EXPECT_EQ(text.find("nan"), std::string::npos);
+  EXPECT_EQ(text.find("inf"), std::string::npos);
+}
+
 // Requirement: an unknown recovery is bad input: exit 2, one line naming it, nothing written.
 TEST(RunCli, UnknownRecoveryIsBadInput) {
   TempDir tmp;
