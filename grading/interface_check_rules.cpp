@@ -11,7 +11,7 @@ const std::array<InterfaceCheckRule, 4>& interface_check_rules() {
        [](const schema::InterfaceChecks& c) -> std::optional<double> {
          return c.force_balance ? std::optional(std::abs(*c.force_balance)) : std::nullopt;
        }},
-      {"tensile pressure", "largest tensile contact pressure / p", schema::kTensileTolerance, true,
+      {"tensile pressure", "largest tensile contact traction / p", schema::kTensileTolerance, true,
        [](const schema::InterfaceChecks& c) { return c.max_tensile_over_p; }},
       {"pressure outside the patch",
        "largest contact pressure / p more than one element beyond the exact patch",

@@ -4,7 +4,9 @@
 //
 //   force_balance          = (sum of the nodal contact forces - applied load) / applied load;
 //                            the interface must transmit the whole load (global equilibrium);
-//   max_tensile_over_p     = max(0, -min over the nodes of the contact pressure) / p; a
+//   max_tensile_over_p     = the largest tension / p that the contact law's own variable
+//                            carries (our rows' multipliers; another code's nodal pressure,
+//                            or the traction's mean at each node from its nodal forces); a
 //                            frictionless contact cannot pull;
 //   max_outside_over_p     = the largest contact pressure / p at nodes more than one element
 //                            beyond the exact contact patch (where the exact pressure is 0);

@@ -43,32 +43,46 @@ schema::InterfaceChecks checks_of(const ProblemSetup& setup, const solver::Conta
   if (applied_load > 0.0 && std::isfinite(applied_load))
     checks.force_balance = (contact.total_normal_force - applied_load) / applied_load;
   const double h = setup.mesh_info.h_contact;
-  double tensile = 0.0, outside = 0.0, penetration = 0.0;
+  double outside = 0.0, penetration = 0.0;
   for (const auto& n : contact.nodes) {
-    tensile = std::max(tensile, -n.pressure);
     penetration = std::max(penetration, n.penetration);
     if (outside_patch(setup, meeting_x(n, u, gap_normal), h))
       outside = std::max(outside, n.pressure);
   }
-  checks.max_tensile_over_p = tensile / setup.p;
+  checks.max_tensile_over_p = contact.max_tension / setup.p;
   checks.max_outside_over_p = outside / setup.p;
   if (h > 0.0)
     checks.max_penetration_over_h = penetration / h;
   return checks;
 }
 
-/// Each node's share of the path's length: half of each side at its ends (Q4); Simpson's
-/// 1/6, 2/3, 1/6 on a Q8 side.
-std::map<int, double> tributary_lengths(const solver::Mesh& mesh, const solver::SurfacePath& path) {
-  std::map<int, double> out;
-  const int per_side = solver::nodes_per_side(mesh.type);
+/// Each surface node's contact pressure from the nodal contact forces F (compressive positive)
+/// of a code that writes none: the traction's mean against a weight w >= 0 whose nodal forces
+/// are known, so that a traction that never pulls reads >= 0 at every node:
+///   Q4 side: w = the node's hat N_a:            p_a = sum F_a / sum L/2 over its sides;
+///   Q8 side: the mid-side node, w = 1 - xi^2:   p_m = F_m / (2 L / 3);
+///            a corner, w = its linear hat, N_c + N_m / 2 on each side at it:
+///                                               p_c = (F_c + sum F_m / 2) / sum L/2.
+/// A Q8 corner's own force over its lumped share (Simpson's L/6) is no such mean: N_c is
+/// negative over the far half of each side, so a traction gathered there (the edge of a
+/// contact patch) makes the corner's force pull though the traction never does.
+std::map<int, double> pressures_of_forces(const solver::Mesh& mesh, const solver::SurfacePath& path,
+                                          const std::map<int, double>& force) {
+  std::map<int, double> pushed, length, out;
+  const bool quadratic = solver::nodes_per_side(mesh.type) == 3;
   for (std::size_t k = 0; k < path.sides.size(); ++k) {
     const std::array<int, 3> nodes = mesh.side_nodes(path.sides[k]);
-    for (int a = 0; a < per_side; ++a) {
-      const double w = per_side == 3 ? (a == 2 ? 2.0 / 3.0 : 1.0 / 6.0) : 0.5;
-      out[nodes[a]] += w * path.side_length[k];
+    const double L = path.side_length[k];
+    const double mid = quadratic ? force.at(nodes[2]) : 0.0;
+    for (int a = 0; a < 2; ++a) {
+      pushed[nodes[a]] += 0.5 * mid;
+      length[nodes[a]] += 0.5 * L;
     }
+    if (quadratic)
+      out[nodes[2]] = mid / (2.0 * L / 3.0);
   }
+  for (const auto& [node, l] : length)
+    out[node] = (force.at(node) + pushed[node]) / l;
   return out;
 }
 
@@ -106,7 +120,6 @@ schema::InterfaceChecks check_interface_of_displacements(
   const Eigen::VectorXd f = solver::assemble_load_vector(model, model.loads);
   const Eigen::VectorXd residual = solver::internal_forces(model, u) - f;
   const solver::SurfacePath path = solver::surface_path(model.mesh, kSampledSurface);
-  const auto lengths = tributary_lengths(model.mesh, path);
   solver::ContactResult contact;
   for (std::size_t k = 0; k < path.nodes.size(); ++k) {
     solver::ContactNodeResult node;
@@ -132,10 +145,15 @@ schema::InterfaceChecks check_interface_of_displacements(
   std::map<double, double> own;
   for (const auto& p : pressures)
     own[p.x] = p.pressure;
+  std::map<int, double> force;
+  for (const auto& node : contact.nodes)
+    force[node.node] = sign * node.force;
+  const std::map<int, double> derived = pressures_of_forces(model.mesh, path, force);
   for (auto& node : contact.nodes) {
     const auto given = own.find(node.position.x());
-    node.pressure = !pressures.empty() ? (given == own.end() ? 0.0 : given->second)
-                                       : sign * node.force / lengths.at(node.node);
+    node.pressure =
+        !pressures.empty() ? (given == own.end() ? 0.0 : given->second) : derived.at(node.node);
+    contact.max_tension = std::max(contact.max_tension, -node.pressure);
   }
   // Another code measures its gaps along the target's normal: `half_space_gap` is ours alone.
   schema::InterfaceChecks checks =

@@ -1,9 +1,9 @@
 #pragma once
 // The interface checks of a case (schema/interface_checks.hpp) from the built-in solver's
-// contact solution: the nodal contact forces against the applied load, the most tensile
-// pressure, the pressure beyond the exact contact patch (at the node's position where it meets
-// the target: its deformed x when gaps are measured along the target's normal), the deepest
-// penetration.
+// contact solution: the nodal contact forces against the applied load, the largest tension of
+// the contact law's own variable (solver::ContactResult::max_tension), the pressure beyond the
+// exact contact patch (at the node's position where it meets the target: its deformed x when gaps
+// are measured along the target's normal), the deepest penetration.
 
 #include <vector>
 
@@ -33,8 +33,10 @@ double interface_load(const ProblemSetup& setup, const Eigen::VectorXd& f);
 /// the sampled surface (so the force balance is the equilibrium of its displacement field
 /// everywhere else) and counted compressive against the surface's outward normal (an interface
 /// that pulls reads negative), its pressures its own nodal contact pressures where it writes
-/// them, else each surface node's residual over its tributary length. The penetration is not
-/// checked (absent): it needs the code's own contact geometry.
+/// them, else the mean of the traction against a non-negative weight at each surface node,
+/// from the surface nodes' residuals (so a traction that never pulls reads no tension, on Q8
+/// as on Q4). The penetration is not checked (absent): it needs the code's own contact
+/// geometry.
 schema::InterfaceChecks check_interface_of_displacements(
     const ProblemSetup& setup, const Eigen::VectorXd& u,
     const std::vector<ContactPressureSample>& pressures);

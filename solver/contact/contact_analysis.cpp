@@ -579,6 +579,7 @@ SearchReview ContactAnalysis::recover_results(const ContactSettings& settings,
           : Eigen::VectorXd(constraints(ConstraintRows::NodeToSurface).g0 +
                             constraints(ConstraintRows::NodeToSurface).B * result.displacement);
   result.nodes = node_results(set, rows, node_gap);
+  result.max_tension = largest_tension(set, lambda);
   if (settings.frictional())
     recover_friction(previous, set, cd, out, rows, result);
   for (const ContactNodeResult& r : result.nodes) {

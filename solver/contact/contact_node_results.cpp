@@ -54,6 +54,15 @@ std::vector<ContactNodeResult> node_results(const ConstraintSet& set, const RowS
   return nodes;
 }
 
+double largest_tension(const ConstraintSet& set, const Eigen::VectorXd& lambda) {
+  double tension = 0.0;
+  for (int j = 0; j < set.n_rows(); ++j) {
+    if (set.rows[j].weight_w > 0.0)
+      tension = std::max(tension, -lambda[j] / set.rows[j].weight_w);
+  }
+  return tension;
+}
+
 namespace {
 
 /// The Coulomb state of every contact node: its row's (nodal rows); for Gauss rows Stick if a

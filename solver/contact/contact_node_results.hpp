@@ -42,6 +42,9 @@ struct FrictionRowState {
 std::vector<ContactNodeResult> node_results(const ConstraintSet& set, const RowState& rows,
                                             const Eigen::VectorXd& node_gap);
 
+/// The largest tension over the rows of `set`: max(0, max over j of -lambda_j / w_j).
+double largest_tension(const ConstraintSet& set, const Eigen::VectorXd& lambda);
+
 /// Adds the shear (from lambda_T exactly as the pressure from lambda), the slip, its increment
 /// and the Coulomb state to `nodes` (the node_results of the same set and rows).
 void add_friction_results(const ConstraintSet& set, const RowState& rows,

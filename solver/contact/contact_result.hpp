@@ -150,6 +150,12 @@ struct ContactResult {
   double contact_extent = 0.0;
   /// The largest contact pressure over the nodes (0 if none).
   double peak_pressure = 0.0;
+  /// The largest tension (>= 0) the contact law's own variable carries: max over the rows of
+  /// -lambda / w (a Gauss row: the traction at its point; a nodal row: its node's pressure; a
+  /// weighted row: its multiplier coefficient). A node's pressure can pull where no row does: a
+  /// Q8 corner's shape function is negative over the far half of each side, so its share of
+  /// the Gauss rows' forces there pulls.
+  double max_tension = 0.0;
   /// The sum of the nodes' normal contact forces: the load the interface transmits.
   double total_normal_force = 0.0;
   /// Friction: the largest |shear| over the nodes (0 without friction).

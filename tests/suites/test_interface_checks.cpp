@@ -189,5 +189,32 @@ TEST(InterfaceChecks, AnotherCodesInterfaceReadInTheGeometrysDirection) {
               1e-4 * *own.interface->max_outside_over_p);
 }
 
+// Requirement: a traction that never pulls reads no tension, on Q8 as on Q4. Our penalty on
+// Gauss points (ss: the traction r max(0, -g) >= 0 at every point) on the rigid punches' Q8
+// meshes passes the tensile check, from its rows and, handed in as another code's
+// displacements, from its nodal forces, though a Q8 corner's force over its lumped share pulls
+// at the punch edge by 0.16-0.96 p (its shape function is negative over the far half of each
+// side); its node pressures show that pull, and the same field reversed still fails the check.
+TEST(InterfaceChecks, AnotherCodesPressureFromForcesNeverPullsWhereTheTractionDoesNot) {
+  for (const ProblemId problem : {ProblemId::S_1, ProblemId::S_1_3, ProblemId::S_1_7}) {
+    CaseSpec spec = spec_of(problem, Algorithm::PM, ContactKind::ss, Element::Q8);
+    spec.target = TargetKind::Rigid;
+    ProblemExecutor executor(spec);
+    executor.recover_whole_field();  // reads the whole displacement
+    const CaseResult own = executor.run(spec);
+    ASSERT_EQ(own.status, CaseStatus::converged) << own.reason;
+    ASSERT_TRUE(own.interface && own.interface->max_tensile_over_p);
+    EXPECT_LT(*own.interface->max_tensile_over_p, schema::kTensileTolerance) << case_id(spec);
+    ASSERT_FALSE(own.profile.pressure_over_p.empty());
+    EXPECT_LT(std::ranges::min(own.profile.pressure_over_p), -0.1) << case_id(spec);
+    const Eigen::VectorXd u = executor.last_displacement();
+    const auto derived = check_interface_of_displacements(executor.setup(), u, {});
+    ASSERT_TRUE(derived.max_tensile_over_p);
+    EXPECT_LT(*derived.max_tensile_over_p, schema::kTensileTolerance) << case_id(spec);
+    const auto pulled = check_interface_of_displacements(executor.setup(), -u, {});
+    EXPECT_GT(*pulled.max_tensile_over_p, schema::kTensileTolerance) << case_id(spec);
+  }
+}
+
 }  // namespace
 }  // namespace cs::suites
