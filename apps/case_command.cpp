@@ -11,9 +11,7 @@
 
 #include "adapters/protocol/solver_registry.hpp"
 #include "adapters/registered_codes.hpp"
-#include "apps/model_cost.hpp"
 #include "apps/usage_error.hpp"
-#include "platform/available_cores.hpp"
 #include "platform/output_transaction.hpp"
 #include "schema/results_file.hpp"
 #include "suites/executor_factory.hpp"
@@ -116,9 +114,9 @@ int run_case(const CaseArgs& args) {
   if (args.vtu_given)
     check_vtu_path(args.vtu);
   suites::require_solvers({spec});  // e.g. ccx missing: exit 2 before anything runs
-  // A large model's factorization on every core, as `run` gives it (apps/model_cost.hpp): the
-  // same thread count, so the same values as the model's cases in a run.
-  suites::set_blas_threads(model_threads(spec, platform::available_cores()));
+  // One BLAS thread, as `run` gives every model (apps/model_cost.hpp): the same values as the
+  // model's cases in a run.
+  suites::set_blas_threads(1);
   const auto start = std::chrono::steady_clock::now();
   suites::CaseResult result;
   std::unique_ptr<suites::GroupExecutor> executor;

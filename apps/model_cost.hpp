@@ -1,16 +1,15 @@
 #pragma once
-// What a run plans per model before it builds any: a relative cost (to start the largest first
-// and to estimate memory, apps/memory_plan.hpp) and the BLAS threads its factorization uses.
+// What a run plans per model before it builds any: a relative cost, to start the largest first
+// and to estimate memory (apps/memory_plan.hpp).
 //
-// Threads: a process that solves one model (`case`, the benchmarks) gives a model of cost
-// kThreadedCost or more (the Steuermann problems from mesh F on, whose factorization holds the
-// largest dense supernodes) every core it may run on, and a smaller one a single thread. A `run`
-// gives every model one thread and runs models side by side instead: about half of a large
-// model's time is serial (its METIS ordering, CHOLMOD's symbolic work, the recoveries), so a
-// second BLAS thread gains it little while a second model gains a whole core (docs/benchmarks.md,
-// "Threads"). A threaded BLAS sums in an order that depends on its thread count (the S problems'
-// graded peaks move in the 8th digit between 1 and 2 threads), so a run's results never depend
-// on --jobs, the schedule or the selection, and `case` may differ from `run` in that digit.
+// Threads: every model's factorization runs on one BLAS thread, in `run` (models side by side,
+// --jobs of them) and in `case` alike. Over half of a large model's time is serial (its METIS
+// ordering and CHOLMOD's symbolic analysis: 10 of S(1/7) F Q8's 22 s), and a second BLAS thread
+// spins in sched_yield between the small dense calls of a 2-D factorization: on 2 cores it
+// gained `case S_1_7 --mesh F --element Q8` 5 % on a quiet machine and cost it 2.7 times with
+// another process on the other core (docs/benchmarks.md, "Threads"). A threaded BLAS also sums
+// in another order (the S problems' graded peaks move in the 8th digit), so with one thread a
+// case's values never depend on the command, --jobs, the schedule or the selection.
 
 #include "suites/case_spec.hpp"
 
@@ -20,11 +19,5 @@ namespace cs::apps {
 /// the level's elements (f = 1, 2, 4, 8 for C, M, F, VF), and 3 for Q8. E.g. H_p F Q8: 48;
 /// S(1/7) F Q4: 480; S(1/7) F Q8: 1440.
 double group_cost(const suites::CaseSpec& spec);
-
-/// From this cost on a model's factorization runs on every core (S at mesh F and finer).
-inline constexpr double kThreadedCost = 400.0;
-
-/// The BLAS threads of `spec`'s model alone on a process that may use `cores` cores (see above).
-int model_threads(const suites::CaseSpec& spec, int cores);
 
 }  // namespace cs::apps

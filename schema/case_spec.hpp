@@ -26,7 +26,7 @@ struct CaseSpec {
   /// An external code's own option label (e.g. "nitsche"); empty otherwise. The algorithm and
   /// contact fields then hold the option's family and discretization as the manifest states.
   std::string solver_option{};
-  std::map<std::string, double> overrides;
+  std::map<std::string, double> overrides{};
 
   friend bool operator==(const CaseSpec&, const CaseSpec&) = default;
 };

@@ -66,7 +66,7 @@ struct ImportedCase {
   std::string case_id;
   int line = 0;  ///< the line of its first row
   std::vector<ImportRow> rows;
-  ImportedCaseValues values;
+  ImportedCaseValues values{};
 };
 
 /// A malformed import file. The message is one line: "<source>:<line>: column <k> (<name>):

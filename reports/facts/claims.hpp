@@ -19,15 +19,15 @@ std::string to_string(ClaimVerdict v);
 
 /// Counts behind a claim; which fields a claim uses is its own (see claims.cpp).
 struct ClaimEvidence {
-  std::string key;  ///< the template section, e.g. "al_equals_pm"
+  std::string key{};  ///< the template section, e.g. "al_equals_pm"
   ClaimVerdict verdict = ClaimVerdict::not_testable;
   int n = 0;           ///< the rows, pairs or models examined
   int n_hold = 0;      ///< of them, those for which the claim holds
   int n_excluded = 0;  ///< rows left out: not credible, luck of one mesh, or not converged
-  std::optional<double> figure;   ///< a claim's deciding figure (a ratio, a difference)
-  std::optional<double> figure2;  ///< a second figure where the claim has two parts
-  int n2 = 0, n2_hold = 0;        ///< a second part's counts
-  std::string examples;           ///< the rows or models that break the claim, a few
+  std::optional<double> figure{};   ///< a claim's deciding figure (a ratio, a difference)
+  std::optional<double> figure2{};  ///< a second figure where the claim has two parts
+  int n2 = 0, n2_hold = 0;          ///< a second part's counts
+  std::string examples{};           ///< the rows or models that break the claim, a few
 };
 
 /// Every claim of the study, in the ledger's order.

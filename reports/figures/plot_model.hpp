@@ -83,8 +83,8 @@ struct PlotPanel {
 };
 
 struct Plot {
-  std::string title;
-  std::vector<PlotPanel> panels;
+  std::string title{};
+  std::vector<PlotPanel> panels{};
   int columns = 2;
   int panel_width = 560, panel_height = 420;  ///< pixels, without the key
   KeyPlace key = KeyPlace::below;

@@ -22,8 +22,8 @@ struct AppendixTableFacts {
   schema::Element element = schema::Element::Q4;
   schema::ContactKind contact = schema::ContactKind::ss;
   MarkdownTable table{{}};
-  std::set<std::string> study_tables;  ///< the study's tables the ANSYS values come from
-  bool merged = false;                 ///< a column stands for coinciding algorithms
+  std::set<std::string> study_tables{};  ///< the study's tables the ANSYS values come from
+  bool merged = false;                   ///< a column stands for coinciding algorithms
   bool via_note = false, missing = false, failed = false, not_converged = false;
 };
 
