@@ -2,19 +2,17 @@
 
 #include "suites/interface_checks.hpp"
 
-#include <stdlib.h>
-
 #include <cmath>
 #include <exception>
 #include <stdexcept>
 #include <string>
-#include <system_error>
 #include <utility>
 #include <vector>
 
 #include "adapters/calculix/calculix_error.hpp"
 #include "adapters/calculix/calculix_manifest.hpp"
 #include "suites/problem_executor.hpp"
+#include "suites/run_directory.hpp"
 #include "suites/solver_support.hpp"
 #include "suites/suite_error.hpp"
 #include "suites/surface_sampling.hpp"
@@ -95,29 +93,11 @@ std::string with_kept_directory(std::string reason, const std::filesystem::path&
          " (CalculiX files kept in " + dir.string() + ")";
 }
 
-/// The process's run directory, removed at exit when it is empty (every case converged).
-struct RunDirectory {
-  std::filesystem::path path;
-  RunDirectory() {
-    std::string pattern = (std::filesystem::temp_directory_path() / "contact-suite-ccx.XXXXXX");
-    if (mkdtemp(pattern.data()) == nullptr)
-      throw std::system_error(errno, std::generic_category(),
-                              "cannot create a CalculiX run directory from " + pattern);
-    path = pattern;
-  }
-  ~RunDirectory() {
-    std::error_code ignored;
-    std::filesystem::remove(path, ignored);  // fails, harmlessly, while failed cases are kept
-  }
-  RunDirectory(const RunDirectory&) = delete;
-  RunDirectory& operator=(const RunDirectory&) = delete;
-};
-
 }  // namespace
 
 const std::filesystem::path& calculix_run_directory() {
-  static const RunDirectory dir;
-  return dir.path;
+  static const RunDirectory dir("contact-suite-ccx");
+  return dir.path();
 }
 
 std::string calculix_case_directory_name(const CaseSpec& spec) {

@@ -8,7 +8,6 @@
 #include <cmath>
 #include <map>
 #include <set>
-#include <system_error>
 
 #include <fmt/format.h>
 
@@ -18,6 +17,7 @@
 #include "solver/stress_recovery.hpp"
 #include "suites/case_directory.hpp"
 #include "suites/problem_executor.hpp"
+#include "suites/run_directory.hpp"
 #include "suites/solver_support.hpp"
 #include "suites/suite_error.hpp"
 #include "suites/surface_sampling.hpp"
@@ -28,16 +28,10 @@ namespace {
 namespace fs = std::filesystem;
 namespace protocol = adapters::protocol;
 
-/// The process's run root for external codes, created on first use.
+/// The process's run root for external codes, created on first use (suites/run_directory.hpp).
 const fs::path& default_work_root() {
-  static const fs::path root = [] {
-    std::string pattern = (fs::temp_directory_path() / "contact-suite-ext.XXXXXX").string();
-    if (mkdtemp(pattern.data()) == nullptr)
-      throw std::system_error(errno, std::generic_category(),
-                              "cannot create a run directory from " + pattern);
-    return fs::path(pattern);
-  }();
-  return root;
+  static const RunDirectory root("contact-suite-ext");
+  return root.path();
 }
 
 /// Names and modification times of everything under `dir` (not following links).

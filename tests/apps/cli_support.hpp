@@ -30,14 +30,22 @@ inline std::string read_text(const std::filesystem::path& p) {
   return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
-/// Runs contact-suite with `args` (each passed as one shell word), stdout and stderr captured.
-inline CliRun run_cli(const std::vector<std::string>& args) {
+/// Runs contact-suite with `args` (each passed as one shell word), stdout and stderr captured,
+/// with `tmpdir` as its TMPDIR; by default a scratch directory of its own, removed afterwards,
+/// so that what a run keeps there (a failed case's files) or a killed one leaves stays out of
+/// /tmp.
+inline CliRun run_cli(const std::vector<std::string>& args,
+                      const std::filesystem::path& tmpdir = {}) {
   char err_path[] = "/tmp/contact-suite-cli-test-XXXXXX";
   const int fd = mkstemp(err_path);
   if (fd < 0)
     throw std::runtime_error("mkstemp failed");
   close(fd);
-  std::string command = std::string("'") + CONTACT_SUITE_EXE + "'";
+  char scratch[] = "/tmp/contact-suite-cli-tmp-XXXXXX";
+  if (tmpdir.empty() && mkdtemp(scratch) == nullptr)
+    throw std::runtime_error("mkdtemp failed");
+  const std::string tmp = tmpdir.empty() ? std::string(scratch) : tmpdir.string();
+  std::string command = "TMPDIR='" + tmp + "' '" + CONTACT_SUITE_EXE + "'";
   for (const std::string& arg : args)
     command += " '" + arg + "'";
   command += std::string(" 2>'") + err_path + "'";
@@ -54,6 +62,8 @@ inline CliRun run_cli(const std::vector<std::string>& args) {
   result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   result.err = read_text(err_path);
   std::filesystem::remove(err_path);
+  if (tmpdir.empty())
+    std::filesystem::remove_all(scratch);
   return result;
 }
 

@@ -105,10 +105,15 @@ pid_t start(const fs::path& dir, const fs::path& path_head, std::vector<std::str
   for (auto& a : argv)
     c_argv.push_back(a.data());
   c_argv.push_back(nullptr);
-  std::vector<std::string> env{"PATH=" + path_head.string() + ":" + std::getenv("PATH")};
+  // A TMPDIR of the test program's own: what a killed run leaves there (its figures' gnuplot
+  // scratch) is removed with it, and `dir` holds only what the run writes.
+  static const TempDir scratch;
+  std::vector<std::string> env{"PATH=" + path_head.string() + ":" + std::getenv("PATH"),
+                               "TMPDIR=" + scratch.path().string()};
   for (char** e = environ; *e != nullptr; ++e) {
-    if (std::string(*e).rfind("PATH=", 0) != 0)
-      env.emplace_back(*e);
+    const std::string entry(*e);
+    if (entry.rfind("PATH=", 0) != 0 && entry.rfind("TMPDIR=", 0) != 0)
+      env.emplace_back(entry);
   }
   std::vector<char*> c_env;
   for (auto& e : env)

@@ -97,6 +97,48 @@ TEST(SolverProtocolCli, StandInCodeIsRunAndGradedOnBothBases) {
   }
 }
 
+// Requirement: a run of another code leaves nothing in the temporary directory once its cases
+// converged (their directories and the process's run directory are removed), and keeps a
+// failed case's files there, under the path its reason names.
+TEST(SolverProtocolCli, RunDirectoryIsRemovedUnlessACaseKeepsItsFiles) {
+  TempDir dir;
+  make_code_folder(dir.path() / "patch_code");
+  const auto run = [&](const std::string& option, const fs::path& scratch) {
+    fs::create_directories(scratch);
+    return run_cli({"run",
+                    "--solver",
+                    "patchcode",
+                    "--solver-dir",
+                    (dir.path() / "patch_code").string(),
+                    "--solver-options",
+                    option,
+                    "--problems",
+                    "P_p",
+                    "--meshes",
+                    "C",
+                    "--elements",
+                    "Q4",
+                    "--target",
+                    "rigid",
+                    "--jobs",
+                    "1",
+                    "--no-report",
+                    "--out",
+                    (scratch.parent_path() / (option + "-out")).string()},
+                   scratch);
+  };
+  const fs::path clean = dir.path() / "clean";
+  ASSERT_EQ(run("exact", clean).exit_code, 0);
+  EXPECT_TRUE(fs::is_empty(clean));
+  const fs::path kept = dir.path() / "kept";
+  ASSERT_EQ(run("exit3", kept).exit_code, 1);
+  ASSERT_FALSE(fs::is_empty(kept));
+  const auto cases = cases_by_id(dir.path() / "exit3-out" / "results.json");
+  ASSERT_FALSE(cases.empty());
+  const std::string reason = cases.begin()->second.at("reason");
+  EXPECT_NE(reason.find(kept.string()), std::string::npos) << reason;
+}
+
 TEST(SolverProtocolCli, EveryFailureIsTheCaseStatusWithItsReason) {
   TempDir dir;
   make_code_folder(dir.path() / "patch_code");
