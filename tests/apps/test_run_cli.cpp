@@ -77,13 +77,13 @@ TEST(RunCli, CaseVtuHoldsTheWholeField) {
 // a machine of two cores or more.
 TEST(RunCli, CaseGivesTheValuesOfARun) {
   TempDir tmp;
-  const auto single = run_cli({"case", "S_1_7", "--mesh", "F", "--algorithm", "LMP", "--contact",
-                               "ss", "--json"});
+  const auto single =
+      run_cli({"case", "S_1_7", "--mesh", "F", "--algorithm", "LMP", "--contact", "ss", "--json"});
   ASSERT_EQ(single.exit_code, 0) << single.err;
   const std::string out = (tmp.path() / "run").string();
-  const auto r = run_cli({"run", "--problems", "S_1_7", "--meshes", "F", "--elements", "Q4",
-                          "--algorithms", "LMP", "--contacts", "ss", "--jobs", "1", "--no-report",
-                          "--out", out});
+  const auto r =
+      run_cli({"run", "--problems", "S_1_7", "--meshes", "F", "--elements", "Q4", "--algorithms",
+               "LMP", "--contacts", "ss", "--jobs", "1", "--no-report", "--out", out});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto one = nlohmann::json::parse(single.out);
   const auto doc = nlohmann::json::parse(read_text(tmp.path() / "run" / "results.json"));

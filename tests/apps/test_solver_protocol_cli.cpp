@@ -49,6 +49,35 @@ std::map<std::string, nlohmann::json> cases_by_id(const fs::path& results) {
   return out;
 }
 
+/// `run` of the stand-in code in `folder` with `options` on P_p C Q4 (rigid target), one job, no
+/// report, into `out`, then `extra` arguments.
+std::vector<std::string> patch_code_run(const fs::path& folder, const std::string& options,
+                                        const fs::path& out,
+                                        const std::vector<std::string>& extra = {}) {
+  std::vector<std::string> args{"run",
+                                "--solver",
+                                "patchcode",
+                                "--solver-dir",
+                                folder.string(),
+                                "--solver-options",
+                                options,
+                                "--problems",
+                                "P_p",
+                                "--meshes",
+                                "C",
+                                "--elements",
+                                "Q4",
+                                "--target",
+                                "rigid",
+                                "--jobs",
+                                "1",
+                                "--no-report",
+                                "--out",
+                                out.string()};
+  args.insert(args.end(), extra.begin(), extra.end());
+  return args;
+}
+
 TEST(SolverProtocolCli, ListShowsARegisteredCode) {
   TempDir dir;
   make_code_folder(dir.path() / "patch_code");
@@ -105,26 +134,8 @@ TEST(SolverProtocolCli, RunDirectoryIsRemovedUnlessACaseKeepsItsFiles) {
   make_code_folder(dir.path() / "patch_code");
   const auto run = [&](const std::string& option, const fs::path& scratch) {
     fs::create_directories(scratch);
-    return run_cli({"run",
-                    "--solver",
-                    "patchcode",
-                    "--solver-dir",
-                    (dir.path() / "patch_code").string(),
-                    "--solver-options",
-                    option,
-                    "--problems",
-                    "P_p",
-                    "--meshes",
-                    "C",
-                    "--elements",
-                    "Q4",
-                    "--target",
-                    "rigid",
-                    "--jobs",
-                    "1",
-                    "--no-report",
-                    "--out",
-                    (scratch.parent_path() / (option + "-out")).string()},
+    return run_cli(patch_code_run(dir.path() / "patch_code", option,
+                                  scratch.parent_path() / (option + "-out")),
                    scratch);
   };
   const fs::path clean = dir.path() / "clean";
@@ -143,28 +154,9 @@ TEST(SolverProtocolCli, EveryFailureIsTheCaseStatusWithItsReason) {
   TempDir dir;
   make_code_folder(dir.path() / "patch_code");
   const fs::path out = dir.path() / "out";
-  const auto r = run_cli({"run",
-                          "--solver",
-                          "patchcode",
-                          "--solver-dir",
-                          (dir.path() / "patch_code").string(),
-                          "--solver-options",
-                          "exit3,nan,missing_node,unparsable,outside,sleep,no_stresses",
-                          "--problems",
-                          "P_p",
-                          "--meshes",
-                          "C",
-                          "--elements",
-                          "Q4",
-                          "--target",
-                          "rigid",
-                          "--time-limit",
-                          "2",
-                          "--jobs",
-                          "1",
-                          "--no-report",
-                          "--out",
-                          out.string()});
+  const auto r = run_cli(patch_code_run(
+      dir.path() / "patch_code", "exit3,nan,missing_node,unparsable,outside,sleep,no_stresses", out,
+      {"--time-limit", "2"}));
   ASSERT_EQ(r.exit_code, 1) << r.err << r.out;  // cases failed, results written
   const auto cases = cases_by_id(out / "results.json");
   const std::map<std::string, std::pair<std::string, std::string>> expected{
