@@ -9,6 +9,7 @@
 #include "suites/calculix_executor.hpp"
 #include "suites/external_executor.hpp"
 #include "suites/problem_executor.hpp"
+#include "suites/run_directory.hpp"
 #include "suites/suite_error.hpp"
 
 namespace cs::suites {
@@ -56,6 +57,8 @@ void require_solvers(const std::vector<CaseSpec>& cases, const ExecutorOptions& 
     if (name == adapters::calculix::kCalculixName)
       adapters::calculix::require_ccx(code.command.front());
   }
+  if (!codes.empty() && options.external_work_root.empty())
+    require_temporary_directory();  // where their cases' directories go
 }
 
 ExecutorFactory executor_factory(const ExecutorOptions& options) {

@@ -109,8 +109,14 @@ const ExternalExecutor::Run& ExternalExecutor::run_code(const CaseSpec& spec) {
   Run& run = *last_;
   run.key = key;
   const protocol::SolverManifest& code = options_.manifest;
-  const fs::path root = options_.work_root.empty() ? default_work_root() : options_.work_root;
-  fs::create_directories(root);
+  fs::path root;
+  try {  // a failure here is this run's, so every basis of the case reports it
+    root = options_.work_root.empty() ? default_work_root() : options_.work_root;
+    fs::create_directories(root);
+  } catch (const std::exception& e) {
+    run.failure = std::string("cannot create a run directory: ") + e.what();
+    return run;
+  }
   std::string pattern = (root / (plain_file_name(key) + ".XXXXXX")).string();
   if (mkdtemp(pattern.data()) == nullptr) {
     run.failure = "cannot create a run directory under " + root.string();

@@ -9,6 +9,10 @@
 
 namespace cs::suites {
 
+/// Throws SuiteInputError (one line naming TMPDIR) unless the temporary directory is a directory
+/// this process may create entries in: checked before another code's cases run.
+void require_temporary_directory();
+
 class RunDirectory {
  public:
   /// Creates <temporary directory>/<prefix>.XXXXXX. Throws std::system_error if it cannot.

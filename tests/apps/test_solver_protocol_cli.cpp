@@ -49,11 +49,13 @@ std::map<std::string, nlohmann::json> cases_by_id(const fs::path& results) {
   return out;
 }
 
-/// `run` of the stand-in code in `folder` with `options` on P_p C Q4 (rigid target), one job, no
-/// report, into `out`, then `extra` arguments.
+/// `run` of the stand-in code in `folder` with `options` on P_p's `meshes` and `elements` (rigid
+/// target), one job, no report, into `out`, then `extra` arguments.
 std::vector<std::string> patch_code_run(const fs::path& folder, const std::string& options,
                                         const fs::path& out,
-                                        const std::vector<std::string>& extra = {}) {
+                                        const std::vector<std::string>& extra = {},
+                                        const std::string& meshes = "C",
+                                        const std::string& elements = "Q4") {
   std::vector<std::string> args{"run",
                                 "--solver",
                                 "patchcode",
@@ -64,9 +66,9 @@ std::vector<std::string> patch_code_run(const fs::path& folder, const std::strin
                                 "--problems",
                                 "P_p",
                                 "--meshes",
-                                "C",
+                                meshes,
                                 "--elements",
-                                "Q4",
+                                elements,
                                 "--target",
                                 "rigid",
                                 "--jobs",
@@ -91,26 +93,7 @@ TEST(SolverProtocolCli, StandInCodeIsRunAndGradedOnBothBases) {
   TempDir dir;
   make_code_folder(dir.path() / "codes" / "patch_code");
   const fs::path out = dir.path() / "out";
-  const auto r = run_cli({"run",
-                          "--solver",
-                          "patchcode",
-                          "--solver-dir",
-                          (dir.path() / "codes").string(),
-                          "--solver-options",
-                          "exact",
-                          "--problems",
-                          "P_p",
-                          "--meshes",
-                          "C,M",
-                          "--elements",
-                          "Q4,Q8",
-                          "--target",
-                          "rigid",
-                          "--jobs",
-                          "1",
-                          "--no-report",
-                          "--out",
-                          out.string()});
+  const auto r = run_cli(patch_code_run(dir.path() / "codes", "exact", out, {}, "C,M", "Q4,Q8"));
   ASSERT_EQ(r.exit_code, 0) << r.err << r.out;
   const auto cases = cases_by_id(out / "results.json");
   ASSERT_EQ(cases.size(), 8u);  // 2 meshes x 2 elements x 2 bases
@@ -148,6 +131,20 @@ TEST(SolverProtocolCli, RunDirectoryIsRemovedUnlessACaseKeepsItsFiles) {
   ASSERT_FALSE(cases.empty());
   const std::string reason = cases.begin()->second.at("reason");
   EXPECT_NE(reason.find(kept.string()), std::string::npos) << reason;
+}
+
+// Requirement: a temporary directory that does not exist is bad input: exit 2 and one line
+// naming TMPDIR before any case runs, and no output directory.
+TEST(SolverProtocolCli, UnusableTemporaryDirectoryIsExit2) {
+  TempDir dir;
+  make_code_folder(dir.path() / "patch_code");
+  const fs::path out = dir.path() / "out";
+  const auto r =
+      run_cli(patch_code_run(dir.path() / "patch_code", "exact", out), dir.path() / "missing");
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find("TMPDIR=" + (dir.path() / "missing").string()), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << r.err;
+  EXPECT_FALSE(fs::exists(out));
 }
 
 TEST(SolverProtocolCli, EveryFailureIsTheCaseStatusWithItsReason) {

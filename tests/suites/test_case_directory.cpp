@@ -18,6 +18,7 @@
 #include <nlohmann/json.hpp>
 
 #include "suites/case_directory.hpp"
+#include "suites/executor_factory.hpp"
 #include "support/temp_dir.hpp"
 
 namespace cs::suites {
@@ -167,6 +168,30 @@ TEST(CaseDirectory, SteuermannRigidIsAGivenLoadWithUnknownDepth) {
   for (const auto& bc : j["boundary_conditions"])
     load_controlled += bc.value("load_controlled", false) ? 1 : 0;
   EXPECT_EQ(load_controlled, 1);
+}
+
+// Requirement: where a case's run directory cannot be made, every stress basis of the case
+// fails with that reason (the run is shared by the bases: the second must not read it as a run
+// that wrote no files), and nothing is run.
+TEST(CaseDirectory, NoRunDirectoryFailsEveryBasisWithTheReason) {
+  cs::testing::TempDir dir;
+  std::ofstream(dir.path() / "file") << "not a directory\n";
+  ExecutorOptions options;
+  options.external_work_root = dir.path() / "file" / "runs";
+  CaseSpec spec = spec_of(ProblemId::P_p, Element::Q4, TargetKind::Rigid);
+  spec.algorithm = Algorithm::AL;
+  spec.contact = ContactKind::ns;
+  spec.solver = SolverKind::external;
+  spec.solver_name = "getfem";
+  spec.solver_option = "nodal_al";
+  const auto executor = make_executor_for(spec, options);
+  for (const Recovery basis : {Recovery::spr, Recovery::own}) {
+    spec.recovery = basis;
+    const CaseResult r = executor->run(spec);
+    EXPECT_EQ(r.status, CaseStatus::failed) << case_id(spec);
+    EXPECT_NE(r.reason.find("cannot create a run directory"), std::string::npos)
+        << case_id(spec) << ": " << r.reason;
+  }
 }
 
 }  // namespace

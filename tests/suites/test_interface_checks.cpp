@@ -216,5 +216,23 @@ TEST(InterfaceChecks, AnotherCodesPressureFromForcesNeverPullsWhereTheTractionDo
   }
 }
 
+// Requirement: the pressure another code's nodal forces stand for is the traction itself where
+// it is uniform, at corners and mid-side nodes alike: the uniform patch's field, reversed (every
+// node pulled by the whole pressure p), reads a tension of exactly p on Q4 and Q8. A wrong
+// weight (a corner's or a mid-side node's share, a factor 2) or the x force in place of the z
+// force reads another value.
+TEST(InterfaceChecks, AnotherCodesUniformTractionReadsAsItsPressure) {
+  for (const Element e : {Element::Q4, Element::Q8}) {
+    const CaseSpec spec = spec_of(ProblemId::P_p, Algorithm::LMP, ContactKind::ss, e);
+    ProblemExecutor executor(spec);
+    executor.recover_whole_field();  // reads the whole displacement
+    ASSERT_EQ(executor.run(spec).status, CaseStatus::converged);
+    const auto pulled =
+        check_interface_of_displacements(executor.setup(), -executor.last_displacement(), {});
+    ASSERT_TRUE(pulled.max_tensile_over_p);
+    EXPECT_NEAR(*pulled.max_tensile_over_p, 1.0, 1e-9) << case_id(spec);
+  }
+}
+
 }  // namespace
 }  // namespace cs::suites
