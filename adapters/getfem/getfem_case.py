@@ -302,7 +302,42 @@ def contact_pressure(problem, option):
         return nodes, np.array([-forces[k] / lengths[n] for k, n in enumerate(nodes)])
     if option == "integral_al":
         return integral_pressure(problem)
-    return None
+    return law_pressure(problem, option)
+
+
+def law_pressure(problem, option):
+    """The traction the penalty or Nitsche brick imposes, at each node of the contact surface
+    (> 0 in compression); (nodes, pressures). With g = obstacle + Grad_obstacle.u the gap (the
+    obstacle's signed distance, linearized in u as the bricks do) and n its normal:
+
+      penalty:  p = r max(0, -g)
+      Nitsche:  p = max(0, -n.sigma(u).n - (gamma0 / element_size) g)
+
+    each evaluated (Model.interpolation) at an element's nodes on the surface and averaged over
+    the elements at a node, as nodal_stresses does. The forces of the solution's residual are
+    not this traction for Nitsche's method: they also hold its consistency term, theta
+    sigma(v).n, which are no traction (docs/solver-protocol.md, section 5)."""
+    disc, md, case = problem.disc, problem.md, problem.case
+    gap = "(obstacle + Grad_obstacle.u)"
+    if option == "penalty":
+        expr = f"r*pos_part(-{gap})"
+    else:
+        n = "Normalized(Grad_obstacle)"
+        sigma = "(lambda*Trace(Grad_u)*Id(2) + mu*(Grad_u + Grad_u'))"
+        expr = f"pos_part(-({n}.({sigma}*{n})) - (gamma0/element_size)*{gap})"
+    mfs = disc.scalar_mesh_fem(discontinuous=True)
+    values = md.interpolation(expr, mfs, CONTACT)
+    pts = mfs.basic_dof_nodes()
+    on_surface = mfs.basic_dof_on_region(CONTACT)
+    sums, counts = {}, {}
+    for d in on_surface:
+        key = coordinate_key(*pts[:, d])
+        sums[key] = sums.get(key, 0.0) + values[d]
+        counts[key] = counts.get(key, 0) + 1
+    nodes = np.array([n for n in np.unique(case.edge_sets[case.contact.contact_surface])
+                      if coordinate_key(*case.nodes[n]) in sums])
+    keys = [coordinate_key(*case.nodes[n]) for n in nodes]
+    return nodes, np.array([sums[k] / counts[k] for k in keys])
 
 
 def integral_pressure(problem):

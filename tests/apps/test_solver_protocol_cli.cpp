@@ -242,6 +242,52 @@ TEST(SolverProtocolCli, GetfemIntegralContactHalfWidth) {
   }
 }
 
+// Penalty and Nitsche write the traction their law imposes as their contact pressure
+// (adapters/getfem: law_pressure), so the tensile check reads the law, as it does for ours. On
+// F_p C Q8 that traction never pulls, and at the punch's centre it equals the normal stress there
+// (measured: 0.1 %; a wrong gap sign, penalty r or Nitsche gamma moves it by the traction
+// itself). Read from the solution's nodal forces instead, Nitsche's pressure held its
+// consistency terms: 0.0077 p of tension on this mesh.
+TEST(SolverProtocolCli, GetfemPenaltyAndNitschePressureIsTheirLaw) {
+  if (!getfem_available())
+    GTEST_SKIP() << "python3-getfem is not installed";
+  TempDir dir;
+  const fs::path out = dir.path() / "out";
+  const auto r = run_cli({"run",
+                          "--solver",
+                          "getfem",
+                          "--solver-options",
+                          "penalty,nitsche",
+                          "--problems",
+                          "F_p",
+                          "--meshes",
+                          "C",
+                          "--elements",
+                          "Q8",
+                          "--target",
+                          "rigid",
+                          "--recovery",
+                          "spr",
+                          "--jobs",
+                          "1",
+                          "--no-report",
+                          "--out",
+                          out.string()});
+  ASSERT_EQ(r.exit_code, 0) << r.err << r.out;
+  const auto cases = cases_by_id(out / "results.json");
+  for (const std::string id :
+       {"F_p/C/Q8/PM/ss/rigid/@getfem:penalty", "F_p/C/Q8/AL/ss/rigid/@getfem:nitsche"}) {
+    ASSERT_TRUE(cases.contains(id)) << id;
+    const auto& c = cases.at(id);
+    EXPECT_LT(c.at("interface").at("max_tensile_over_p").get<double>(), 1e-12) << id;
+    const auto& profile = c.at("profile");
+    ASSERT_FALSE(profile.at("pressure_over_p").empty()) << id;
+    const double pressure = profile.at("pressure_over_p").at(0).get<double>();
+    const double sigma_z = profile.at("sigma_z_over_p").at(0).get<double>();
+    EXPECT_NEAR(pressure / sigma_z, 1.0, 0.01) << id << ": " << pressure << " against " << sigma_z;
+  }
+}
+
 // Requirement: under load control (S: a total load, the depth unknown) GetFEM carries the given
 // load: its nodal augmented Lagrangian enforces non-penetration exactly at the nodes, as our
 // Lagrange multipliers ns do, so on the same mesh and rigid punch their peak stresses agree to
