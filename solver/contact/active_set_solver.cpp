@@ -58,17 +58,17 @@ ActiveSetStep solve_with_laws(const CondensedProblem& p, const std::vector<RowLa
     for (int a = 0; a < nk; ++a) {
       b[a] = s[a] * (rhs[implicit[a]] - W_mu_explicit[implicit[a]]);
     }
-    dense::SymmetricIndefiniteLdlt ldlt;
-    if (!ldlt.factorize(T) || !(ldlt.rcond() > kMinRcond)) {
+    dense::SymmetricFactorization factorization;
+    if (!factorization.factorize(T) || !(factorization.rcond() > kMinRcond)) {
       step.failure_kind = ContactFailure::SingularSystem;
       step.failure = fmt::format(
           "the condensed contact system of {} equations is singular "
           "(reciprocal condition {:.2g}): a body is held by no active "
           "constraint",
-          nk, ldlt.rcond());
+          nk, factorization.rcond());
       return step;
     }
-    ldlt.solve_in_place(b);
+    factorization.solve_in_place(b);
     for (int a = 0; a < nk; ++a)
       step.mu[implicit[a]] = s[a] * b[a];
   }

@@ -9,8 +9,9 @@
 // active flag (e.g. Lagrange multiplier: g = 0 if active, lambda = 0 if not). Substituting,
 //   alpha mu + delta (d + W mu) = gamma - beta g0,   delta = beta - alpha rho,
 // which is explicit in mu_j where delta_j = 0 and otherwise, divided by delta_j, the symmetric
-// (indefinite) system (W + diag(alpha / delta)) mu = ...; it is solved by a Bunch-Kaufman LDL^T
-// after the symmetric scaling rho^{1/2}.
+// (possibly indefinite) system (W + diag(alpha / delta)) mu = ...; it is solved after the
+// symmetric scaling rho^{1/2} by Cholesky where it is positive definite, else by a Bunch-Kaufman
+// LDL^T (dense::SymmetricFactorization).
 //
 // The loop always terminates: it stops converged when the residual of the algorithm's
 // complementarity function is below the tolerance or the active set reproduces itself, and

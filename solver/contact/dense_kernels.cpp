@@ -96,17 +96,24 @@ double cholesky_rcond(const Eigen::MatrixXd& L, double norm1) {
   return rcond;
 }
 
-bool SymmetricIndefiniteLdlt::factorize(const Eigen::MatrixXd& A) {
+bool SymmetricFactorization::factorize(const Eigen::MatrixXd& A) {
   const int n = static_cast<int>(A.rows());
-  factor_ = A;
-  pivots_.resize(n);
+  pivots_.resize(0);
   rcond_ = 0.0;
   if (n == 0) {
+    factor_.resize(0, 0);
     rcond_ = 1.0;
     return true;
   }
   std::vector<double> norm_work(n);
-  const double anorm = dlansy_("1", "L", &n, factor_.data(), &n, norm_work.data());
+  const double anorm = dlansy_("1", "L", &n, A.data(), &n, norm_work.data());
+  factor_ = A;
+  if (cholesky_in_place(factor_)) {
+    rcond_ = cholesky_rcond(factor_, anorm);
+    return true;
+  }
+  factor_ = A;
+  pivots_.resize(n);
   int info = 0;
   int lwork = -1;
   double query = 0.0;
@@ -123,10 +130,14 @@ bool SymmetricIndefiniteLdlt::factorize(const Eigen::MatrixXd& A) {
   return info == 0;
 }
 
-void SymmetricIndefiniteLdlt::solve_in_place(Eigen::VectorXd& b) const {
+void SymmetricFactorization::solve_in_place(Eigen::VectorXd& b) const {
   const int n = static_cast<int>(factor_.rows());
   if (n == 0)
     return;
+  if (positive_definite()) {
+    cholesky_solve(factor_, b);
+    return;
+  }
   const int nrhs = 1;
   int info = 0;
   dsytrs_("L", &n, &nrhs, factor_.data(), &n, pivots_.data(), b.data(), &n, &info);

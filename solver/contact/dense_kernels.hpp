@@ -28,19 +28,23 @@ void cholesky_solve(const Eigen::MatrixXd& L, Eigen::VectorXd& b);
 /// 1-norm of the original matrix.
 double cholesky_rcond(const Eigen::MatrixXd& L, double norm1);
 
-/// A symmetric (possibly indefinite) matrix factorized by Bunch-Kaufman LDL^T.
-class SymmetricIndefiniteLdlt {
+/// A symmetric matrix factorized by Cholesky when it is positive definite (the condensed
+/// contact systems mostly are: a compliance plus non-negative law terms), else by Bunch-Kaufman
+/// LDL^T (dsytrf). Cholesky costs about half as much; both solve A x = b to round-off.
+class SymmetricFactorization {
  public:
   /// Factorizes A (its lower triangle is read). Returns false if A is exactly singular.
   bool factorize(const Eigen::MatrixXd& A);
   /// Reciprocal condition number estimate in the 1-norm (0 if exactly singular).
   double rcond() const { return rcond_; }
+  /// Whether the Cholesky factorization served (false: LDL^T).
+  bool positive_definite() const { return pivots_.size() == 0; }
   /// Solves A x = b in place.
   void solve_in_place(Eigen::VectorXd& b) const;
 
  private:
   Eigen::MatrixXd factor_;
-  Eigen::VectorXi pivots_;
+  Eigen::VectorXi pivots_;  ///< LDL^T's pivots; empty for Cholesky
   double rcond_ = 0.0;
 };
 

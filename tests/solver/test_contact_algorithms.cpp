@@ -18,6 +18,7 @@
 
 #include "solver/contact/condensation.hpp"
 #include "solver/contact/contact_error.hpp"
+#include "solver/contact/dense_kernels.hpp"
 #include "solver/contact/lagrange_multiplier.hpp"
 #include "support/tolerance.hpp"
 #include "test_contact_support.hpp"
@@ -114,6 +115,29 @@ void expect_contact_error(const std::function<void()>& f, const std::string& cau
     EXPECT_NE(std::string(e.what()).find(cause), std::string::npos) << e.what();
     EXPECT_EQ(std::string(e.what()).find('\n'), std::string::npos) << "one line";
   }
+}
+
+// The condensed systems' dense factorization: Cholesky where the matrix is positive definite,
+// Bunch-Kaufman LDL^T where it is not (a Lagrange row beside a law term of the other sign), each
+// solving A x = b to round-off; an exactly singular matrix is refused or reads rcond 0.
+TEST(DenseFactorization, CholeskyWherePositiveDefiniteElseLdlt) {
+  Eigen::MatrixXd spd(3, 3), indefinite(3, 3), singular(2, 2);
+  spd << 4, 1, 0, 1, 3, 1, 0, 1, 2;
+  indefinite << 1, 2, 0, 2, 1, 1, 0, 1, -3;
+  singular << 1, 1, 1, 1;
+  const Eigen::VectorXd x = Eigen::Vector3d(1.0, -2.0, 0.5);
+  for (const auto& [A, definite] : {std::pair<Eigen::MatrixXd, bool>{spd, true},
+                                    std::pair<Eigen::MatrixXd, bool>{indefinite, false}}) {
+    dense::SymmetricFactorization f;
+    ASSERT_TRUE(f.factorize(A));
+    EXPECT_EQ(f.positive_definite(), definite);
+    EXPECT_GT(f.rcond(), 0.05);
+    Eigen::VectorXd b = A * x;
+    f.solve_in_place(b);
+    EXPECT_LT((b - x).norm(), 1e-14);
+  }
+  dense::SymmetricFactorization f;
+  EXPECT_FALSE(f.factorize(singular) && f.rcond() > 1e-14);
 }
 
 TEST(ContactInput, BadInputRaisesContactErrorNamingTheCause) {
