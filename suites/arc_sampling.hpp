@@ -9,8 +9,9 @@
 //     contact surface (open ones too: they carry 0, a deviation of -100 %), so that its signed
 //     error 100 (p_k / p - 1) is the largest deviation of the pressure along the arc.
 //
-// Both need the built-in solver's ContactResult (another solver's results carry no nodal
-// forces): without one they have no value (suites/surface_sampling.cpp).
+// Both read a ContactResult: the built-in solver's, or another code's interface derived from its
+// displacements (interface_checks.hpp: the residual's forces along the arc's normals, and its own
+// pressures where it writes them).
 
 #include "solver/contact/contact_result.hpp"
 #include "suites/case_result.hpp"

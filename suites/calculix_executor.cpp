@@ -82,10 +82,11 @@ void fill_values(const ProblemSetup& setup, const ccx::CalculixResult& run, Case
   pressures.reserve(run.contact.size());
   for (const auto& n : run.contact)
     pressures.push_back({n.position.x(), n.pressure});
-  sample_quantities(setup, surface, pressures, result);
+  const Eigen::VectorXd u = displacement_of(setup, run);
+  const solver::ContactResult interface = interface_of_displacements(setup, u, pressures);
+  sample_quantities(setup, surface, pressures, result, nullptr, &interface);
   result.exact_profile = exact_profile(setup);
-  result.interface =
-      check_interface_of_displacements(setup, displacement_of(setup, run), pressures);
+  result.interface = check_interface_of_displacements(setup, interface, u);
 }
 
 std::string with_kept_directory(std::string reason, const std::filesystem::path& dir) {

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
 #include <map>
 #include <set>
 
@@ -27,6 +28,18 @@ namespace {
 
 namespace fs = std::filesystem;
 namespace protocol = adapters::protocol;
+
+/// The last non-empty line a failed code wrote to its standard error (its own statement of why,
+/// e.g. an adapter's "not supported: ..."), at most 300 characters; empty if none.
+std::string last_error_line(const fs::path& stderr_path) {
+  std::ifstream in(stderr_path);
+  std::string line, last;
+  while (std::getline(in, line)) {
+    if (line.find_first_not_of(" \t\r") != std::string::npos)
+      last = line;
+  }
+  return last.size() > 300 ? last.substr(0, 300) + "..." : last;
+}
 
 /// The process's run root for external codes, created on first use (suites/run_directory.hpp).
 const fs::path& default_work_root() {
@@ -143,7 +156,10 @@ const ExternalExecutor::Run& ExternalExecutor::run_code(const CaseSpec& spec) {
   const std::string adapter_change = first_change(adapter_before, listing(code.folder));
   const auto keep = fmt::format(" (files kept in {})", case_dir.string());
   if (!run.child.succeeded()) {
-    run.failure = fmt::format("{} {}", code.name, run.child.describe()) + keep;
+    const std::string said = last_error_line(child.stderr_path);
+    run.failure =
+        fmt::format("{} {}{}", code.name, run.child.describe(), said.empty() ? "" : ": " + said) +
+        keep;
   } else if (!beside.empty()) {
     run.failure = fmt::format("{} wrote outside the case directory: {}", code.name,
                               (run_dir / *beside.begin()).string()) +
@@ -213,10 +229,12 @@ CaseResult ExternalExecutor::run(const CaseSpec& spec) {
   std::vector<ContactPressureSample> pressures;
   for (const auto& p : run.files.contact_pressure)
     pressures.push_back({setup_->model.mesh.nodes[p.node].x(), p.pressure});
-  sample_quantities(*setup_, surface, pressures, result);
+  const solver::ContactResult interface =
+      interface_of_displacements(*setup_, run.files.displacement, pressures);
+  sample_quantities(*setup_, surface, pressures, result, nullptr, &interface);
   result.exact_profile = exact_profile(*setup_);
   if (result.status == CaseStatus::converged)
-    result.interface = check_interface_of_displacements(*setup_, run.files.displacement, pressures);
+    result.interface = check_interface_of_displacements(*setup_, interface, run.files.displacement);
   return result;
 }
 

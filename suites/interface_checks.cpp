@@ -7,6 +7,7 @@
 #include <set>
 
 #include "solver/contact/gap_normal.hpp"
+#include "solver/dof_map.hpp"
 #include "solver/internal_forces.hpp"
 #include "solver/load_vector.hpp"
 #include "solver/surface_path.hpp"
@@ -86,18 +87,41 @@ std::map<int, double> pressures_of_forces(const solver::Mesh& mesh, const solver
   return out;
 }
 
-/// The z component of the contact surface's outward normal, +1 or -1 (the surface faces the
-/// target along z in every problem): the side's midpoint against its element's centroid. The
-/// contact pushes the block against it, so a compressive contact force has the opposite sign.
-double outward_z(const solver::Mesh& mesh, const solver::SurfacePath& path) {
-  const solver::ElementSide& side = path.sides.front();
+/// The outward unit normal of a side of the surface: its chord turned a quarter, pointing away
+/// from its element's centroid. A side along x has exactly (0, +1) or (0, -1).
+Eigen::Vector2d outward_normal(const solver::Mesh& mesh, const solver::ElementSide& side) {
   const auto& e = mesh.elements[side.element];
   Eigen::Vector2d centroid = Eigen::Vector2d::Zero();
   for (int k = 0; k < 4; ++k)
     centroid += mesh.nodes[e[k]] / 4.0;
   const std::array<int, 3> ends = mesh.side_nodes(side);
-  const double mid_z = 0.5 * (mesh.nodes[ends[0]].y() + mesh.nodes[ends[1]].y());
-  return mid_z > centroid.y() ? 1.0 : -1.0;
+  const Eigen::Vector2d chord = mesh.nodes[ends[1]] - mesh.nodes[ends[0]];
+  Eigen::Vector2d n(chord.y(), -chord.x());
+  n.normalize();
+  const Eigen::Vector2d mid = 0.5 * (mesh.nodes[ends[0]] + mesh.nodes[ends[1]]);
+  return n.dot(mid - centroid) > 0.0 ? n : Eigen::Vector2d(-n);
+}
+
+/// The outward unit normal at every node of the elements on the surface: a surface node's is the
+/// mean of its sides' (a Q8 mid-side node's its side's), an inner node's that of its element's
+/// side. On a flat surface every one is exactly the surface's; on an arc (IF) it is radial.
+std::map<int, Eigen::Vector2d> layer_normals(const solver::Mesh& mesh,
+                                             const solver::SurfacePath& path) {
+  std::map<int, Eigen::Vector2d> surface, out;
+  for (const auto& side : path.sides) {
+    const Eigen::Vector2d n = outward_normal(mesh, side);
+    const std::array<int, 3> nodes = mesh.side_nodes(side);
+    for (int a = 0; a < solver::nodes_per_side(mesh.type); ++a) {
+      auto [it, fresh] = surface.try_emplace(nodes[a], Eigen::Vector2d::Zero());
+      it->second += n;
+    }
+    const auto& e = mesh.elements[side.element];
+    for (auto node = e.begin(); node != e.begin() + mesh.n_element_nodes(); ++node)
+      out.try_emplace(*node, n);
+  }
+  for (auto& [node, n] : surface)
+    out[node] = n.normalized();
+  return out;
 }
 
 }  // namespace
@@ -113,41 +137,44 @@ double interface_load(const ProblemSetup& setup, const Eigen::VectorXd& f) {
   return std::abs(z);
 }
 
-schema::InterfaceChecks check_interface_of_displacements(
+solver::ContactResult interface_of_displacements(
     const ProblemSetup& setup, const Eigen::VectorXd& u,
     const std::vector<ContactPressureSample>& pressures) {
   const solver::Model& model = setup.model;
   const Eigen::VectorXd f = solver::assemble_load_vector(model, model.loads);
-  const Eigen::VectorXd residual = solver::internal_forces(model, u) - f;
+  Eigen::VectorXd residual = solver::internal_forces(model, u) - f;
+  // A prescribed DOF's residual is its support's reaction, not a contact force (the arc of IF
+  // ends on its symmetry lines, whose reactions carry the hoop force).
+  const solver::DofMap dofs(model);
+  for (Eigen::Index d = 0; d < residual.size(); ++d) {
+    if (!dofs.is_free(static_cast<int>(d)))
+      residual[d] = 0.0;
+  }
   const solver::SurfacePath path = solver::surface_path(model.mesh, kSampledSurface);
+  // Compression is positive: the interface pushes the block against its outward normal. The
+  // direction is the geometry's, never the result's: an interface that pulls reads negative.
+  const std::map<int, Eigen::Vector2d> normal = layer_normals(model.mesh, path);
+  const auto compressive = [&](int n) {
+    const Eigen::Vector2d& d = normal.at(n);
+    return -(d.x() * residual[2 * n] + d.y() * residual[2 * n + 1]);
+  };
   solver::ContactResult contact;
+  std::map<int, double> force;
   for (std::size_t k = 0; k < path.nodes.size(); ++k) {
     solver::ContactNodeResult node;
     node.node = path.nodes[k];
     node.position = path.positions[k];
-    node.force = residual[2 * node.node + 1];
+    node.force = force[node.node] = compressive(node.node);
     contact.nodes.push_back(node);
   }
   // The total over every node of the elements on the surface, not its nodes alone: a method
   // whose contact term acts through the boundary elements' stresses (Nitsche) leaves part of
   // the transmitted force at their inner nodes; for a Galerkin method those residuals are 0.
-  std::set<int> layer;
-  for (const auto& side : path.sides) {
-    const auto& e = model.mesh.elements[side.element];
-    layer.insert(e.begin(), e.begin() + model.mesh.n_element_nodes());
-  }
-  for (const int n : layer)
-    contact.total_normal_force += residual[2 * n + 1];
-  // Compression is positive: the interface pushes the block against its outward normal. The
-  // direction is the geometry's, never the result's: an interface that pulls reads negative.
-  const double sign = -outward_z(model.mesh, path);
-  contact.total_normal_force *= sign;
+  for (const auto& [n, d] : normal)
+    contact.total_normal_force += compressive(n);
   std::map<double, double> own;
   for (const auto& p : pressures)
     own[p.x] = p.pressure;
-  std::map<int, double> force;
-  for (const auto& node : contact.nodes)
-    force[node.node] = sign * node.force;
   const std::map<int, double> derived = pressures_of_forces(model.mesh, path, force);
   for (auto& node : contact.nodes) {
     const auto given = own.find(node.position.x());
@@ -155,11 +182,25 @@ schema::InterfaceChecks check_interface_of_displacements(
         !pressures.empty() ? (given == own.end() ? 0.0 : given->second) : derived.at(node.node);
     contact.max_tension = std::max(contact.max_tension, -node.pressure);
   }
+  return contact;
+}
+
+schema::InterfaceChecks check_interface_of_displacements(const ProblemSetup& setup,
+                                                         const solver::ContactResult& interface,
+                                                         const Eigen::VectorXd& u) {
+  const Eigen::VectorXd f = solver::assemble_load_vector(setup.model, setup.model.loads);
   // Another code measures its gaps along the target's normal: `half_space_gap` is ours alone.
   schema::InterfaceChecks checks =
-      checks_of(setup, contact, interface_load(setup, f), u, solver::GapNormal::Target);
+      checks_of(setup, interface, interface_load(setup, f), u, solver::GapNormal::Target);
   checks.max_penetration_over_h.reset();
   return checks;
+}
+
+schema::InterfaceChecks check_interface_of_displacements(
+    const ProblemSetup& setup, const Eigen::VectorXd& u,
+    const std::vector<ContactPressureSample>& pressures) {
+  return check_interface_of_displacements(setup, interface_of_displacements(setup, u, pressures),
+                                          u);
 }
 
 schema::InterfaceChecks check_interface(const ProblemSetup& setup,

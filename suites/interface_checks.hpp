@@ -28,15 +28,26 @@ schema::InterfaceChecks check_interface(const ProblemSetup& setup,
 /// in z, the other body being supported).
 double interface_load(const ProblemSetup& setup, const Eigen::VectorXd& f);
 
-/// The same checks for another code's solution, on our model: the force its contact transmits
-/// is the residual K u - f of its displacements `u` summed over the nodes of the elements on
-/// the sampled surface (so the force balance is the equilibrium of its displacement field
-/// everywhere else) and counted compressive against the surface's outward normal (an interface
-/// that pulls reads negative), its pressures its own nodal contact pressures where it writes
-/// them, else the mean of the traction against a non-negative weight at each surface node,
-/// from the surface nodes' residuals (so a traction that never pulls reads no tension, on Q8
-/// as on Q4). The penetration is not checked (absent): it needs the code's own contact
-/// geometry.
+/// Another code's interface, on our model, from its displacements `u`: each surface node's
+/// force is the residual K u - f there along the surface's outward normal at the node (the mean
+/// of its sides'; radial on an arc, exactly z on a flat surface), counted compressive against
+/// it (an interface that pulls reads negative); the total normal force sums it over every node
+/// of the elements on the sampled surface (so the force balance is the equilibrium of its
+/// displacement field everywhere else); its pressures are its own nodal contact pressures where
+/// it writes them, else the mean of the traction against a non-negative weight at each surface
+/// node, from those forces (so a traction that never pulls reads no tension, on Q8 as on Q4).
+/// What the arc quantities of IF and the checks below read.
+solver::ContactResult interface_of_displacements(
+    const ProblemSetup& setup, const Eigen::VectorXd& u,
+    const std::vector<ContactPressureSample>& pressures);
+
+/// The checks of another code's `interface` (interface_of_displacements of `u`). The
+/// penetration is not checked (absent): it needs the code's own contact geometry.
+schema::InterfaceChecks check_interface_of_displacements(const ProblemSetup& setup,
+                                                         const solver::ContactResult& interface,
+                                                         const Eigen::VectorXd& u);
+
+/// Both of the above in one.
 schema::InterfaceChecks check_interface_of_displacements(
     const ProblemSetup& setup, const Eigen::VectorXd& u,
     const std::vector<ContactPressureSample>& pressures);

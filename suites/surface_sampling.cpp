@@ -133,7 +133,8 @@ std::vector<solver::SurfaceStressSample> surface_of_nodal_stresses(
 void sample_quantities(const ProblemSetup& setup,
                        const std::vector<solver::SurfaceStressSample>& surface,
                        const std::vector<ContactPressureSample>& contact, CaseResult& result,
-                       const solver::ContactResult* solution) {
+                       const solver::ContactResult* solution,
+                       const solver::ContactResult* interface) {
   const double p = setup.p, a = setup.contact_half_width_a;
   std::vector<double> x_nodal, x_contact, pressure;
   for (const auto& s : surface)
@@ -144,10 +145,11 @@ void sample_quantities(const ProblemSetup& setup,
   }
   for (const QuantityRule& rule : setup.quantities) {
     if (sampled_from_contact(rule.where) || sampled_along_arc(rule.where)) {
-      if (solution != nullptr) {
-        result.quantities.push_back(sampled_along_arc(rule.where)
-                                        ? arc_quantity(rule, *solution, setup)
-                                        : contact_quantity(rule, *solution, a, p));
+      const solver::ContactResult* arc = solution != nullptr ? solution : interface;
+      if (sampled_along_arc(rule.where) && arc != nullptr) {
+        result.quantities.push_back(arc_quantity(rule, *arc, setup));
+      } else if (solution != nullptr) {
+        result.quantities.push_back(contact_quantity(rule, *solution, a, p));
       } else {  // a solver that reports no friction states: the quantity has no value
         QuantityResult q;
         q.quantity = rule.quantity;

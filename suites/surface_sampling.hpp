@@ -36,11 +36,14 @@ std::vector<solver::SurfaceStressSample> surface_of_nodal_stresses(
 /// Fills value, error and grade of each quantity of `setup`, the contact-pressure version and
 /// the surface profile (nodal -sigma_z/p and pressure/p by x/a) of `result`. Quantities read
 /// off the contact solution itself (friction: stick-zone edge, the contact's peak shear) need
-/// the built-in `solution`; without one (another solver) they have no value.
+/// the built-in `solution`; without one (another solver) they have no value. The arc
+/// quantities (IF: mean and extreme pressure) read the built-in `solution`, else another
+/// code's `interface` (interface_of_displacements), else have no value.
 void sample_quantities(const ProblemSetup& setup,
                        const std::vector<solver::SurfaceStressSample>& surface,
                        const std::vector<ContactPressureSample>& contact, CaseResult& result,
-                       const solver::ContactResult* solution = nullptr);
+                       const solver::ContactResult* solution = nullptr,
+                       const solver::ContactResult* interface = nullptr);
 
 /// The exact -sigma_z/p on z = 0 at 301 points of 0 <= x <= 1.5 a (within the block); empty
 /// when the problem has no exact pressure.

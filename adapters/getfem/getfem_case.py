@@ -50,17 +50,29 @@ class CaseError(Exception):
     """A case this adapter cannot solve: the message is the reason."""
 
 
-def supported_body(case):
-    """The one deformable body against a rigid profile in plane strain, or CaseError."""
+def supported_bodies(case, option):
+    """(the body whose surface makes contact, the meshed target's body or None) in plane strain,
+    or CaseError: a rigid target has one deformable body, a meshed one two."""
     if case.analysis != "plane_strain":
-        raise CaseError("not supported by getfem adapter: axisymmetric analysis (the "
+        raise CaseError("not supported: axisymmetric analysis (the "
                         "r-weighted weak form is not written)")
-    if case.contact.target_kind != "rigid":
-        raise CaseError("not supported by getfem adapter: a meshed target")
+    meshed = case.contact.target_kind == "meshed"
     bodies = case.deformable_bodies
-    if len(bodies) != 1:
-        raise CaseError(f"{len(bodies)} deformable bodies; the adapter solves one")
-    return bodies[0]
+    if len(bodies) != (2 if meshed else 1):
+        raise CaseError(f"{len(bodies)} deformable bodies against a {case.contact.target_kind} "
+                        "target; the adapter solves one against a rigid target or two in contact")
+    if not meshed:
+        return bodies[0], None
+    if option == "nitsche":
+        raise CaseError("not supported: Nitsche between two meshes (GetFEM 5.4 "
+                        "has it only as its large-sliding raytracing brick, not driven here)")
+    if case.load_control.kind == "total_load":
+        raise CaseError("not supported: load control with a meshed target")
+    owner = case.contact.contact_surface.split(".")[0]
+    body = next((b for b in bodies if b.name == owner), None)
+    if body is None:
+        raise CaseError(f"the contact surface '{case.contact.contact_surface}' names no body")
+    return body, next(b for b in bodies if b is not body)
 
 
 def obstacle_expression(profile):
@@ -173,6 +185,28 @@ def add_contact(md, disc, case, option, E):
         raise CaseError(f"unknown option '{option}' (known: {', '.join(OPTIONS)})")
 
 
+def add_meshed_contact(md, disc, target, case, option, E):
+    """The option's brick between the body's region CONTACT and the target body's (small
+    sliding, non-matching meshes; the body's surface is the slave): nodal or integral augmented
+    Lagrangian, or penalty, with the parameters of the rigid-obstacle bricks."""
+    h = case.side_lengths(case.contact.contact_surface).min()
+    if option == "nodal_al":
+        md.add_initialized_data("r", [AL_FKN * E / h])
+        md.add_nodal_contact_between_nonmatching_meshes_brick(
+            disc.mim, target.mim, "u", "u_t", "lambda_n", "r", CONTACT, CONTACT)
+    elif option == "integral_al":
+        md.add_filtered_fem_variable("lambda_n", disc.scalar_mesh_fem(), CONTACT)
+        md.add_initialized_data("r", [AL_FKN * E / h])
+        md.add_integral_contact_between_nonmatching_meshes_brick(
+            disc.mim, "u", "u_t", "lambda_n", "r", CONTACT, CONTACT, 1)
+    elif option == "penalty":
+        md.add_initialized_data("r", [PENALTY_FKN * E / h])
+        md.add_penalized_contact_between_nonmatching_meshes_brick(
+            disc.mim, "u", "u_t", "r", CONTACT, CONTACT, 1)
+    else:
+        raise CaseError(f"unknown option '{option}' (known: {', '.join(OPTIONS)})")
+
+
 class Problem:
     """The GetFEM model of the case: elasticity, loads, prescribed displacements as rows of
     add_constraint_with_multipliers (their multipliers are the reactions), contact.
@@ -183,36 +217,49 @@ class Problem:
     of the set), and w's own row, -e^T mult_c = -P, states that the set carries the total load
     P. One Newton solve replaces a secant search over delta (a Newton solve per trial depth)."""
 
-    def __init__(self, gf, case, body, option):
+    def __init__(self, gf, case, bodies, option):
+        body, target_body = bodies
         self.case, self.E, self.disc = case, body.E, Discretization(gf, case, body)
-        disc = self.disc
-        disc.set_region(case, case.contact.contact_surface, CONTACT)
-        E, nu = body.E, body.nu
-        md = self.md = gf.Model("real")
-        md.add_fem_variable("u", disc.mfu)
-        md.add_initialized_data("lambda", [E * nu / ((1 + nu) * (1 - 2 * nu))])
-        md.add_initialized_data("mu", [E / (2 * (1 + nu))])
-        md.add_isotropic_linearized_elasticity_brick(disc.mim, "u", "lambda", "mu")
-
-        ndof = disc.mfu.nbdof()
-        force = np.zeros(ndof)
-        on_body = disc.dofs[:, 0] >= 0
-        np.add.at(force, disc.dofs[on_body].ravel(), case.nodal_forces[on_body].ravel())
-        md.add_explicit_rhs("u", force)
-
-        given, values = case.prescribed()
-        given_dofs = disc.dofs.ravel()[given]
-        md.add_variable("mult_bc", int(np.sum(given_dofs >= 0)))
-        md.add_constraint_with_multipliers("u", "mult_bc", self.rows(gf, given_dofs[given_dofs >= 0]),
-                                           values[given_dofs >= 0])
+        self.md = gf.Model("real")
+        self.disc.set_region(case, case.contact.contact_surface, CONTACT)
+        self.add_body(gf, "u", "", self.disc, body)
+        self.target = None
+        if target_body is not None:
+            self.target = Discretization(gf, case, target_body)
+            self.target.set_region(case, case.contact.target_surface, CONTACT)
+            self.add_body(gf, "u_t", "_t", self.target, target_body)
         self.load_controlled = case.load_control.kind == "total_load"
         if self.load_controlled:
-            self.add_load_control(gf, disc.dofs.ravel()[case.load_controlled_dofs()])
-        add_contact(md, disc, case, option, E)
+            self.add_load_control(gf, self.disc.dofs.ravel()[case.load_controlled_dofs()])
+        if self.target is None:
+            add_contact(self.md, self.disc, case, option, body.E)
+        else:
+            add_meshed_contact(self.md, self.disc, self.target, case, option, body.E)
 
-    def rows(self, gf, dofs):
-        """The Spmat with a row per DOF of `dofs` (1 in the DOF's column)."""
-        B = gf.Spmat("empty", len(dofs), self.disc.mfu.nbdof())
+    def add_body(self, gf, variable, suffix, disc, body):
+        """The body's displacement `variable`, its elasticity (data lambda<suffix>,
+        mu<suffix>), its nodal forces and its prescribed displacements."""
+        md, case, E, nu = self.md, self.case, body.E, body.nu
+        md.add_fem_variable(variable, disc.mfu)
+        md.add_initialized_data("lambda" + suffix, [E * nu / ((1 + nu) * (1 - 2 * nu))])
+        md.add_initialized_data("mu" + suffix, [E / (2 * (1 + nu))])
+        md.add_isotropic_linearized_elasticity_brick(disc.mim, variable, "lambda" + suffix,
+                                                     "mu" + suffix)
+        force = np.zeros(disc.mfu.nbdof())
+        on_body = disc.dofs[:, 0] >= 0
+        np.add.at(force, disc.dofs[on_body].ravel(), case.nodal_forces[on_body].ravel())
+        md.add_explicit_rhs(variable, force)
+        given, values = case.prescribed()
+        given_dofs = disc.dofs.ravel()[given]
+        mine = given_dofs >= 0
+        md.add_variable("mult_bc" + suffix, int(np.sum(mine)))
+        md.add_constraint_with_multipliers(variable, "mult_bc" + suffix,
+                                           self.rows(gf, given_dofs[mine], disc), values[mine])
+
+    def rows(self, gf, dofs, disc=None):
+        """The Spmat with a row per DOF of `dofs` (1 in the DOF's column) of `disc`'s FEM (the
+        contact body's by default)."""
+        B = gf.Spmat("empty", len(dofs), (disc or self.disc).mfu.nbdof())
         for i, d in enumerate(dofs):
             B[i, int(d)] = 1.0
         return B
@@ -231,9 +278,11 @@ class Problem:
         md.add_explicit_rhs("w", [-self.case.load_control.total_load])
 
     def solve(self):
-        """Newton from the vertical mode's start; (iterations, converged)."""
+        """Newton from the vertical mode's start (against a rigid target; two meshed bodies start
+        at rest); (iterations, converged)."""
         delta = self.case.load_control.depth_guess if self.load_controlled else 0.0
-        self.md.set_variable("u", self.start_u(delta))
+        if self.target is None:
+            self.md.set_variable("u", self.start_u(delta))
         if self.load_controlled:
             self.md.set_variable("w", [-delta])
         out = self.md.solve("max_res", 1e-9, "max_iter", MAX_ITER, "lsearch", "simplest",
@@ -291,6 +340,8 @@ def contact_pressure(problem, option):
     (nodes, pressures), or None."""
     disc, md, case = problem.disc, problem.md, problem.case
     surface = case.contact.contact_surface
+    if problem.target is not None and option != "nodal_al":
+        return None  # between two meshes: derived from the forces (docs/solver-protocol.md)
     if option == "nodal_al":
         # One multiplier per node of the region, in the order of the region's z DOFs: the
         # nodal contact force (<= 0 in compression), over the node's tributary length.
@@ -381,20 +432,22 @@ def solve_and_write(case, option, version):
 
     gf.util_trace_level(0)
     gf.util_warning_level(0)
-    body = supported_body(case)
     if option not in OPTIONS:
         raise CaseError(f"unknown option '{option}' (known: {', '.join(OPTIONS)})")
-    problem = Problem(gf, case, body, option)
+    problem = Problem(gf, case, supported_bodies(case, option), option)
     iterations, converged = problem.solve()
-    disc = problem.disc
+    disc, target = problem.disc, problem.target
+    nodes = disc.nodes if target is None else np.concatenate([disc.nodes, target.nodes])
     u = problem.md.variable("u")[disc.dofs[disc.nodes]]
+    if target is not None:
+        u = np.concatenate([u, problem.md.variable("u_t")[target.dofs[target.nodes]]])
     stress_nodes, stress = nodal_stresses(problem)
     pressure = contact_pressure(problem, option)
     cs.write_results(
-        case.path, nodes=disc.nodes, displacement=u, stress=stress, stress_nodes=stress_nodes,
+        case.path, nodes=nodes, displacement=u, stress=stress, stress_nodes=stress_nodes,
         contact_pressure=None if pressure is None else pressure[1],
         pressure_nodes=None if pressure is None else pressure[0], converged=converged,
-        iterations=iterations, n_equations=2 * len(disc.nodes),
+        iterations=iterations, n_equations=2 * len(nodes),
         reason="" if converged else not_converged_reason(iterations),
         solver_version=version, case=case)
 

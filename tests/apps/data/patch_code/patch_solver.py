@@ -65,6 +65,8 @@ def main():
     block_nodes = body_nodes(lines, names.index("block") + 1)
 
     if option == "exit3":
+        print("patch solver: progress line", file=sys.stderr)
+        print("patch solver: cannot solve this case\n", file=sys.stderr)
         sys.exit(3)
     if option == "sleep":
         time.sleep(60)
