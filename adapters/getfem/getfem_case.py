@@ -12,6 +12,10 @@ for a rigid obstacle, chosen by the option label:
   penalty      add_penalized_contact_with_rigid_obstacle_brick, r = 50 E / h
   nitsche      add_Nitsche_contact_with_rigid_obstacle_brick, theta = 1, gamma0 = 50 E
 
+Against a second meshed body (IF_p) the first three use GetFEM's bricks between non-matching
+meshes (add_nodal_/add_integral_/add_penalized_contact_between_nonmatching_meshes_brick), the
+contact surface's body the slave; Nitsche is not supported there (the case fails with why).
+
 The case directory is read and the results written by the Python package contact_suite
 (read_case, write_results); everything here is GetFEM. The porting notes (node order, the
 vertical mode, nodal pressure from the methods) are in docs/solver-protocol.md, section 5.
@@ -365,9 +369,9 @@ def law_pressure(problem, option):
       Nitsche:  p = max(0, -n.sigma(u).n - (gamma0 / element_size) g)
 
     each evaluated (Model.interpolation) at an element's nodes on the surface and averaged over
-    the elements at a node, as nodal_stresses does. The forces of the solution's residual are
-    not this traction for Nitsche's method: they also hold its consistency term, theta
-    sigma(v).n, which are no traction (docs/solver-protocol.md, section 5)."""
+    the elements at a node, as nodal_stresses does. For Nitsche's method the residual's nodal
+    forces are not this traction: they also hold its consistency terms, theta sigma(v).n
+    (docs/solver-protocol.md, section 5)."""
     disc, md, case = problem.disc, problem.md, problem.case
     gap = "(obstacle + Grad_obstacle.u)"
     if option == "penalty":
