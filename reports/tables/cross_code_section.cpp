@@ -145,9 +145,12 @@ MarkdownTable cost_table(const CodeCost& cost) {
   return t;
 }
 
-std::string option_text(const OptionTally& t) {
-  return ours(t.code) ? fmt::format("{} ({} target)", t.option, schema::to_string(t.target))
-                      : t.option;
+/// The option's label, with its target where the code has options on both.
+std::string option_text(const OptionTally& t, const std::vector<OptionTally>& tallies) {
+  const bool both = std::ranges::any_of(
+      tallies, [&](const OptionTally& o) { return o.code == t.code && o.target != t.target; });
+  return ours(t.code) || both ? fmt::format("{} ({} target)", t.option, schema::to_string(t.target))
+                              : t.option;
 }
 
 TemplateData advice_data(const std::vector<OptionTally>& tallies, const std::string& code,
@@ -156,14 +159,14 @@ TemplateData advice_data(const std::vector<OptionTally>& tallies, const std::str
   std::vector<std::string> names;
   const auto best = advised(tallies, code);
   for (const OptionTally* t : best)
-    names.push_back(option_text(*t));
+    names.push_back(option_text(*t, tallies));
   d.set("advised", text_or_false(join_words(names, " or ")));
   d.set("score", best.empty() ? std::string()
                               : fmt::format("e on {} of {} rows", best[0]->e, best[0]->rows));
   MarkdownTable tally({"Option", "rows with F", "e", "g", "s", "u", "not evidence"});
   for (const auto& x : tallies) {
     if (x.code == code)
-      tally.add_row({option_text(x), std::to_string(x.rows), std::to_string(x.e),
+      tally.add_row({option_text(x, tallies), std::to_string(x.rows), std::to_string(x.e),
                      std::to_string(x.g), std::to_string(x.s), std::to_string(x.u),
                      std::to_string(x.not_evidence)});
   }
@@ -208,7 +211,7 @@ std::optional<PlotPanel> profile_panel(const ResultsIndex& index,
     if (t == best.end() || c == nullptr || c->profile.pressure_over_p.empty())
       continue;
     panel.series.push_back(
-        curve(fmt::format("{} {}", solver_display_name(r.code), option_text(**t)),
+        curve(fmt::format("{} {}", solver_display_name(r.code), option_text(**t, tallies)),
               palette_colour(panel.series.size()), c->profile.x_over_a, c->profile.pressure_over_p,
               false));
     with_exact = with_exact ? with_exact : c;
@@ -253,20 +256,22 @@ std::vector<OptionTally> option_tallies(const ResultsIndex& index) {
         by_option[key_of(r)][{s.problem, s.quantity, s.element}] = r.common;
     }
   }
-  // Like with like within a code: only the rows every option of the code has.
-  std::map<std::string, std::set<Cell>> shared;
+  // Like with like within a code: only the rows every option of the code has on that target
+  // (a rigid obstacle's options and the same labels between two meshes solve other problems).
+  using Group = std::pair<std::string, schema::TargetKind>;
+  std::map<Group, std::set<Cell>> shared;
   for (const auto& [key, rows] : by_option) {
     std::set<Cell> cells;
     for (const auto& [cell, row] : rows)
       cells.insert(cell);
-    auto [it, first] = shared.try_emplace(std::get<1>(key), cells);
+    auto [it, first] = shared.try_emplace(Group{std::get<1>(key), std::get<2>(key)}, cells);
     if (!first)
       std::erase_if(it->second, [&](const Cell& c) { return !cells.count(c); });
   }
   std::vector<OptionTally> out;
   for (const auto& [key, rows] : by_option) {
     OptionTally t{std::get<1>(key), std::get<3>(key), std::get<2>(key)};
-    for (const Cell& cell : shared.at(t.code)) {
+    for (const Cell& cell : shared.at(Group{t.code, t.target})) {
       const RowFacts f = facts_of_row(index, *rows.at(cell));
       ++t.rows;
       if (!f.evidence())
