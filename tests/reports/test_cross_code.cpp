@@ -251,6 +251,36 @@ TEST(CrossCodeAdvice, OptionsCountedOnTheRowsTheyShare) {
   EXPECT_EQ(advised(option_tallies(index), "calculix").size(), 2U);
 }
 
+// Requirement: a code's options are counted like with like per target: an option run on
+// another target too (GetFEM's labels between two meshes on IF_p) is tallied apart and named
+// with its target, and does not empty the rows the code's options share on the first (counted
+// over both targets, the shared rows were none: every tally read 0).
+TEST(CrossCodeAdvice, OptionsOnAnotherTargetAreCountedApart) {
+  std::vector<CaseResult> cases;
+  for (const auto m : kMeshes) {
+    cases.push_back(hertz_case(SolverKind::builtin, m, 0.5));
+    for (const std::string option : {"linear-ns", "linear-ss"})
+      cases.push_back(hertz_case(kCalculix, m, 0.5, 1.0, 10.0, CaseStatus::converged, option));
+    CaseResult other = hertz_case(kCalculix, m, 0.5, 1.0, 10.0, CaseStatus::converged, "linear-ns");
+    other.spec.element = Element::Q8;
+    other.spec.target = schema::TargetKind::Rigid;
+    cases.push_back(std::move(other));
+  }
+  const auto doc = document(cases);
+  const ResultsIndex index(doc);
+  int rigid = 0, discretized = 0;
+  for (const auto& t : option_tallies(index)) {
+    if (t.code != "calculix")
+      continue;
+    ++(t.target == schema::TargetKind::Rigid ? rigid : discretized);
+    EXPECT_EQ(t.rows, 1) << t.option << " " << schema::to_string(t.target);
+  }
+  EXPECT_EQ(rigid, 1);
+  EXPECT_EQ(discretized, 2);
+  const std::string md = cross_code_section(index, study(), {}, {});
+  EXPECT_NE(md.find("| linear-ns (rigid target) | 1 |"), std::string::npos) << md;
+}
+
 // Requirement: a code's cost is its recorded wall time per case beside ours on the same models:
 // CalculiX 10, 20, 40 s against ours 1, 2, 4 s (ten times per case), peaks 30..90 MB against
 // 10..30 MB (three times).
