@@ -4,7 +4,6 @@
 #include <array>
 #include <cmath>
 #include <map>
-#include <set>
 
 #include "solver/contact/gap_normal.hpp"
 #include "solver/dof_map.hpp"
@@ -112,8 +111,7 @@ std::map<int, Eigen::Vector2d> layer_normals(const solver::Mesh& mesh,
     const Eigen::Vector2d n = outward_normal(mesh, side);
     const std::array<int, 3> nodes = mesh.side_nodes(side);
     for (int a = 0; a < solver::nodes_per_side(mesh.type); ++a) {
-      auto [it, fresh] = surface.try_emplace(nodes[a], Eigen::Vector2d::Zero());
-      it->second += n;
+      surface.try_emplace(nodes[a], Eigen::Vector2d::Zero()).first->second += n;
     }
     const auto& e = mesh.elements[side.element];
     for (auto node = e.begin(); node != e.begin() + mesh.n_element_nodes(); ++node)
