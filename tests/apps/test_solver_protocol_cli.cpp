@@ -183,6 +183,16 @@ bool getfem_available() {
   return std::system("/usr/bin/python3 -c 'import getfem' >/dev/null 2>&1") == 0;
 }
 
+/// The arguments of a GetFEM run of `options` on one problem's `meshes` (spr basis, one job).
+std::vector<std::string> getfem_run(const std::string& options, const std::string& problem,
+                                    const std::string& meshes, const std::string& element,
+                                    const std::string& target, const fs::path& out) {
+  return {"run",   "--solver",   "getfem", "--solver-options", options, "--problems",
+          problem, "--meshes",   meshes,   "--elements",       element, "--target",
+          target,  "--recovery", "spr",    "--jobs",           "1",     "--no-report",
+          "--out", out.string()};
+}
+
 // GetFEM through its committed adapter (adapters/getfem/) on the smallest case: the patch test
 // is exact for every method, so the common and own bases reproduce sigma_z = -p to GetFEM's
 // Newton tolerance (residual 1e-9: 1e-6 % leaves a margin of three decades).
@@ -215,26 +225,7 @@ TEST(SolverProtocolCli, GetfemIntegralContactHalfWidth) {
     GTEST_SKIP() << "python3-getfem is not installed";
   TempDir dir;
   const fs::path out = dir.path() / "out";
-  const auto r = run_cli({"run",
-                          "--solver",
-                          "getfem",
-                          "--solver-options",
-                          "integral_al,nodal_al",
-                          "--problems",
-                          "H_p",
-                          "--meshes",
-                          "C",
-                          "--elements",
-                          "Q4",
-                          "--target",
-                          "rigid",
-                          "--recovery",
-                          "spr",
-                          "--jobs",
-                          "1",
-                          "--no-report",
-                          "--out",
-                          out.string()});
+  const auto r = run_cli(getfem_run("integral_al,nodal_al", "H_p", "C", "Q4", "rigid", out));
   ASSERT_EQ(r.exit_code, 0) << r.err << r.out;
   const auto cases = cases_by_id(out / "results.json");
   for (const std::string id :
@@ -257,26 +248,7 @@ TEST(SolverProtocolCli, GetfemPenaltyAndNitschePressureIsTheirLaw) {
     GTEST_SKIP() << "python3-getfem is not installed";
   TempDir dir;
   const fs::path out = dir.path() / "out";
-  const auto r = run_cli({"run",
-                          "--solver",
-                          "getfem",
-                          "--solver-options",
-                          "penalty,nitsche",
-                          "--problems",
-                          "F_p",
-                          "--meshes",
-                          "C",
-                          "--elements",
-                          "Q8",
-                          "--target",
-                          "rigid",
-                          "--recovery",
-                          "spr",
-                          "--jobs",
-                          "1",
-                          "--no-report",
-                          "--out",
-                          out.string()});
+  const auto r = run_cli(getfem_run("penalty,nitsche", "F_p", "C", "Q8", "rigid", out));
   ASSERT_EQ(r.exit_code, 0) << r.err << r.out;
   const auto cases = cases_by_id(out / "results.json");
   for (const std::string id :
@@ -302,26 +274,7 @@ TEST(SolverProtocolCli, GetfemInterferenceFitBetweenTwoMeshes) {
     GTEST_SKIP() << "python3-getfem is not installed";
   TempDir dir;
   const fs::path out = dir.path() / "out";
-  const auto r = run_cli({"run",
-                          "--solver",
-                          "getfem",
-                          "--solver-options",
-                          "nodal_al,nitsche",
-                          "--problems",
-                          "IF_p",
-                          "--meshes",
-                          "C,M",
-                          "--elements",
-                          "Q4",
-                          "--target",
-                          "discretized",
-                          "--recovery",
-                          "spr",
-                          "--jobs",
-                          "1",
-                          "--no-report",
-                          "--out",
-                          out.string()});
+  const auto r = run_cli(getfem_run("nodal_al,nitsche", "IF_p", "C,M", "Q4", "discretized", out));
   ASSERT_EQ(r.exit_code, 1) << r.err << r.out;  // the Nitsche cases failed
   const auto cases = cases_by_id(out / "results.json");
   const auto mean_error = [&](const std::string& mesh) {
