@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include "grading/convergence.hpp"
 #include "reports/tables/markdown_table.hpp"
 
 namespace cs::reports {
@@ -139,8 +140,14 @@ ClaimEvidence ss_equals_ns(const std::vector<RowFacts>& rows) {
   return c;
 }
 
+/// Whether |a| exceeds |b| by more than the study's printed resolution: closer F errors are a tie
+/// (e.g. two patch-test errors of 3.3e-12 % and 3.4e-12 %, which round-off orders either way).
+bool clearly_larger(double a, double b) {
+  return std::abs(a) > std::abs(b) + grading::kErrorResolutionPercent;
+}
+
 /// A Table 2 trend: the selected evidence rows are g or better on F (n_hold of n), and each one's
-/// twin (`twin_of` gives its key) has the larger |F error| (n2_hold of n2).
+/// twin (`twin_of` gives its key) has the clearly larger |F error| (n2_hold of n2).
 template <class Select, class Twin>
 ClaimEvidence trend_claim(const std::vector<RowFacts>& rows, const char* key, Select select,
                           Twin twin_of) {
@@ -162,7 +169,7 @@ ClaimEvidence trend_claim(const std::vector<RowFacts>& rows, const char* key, Se
     if (twin == index.end() || !twin->second->evidence())
       continue;
     ++c.n2;
-    if (std::abs(*twin->second->errors[2]) > std::abs(*f.errors[2]))
+    if (clearly_larger(*twin->second->errors[2], *f.errors[2]))
       ++c.n2_hold;
   }
   c.verdict = both_parts(verdict_of(c.n_hold, c.n), verdict_of(c.n2_hold, c.n2, kRefined));
@@ -308,7 +315,7 @@ ClaimEvidence element_order(const std::vector<RowFacts>& rows) {
     else
       add_example(c, fmt::format("{} vs Q8 {}", row_name(f),
                                  format_error_resolved(*q8->second->errors[2])));
-    c.n2 += std::abs(*q8->second->errors[2]) > std::abs(*f.errors[2]) ? 1 : 0;
+    c.n2 += clearly_larger(*q8->second->errors[2], *f.errors[2]) ? 1 : 0;
   }
   c.verdict = verdict_of(c.n_hold, c.n, kRefined);
   return c;

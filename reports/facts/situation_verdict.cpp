@@ -7,6 +7,7 @@
 #include <map>
 
 #include "grading/accuracy.hpp"
+#include "grading/convergence.hpp"
 
 namespace cs::reports {
 namespace {
@@ -44,10 +45,6 @@ bool graded_in_verdict(const ResultsIndex& index, ProblemId problem, schema::Qua
   return d && (!has_study_rows || !d->study_row.empty()) &&
          q != schema::Quantity::contact_half_width;
 }
-
-/// Differences below the study's printed resolution (4 decimals of a value near 1: 0.01 %) never
-/// rank options, whatever one refinement changes.
-constexpr double kTieResolutionPercent = 0.01;
 
 using CellKey = std::tuple<OptionFamily, schema::ContactKind, schema::Element>;
 
@@ -153,7 +150,8 @@ void rank(SituationVerdict& v) {
     v.best.push_back(&c);
     v.best_min = v.best_min ? std::min(*v.best_min, *c.min_error) : *c.min_error;
     v.best_max = v.best_max ? std::max(*v.best_max, *c.max_error) : *c.max_error;
-    v.best_noise = std::max({v.best_noise, c.largest_m_to_f_change, kTieResolutionPercent});
+    v.best_noise =
+        std::max({v.best_noise, c.largest_m_to_f_change, grading::kErrorResolutionPercent});
   }
 }
 
