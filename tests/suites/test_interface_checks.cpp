@@ -24,6 +24,13 @@ CaseResult run_one(const CaseSpec& spec) {
   return executor.run(spec);
 }
 
+/// Runs `spec` on `executor` with the whole field recovered, so that its displacement can be
+/// handed in as another code's.
+CaseResult run_whole_field(ProblemExecutor& executor, const CaseSpec& spec) {
+  executor.recover_whole_field();
+  return executor.run(spec);
+}
+
 CaseSpec spec_of(ProblemId p, Algorithm a, ContactKind c, Element e = Element::Q4) {
   return CaseSpec{.problem = p,
                   .mesh = MeshLevel::C,
@@ -72,8 +79,7 @@ TEST(InterfaceChecks, PressureOutsideIsCheckedWhereTheBlockMeetsThePunch) {
   CaseSpec spec = spec_of(ProblemId::S_1_3, Algorithm::LMP, ContactKind::ss);
   spec.mesh = MeshLevel::M;
   ProblemExecutor executor(spec);
-  executor.recover_whole_field();  // reads the whole displacement
-  const CaseResult r = executor.run(spec);
+  const CaseResult r = run_whole_field(executor, spec);
   ASSERT_EQ(r.status, CaseStatus::converged) << r.reason;
   ASSERT_TRUE(r.interface && r.interface->max_outside_over_p);
   EXPECT_LE(*r.interface->max_outside_over_p, schema::kOutsideTolerance);
@@ -137,8 +143,7 @@ TEST(InterfaceChecks, AnotherCodesDisplacementsCheckedOnOurModel) {
   for (const Element e : {Element::Q4, Element::Q8}) {
     const CaseSpec spec = spec_of(ProblemId::H_p, Algorithm::LMP, ContactKind::ss, e);
     ProblemExecutor executor(spec);
-    executor.recover_whole_field();  // reads the whole displacement
-    const CaseResult ours = executor.run(spec);
+    const CaseResult ours = run_whole_field(executor, spec);
     ASSERT_EQ(ours.status, CaseStatus::converged) << ours.reason;
     const Eigen::VectorXd u = executor.last_displacement();
     const auto checks = check_interface_of_displacements(executor.setup(), u, {});
@@ -169,8 +174,7 @@ TEST(InterfaceChecks, AnotherCodesInterfaceReadInTheGeometrysDirection) {
   for (const ProblemId problem : {ProblemId::P_p, ProblemId::H_p, ProblemId::S_1_3}) {
     const CaseSpec spec = spec_of(problem, Algorithm::LMP, ContactKind::ss);
     ProblemExecutor executor(spec);
-    executor.recover_whole_field();  // reads the whole displacement
-    ASSERT_EQ(executor.run(spec).status, CaseStatus::converged);
+    ASSERT_EQ(run_whole_field(executor, spec).status, CaseStatus::converged);
     const Eigen::VectorXd u = executor.last_displacement();
     const auto pulled = check_interface_of_displacements(executor.setup(), -u, {});
     ASSERT_TRUE(pulled.force_balance && pulled.max_tensile_over_p) << case_id(spec);
@@ -179,8 +183,7 @@ TEST(InterfaceChecks, AnotherCodesInterfaceReadInTheGeometrysDirection) {
   }
   const CaseSpec mpc = spec_of(ProblemId::H_p, Algorithm::MPC, ContactKind::ns);
   ProblemExecutor executor(mpc);
-  executor.recover_whole_field();  // reads the whole displacement
-  const CaseResult own = executor.run(mpc);
+  const CaseResult own = run_whole_field(executor, mpc);
   ASSERT_TRUE(own.interface && own.interface->max_outside_over_p);
   const auto derived =
       check_interface_of_displacements(executor.setup(), executor.last_displacement(), {});
@@ -201,8 +204,7 @@ TEST(InterfaceChecks, AnotherCodesPressureFromForcesNeverPullsWhereTheTractionDo
     CaseSpec spec = spec_of(problem, Algorithm::PM, ContactKind::ss, Element::Q8);
     spec.target = TargetKind::Rigid;
     ProblemExecutor executor(spec);
-    executor.recover_whole_field();  // reads the whole displacement
-    const CaseResult own = executor.run(spec);
+    const CaseResult own = run_whole_field(executor, spec);
     ASSERT_EQ(own.status, CaseStatus::converged) << own.reason;
     ASSERT_TRUE(own.interface && own.interface->max_tensile_over_p);
     EXPECT_LT(*own.interface->max_tensile_over_p, schema::kTensileTolerance) << case_id(spec);
@@ -226,8 +228,7 @@ TEST(InterfaceChecks, AnotherCodesUniformTractionReadsAsItsPressure) {
   for (const Element e : {Element::Q4, Element::Q8}) {
     const CaseSpec spec = spec_of(ProblemId::P_p, Algorithm::LMP, ContactKind::ss, e);
     ProblemExecutor executor(spec);
-    executor.recover_whole_field();  // reads the whole displacement
-    ASSERT_EQ(executor.run(spec).status, CaseStatus::converged);
+    ASSERT_EQ(run_whole_field(executor, spec).status, CaseStatus::converged);
     const auto pulled =
         check_interface_of_displacements(executor.setup(), -executor.last_displacement(), {});
     ASSERT_TRUE(pulled.max_tensile_over_p);
@@ -246,8 +247,7 @@ TEST(InterfaceChecks, AnotherCodesInterfaceIsReadAlongTheArcsNormal) {
   for (const Element e : {Element::Q4, Element::Q8}) {
     const CaseSpec spec = spec_of(ProblemId::IF_p, Algorithm::LMP, ContactKind::ns, e);
     ProblemExecutor executor(spec);
-    executor.recover_whole_field();  // reads the whole displacement
-    const CaseResult ours = executor.run(spec);
+    const CaseResult ours = run_whole_field(executor, spec);
     ASSERT_EQ(ours.status, CaseStatus::converged) << ours.reason;
     const solver::ContactResult theirs =
         interface_of_displacements(executor.setup(), executor.last_displacement(), {});
