@@ -30,14 +30,22 @@ namespace fs = std::filesystem;
 namespace protocol = adapters::protocol;
 
 /// The last non-empty line a failed code wrote to its standard error (its own statement of why,
-/// e.g. an adapter's "not supported: ..."), at most 300 characters; empty if none.
+/// e.g. an adapter's "not supported: ..."), from the file's last 4 KiB, at most 300 characters,
+/// every byte that is not printable ASCII shown as '?' (the stream is bytes in any encoding, and
+/// the reason goes into JSON and Markdown); empty if none.
 std::string last_error_line(const fs::path& stderr_path) {
-  std::ifstream in(stderr_path);
+  std::ifstream in(stderr_path, std::ios::binary | std::ios::ate);
+  if (!in)
+    return {};
+  const std::streamoff size = in.tellg();
+  in.seekg(std::max<std::streamoff>(0, size - 4096));
   std::string line, last;
   while (std::getline(in, line)) {
     if (line.find_first_not_of(" \t\r") != std::string::npos)
       last = line;
   }
+  for (char& c : last)
+    c = (c >= 0x20 && c < 0x7f) ? c : '?';
   return last.size() > 300 ? last.substr(0, 300) + "..." : last;
 }
 

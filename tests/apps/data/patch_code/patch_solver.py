@@ -66,7 +66,9 @@ def main():
 
     if option == "exit3":
         print("patch solver: progress line", file=sys.stderr)
-        print("patch solver: cannot solve this case\n", file=sys.stderr)
+        sys.stderr.flush()
+        # Not UTF-8 (Latin-1 "é", a lone 0xff): a code's stderr is bytes, not text.
+        sys.stderr.buffer.write(b"patch solver: cannot solve this case (r\xe9gime \xff)\n\n")
         sys.exit(3)
     if option == "sleep":
         time.sleep(60)
