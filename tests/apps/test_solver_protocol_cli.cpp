@@ -241,10 +241,13 @@ TEST(SolverProtocolCli, GetfemIntegralContactHalfWidth) {
 
 // Penalty and Nitsche write the traction their law imposes as their contact pressure
 // (adapters/getfem: law_pressure), so the tensile check reads the law, as it does for ours. On
-// F_p C Q8 that traction never pulls, and at the punch's centre it equals the normal stress there
-// (measured: 0.1 %; a wrong gap sign, penalty r or Nitsche gamma moves it by the traction
-// itself). Read from the solution's nodal forces instead, Nitsche's pressure held its
-// consistency terms: 0.0077 p of tension on this mesh.
+// F_p C Q8 that traction never pulls, nor presses beyond the punch, and at the punch's centre it
+// equals the normal stress there (measured: 0.1 %). Caught: a wrong penalty r or gap sign (the
+// centre pressure), a wrong sign of Nitsche's gap term (its open gap then presses outside the
+// punch: 8e5 p), a wrong normal stress. Not caught: a factor on Nitsche's gamma, whose gap term
+// all but vanishes where contact holds (gamma0/2 moves nothing here at the 1 % level). Read from
+// the solution's nodal forces instead, Nitsche's pressure held its consistency terms: 0.0077 p
+// of tension on this mesh.
 TEST(SolverProtocolCli, GetfemPenaltyAndNitschePressureIsTheirLaw) {
   if (!getfem_available())
     GTEST_SKIP() << "python3-getfem is not installed";
@@ -258,6 +261,7 @@ TEST(SolverProtocolCli, GetfemPenaltyAndNitschePressureIsTheirLaw) {
     ASSERT_TRUE(cases.contains(id)) << id;
     const auto& c = cases.at(id);
     EXPECT_LT(c.at("interface").at("max_tensile_over_p").get<double>(), 1e-12) << id;
+    EXPECT_LT(c.at("interface").at("max_outside_over_p").get<double>(), 1e-12) << id;
     const auto& profile = c.at("profile");
     ASSERT_FALSE(profile.at("pressure_over_p").empty()) << id;
     const double pressure = profile.at("pressure_over_p").at(0).get<double>();
