@@ -21,6 +21,7 @@ struct ReportArgs {
   std::vector<std::string> results;
   std::string out_dir;
   std::string baseline;
+  std::string cost_run;
   std::string study_data;
   std::vector<std::string> bench;
   std::string mesh_export;
@@ -45,6 +46,8 @@ void run_report(const ReportArgs& args) {
   options.out_dir = output.staging_dir();
   if (!args.baseline.empty())
     options.baseline = args.baseline;
+  if (!args.cost_run.empty())
+    options.cost_run = args.cost_run;
   if (!args.study_data.empty())
     options.study_data = args.study_data;
   options.bench.assign(args.bench.begin(), args.bench.end());
@@ -85,6 +88,10 @@ void add_report_command(CLI::App& app) {
   cmd->add_option("--out", args->out_dir, "output directory (created if needed)")->required();
   cmd->add_option("--baseline", args->baseline,
                   "an older results.json: also write DIR/regression.md (grade changes, drift)");
+  cmd->add_option("--cost-run", args->cost_run,
+                  "results.json of ci/cost-run.sh (every code on the same models, one after "
+                  "another in one run): the cross-code cost tables come from it, not from the "
+                  "battery parts");
   cmd->add_option("--study-data", args->study_data,
                   "directory with the study's ansys_results.csv and ansys_grades.csv (default: "
                   "the source tree's data/study)");

@@ -10,8 +10,9 @@
 # other codes' battery parts (ci/calculix-battery.sh: out/calculix-parts/, ci/getfem-battery.sh:
 # out/getfem-parts/) are merged into a report of their own, reports/study/cross-code/ (ours,
 # CalculiX and GetFEM graded alike), when present;
-# they take long, so they are not run here. The coarse meshes of four problems are exported
-# for Figure 3, and the committed benchmark JSON files are shown as the benchmarks appendix.
+# they take long, so they are not run here; nor is ci/cost-run.sh (out/cost/: the cross-code
+# cost tables, every code on the same models in one run). The coarse meshes of four problems
+# are exported for Figure 3, and the committed benchmark JSON files are shown as the benchmarks appendix.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 reuse=0
@@ -54,8 +55,11 @@ for code in calculix getfem; do
     others+=(--results "out/$code/results.json")
   fi
 done
+# every code on the same models in one run (ci/cost-run.sh): the cross-code cost tables
+cost=()
+if [ -f out/cost/results.json ]; then cost=(--cost-run out/cost/results.json); fi
 if [ ${#others[@]} -gt 0 ]; then
-  "$exe" report "${others[@]}" --out reports/study/cross-code
+  "$exe" report "${others[@]}" "${cost[@]}" --out reports/study/cross-code
 fi
 # linked from the main report's header when present
 companion=()

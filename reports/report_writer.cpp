@@ -193,12 +193,18 @@ ReportOutcome write_report(const schema::ResultsDocument& results, const ReportO
   std::optional<schema::ResultsDocument> baseline;
   if (options.baseline)
     baseline = schema::read_results_file(*options.baseline);
+  std::optional<schema::ResultsDocument> cost_run;
+  if (options.cost_run)
+    cost_run = schema::read_results_file(*options.cost_run);
   const schema::StudyReference study = schema::load_study_reference(
       options.study_data ? *options.study_data : schema::default_study_data_dir());
   std::optional<BenchResults> bench;
   if (!options.bench.empty())
     bench = load_bench_files(options.bench);
   const ResultsIndex index(results);
+  std::optional<ResultsIndex> cost_index;
+  if (cost_run)
+    cost_index.emplace(*cost_run);
 
   platform::OutputTransaction output(options.out_dir);
   FigureSet figures, bench_figures, mesh_figures, sweep_figures;
@@ -217,7 +223,8 @@ ReportOutcome write_report(const schema::ResultsDocument& results, const ReportO
     bench_figures = render_bench_figures(*bench, output.staging_dir(), {}, options.figure_options);
   const std::string bench_md = bench ? bench_section(*bench, bench_figures) : std::string();
   const std::string cross_code_md =
-      cross_code_section(index, study, cross_code_figures, options.option_mappings);
+      cross_code_section(index, study, cross_code_figures, options.option_mappings,
+                         cost_index ? &*cost_index : nullptr);
   const ReportContent content{figures,       mesh_figures,  baseline.has_value(), bench_md,
                               sweep_figures, cross_code_md, options.companions};
   const std::vector<ReportPage> problems = problem_pages(index, figures, mesh_figures);

@@ -36,6 +36,10 @@ struct ReportOptions {
   std::filesystem::path out_dir;  ///< where report.md and the rest go
   /// An older results.json for regression.md, read with schema::read_results_file.
   std::optional<std::filesystem::path> baseline;
+  /// Results of every code on the same models in one run (ci/cost-run.sh), read with
+  /// schema::read_results_file: the cross-code cost tables (none: from the results' own cases,
+  /// which may have run at different times).
+  std::optional<std::filesystem::path> cost_run;
   /// data/study with the study's CSVs; default: schema::default_study_data_dir().
   std::optional<std::filesystem::path> study_data;
   /// Google Benchmark JSON files of bench_contact_algorithms: the appendix "Benchmarks"

@@ -366,7 +366,8 @@ std::vector<Figure> render_cross_code_figure(const ResultsIndex& index,
 
 std::string cross_code_section(const ResultsIndex& index, const schema::StudyReference& study,
                                const std::vector<Figure>& figures,
-                               const std::vector<SolverOptionMapping>& mappings) {
+                               const std::vector<SolverOptionMapping>& mappings,
+                               const ResultsIndex* cost_run) {
   if (!is_cross_code(index))
     return {};
   const auto codes = solvers_in(index);
@@ -390,7 +391,13 @@ std::string cross_code_section(const ResultsIndex& index, const schema::StudyRef
   d.set("tables", tables);
   d.set("has_figures", !figures.empty());
   d.set("figures", template_list(figures, figure_data));
-  d.set("costs", template_list(code_costs(index), [](const CodeCost& c) {
+  d.set("one_run", cost_run != nullptr);
+  if (cost_run) {
+    const schema::RunInfo& run = cost_run->results().run;
+    d.set("started", run.started_utc);
+    d.set("version", run.environment.value("contact_suite_version", std::string(kMissing)));
+  }
+  d.set("costs", template_list(code_costs(cost_run ? *cost_run : index), [](const CodeCost& c) {
           TemplateData t("code", solver_display_name(c.code));
           t.set("table", cost_table(c).render());
           return t;

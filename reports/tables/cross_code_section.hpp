@@ -80,9 +80,12 @@ std::vector<Figure> render_cross_code_figure(const ResultsIndex& index,
                                              const std::filesystem::path& out_root,
                                              const FigureOptions& options = {});
 
-/// The whole section (empty when the results hold one code only).
+/// The whole section (empty when the results hold one code only); its cost tables from
+/// `cost_run` (every code on the same models in one run, ci/cost-run.sh) when given, else from
+/// the results' own cases.
 std::string cross_code_section(const ResultsIndex& index, const schema::StudyReference& study,
                                const std::vector<Figure>& figures,
-                               const std::vector<SolverOptionMapping>& mappings);
+                               const std::vector<SolverOptionMapping>& mappings,
+                               const ResultsIndex* cost_run = nullptr);
 
 }  // namespace cs::reports

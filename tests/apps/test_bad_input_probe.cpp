@@ -321,6 +321,8 @@ TEST_F(BadInputProbe, EveryProbeExitsTwoWithOneLineAndLeavesNoFile) {
   write("huge.json", R"({"schema": "contact-suite/results", "schema_version": 1e999})");
   for (const char* f : {"missing.json", ".", "notjson.json", "huge.json"}) {
     probes.push_back({{"report", "--results", f, "--out", "rep"}});
+    probes.push_back(
+        {{"report", "--results", "good/results.json", "--cost-run", f, "--out", "rep"}});
     probes.push_back({{"gate", "--baseline", f, "--results", "good/results.json"}});
   }
   probes.push_back({{"gate", "--baseline", "b.json", "--results", "good/results.json"}});
