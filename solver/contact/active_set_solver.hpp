@@ -10,8 +10,10 @@
 //   alpha mu + delta (d + W mu) = gamma - beta g0,   delta = beta - alpha rho,
 // which is explicit in mu_j where delta_j = 0 and otherwise, divided by delta_j, the symmetric
 // (possibly indefinite) system (W + diag(alpha / delta)) mu = ...; it is solved after the
-// symmetric scaling rho^{1/2} by Cholesky where it is positive definite, else by a Bunch-Kaufman
-// LDL^T (dense::SymmetricFactorization).
+// symmetric scaling rho^{1/2} (dense::SymmetricFactorization) by Cholesky where it is positive
+// definite, and where rows are open (their term -1 against rho^{1/2} W rho^{1/2} < I makes it
+// indefinite) by two Cholesky factorizations of its quasi-definite blocks; else by a
+// Bunch-Kaufman LDL^T.
 //
 // The loop always terminates: it stops converged when the residual of the algorithm's
 // complementarity function is below the tolerance or the active set reproduces itself, and

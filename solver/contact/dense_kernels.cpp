@@ -96,22 +96,96 @@ double cholesky_rcond(const Eigen::MatrixXd& L, double norm1) {
   return rcond;
 }
 
+namespace {
+
+/// Below this a block's reciprocal condition estimate does not stand for A's (the block can be
+/// near singular where A is not): LDL^T decides.
+constexpr double kBlockRcondFloor = 1e-10;
+
+double norm1_lower(const Eigen::MatrixXd& A) {
+  const int n = static_cast<int>(A.rows());
+  std::vector<double> work(n);
+  return n == 0 ? 0.0 : dlansy_("1", "L", &n, A.data(), &n, work.data());
+}
+
+/// The submatrix of A's rows `r` and columns `c` (A's lower triangle read, symmetric).
+Eigen::MatrixXd block(const Eigen::MatrixXd& A, const std::vector<int>& r,
+                      const std::vector<int>& c) {
+  Eigen::MatrixXd out(r.size(), c.size());
+  for (std::size_t j = 0; j < c.size(); ++j) {
+    for (std::size_t i = 0; i < r.size(); ++i)
+      out(i, j) = r[i] >= c[j] ? A(r[i], c[j]) : A(c[j], r[i]);
+  }
+  return out;
+}
+
+}  // namespace
+
 bool SymmetricFactorization::factorize(const Eigen::MatrixXd& A) {
   const int n = static_cast<int>(A.rows());
   pivots_.resize(0);
+  positive_.clear();
+  negative_.clear();
   rcond_ = 0.0;
+  method_ = SymmetricMethod::cholesky;
   if (n == 0) {
     factor_.resize(0, 0);
     rcond_ = 1.0;
     return true;
   }
-  std::vector<double> norm_work(n);
-  const double anorm = dlansy_("1", "L", &n, A.data(), &n, norm_work.data());
-  factor_ = A;
-  if (cholesky_in_place(factor_)) {
-    rcond_ = cholesky_rcond(factor_, anorm);
+  const double anorm = norm1_lower(A);
+  std::vector<int> negative;
+  for (int j = 0; j < n; ++j) {
+    if (A(j, j) < 0.0)
+      negative.push_back(j);
+  }
+  if (negative.empty()) {
+    factor_ = A;
+    if (cholesky_in_place(factor_)) {
+      rcond_ = cholesky_rcond(factor_, anorm);
+      return true;
+    }
+  } else if (factorize_quasi_definite(A, negative)) {
     return true;
   }
+  return factorize_bunch_kaufman(A, anorm);
+}
+
+bool SymmetricFactorization::factorize_quasi_definite(const Eigen::MatrixXd& A,
+                                                      const std::vector<int>& negative) {
+  std::vector<int> positive;
+  for (int j = 0, k = 0; j < static_cast<int>(A.rows()); ++j) {
+    if (k < static_cast<int>(negative.size()) && negative[k] == j)
+      ++k;
+    else
+      positive.push_back(j);
+  }
+  L_N_ = -block(A, negative, negative);
+  const double norm_N = norm1_lower(L_N_);
+  if (!cholesky_in_place(L_N_))
+    return false;
+  const double rcond_N = cholesky_rcond(L_N_, norm_N);
+  C_ = block(A, negative, positive);
+  lower_triangular_solve(L_N_, C_);
+  Eigen::MatrixXd CtC;
+  gram(C_, CtC);
+  factor_ = block(A, positive, positive) + CtC;
+  const double norm_S = norm1_lower(factor_);
+  if (!cholesky_in_place(factor_))
+    return false;
+  const double rcond_S = cholesky_rcond(factor_, norm_S);
+  if (!(std::min(rcond_N, rcond_S) > kBlockRcondFloor))
+    return false;
+  rcond_ = std::min(rcond_N, rcond_S);
+  positive_ = std::move(positive);
+  negative_ = negative;
+  method_ = SymmetricMethod::quasi_definite;
+  return true;
+}
+
+bool SymmetricFactorization::factorize_bunch_kaufman(const Eigen::MatrixXd& A, double anorm) {
+  const int n = static_cast<int>(A.rows());
+  method_ = SymmetricMethod::bunch_kaufman;
   factor_ = A;
   pivots_.resize(n);
   int info = 0;
@@ -132,15 +206,36 @@ bool SymmetricFactorization::factorize(const Eigen::MatrixXd& A) {
 
 void SymmetricFactorization::solve_in_place(Eigen::VectorXd& b) const {
   const int n = static_cast<int>(factor_.rows());
-  if (n == 0)
-    return;
-  if (positive_definite()) {
-    cholesky_solve(factor_, b);
-    return;
+  switch (method_) {
+    case SymmetricMethod::cholesky:
+      cholesky_solve(factor_, b);
+      return;
+    case SymmetricMethod::quasi_definite: {
+      // y_N = L_N^{-1} b_N;  L_S L_S^T x_P = b_P + C^T y_N;  x_N = L_N^{-T} (C x_P - y_N).
+      Eigen::MatrixXd y_N(negative_.size(), 1);
+      for (std::size_t k = 0; k < negative_.size(); ++k)
+        y_N(k, 0) = b[negative_[k]];
+      lower_triangular_solve(L_N_, y_N);
+      Eigen::VectorXd x_P(positive_.size());
+      for (std::size_t k = 0; k < positive_.size(); ++k)
+        x_P[k] = b[positive_[k]];
+      x_P.noalias() += C_.transpose() * y_N.col(0);
+      cholesky_solve(factor_, x_P);
+      Eigen::VectorXd x_N = C_ * x_P - y_N.col(0);
+      L_N_.triangularView<Eigen::Lower>().transpose().solveInPlace(x_N);
+      for (std::size_t k = 0; k < positive_.size(); ++k)
+        b[positive_[k]] = x_P[k];
+      for (std::size_t k = 0; k < negative_.size(); ++k)
+        b[negative_[k]] = x_N[k];
+      return;
+    }
+    case SymmetricMethod::bunch_kaufman: {
+      const int nrhs = 1;
+      int info = 0;
+      dsytrs_("L", &n, &nrhs, factor_.data(), &n, pivots_.data(), b.data(), &n, &info);
+      return;
+    }
   }
-  const int nrhs = 1;
-  int info = 0;
-  dsytrs_("L", &n, &nrhs, factor_.data(), &n, pivots_.data(), b.data(), &n, &info);
 }
 
 }  // namespace cs::solver::dense

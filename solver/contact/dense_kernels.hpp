@@ -3,6 +3,8 @@
 // matrices, calling the system BLAS/LAPACK (OpenBLAS, multithreaded) that CHOLMOD links.
 // Eigen's own dense kernels are single-threaded and several times slower on these sizes.
 
+#include <vector>
+
 #include <Eigen/Core>
 
 namespace cs::solver::dense {
@@ -28,23 +30,45 @@ void cholesky_solve(const Eigen::MatrixXd& L, Eigen::VectorXd& b);
 /// 1-norm of the original matrix.
 double cholesky_rcond(const Eigen::MatrixXd& L, double norm1);
 
-/// A symmetric matrix factorized by Cholesky when it is positive definite (the condensed
-/// contact systems mostly are: a compliance plus non-negative law terms), else by Bunch-Kaufman
-/// LDL^T (dsytrf). Cholesky costs about half as much; both solve A x = b to round-off.
+/// How a SymmetricFactorization factored its matrix.
+enum class SymmetricMethod {
+  cholesky,        ///< A = L L^T (A positive definite)
+  quasi_definite,  ///< two Cholesky factorizations of a quasi-definite A (below)
+  bunch_kaufman,   ///< A = L D L^T with 1x1 and 2x2 pivots (dsytrf), any nonsingular A
+};
+
+/// A symmetric matrix factorized by the cheapest of three methods that holds:
+///   - Cholesky, where A is positive definite;
+///   - quasi-definite: with N the rows of a negative diagonal and P the others,
+///       A = [A_PP A_PN; A_NP A_NN],  -A_NN = L_N L_N^T,  C = L_N^{-1} A_NP,
+///       A_PP + C^T C = L_S L_S^T,
+///     where -A_NN and that Schur complement are positive definite. The condensed contact
+///     system is so (an open row's law term is -1 against a compliance rho^{1/2} W rho^{1/2} < I,
+///     a closed row's is >= 0), and is indefinite whenever a row is open;
+///   - else Bunch-Kaufman LDL^T (dsytrf).
+/// Each solves A x = b to round-off. Cholesky costs about half of LDL^T, which on these small
+/// matrices also pays a pivot search per column and a slower condition estimate.
 class SymmetricFactorization {
  public:
   /// Factorizes A (its lower triangle is read). Returns false if A is exactly singular.
   bool factorize(const Eigen::MatrixXd& A);
-  /// Reciprocal condition number estimate in the 1-norm (0 if exactly singular).
+  /// Reciprocal condition number estimate in the 1-norm (0 if exactly singular); for the
+  /// quasi-definite method the smaller of its two blocks' (A is singular exactly when one of
+  /// them is; a block estimate below 1e-10 hands A to LDL^T, whose estimate is A's own).
   double rcond() const { return rcond_; }
-  /// Whether the Cholesky factorization served (false: LDL^T).
-  bool positive_definite() const { return pivots_.size() == 0; }
+  SymmetricMethod method() const { return method_; }
   /// Solves A x = b in place.
   void solve_in_place(Eigen::VectorXd& b) const;
 
  private:
-  Eigen::MatrixXd factor_;
-  Eigen::VectorXi pivots_;  ///< LDL^T's pivots; empty for Cholesky
+  bool factorize_quasi_definite(const Eigen::MatrixXd& A, const std::vector<int>& negative);
+  bool factorize_bunch_kaufman(const Eigen::MatrixXd& A, double anorm);
+
+  SymmetricMethod method_ = SymmetricMethod::cholesky;
+  Eigen::MatrixXd factor_;                ///< L (Cholesky), L_S (quasi-definite) or LDL^T's factor
+  Eigen::MatrixXd L_N_, C_;               ///< quasi-definite: L_N and C = L_N^{-1} A_NP
+  std::vector<int> positive_, negative_;  ///< quasi-definite: the rows of P and of N
+  Eigen::VectorXi pivots_;                ///< LDL^T's pivots
   double rcond_ = 0.0;
 };
 

@@ -81,15 +81,17 @@ TEST(OutputSafety, ASecondRunIntoABusyDirectoryIsRefusedAndTheFirstStaysWhole) {
 extern "C" char** environ;
 
 /// A directory with a `gnuplot` that answers the terminal probe at once but, asked to draw,
-/// writes its pid to `marker` and waits 60 s before drawing with the real gnuplot: it holds
-/// the report phase open long enough to interrupt it there.
+/// writes its pid to `marker` (renamed into place, so that the file is whole once it exists:
+/// a run killed between its creation and the write left it empty) and waits 60 s before drawing
+/// with the real gnuplot: it holds the report phase open long enough to interrupt it there.
 fs::path slow_gnuplot_dir(const fs::path& root, const fs::path& marker) {
   const fs::path dir = root / "slow-gnuplot";
   fs::create_directories(dir);
   std::ofstream(dir / "gnuplot") << "#!/bin/sh\n"
                                     "if [ \"$1\" = -e ]; then exec /usr/bin/gnuplot \"$@\"; fi\n"
                                     "echo $$ > '"
-                                 << marker.string()
+                                 << marker.string() << ".tmp' && mv '" << marker.string()
+                                 << ".tmp' '" << marker.string()
                                  << "'\n"
                                     "sleep 60\n"
                                     "exec /usr/bin/gnuplot \"$@\"\n";

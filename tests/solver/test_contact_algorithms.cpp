@@ -117,27 +117,53 @@ void expect_contact_error(const std::function<void()>& f, const std::string& cau
   }
 }
 
-// The condensed systems' dense factorization: Cholesky where the matrix is positive definite,
-// Bunch-Kaufman LDL^T where it is not (a Lagrange row beside a law term of the other sign), each
-// solving A x = b to round-off; an exactly singular matrix is refused or reads rcond 0.
-TEST(DenseFactorization, CholeskyWherePositiveDefiniteElseLdlt) {
-  Eigen::MatrixXd spd(3, 3), indefinite(3, 3), singular(2, 2);
+// The condensed systems' dense factorization: Cholesky where the matrix is positive definite;
+// two Cholesky factorizations where it is quasi-definite (the rows of a negative diagonal a
+// negative definite block, the Schur complement of the rest positive definite), as the contact
+// system is with open rows: rho^{1/2} W rho^{1/2} - I there, W = B M^{-1} B^T; else Bunch-Kaufman
+// LDL^T (a negative block that is not negative definite, or a Schur complement that is not
+// positive definite). Each solves A x = b to
+// round-off; an exactly singular matrix is refused or reads rcond 0, in every method.
+TEST(DenseFactorization, CholeskyQuasiDefiniteOrLdlt) {
+  using dense::SymmetricMethod;
+  Eigen::MatrixXd spd(3, 3), indefinite(3, 3);
   spd << 4, 1, 0, 1, 3, 1, 0, 1, 2;
   indefinite << 1, 2, 0, 2, 1, 1, 0, 1, -3;
-  singular << 1, 1, 1, 1;
-  const Eigen::VectorXd x = Eigen::Vector3d(1.0, -2.0, 0.5);
-  for (const auto& [A, definite] : {std::pair<Eigen::MatrixXd, bool>{spd, true},
-                                    std::pair<Eigen::MatrixXd, bool>{indefinite, false}}) {
+  // The contact system's shape: a compliance with rho W < I (here B = I, M = S + I with S
+  // positive definite, so rho W = (S + I)^{-1}) and -1 added on the open rows 1 and 3.
+  Eigen::MatrixXd S(4, 4);
+  S << 3, 1, 0, 0.5, 1, 2, 0.5, 0, 0, 0.5, 4, 1, 0.5, 0, 1, 2;
+  Eigen::MatrixXd contact = (S + Eigen::MatrixXd::Identity(4, 4)).inverse();
+  contact(1, 1) -= 1.0;
+  contact(3, 3) -= 1.0;
+  // A negative diagonal entry whose block is not negative definite: [[-1, 3], [3, -1]].
+  Eigen::MatrixXd saddle(3, 3);
+  saddle << 2, 0, 1, 0, -1, 3, 1, 3, -1;
+  const std::pair<Eigen::MatrixXd, SymmetricMethod> cases[] = {
+      {spd, SymmetricMethod::cholesky},
+      {indefinite, SymmetricMethod::bunch_kaufman},  // its P block's Schur complement is not
+      {contact, SymmetricMethod::quasi_definite},
+      {saddle, SymmetricMethod::bunch_kaufman}};
+  for (const auto& [A, method] : cases) {
+    const Eigen::VectorXd x = Eigen::VectorXd::LinSpaced(A.rows(), 1.0, -2.0);
     dense::SymmetricFactorization f;
-    ASSERT_TRUE(f.factorize(A));
-    EXPECT_EQ(f.positive_definite(), definite);
-    EXPECT_GT(f.rcond(), 0.05);
+    ASSERT_TRUE(f.factorize(A)) << A;
+    EXPECT_EQ(f.method(), method) << A;
+    EXPECT_GT(f.rcond(), 0.01) << A;
     Eigen::VectorXd b = A * x;
     f.solve_in_place(b);
-    EXPECT_LT((b - x).norm(), 1e-14);
+    EXPECT_LT((b - x).norm(), 1e-13) << A;
   }
-  dense::SymmetricFactorization f;
-  EXPECT_FALSE(f.factorize(singular) && f.rcond() > 1e-14);
+  // Singular, one per method tried first: positive semidefinite; a negative block that is
+  // singular; a quasi-definite split whose Schur complement is 0 ([[0, 0], [0, -1]]).
+  Eigen::MatrixXd psd(2, 2), negative(2, 2), zero_schur(2, 2);
+  psd << 1, 1, 1, 1;
+  negative << -1, 1, 1, -1;
+  zero_schur << 0, 0, 0, -1;
+  for (const auto& A : {psd, negative, zero_schur}) {
+    dense::SymmetricFactorization f;
+    EXPECT_FALSE(f.factorize(A) && f.rcond() > 1e-14) << A;
+  }
 }
 
 TEST(ContactInput, BadInputRaisesContactErrorNamingTheCause) {
