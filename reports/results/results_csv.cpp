@@ -63,8 +63,10 @@ RowsByCase rows_by_case(const ResultsIndex& index) {
   return out;
 }
 
+/// The row's verdicts (converging, trend, Eq. 47, strict divergence); none for a row with a
+/// case that did not converge: its values are last iterates.
 std::vector<std::string> verdict_fields(const ResultsIndex& index, const schema::RowVerdict* r) {
-  if (r == nullptr)
+  if (r == nullptr || index.any_not_converged(*r))
     return {"", "", "", ""};
   const auto& e = r->errors;
   const auto& v = r->values;
@@ -168,10 +170,16 @@ std::string results_csv(const ResultsIndex& index, const schema::StudyReference&
         }
       }
       const auto row = rows.find({&c, q.quantity});
-      std::vector<std::string> tail{
-          name(q.quantity),        number(q.value), q.singular() ? "inf" : number(q.exact),
-          number(q.error_percent), name(q.grade),   number(q.contact_pressure),
-          number(q.study_exact),   ansys_value,     ansys_table};
+      const bool converged = c.status == schema::CaseStatus::converged;  // else no grade
+      std::vector<std::string> tail{name(q.quantity),
+                                    number(q.value),
+                                    q.singular() ? "inf" : number(q.exact),
+                                    number(q.error_percent),
+                                    converged ? name(q.grade) : "",
+                                    number(q.contact_pressure),
+                                    number(q.study_exact),
+                                    ansys_value,
+                                    ansys_table};
       for (auto& f : verdict_fields(index, row == rows.end() ? nullptr : row->second))
         tail.push_back(std::move(f));
       emit(tail);

@@ -37,24 +37,29 @@ RowKey key_of(const CodeRow& r) {
   return {!ours(r.code), r.code, r.target, r.option};
 }
 
-/// A row's cell on one mesh: the signed error (the value for a singular problem), else the
-/// case's status, else "—".
+/// A row's cell on one mesh: the signed error (the value for a singular problem), marked "!"
+/// when it is the last iterate of a case that did not converge, else the case's status, else
+/// "—".
 std::string mesh_cell(const ResultsIndex& index, const RowVerdict* row, std::size_t m) {
   if (row == nullptr)
     return kMissing;
+  const std::string mark =
+      index.state(*row, kMeshes[m]) == MeshState::not_converged ? std::string("!") : "";
   if (row->errors[m])
-    return format_error_resolved(*row->errors[m]);
+    return format_error_resolved(*row->errors[m]) + mark;
   if (row->values[m])
-    return format_value(*row->values[m]);
+    return format_value(*row->values[m]) + mark;
   const CaseResult* c = index.case_of(*row, kMeshes[m]);
   return c == nullptr || c->status == schema::CaseStatus::converged
              ? std::string(kMissing)
              : std::string(schema::label(c->status));
 }
 
-std::string grade_cell(const RowVerdict* row) {
+std::string grade_cell(const ResultsIndex& index, const RowVerdict* row) {
   if (row == nullptr)
     return kMissing;
+  if (index.state(*row, kFinestMesh) == MeshState::not_converged)
+    return "none: F not converged";
   if (row->diverging)
     return *row->diverging ? "diverges (Eq. 47)" : "does not diverge (Eq. 47)";
   if (!row->grade || row->graded_mesh != kFinestMesh)
@@ -101,8 +106,8 @@ MarkdownTable problem_table(const ResultsIndex& index, const schema::StudyRefere
     const RowVerdict& any = *(r.common ? r.common : r.own);
     t.add_row({solver_display_name(r.code), r.option, std::string(schema::to_string(r.target)),
                Option{any.spec.algorithm, any.spec.contact}.label(), mesh_cell(index, r.common, 0),
-               mesh_cell(index, r.common, 1), mesh_cell(index, r.common, 2), grade_cell(r.common),
-               checks_cell(index, r.common),
+               mesh_cell(index, r.common, 1), mesh_cell(index, r.common, 2),
+               grade_cell(index, r.common), checks_cell(index, r.common),
                ours(r.code) ? std::string("= common") : mesh_cell(index, r.own, 2),
                ansys_cell(index, study, any)});
   }

@@ -303,6 +303,25 @@ TEST(CrossCodeCost, PerCaseRatiosOnTheSameModels) {
       << md;
 }
 
+// Requirement: a case that did not converge gives no grade and its value is marked as the last
+// iterate: CalculiX's F case stops at -100 % (GetFEM's integral brick on H_p Q8 does), which
+// read "u" before, a grade from a solve that failed.
+TEST(CrossCodeSection, ANotConvergedFineCaseHasNoGradeAndAMarkedValue) {
+  std::vector<CaseResult> cases;
+  for (const auto m : kMeshes) {
+    cases.push_back(hertz_case(SolverKind::builtin, m, 0.5));
+    const bool fine = m == MeshLevel::F;
+    cases.push_back(hertz_case(kCalculix, m, fine ? -100.0 : 1.0, 1.0, 10.0,
+                               fine ? CaseStatus::not_converged : CaseStatus::converged));
+  }
+  const auto doc = document(cases);
+  const ResultsIndex index(doc);
+  const std::string md = cross_code_section(index, study(), {}, {});
+  EXPECT_NE(md.find("| +1.00 % | +1.00 % | −100.0 %! | none: F not converged | not converged |"),
+            std::string::npos)
+      << md;
+}
+
 // Requirement (issue #24, each code's cost measured in one run): given a cost run, the cost
 // tables are its times, not those the graded results recorded (CalculiX 10, 20, 40 s against
 // ours 1, 2, 4 s there; 3 s against 1 s per case in the cost run), and say where they come from.

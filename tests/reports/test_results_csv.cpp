@@ -82,7 +82,7 @@ std::vector<std::string> fields_of(const std::string& line) {
 
 // Requirement: every line repeats the verdicts of the row its case belongs to, computed by the
 // grading layer: the study's c and the noise-aware trend for a nonsingular row, Eq. 47 and the
-// strict verdict for a singular one.
+// strict verdict for a singular one; none for a row with a case that did not converge.
 TEST(ResultsCsv, CarriesTheRowsVerdicts) {
   const Loaded data(sample_json());
   const auto lines = lines_of(results_csv(data.index, study()));
@@ -91,7 +91,7 @@ TEST(ResultsCsv, CarriesTheRowsVerdicts) {
     return static_cast<std::size_t>(std::find(header.begin(), header.end(), name) - header.begin());
   };
   ASSERT_LT(column("strict_divergence"), header.size());
-  int nonsingular = 0, singular = 0;
+  int nonsingular = 0, singular = 0, not_converged = 0;
   for (const schema::RowVerdict* r : data.index.baseline_rows()) {
     const schema::CaseResult* c = data.index.case_of(*r, schema::MeshLevel::F);
     if (c == nullptr || !ResultsIndex::complete(*r))
@@ -101,7 +101,10 @@ TEST(ResultsCsv, CarriesTheRowsVerdicts) {
       const auto f = fields_of(l);
       if (l.rfind(prefix, 0) != 0 || f[column("quantity")] != schema::to_string(r->quantity))
         continue;
-      if (data.index.singular(r->spec.problem)) {
+      if (data.index.any_not_converged(*r)) {  // last iterates: no verdict
+        EXPECT_EQ(f[column("converging")] + f[column("trend")] + f[column("eq47")], "") << l;
+        ++not_converged;
+      } else if (data.index.singular(r->spec.problem)) {
         const auto d = grading::divergence_verdict(*r->values[0], *r->values[1], *r->values[2]);
         EXPECT_EQ(f[column("eq47")], d.eq47 ? "true" : "false") << l;
         EXPECT_EQ(f[column("strict_divergence")], d.diverges ? "true" : "false") << l;
@@ -118,6 +121,44 @@ TEST(ResultsCsv, CarriesTheRowsVerdicts) {
   }
   EXPECT_GT(nonsingular, 0);
   EXPECT_GT(singular, 0);
+  EXPECT_GT(not_converged, 0);
+}
+
+// Requirement: a case that did not converge has no grade, and the row it belongs to no verdicts
+// on any of its meshes (its values are last iterates): status and error stay, to be read.
+TEST(ResultsCsv, NoGradeOrVerdictFromACaseThatDidNotConverge) {
+  auto doc = sample_json();
+  for (auto& c : doc["cases"]) {
+    if (c["id"] == "H_p/F/Q4/AL/ss")
+      c["status"] = "not_converged";
+  }
+  const Loaded data(doc);
+  const auto lines = lines_of(results_csv(data.index, study()));
+  const auto header = fields_of(lines[0]);
+  const auto column = [&](const std::string& name) {
+    return static_cast<std::size_t>(std::find(header.begin(), header.end(), name) - header.begin());
+  };
+  int fine = 0, coarser = 0;
+  for (const auto& l : lines) {
+    const auto f = fields_of(l);
+    if (f[column("quantity")] != "sigma_c")
+      continue;
+    if (l.rfind("H_p/F/Q4/AL/ss,", 0) == 0) {
+      ++fine;
+      EXPECT_EQ(f[column("status")], "not_converged") << l;
+      EXPECT_EQ(f[column("grade")], "") << l;
+      EXPECT_NE(f[column("error_percent")], "") << l;
+    }
+    if (l.rfind("H_p/F/Q4/AL/ss,", 0) == 0 || l.rfind("H_p/M/Q4/AL/ss,", 0) == 0) {
+      coarser += l.rfind("H_p/M/", 0) == 0 ? 1 : 0;
+      EXPECT_EQ(f[column("converging")], "") << l;
+      EXPECT_EQ(f[column("trend")], "") << l;
+    }
+    if (l.rfind("H_p/F/Q4/AL/ns,", 0) == 0)  // its twin converged: graded as before
+      EXPECT_NE(f[column("converging")], "") << l;
+  }
+  EXPECT_EQ(fine, 1);
+  EXPECT_EQ(coarser, 1);
 }
 
 }  // namespace
