@@ -65,7 +65,9 @@ std::string grade_cell(const ResultsIndex& index, const RowVerdict* row) {
   if (!row->grade || row->graded_mesh != kFinestMesh)
     return "no grade";
   const std::string g(schema::to_string(*row->grade));
-  return row->converging.value_or(false) ? g + ", c" : g;
+  const RowFacts f = facts_of_row(index, *row);
+  const std::string mark = !f.credible ? " ✗" : f.luck ? " ‡" : "";  // not evidence
+  return (row->converging.value_or(false) ? g + ", c" : g) + mark;
 }
 
 std::string checks_cell(const ResultsIndex& index, const RowVerdict* row) {

@@ -222,6 +222,11 @@ TEST(CrossCodeAdvice, MostERowsTiesTogetherNotCredibleLeftOut) {
   EXPECT_NE(md.find("**calculix**: use linear-ns or linear-ss (e on 1 of 1 rows)."),
             std::string::npos)
       << md;
+  // Its table row: the grade marked as no evidence, beside the failed check.
+  EXPECT_NE(md.find("| e, c ✗ | force balance 0.5 |"), std::string::npos) << md;
+  EXPECT_NE(md.find("| linear-ss | discretized | PM ss | +2.00 % | +1.00 % | +0.50 % | e, c | — |"),
+            std::string::npos)
+      << md;
 }
 
 // Requirement: a code's options are counted on the same rows: a quantity only one option has
