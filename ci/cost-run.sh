@@ -24,15 +24,18 @@ parts="$out-parts"
 command -v ccx > /dev/null || { echo "cost-run: ccx not on PATH (ci/install-deps.sh)" >&2; exit 2; }
 /usr/bin/python3 -c 'import getfem' 2> /dev/null ||
   { echo "cost-run: python3-getfem is not installed (ci/install-deps.sh)" >&2; exit 2; }
-rm -rf "$parts" "$out"
 mkdir -p "$parts"
 echo "cost-run: load average before: $(cut -d' ' -f1-3 /proc/loadavg)"
 start=$(date +%s)
 
+# Every part runs anew (the tool replaces an output set it wrote, and refuses a directory it did
+# not make), and the merge reads this run's parts only.
+done_parts=()
 run_part() {
   local solver=$1 problem=$2 mesh=$3 element=$4
+  local dir="$parts/$solver-$problem-$mesh-$element"
   local args=(run --solver "$solver" --problems "$problem" --meshes "$mesh" --elements "$element"
-              --target discretized --jobs 1 --no-report --out "$parts/$solver-$problem-$mesh-$element")
+              --target discretized --jobs 1 --no-report --out "$dir")
   case "$solver" in
     builtin) args+=(--algorithms AL,PM,LMP --contacts ns,ss) ;;
     getfem) args+=(--solver-options nodal_al,integral_al,penalty) ;;
@@ -40,6 +43,7 @@ run_part() {
   local status=0
   "$exe" "${args[@]}" > /dev/null || status=$?
   [ "$status" -le 1 ] || { echo "cost-run: $solver $problem $mesh $element failed (exit $status)" >&2; exit "$status"; }
+  done_parts+=("$dir/results.json")
 }
 
 for problem in P_p Pprime_p H_p F_p IF_p; do
@@ -50,6 +54,6 @@ for problem in P_p Pprime_p H_p F_p IF_p; do
   done
   echo "cost-run: $problem done after $(($(date +%s) - start)) s"
 done
-"$exe" merge "$out" "$parts"/*/results.json || [ $? -le 1 ]
+"$exe" merge "$out" "${done_parts[@]}" || [ $? -le 1 ]
 echo "cost-run: load average after: $(cut -d' ' -f1-3 /proc/loadavg)"
 echo "cost-run: wall time $(($(date +%s) - start)) s; results in $out/results.json"
