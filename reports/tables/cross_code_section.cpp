@@ -163,13 +163,28 @@ std::string option_text(const OptionTally& t, const std::vector<OptionTally>& ta
 TemplateData advice_data(const std::vector<OptionTally>& tallies, const std::string& code,
                          const std::vector<SolverOptionMapping>& mappings) {
   TemplateData d("code", solver_display_name(code));
-  std::vector<std::string> names;
-  const auto best = advised(tallies, code);
-  for (const OptionTally* t : best)
-    names.push_back(option_text(*t, tallies));
-  d.set("advised", text_or_false(join_words(names, " or ")));
-  d.set("score", best.empty() ? std::string()
-                              : fmt::format("e on {} of {} rows", best[0]->e, best[0]->rows));
+  std::set<schema::TargetKind> targets;
+  for (const auto& t : tallies) {
+    if (t.code == code)
+      targets.insert(t.target);
+  }
+  // One advice per target the code ran on: its options are counted apart there.
+  TemplateData choices{TemplateData::type::list};
+  for (const auto target : targets) {
+    const auto best = advised(tallies, code, target);
+    std::vector<std::string> names;
+    for (const OptionTally* t : best)
+      names.push_back(t->option);
+    TemplateData c("target", targets.size() > 1
+                                 ? TemplateData(fmt::format("{} target", schema::to_string(target)))
+                                 : TemplateData(false));
+    c.set("advised", text_or_false(join_words(names, " or ")));
+    c.set("score", best.empty() ? std::string()
+                                : fmt::format("e on {} of {} rows", best[0]->e, best[0]->rows));
+    c.set("more", target != *targets.rbegin());
+    choices.push_back(c);
+  }
+  d.set("choices", choices);
   MarkdownTable tally({"Option", "rows with F", "e", "g", "s", "u", "not evidence"});
   for (const auto& x : tallies) {
     if (x.code == code)
@@ -295,13 +310,17 @@ std::vector<OptionTally> option_tallies(const ResultsIndex& index) {
 }
 
 std::vector<const OptionTally*> advised(const std::vector<OptionTally>& tallies,
-                                        const std::string& code) {
+                                        const std::string& code,
+                                        std::optional<schema::TargetKind> target) {
+  const auto counted = [&](const OptionTally& t) {
+    return t.code == code && (!target || t.target == *target);
+  };
   int best = 0;
   for (const auto& t : tallies)
-    best = t.code == code ? std::max(best, t.e) : best;
+    best = counted(t) ? std::max(best, t.e) : best;
   std::vector<const OptionTally*> out;
   for (const auto& t : tallies) {
-    if (t.code == code && best > 0 && t.e == best)
+    if (counted(t) && best > 0 && t.e == best)
       out.push_back(&t);
   }
   return out;

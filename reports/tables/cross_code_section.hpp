@@ -7,6 +7,7 @@
 // the advised option and the cost beside ours; a figure of the advised options' pressures.
 
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -54,10 +55,11 @@ struct OptionTally {
 };
 std::vector<OptionTally> option_tallies(const ResultsIndex& index);
 
-/// The advised options of `code`: its tallies with the most e rows (ties together); empty when
-/// none has an e row.
+/// The advised options of `code` (on `target`, when given): its tallies with the most e rows
+/// (ties together); empty when none has an e row.
 std::vector<const OptionTally*> advised(const std::vector<OptionTally>& tallies,
-                                        const std::string& code);
+                                        const std::string& code,
+                                        std::optional<schema::TargetKind> target = std::nullopt);
 
 /// A code's cost beside ours on the models both ran (problem, mesh, element, target): its
 /// common-basis cases (one run of the code each) and ours on the same models.

@@ -284,6 +284,11 @@ TEST(CrossCodeAdvice, OptionsOnAnotherTargetAreCountedApart) {
   EXPECT_EQ(discretized, 2);
   const std::string md = cross_code_section(index, study(), {}, {});
   EXPECT_NE(md.find("| linear-ns (rigid target) | 1 |"), std::string::npos) << md;
+  // The advice is given per target: the rigid target's one option is not outnumbered.
+  EXPECT_NE(md.find("**calculix**: with the discretized target, use linear-ns or linear-ss (e on 1 "
+                    "of 1 rows); with the rigid target, use linear-ns (e on 1 of 1 rows)."),
+            std::string::npos)
+      << md;
 }
 
 // Requirement: a code's cost is its recorded wall time per case beside ours on the same models:
