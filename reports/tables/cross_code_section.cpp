@@ -422,6 +422,10 @@ std::string cross_code_section(const ResultsIndex& index, const schema::StudyRef
     const schema::RunInfo& run = cost_run->results().run;
     d.set("started", run.started_utc);
     d.set("version", run.environment.value("contact_suite_version", std::string(kMissing)));
+    std::set<std::string> targets;  // what the run's cases solved against, from the cases
+    for (const auto& c : cost_run->results().cases)
+      targets.insert(std::string(schema::to_string(c.spec.target)));
+    d.set("cost_targets", join_words(std::vector<std::string>(targets.begin(), targets.end())));
   }
   d.set("costs", template_list(code_costs(cost_run ? *cost_run : index), [](const CodeCost& c) {
           TemplateData t("code", solver_display_name(c.code));

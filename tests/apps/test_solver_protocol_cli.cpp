@@ -185,14 +185,32 @@ bool getfem_available() {
   return std::system("/usr/bin/python3 -c 'import getfem' >/dev/null 2>&1") == 0;
 }
 
-/// The arguments of a GetFEM run of `options` on one problem's `meshes` (spr basis, one job).
+/// The arguments of a GetFEM run of `options` on one problem's `meshes` (both bases: one run of
+/// GetFEM serves them; one job).
 std::vector<std::string> getfem_run(const std::string& options, const std::string& problem,
                                     const std::string& meshes, const std::string& element,
                                     const std::string& target, const fs::path& out) {
-  return {"run",   "--solver",   "getfem", "--solver-options", options, "--problems",
-          problem, "--meshes",   meshes,   "--elements",       element, "--target",
-          target,  "--recovery", "spr",    "--jobs",           "1",     "--no-report",
-          "--out", out.string()};
+  return {"run",   "--solver", "getfem", "--solver-options", options, "--problems",
+          problem, "--meshes", meshes,   "--elements",       element, "--target",
+          target,  "--jobs",   "1",      "--no-report",      "--out", out.string()};
+}
+
+/// The cases, by id, of `contact-suite run` with getfem_run's arguments in a scratch directory;
+/// a run that exits otherwise than `exit_code` fails the calling test and gives no case.
+std::map<std::string, nlohmann::json> getfem_cases(const std::string& options,
+                                                   const std::string& problem,
+                                                   const std::string& meshes,
+                                                   const std::string& element,
+                                                   const std::string& target, int exit_code = 0) {
+  TempDir dir;
+  const fs::path out = dir.path() / "out";
+  const auto r = run_cli(getfem_run(options, problem, meshes, element, target, out));
+  if (r.exit_code != exit_code) {
+    ADD_FAILURE() << "exit " << r.exit_code << " (expected " << exit_code << ")\n"
+                  << r.err << r.out;
+    return {};
+  }
+  return cases_by_id(out / "results.json");
 }
 
 // GetFEM through its committed adapter (adapters/getfem/) on the smallest case: the patch test
@@ -201,13 +219,7 @@ std::vector<std::string> getfem_run(const std::string& options, const std::strin
 TEST(SolverProtocolCli, GetfemSolvesThePatchTest) {
   if (!getfem_available())
     GTEST_SKIP() << "python3-getfem is not installed";
-  TempDir dir;
-  const fs::path out = dir.path() / "out";
-  const auto r = run_cli({"run", "--solver", "getfem", "--solver-options", "nodal_al", "--problems",
-                          "P_p", "--meshes", "C", "--elements", "Q4", "--target", "rigid", "--jobs",
-                          "1", "--no-report", "--out", out.string()});
-  ASSERT_EQ(r.exit_code, 0) << r.err << r.out;
-  const auto cases = cases_by_id(out / "results.json");
+  const auto cases = getfem_cases("nodal_al", "P_p", "C", "Q4", "rigid");
   for (const std::string id :
        {"P_p/C/Q4/AL/ns/rigid/@getfem:nodal_al", "P_p/C/Q4/AL/ns/rigid/own/@getfem:nodal_al"}) {
     ASSERT_TRUE(cases.contains(id)) << id;
@@ -225,11 +237,7 @@ TEST(SolverProtocolCli, GetfemSolvesThePatchTest) {
 TEST(SolverProtocolCli, GetfemIntegralContactHalfWidth) {
   if (!getfem_available())
     GTEST_SKIP() << "python3-getfem is not installed";
-  TempDir dir;
-  const fs::path out = dir.path() / "out";
-  const auto r = run_cli(getfem_run("integral_al,nodal_al", "H_p", "C", "Q4", "rigid", out));
-  ASSERT_EQ(r.exit_code, 0) << r.err << r.out;
-  const auto cases = cases_by_id(out / "results.json");
+  const auto cases = getfem_cases("integral_al,nodal_al", "H_p", "C", "Q4", "rigid");
   for (const std::string id :
        {"H_p/C/Q4/AL/ss/rigid/@getfem:integral_al", "H_p/C/Q4/AL/ns/rigid/@getfem:nodal_al"}) {
     ASSERT_TRUE(cases.contains(id)) << id;
@@ -251,11 +259,7 @@ TEST(SolverProtocolCli, GetfemIntegralContactHalfWidth) {
 TEST(SolverProtocolCli, GetfemPenaltyAndNitschePressureIsTheirLaw) {
   if (!getfem_available())
     GTEST_SKIP() << "python3-getfem is not installed";
-  TempDir dir;
-  const fs::path out = dir.path() / "out";
-  const auto r = run_cli(getfem_run("penalty,nitsche", "F_p", "C", "Q8", "rigid", out));
-  ASSERT_EQ(r.exit_code, 0) << r.err << r.out;
-  const auto cases = cases_by_id(out / "results.json");
+  const auto cases = getfem_cases("penalty,nitsche", "F_p", "C", "Q8", "rigid");
   for (const std::string id :
        {"F_p/C/Q8/PM/ss/rigid/@getfem:penalty", "F_p/C/Q8/AL/ss/rigid/@getfem:nitsche"}) {
     ASSERT_TRUE(cases.contains(id)) << id;
@@ -278,11 +282,8 @@ TEST(SolverProtocolCli, GetfemPenaltyAndNitschePressureIsTheirLaw) {
 TEST(SolverProtocolCli, GetfemInterferenceFitBetweenTwoMeshes) {
   if (!getfem_available())
     GTEST_SKIP() << "python3-getfem is not installed";
-  TempDir dir;
-  const fs::path out = dir.path() / "out";
-  const auto r = run_cli(getfem_run("nodal_al,nitsche", "IF_p", "C,M", "Q4", "discretized", out));
-  ASSERT_EQ(r.exit_code, 1) << r.err << r.out;  // the Nitsche cases failed
-  const auto cases = cases_by_id(out / "results.json");
+  const auto cases = getfem_cases("nodal_al,nitsche", "IF_p", "C,M", "Q4", "discretized",
+                                  1);  // the Nitsche cases failed
   const auto mean_error = [&](const std::string& mesh) {
     const std::string id = "IF_p/" + mesh + "/Q4/AL/ns/@getfem:nodal_al";
     EXPECT_TRUE(cases.contains(id)) << id;

@@ -352,6 +352,7 @@ TEST(CrossCodeCost, FromTheCostRunWhenOneIsGiven) {
   EXPECT_EQ(md.find("| all models | 3 (2) | 23.3 |"), std::string::npos);
   EXPECT_NE(md.find("measured in one run (`ci/cost-run.sh`, started 2026-11-27T09:30:00Z"),
             std::string::npos);
+  EXPECT_NE(md.find("the same models (target: discretized)"), std::string::npos) << md;
   EXPECT_EQ(md.find("as each battery part recorded them"), std::string::npos);
 }
 
