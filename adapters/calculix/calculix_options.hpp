@@ -52,8 +52,9 @@ struct CalculixOptions {
   /// LINEAR with NODE TO SURFACE: the tension sigma_inf at large clearance (pressure), > 0.
   /// CalculiX's manual advises about 0.25 % of the largest stress expected.
   double tension_sigma_inf = 0.0;
-  /// Axisymmetry: nodes on the axis (r = 0) are written at r = axis_offset x the shortest
-  /// element side that touches the axis (0: left on the axis). CalculiX expands axisymmetric
+  /// Axisymmetry: nodes on the axis (r = 0, or within round-off of it, as a pole placed by
+  /// trigonometry) are written at r = axis_offset x the shortest element side that touches the
+  /// axis (0: left on the axis). CalculiX expands axisymmetric
   /// elements by rotation; a face with a node on the axis collapses and its contact normal is
   /// undefined (ccx manual, *CONTACT PAIR): measured on the patch test, node-to-surface does not
   /// converge and surface-to-surface gives a tensile sigma_z at the axis, while with the offset

@@ -56,16 +56,29 @@ const std::vector<solver::ElementSide>& checked_edge_set(const Model& model,
   }
 }
 
+/// Which nodes lie on the axis: |r| within round-off (1e-12) of the mesh's extent. A node
+/// placed by trigonometry, e.g. r = R cos(pi / 2) = 6e-17 R at the pole of a sphere, is on the
+/// axis as much as one at r = 0, and its faces collapse alike in CalculiX's expansion.
+std::vector<char> nodes_on_axis(const solver::Mesh& mesh) {
+  double extent = 0.0;
+  for (const auto& x : mesh.nodes)
+    extent = std::max(extent, x.cwiseAbs().maxCoeff());
+  std::vector<char> on_axis(mesh.nodes.size(), 0);
+  for (std::size_t n = 0; n < mesh.nodes.size(); ++n)
+    on_axis[n] = std::abs(mesh.nodes[n].x()) <= 1e-12 * extent;
+  return on_axis;
+}
+
 /// The r written for nodes on the axis: axis_offset x the shortest side touching the axis.
-double axis_radius(const Model& model, const CalculixOptions& options) {
+double axis_radius(const Model& model, const CalculixOptions& options,
+                   const std::vector<char>& on_axis) {
   const auto& mesh = model.mesh;
   double shortest = std::numeric_limits<double>::infinity();
   for (const auto& element : mesh.elements) {
     for (int s = 0; s < 4; ++s) {
-      const auto& a = mesh.nodes[element[s]];
-      const auto& b = mesh.nodes[element[(s + 1) % 4]];
-      if (a.x() == 0.0 || b.x() == 0.0)
-        shortest = std::min(shortest, (a - b).norm());
+      const int a = element[s], b = element[(s + 1) % 4];
+      if (on_axis[a] || on_axis[b])
+        shortest = std::min(shortest, (mesh.nodes[a] - mesh.nodes[b]).norm());
     }
   }
   return std::isfinite(shortest) ? options.axis_offset * shortest : 0.0;
@@ -73,13 +86,14 @@ double axis_radius(const Model& model, const CalculixOptions& options) {
 
 void write_nodes(std::ostream& out, const Model& model, const CalculixOptions& options) {
   const bool axisymmetric = model.analysis == solver::AnalysisType::Axisymmetric;
-  const double r_axis = axisymmetric ? axis_radius(model, options) : 0.0;
+  const std::vector<char> on_axis = nodes_on_axis(model.mesh);
+  const double r_axis = axisymmetric ? axis_radius(model, options, on_axis) : 0.0;
   if (r_axis > 0.0)
     out << "** nodes on the axis are written at r = " << num(r_axis) << " (see axis_offset)\n";
   out << "*NODE, NSET=NALL\n";
   for (int n = 0; n < model.mesh.n_nodes(); ++n) {
     const auto& x = model.mesh.nodes[n];
-    const double r = axisymmetric && x.x() == 0.0 ? r_axis : x.x();
+    const double r = axisymmetric && on_axis[n] ? r_axis : x.x();
     out << ccx_node_id(n) << ", " << num(r) << ", " << num(x.y()) << "\n";
   }
 }

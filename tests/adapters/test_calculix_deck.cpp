@@ -240,6 +240,27 @@ TEST(CalculixDeck, AxisNodesMoveOffTheAxisByTheOffset) {
   EXPECT_EQ(std::stod(on_axis[0][1]), 0.0);
 }
 
+TEST(CalculixDeck, AxisNodesWithinRoundOffOfTheAxisMoveToo) {
+  // A pole placed by trigonometry: r = R cos(pi / 2) = 6e-17 R, on the axis to round-off. Left
+  // there, its faces collapse in CalculiX's expansion as at r = 0 (H_a and IF_a did not converge).
+  test::PatchSpec s;
+  s.analysis = AnalysisType::Axisymmetric;
+  s.nx = 4;
+  solver::Model model = test::patch_model(s);
+  std::vector<int> axis;
+  for (int n = 0; n < model.mesh.n_nodes(); ++n) {
+    if (model.mesh.nodes[n].x() == 0.0) {
+      model.mesh.nodes[n].x() = std::cos(std::numbers::pi / 2) * (1.0 + n);
+      axis.push_back(n);
+    }
+  }
+  ASSERT_FALSE(axis.empty());
+  const auto options = test::penalty_options(s, CcxContactType::NodeToSurface, 10);
+  const auto nodes = block(input_deck(model, test::patch_pair(), options), "*NODE");
+  for (int n : axis)
+    EXPECT_TRUE(Near(std::stod(nodes[n][1]), 1e-6 * 0.25, {1e-12, 0})) << "node " << n;
+}
+
 TEST(CalculixDeck, ModelTextStaysInComments) {
   test::PatchSpec s;
   solver::Model model = test::patch_model(s);

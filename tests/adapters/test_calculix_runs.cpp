@@ -247,6 +247,28 @@ TEST(CalculixRuns, AxisOnTheAxisDoesNotConverge) {
   EXPECT_GT(r.iterations, 0);
 }
 
+TEST(CalculixRuns, AxisWithinRoundOffOfTheAxisConverges) {
+  // Poles placed by trigonometry (r = 6e-17 R) are on the axis too: written at the offset, the
+  // patch converges; left at their r, node-to-surface gave up as on the axis (H_a, IF_a).
+  test::PatchSpec s;
+  s.analysis = AnalysisType::Axisymmetric;
+  solver::Model model = test::patch_model(s);
+  for (auto& x : model.mesh.nodes) {
+    if (x.x() == 0.0)
+      x.x() = std::cos(std::numbers::pi / 2) * (1.0 + std::abs(x.y()));
+  }
+  cs::testing::TempDir dir;
+  const CalculixResult r =
+      run_calculix(model, test::patch_pair(),
+                   test::penalty_options(s, CcxContactType::NodeToSurface, 1000.0), dir.path());
+  print_run("Q4 axi ns, nodes within round-off of the axis", r);
+  ASSERT_TRUE(r.converged()) << r.reason;
+  double support = 0.0;
+  for (int n : solver::node_set(model.mesh, "indenter.bottom"))
+    support += r.reaction[n].y();
+  EXPECT_TRUE(Near(support, applied_load(s), {1e-4, 0}));
+}
+
 TEST(CalculixRuns, Ccx220RejectsMortarOn2dElements) {
   // Why mortar is "not supported": the deck with TYPE=MORTAR, run by hand. If a future ccx
   // accepts it, this test fails and the mapping should be revisited.
