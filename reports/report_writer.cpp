@@ -49,6 +49,12 @@ std::string appendix_key(const std::string& file) {
   return key;
 }
 
+/// An appendix's file, from its key: "cross_code" -> "appendix-cross-code.md".
+std::string appendix_file(std::string key) {
+  std::replace(key.begin(), key.end(), '_', '-');
+  return "appendix-" + key + ".md";
+}
+
 /// Part `part` ("title" or "omitted") of the appendix `key` in templates/appendices.mustache.
 std::string appendix_text(const std::string& key, const std::string& part) {
   std::string text =
@@ -127,11 +133,8 @@ std::vector<ReportPage> appendix_pages(const ResultsIndex& index,
       {"run", run_page(index.results())},
   };
   std::vector<ReportPage> pages;
-  for (const auto& [key, markdown] : sections) {
-    std::string file = "appendix-" + key + ".md";
-    std::replace(file.begin(), file.end(), '_', '-');
-    pages.push_back({file, appendix_text(key, "title"), markdown});
-  }
+  for (const auto& [key, markdown] : sections)
+    pages.push_back({appendix_file(key), appendix_text(key, "title"), markdown});
   return pages;
 }
 
@@ -143,7 +146,9 @@ std::string report_markdown(const ResultsIndex& index, const schema::StudyRefere
   TemplateData d;
   d.set("title", report_title(index));
   d.set("run", run_line(index.results()));
-  d.set("verdict", verdict_page(index, situation_verdicts(index, rows, singular)));
+  const OtherCodesNote others{code_advice_lines(index), appendix_file("cross_code"),
+                              appendix_text("cross_code", "title")};
+  d.set("verdict", verdict_page(index, situation_verdicts(index, rows, singular), others));
   d.set("ledger", claims_ledger(study_claims(index, rows, singular)));
   const auto links = [](const ReportPage& p) {
     TemplateData l;

@@ -27,17 +27,4 @@ std::string solver_names(const ResultsIndex& index, const char* last) {
   return join_words(names, last);
 }
 
-std::string recovery_names(const ResultsIndex& index) {
-  std::set<schema::Recovery> used;
-  for (const auto& c : index.results().cases)
-    used.insert(c.spec.recovery);
-  std::string out;
-  for (const auto r : used) {
-    out += out.empty() ? "" : " and ";
-    out += r == schema::Recovery::spr ? "patch-recovered nodal stresses (SPR)"
-                                      : "extrapolated nodal stresses (as ANSYS prints them)";
-  }
-  return out;
-}
-
 }  // namespace cs::reports

@@ -19,7 +19,4 @@ std::string format_measure(double measure);
 /// CalculiX" (`last` joins the last two).
 std::string solver_names(const ResultsIndex& index, const char* last = " and ");
 
-/// The stress recoveries of the baseline rows: "patch-recovered nodal stresses (SPR)".
-std::string recovery_names(const ResultsIndex& index);
-
 }  // namespace cs::reports

@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include "reports/facts/solvers.hpp"
 #include "reports/pages/page_format.hpp"
 #include "reports/render/template_text.hpp"
 
@@ -155,8 +156,8 @@ std::string verdict_cell(const OptionCell& c) {
   return out;
 }
 
-std::string verdict_page(const ResultsIndex& index,
-                         const std::vector<SituationVerdict>& situations) {
+std::string verdict_page(const ResultsIndex& index, const std::vector<SituationVerdict>& situations,
+                         const OtherCodesNote& others) {
   TemplateData d;
   TemplateData matrices{TemplateData::type::list};
   for (const Element e : schema::values<Element>()) {
@@ -177,8 +178,13 @@ std::string verdict_page(const ResultsIndex& index,
       all_failures.push_back(item);
   }
   d.set("failures", all_failures);
+  d.set("solver", solver_display_name(builtin_solver_label()));  // the baseline rows' solver
   d.set("solvers", solver_names(index));
-  d.set("recovery", recovery_names(index));
+  d.set("has_others", !others.advice.empty());
+  d.set("others",
+        template_list(others.advice, [](const std::string& a) { return TemplateData(a); }));
+  d.set("others_file", others.appendix_file);
+  d.set("others_title", others.appendix_title);
   return render_template(templates::verdict_page, d);
 }
 

@@ -25,6 +25,13 @@ bool ours(const std::string& code) {
   return code == builtin_solver_label();
 }
 
+/// The codes of the results other than ours, in solvers_in's order.
+std::vector<std::string> other_codes(const ResultsIndex& index) {
+  std::vector<std::string> codes = solvers_in(index);
+  std::erase_if(codes, ours);
+  return codes;
+}
+
 /// Cases and rows that take part: no parameter overrides; ours on patch recovery only.
 bool compared(const schema::CaseSpec& s) {
   return s.overrides.empty() && (s.recovery == schema::Recovery::spr ||
@@ -160,8 +167,8 @@ std::string option_text(const OptionTally& t, const std::vector<OptionTally>& ta
                               : t.option;
 }
 
-TemplateData advice_data(const std::vector<OptionTally>& tallies, const std::string& code,
-                         const std::vector<SolverOptionMapping>& mappings) {
+/// "**getfem**: with the discretized target, use nodal_al (e on 8 of 8 rows); ...".
+std::string advice_line(const std::vector<OptionTally>& tallies, const std::string& code) {
   TemplateData d("code", solver_display_name(code));
   std::set<schema::TargetKind> targets;
   for (const auto& t : tallies) {
@@ -185,6 +192,14 @@ TemplateData advice_data(const std::vector<OptionTally>& tallies, const std::str
     choices.push_back(c);
   }
   d.set("choices", choices);
+  std::string line = render_template(templates::code_advice, d);
+  std::erase(line, '\n');
+  return line;
+}
+
+TemplateData advice_data(const std::vector<OptionTally>& tallies, const std::string& code,
+                         const std::vector<SolverOptionMapping>& mappings) {
+  TemplateData d("line", advice_line(tallies, code));
   MarkdownTable tally({"Option", "rows with F", "e", "g", "s", "u", "not evidence"});
   for (const auto& x : tallies) {
     if (x.code == code)
@@ -390,17 +405,25 @@ std::vector<Figure> render_cross_code_figure(const ResultsIndex& index,
   return {figure};
 }
 
+std::vector<std::string> code_advice_lines(const ResultsIndex& index) {
+  if (!is_cross_code(index))
+    return {};
+  const auto tallies = option_tallies(index);
+  std::vector<std::string> out;
+  for (const std::string& code : other_codes(index))
+    out.push_back(advice_line(tallies, code));
+  return out;
+}
+
 std::string cross_code_section(const ResultsIndex& index, const schema::StudyReference& study,
                                const std::vector<Figure>& figures,
                                const std::vector<SolverOptionMapping>& mappings,
                                const ResultsIndex* cost_run) {
   if (!is_cross_code(index))
     return {};
-  const auto codes = solvers_in(index);
   const auto tallies = option_tallies(index);
   TemplateData d("names", solver_names(index));
-  const std::vector<std::string> others(codes.begin() + (ours(codes.front()) ? 1 : 0), codes.end());
-  d.set("advice", template_list(others, [&](const std::string& code) {
+  d.set("advice", template_list(other_codes(index), [&](const std::string& code) {
           return advice_data(tallies, code, mappings);
         }));
   TemplateData tables{TemplateData::type::list};

@@ -82,6 +82,11 @@ std::vector<Figure> render_cross_code_figure(const ResultsIndex& index,
                                              const std::filesystem::path& out_root,
                                              const FigureOptions& options = {});
 
+/// One line per code other than ours: its advised options per target, e.g. "**calculix**: use
+/// linear-ss (e on 18 of 32 rows)." (templates/code_advice.mustache); the section's advice and
+/// the verdict page's note on other codes. Empty, as the section is, for results of one code.
+std::vector<std::string> code_advice_lines(const ResultsIndex& index);
+
 /// The whole section (empty when the results hold one code only); its cost tables from
 /// `cost_run` (every code on the same models in one run, ci/cost-run.sh) when given, else from
 /// the results' own cases.

@@ -379,6 +379,48 @@ TEST(CrossCodeSection, InTheReportOnlyWithSeveralCodes) {
   EXPECT_NE(report.find("\nAlso: [T](x/report.md).\n"), std::string::npos);
 }
 
+// Requirement: the first screen's matrix is ours; another code gets its advice there in one line
+// (the same as the cross-code appendix's), linked to that appendix, and the caveat names the
+// matrix's solver and recovery only (no code's own stresses called "extrapolated").
+TEST(CrossCodeSection, TheVerdictPageGivesEachOtherCodesAdvice) {
+  std::vector<CaseResult> cases = hertz_pair();
+  for (const auto m : kMeshes) {  // CalculiX's own stresses too, as the battery grades them
+    const double own[] = {9.0, 5.0, 3.0};
+    cases.push_back(hertz_case(kCalculix, m, own[static_cast<int>(m)], 1.0, 10.0,
+                               CaseStatus::converged, "linear-ss", schema::Recovery::own));
+  }
+  const auto doc = document(cases);
+  const ResultsIndex index(doc);
+  const std::vector<std::string> lines = code_advice_lines(index);
+  ASSERT_EQ(lines.size(), 1U);
+  EXPECT_EQ(lines[0], "**calculix**: no option has an e row that is evidence.");
+  ReportContent content;
+  content.cross_code_md = cross_code_section(index, study(), {}, {});
+  EXPECT_NE(content.cross_code_md.find("\n" + lines[0] + "\n"), std::string::npos);
+  const auto appendices = appendix_pages(index, study(), content);
+  const std::string report = report_markdown(index, study(), content, {}, appendices);
+  const std::string verdict = report.substr(0, report.find("## The study's claims"));
+  EXPECT_NE(verdict.find("**Other codes.** The matrix is ours. The other codes in these results "
+                         "are graded on the common basis"),
+            std::string::npos)
+      << verdict;
+  EXPECT_NE(verdict.find("in [Other codes beside ours](appendix-cross-code.md)"), std::string::npos)
+      << verdict;
+  EXPECT_NE(verdict.find("\n- " + lines[0] + "\n"), std::string::npos) << verdict;
+  EXPECT_NE(verdict.find("**Caveats.** Solver: ours. Graded with patch-recovered nodal stresses "
+                         "(SPR);"),
+            std::string::npos)
+      << verdict;
+  EXPECT_EQ(verdict.find("extrapolated nodal stresses (as ANSYS prints them)"), std::string::npos);
+
+  // One code: no such note.
+  const auto ours_doc = document({hertz_case(SolverKind::builtin, MeshLevel::F, 0.5)});
+  const ResultsIndex ours_only(ours_doc);
+  EXPECT_TRUE(code_advice_lines(ours_only).empty());
+  const std::string alone = report_markdown(ours_only, study(), {}, {}, {});
+  EXPECT_EQ(alone.find("**Other codes.**"), std::string::npos);
+}
+
 // Requirement (ccx-backed, small): the same H_p coarse-mesh case solved by ours and by CalculiX
 // through the engine gives a section whose values are each solver's own, both within 10 % of
 // the exact 4/pi (the coarse mesh's errors, docs/calculix.md: +5.6 % for ns Q4 at h = a/8), and

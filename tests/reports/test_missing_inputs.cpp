@@ -110,6 +110,7 @@ TEST(MissingInputs, ImportedSolverWithoutFineMeshShowsNoFineError) {
                     "fine-mesh (F) value"),
             std::string::npos);
   EXPECT_NE(md.find("Solver: getfem."), std::string::npos);
+  EXPECT_EQ(md.find("**Other codes.**"), std::string::npos);  // one code: no cross-code appendix
   EXPECT_EQ(md.find("F error"), std::string::npos);
   EXPECT_EQ(md.find("on the fine mesh F over"), std::string::npos);
   EXPECT_NE(page.find("(C, M only), so none is graded here"), std::string::npos) << page;

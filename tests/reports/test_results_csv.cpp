@@ -154,8 +154,9 @@ TEST(ResultsCsv, NoGradeOrVerdictFromACaseThatDidNotConverge) {
       EXPECT_EQ(f[column("converging")], "") << l;
       EXPECT_EQ(f[column("trend")], "") << l;
     }
-    if (l.rfind("H_p/F/Q4/AL/ns,", 0) == 0)  // its twin converged: graded as before
+    if (l.rfind("H_p/F/Q4/AL/ns,", 0) == 0) {  // its twin converged: graded as before
       EXPECT_NE(f[column("converging")], "") << l;
+    }
   }
   EXPECT_EQ(fine, 1);
   EXPECT_EQ(coarser, 1);
