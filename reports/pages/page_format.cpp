@@ -1,7 +1,6 @@
 #include "reports/pages/page_format.hpp"
 
 #include <cmath>
-#include <set>
 
 #include <fmt/format.h>
 
