@@ -148,7 +148,13 @@ std::string report_markdown(const ResultsIndex& index, const schema::StudyRefere
   d.set("run", run_line(index.results()));
   const OtherCodesNote others{code_advice_lines(index), appendix_file("cross_code"),
                               appendix_text("cross_code", "title")};
-  d.set("verdict", verdict_page(index, situation_verdicts(index, rows, singular), others));
+  // The verdict sets the other codes' options beside ours; the claims are the study's options.
+  std::vector<RowFacts> verdict_rows = other_code_row_facts(index);
+  verdict_rows.insert(verdict_rows.begin(), rows.begin(), rows.end());
+  std::vector<DivergenceFacts> verdict_singular = other_code_divergence_facts(index);
+  verdict_singular.insert(verdict_singular.begin(), singular.begin(), singular.end());
+  d.set("verdict",
+        verdict_page(index, situation_verdicts(index, verdict_rows, verdict_singular), others));
   d.set("ledger", claims_ledger(study_claims(index, rows, singular)));
   const auto links = [](const ReportPage& p) {
     TemplateData l;

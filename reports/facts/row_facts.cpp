@@ -5,6 +5,7 @@
 #include "grading/accuracy.hpp"
 #include "grading/credibility.hpp"
 #include "grading/divergence.hpp"
+#include "reports/facts/solvers.hpp"
 
 namespace cs::reports {
 namespace {
@@ -44,6 +45,57 @@ void add_trend(RowFacts& f) {
   f.luck = grading::luck_of_one_mesh(*e[0], *e[1], *e[2]);
 }
 
+/// "calculix linear-ss" for another code's row, empty for ours.
+std::string code_label(const schema::CaseSpec& spec) {
+  const std::string code = code_of(spec);
+  return code == builtin_solver_label() ? std::string()
+                                        : solver_display_name(code) + " " + option_label_of(spec);
+}
+
+/// The rows of codes other than ours set beside the baseline (other_code_row_facts).
+std::vector<const schema::RowVerdict*> other_code_rows(const ResultsIndex& index) {
+  std::vector<const schema::RowVerdict*> out;
+  for (const auto& r : index.results().rows) {
+    const schema::CaseSpec& s = r.spec;
+    if (code_of(s) != builtin_solver_label() && s.target == schema::TargetKind::Discretized &&
+        s.recovery == schema::Recovery::spr && s.overrides.empty())
+      out.push_back(&r);
+  }
+  return out;
+}
+
+DivergenceFacts divergence_of_row(const ResultsIndex& index, const schema::RowVerdict& r) {
+  DivergenceFacts d;
+  d.row = &r;
+  d.problem = r.spec.problem;
+  d.element = r.spec.element;
+  d.option = {r.spec.algorithm, r.spec.contact};
+  d.code = code_label(r.spec);
+  const auto& v = r.values;
+  d.eq47 = grading::eq47_diverging(*v[0], *v[1], *v[2]);
+  const schema::DivergenceVerdict strict = grading::divergence_verdict(*v[0], *v[1], *v[2]);
+  d.strict = strict.diverges;
+  d.exponent = strict.exponent;
+  const schema::CaseResult* fine = index.case_of(r, MeshLevel::F);
+  d.fine_converged = fine && fine->status == schema::CaseStatus::converged;
+  return d;
+}
+
+/// The facts of `rows`' nonsingular rows with an F value.
+std::vector<RowFacts> nonsingular_facts(const ResultsIndex& index,
+                                        const std::vector<const schema::RowVerdict*>& rows);
+
+/// The divergence facts of `rows`' complete singular rows.
+std::vector<DivergenceFacts> singular_facts(const ResultsIndex& index,
+                                            const std::vector<const schema::RowVerdict*>& rows) {
+  std::vector<DivergenceFacts> out;
+  for (const schema::RowVerdict* r : rows) {
+    if (index.singular(r->spec.problem) && ResultsIndex::complete(*r))
+      out.push_back(divergence_of_row(index, *r));
+  }
+  return out;
+}
+
 }  // namespace
 
 OptionFamily family_of(schema::Algorithm algorithm) {
@@ -69,6 +121,7 @@ RowFacts facts_of_row(const ResultsIndex& index, const schema::RowVerdict& r) {
   f.quantity = r.quantity;
   f.element = r.spec.element;
   f.option = {r.spec.algorithm, r.spec.contact};
+  f.code = code_label(r.spec);
   f.errors = r.errors;
   if (r.errors[2])
     f.grade = grading::grade_of_error(*r.errors[2]);
@@ -80,35 +133,34 @@ RowFacts facts_of_row(const ResultsIndex& index, const schema::RowVerdict& r) {
   return f;
 }
 
-std::vector<RowFacts> row_facts(const ResultsIndex& index) {
+namespace {
+
+std::vector<RowFacts> nonsingular_facts(const ResultsIndex& index,
+                                        const std::vector<const schema::RowVerdict*>& rows) {
   std::vector<RowFacts> out;
-  for (const schema::RowVerdict* r : index.baseline_rows()) {
+  for (const schema::RowVerdict* r : rows) {
     if (!index.singular(r->spec.problem) && r->errors[2])
       out.push_back(facts_of_row(index, *r));
   }
   return out;
 }
 
+}  // namespace
+
+std::vector<RowFacts> row_facts(const ResultsIndex& index) {
+  return nonsingular_facts(index, index.baseline_rows());
+}
+
 std::vector<DivergenceFacts> divergence_facts(const ResultsIndex& index) {
-  std::vector<DivergenceFacts> out;
-  for (const schema::RowVerdict* r : index.baseline_rows()) {
-    if (!index.singular(r->spec.problem) || !ResultsIndex::complete(*r))
-      continue;
-    DivergenceFacts d;
-    d.row = r;
-    d.problem = r->spec.problem;
-    d.element = r->spec.element;
-    d.option = {r->spec.algorithm, r->spec.contact};
-    const auto& v = r->values;
-    d.eq47 = grading::eq47_diverging(*v[0], *v[1], *v[2]);
-    const schema::DivergenceVerdict strict = grading::divergence_verdict(*v[0], *v[1], *v[2]);
-    d.strict = strict.diverges;
-    d.exponent = strict.exponent;
-    const schema::CaseResult* fine = index.case_of(*r, MeshLevel::F);
-    d.fine_converged = fine && fine->status == schema::CaseStatus::converged;
-    out.push_back(d);
-  }
-  return out;
+  return singular_facts(index, index.baseline_rows());
+}
+
+std::vector<RowFacts> other_code_row_facts(const ResultsIndex& index) {
+  return nonsingular_facts(index, other_code_rows(index));
+}
+
+std::vector<DivergenceFacts> other_code_divergence_facts(const ResultsIndex& index) {
+  return singular_facts(index, other_code_rows(index));
 }
 
 std::vector<const RowFacts*> facts_of(const std::vector<RowFacts>& all, schema::ProblemId problem) {

@@ -34,6 +34,8 @@ struct RowFacts {
   schema::Quantity quantity = schema::Quantity::sigma_c;
   schema::Element element = schema::Element::Q4;
   Option option;
+  /// Another code's option, as the report names it ("calculix linear-ss"); empty for ours.
+  std::string code;
   std::array<std::optional<double>, 3> errors;          ///< signed percent, C, M, F
   std::optional<schema::Grade> grade;                   ///< Eq. 46 on F
   bool study_c = false;                                 ///< the study's convergence flag
@@ -57,6 +59,7 @@ struct DivergenceFacts {
   schema::ProblemId problem = schema::ProblemId::F_p;
   schema::Element element = schema::Element::Q4;
   Option option;
+  std::string code;     ///< as RowFacts::code
   bool eq47 = false;    ///< the study's Eq. 47
   bool strict = false;  ///< monotone growth with a square-root-like exponent
   std::optional<double> exponent;
@@ -71,6 +74,12 @@ std::vector<RowFacts> row_facts(const ResultsIndex& index);
 
 /// Every complete singular baseline row.
 std::vector<DivergenceFacts> divergence_facts(const ResultsIndex& index);
+
+/// The same facts of the other codes' rows that are set beside our baseline: on the discretized
+/// target, on the common basis (our patch recovery of their displacements), without parameter
+/// overrides. Empty for results of one code.
+std::vector<RowFacts> other_code_row_facts(const ResultsIndex& index);
+std::vector<DivergenceFacts> other_code_divergence_facts(const ResultsIndex& index);
 
 /// The row facts of one problem (a view into `all`).
 std::vector<const RowFacts*> facts_of(const std::vector<RowFacts>& all, schema::ProblemId problem);

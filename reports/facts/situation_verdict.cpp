@@ -5,6 +5,7 @@
 #include <cctype>
 #include <cmath>
 #include <map>
+#include <tuple>
 
 #include "grading/accuracy.hpp"
 #include "grading/convergence.hpp"
@@ -46,7 +47,7 @@ bool graded_in_verdict(const ResultsIndex& index, ProblemId problem, schema::Qua
          q != schema::Quantity::contact_half_width;
 }
 
-using CellKey = std::tuple<OptionFamily, schema::ContactKind, schema::Element>;
+using CellKey = std::tuple<std::string, OptionFamily, schema::ContactKind, schema::Element>;
 
 void add_row(OptionCell& cell, const RowFacts& f) {
   cell.rows.push_back(&f);
@@ -69,8 +70,10 @@ std::vector<OptionCell> make_cells(const ResultsIndex& index,
                                    const std::vector<RowFacts>& rows,
                                    const std::vector<DivergenceFacts>& singular) {
   std::map<CellKey, OptionCell> cells;
-  const auto cell_of = [&](const Option& o, schema::Element el) -> OptionCell& {
-    OptionCell& c = cells[{family_of(o.algorithm), o.contact, el}];
+  const auto cell_of = [&](const std::string& code, const Option& o,
+                           schema::Element el) -> OptionCell& {
+    OptionCell& c = cells[{code, family_of(o.algorithm), o.contact, el}];
+    c.code = code;
     c.family = family_of(o.algorithm);
     c.contact = o.contact;
     c.element = el;
@@ -79,12 +82,12 @@ std::vector<OptionCell> make_cells(const ResultsIndex& index,
   for (const ProblemId p : problems) {
     for (const auto& f : rows) {
       if (f.problem == p && graded_in_verdict(index, p, f.quantity))
-        add_row(cell_of(f.option, f.element), f);
+        add_row(cell_of(f.code, f.option, f.element), f);
     }
     for (const auto& d : singular) {
       if (d.problem != p)
         continue;
-      OptionCell& c = cell_of(d.option, d.element);
+      OptionCell& c = cell_of(d.code, d.option, d.element);
       c.singular_rows.push_back(&d);
       c.n_eq47 += d.eq47 ? 1 : 0;
       c.n_strict += d.strict ? 1 : 0;
@@ -189,14 +192,22 @@ std::string family_label(OptionFamily family) {
   return {};
 }
 
+std::string option_label(const OptionCell& cell) {
+  return cell.code.empty() ? family_label(cell.family) + " " + std::string(to_string(cell.contact))
+                           : cell.code;
+}
+
 std::string cells_label(const std::vector<const OptionCell*>& cells) {
-  std::map<OptionFamily, std::map<schema::Element, std::string>> by;
+  // Ours by family (its discretizations listed), then each other code's option (its label names
+  // the discretization).
+  std::map<std::pair<std::string, OptionFamily>, std::map<schema::Element, std::string>> by;
   for (const OptionCell* c : cells) {
-    std::string& contacts = by[c->family][c->element];
-    contacts += (contacts.empty() ? "" : "/") + std::string(schema::to_string(c->contact));
+    std::string& contacts = by[{c->code, c->family}][c->element];
+    if (c->code.empty())
+      contacts += (contacts.empty() ? "" : "/") + std::string(schema::to_string(c->contact));
   }
   std::string out;
-  for (const auto& [family, elements] : by) {
+  for (const auto& [key, elements] : by) {
     // Elements with the same discretizations share one entry: "ss/ns Q4/Q8".
     std::map<std::string, std::string> by_contacts;
     for (const auto& [element, contacts] : elements) {
@@ -205,8 +216,9 @@ std::string cells_label(const std::vector<const OptionCell*>& cells) {
     }
     std::string part;
     for (const auto& [contacts, els] : by_contacts)
-      part += (part.empty() ? " " : ", ") + contacts + " " + els;
-    out += (out.empty() ? "" : "; ") + family_label(family) + part;
+      part += (part.empty() ? " " : ", ") + (contacts.empty() ? "" : contacts + " ") + els;
+    const auto& [code, family] = key;
+    out += (out.empty() ? "" : "; ") + (code.empty() ? family_label(family) : code) + part;
   }
   return out;
 }

@@ -1,6 +1,7 @@
 #pragma once
 // The verdict per analyst situation (a contact patch, Hertz, a rounded punch, a flat punch, ...):
-// for each option family x contact discretization x element, the worst signed F error over the
+// for each option family x contact discretization x element (and each other code's option x
+// element, when its rows are given), the worst signed F error over the
 // situation's graded quantities and its grade, with what disqualifies it (interface checks that
 // fail, a grade that is the luck of one mesh, a fine case that did not converge). The best cells
 // are not ranked against each other when they share a grade: their spread is stated beside the
@@ -15,8 +16,10 @@
 
 namespace cs::reports {
 
-/// One option family with one contact discretization and one element, over a situation.
+/// One option family with one contact discretization and one element, over a situation; or one
+/// option of another code (`code`, e.g. "calculix linear-ss") with one element.
 struct OptionCell {
+  std::string code;  ///< empty for ours
   OptionFamily family = OptionFamily::penalty;
   schema::ContactKind contact = schema::ContactKind::ss;
   schema::Element element = schema::Element::Q4;
@@ -60,7 +63,11 @@ std::vector<SituationVerdict> situation_verdicts(const ResultsIndex& index,
 /// "AL, PM", "LMP, PLM" or "MPC".
 std::string family_label(OptionFamily family);
 
-/// A compact list of cells: "AL, PM ss/ns/mortar Q4, ss Q8; LMP, PLM ss Q4".
+/// A cell's option as a matrix row names it: "AL, PM ss", "calculix linear-ss".
+std::string option_label(const OptionCell& cell);
+
+/// A compact list of cells: "AL, PM ss/ns/mortar Q4, ss Q8; LMP, PLM ss Q4; calculix linear-ss
+/// Q4/Q8".
 std::string cells_label(const std::vector<const OptionCell*>& cells);
 
 }  // namespace cs::reports

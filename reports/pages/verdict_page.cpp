@@ -5,6 +5,7 @@
 #include <functional>
 #include <map>
 #include <set>
+#include <tuple>
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -29,23 +30,28 @@ std::string singular_cell(const OptionCell& c) {
 
 /// One matrix per element: rows family x discretization, columns the situations.
 TemplateData matrix(const std::vector<SituationVerdict>& situations, Element element) {
-  std::set<std::pair<OptionFamily, schema::ContactKind>> options;
+  // Ours first (by family and discretization), then the other codes' options.
+  using Row = std::tuple<std::string, OptionFamily, schema::ContactKind>;
+  const auto row_of = [](const OptionCell& c) { return Row{c.code, c.family, c.contact}; };
+  std::set<Row> options;
+  std::map<Row, std::string> labels;
   for (const auto& s : situations) {
     for (const auto& c : s.cells) {
-      if (c.element == element)
-        options.insert({c.family, c.contact});
+      if (c.element == element) {
+        options.insert(row_of(c));
+        labels[row_of(c)] = option_label(c);
+      }
     }
   }
   std::vector<std::string> header{"Option"};
   for (const auto& s : situations)
     header.push_back(s.title);
   MarkdownTable table(header);
-  for (const auto& [family, contact] : options) {
-    std::vector<std::string> row{family_label(family) + " " +
-                                 std::string(schema::to_string(contact))};
+  for (const Row& option : options) {
+    std::vector<std::string> row{labels.at(option)};
     for (const auto& s : situations) {
       const auto c = std::find_if(s.cells.begin(), s.cells.end(), [&](const OptionCell& c) {
-        return c.element == element && c.family == family && c.contact == contact;
+        return c.element == element && row_of(c) == option;
       });
       row.push_back(c == s.cells.end() ? std::string(kMissing) : verdict_cell(*c));
     }
@@ -89,9 +95,9 @@ TemplateData failures(const SituationVerdict& s) {
     return std::find(s.common_failures.begin(), s.common_failures.end(), check) !=
            s.common_failures.end();
   };
-  std::map<OptionFamily, std::vector<const OptionCell*>> by_family;
+  std::map<std::pair<std::string, OptionFamily>, std::vector<const OptionCell*>> by_option;
   for (const OptionCell* c : s.avoid)
-    by_family[c->family].push_back(c);
+    by_option[{c->code, c->family}].push_back(c);
   TemplateData list{TemplateData::type::list};
   if (!s.common_failures.empty()) {
     std::vector<const OptionCell*> all;
@@ -103,7 +109,7 @@ TemplateData failures(const SituationVerdict& s) {
     d.set("evidence", failure_evidence(all, common));
     list.push_back(d);
   }
-  for (const auto& [family, cells] : by_family) {
+  for (const auto& [family, cells] : by_option) {
     TemplateData d;
     d.set("situation", s.title);
     d.set("options", cells_label(cells));
@@ -178,7 +184,12 @@ std::string verdict_page(const ResultsIndex& index, const std::vector<SituationV
       all_failures.push_back(item);
   }
   d.set("failures", all_failures);
-  d.set("solver", solver_display_name(builtin_solver_label()));  // the baseline rows' solver
+  // The matrix's rows: our baseline, and the other codes' beside it.
+  const bool other_rows = std::any_of(situations.begin(), situations.end(), [](const auto& s) {
+    return std::any_of(s.cells.begin(), s.cells.end(),
+                       [](const OptionCell& c) { return !c.code.empty(); });
+  });
+  d.set("solver", other_rows ? solver_names(index) : solver_display_name(builtin_solver_label()));
   d.set("solvers", solver_names(index));
   d.set("has_others", !others.advice.empty());
   d.set("others",

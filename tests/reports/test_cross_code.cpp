@@ -379,9 +379,11 @@ TEST(CrossCodeSection, InTheReportOnlyWithSeveralCodes) {
   EXPECT_NE(report.find("\nAlso: [T](x/report.md).\n"), std::string::npos);
 }
 
-// Requirement: the first screen's matrix is ours; another code gets its advice there in one line
-// (the same as the cross-code appendix's), linked to that appendix, and the caveat names the
-// matrix's solver and recovery only (no code's own stresses called "extrapolated").
+// Requirement: the first screen's matrices set each other code's options beside ours, on the
+// common basis only (its own stresses, 3 % on F here, are not shown), named by code; each code
+// gets its advice there in one line (the cross-code appendix's own), linked to that appendix; the
+// caveat names the matrix's solvers and its recovery (no code's own stresses called
+// "extrapolated").
 TEST(CrossCodeSection, TheVerdictPageGivesEachOtherCodesAdvice) {
   std::vector<CaseResult> cases = hertz_pair();
   for (const auto m : kMeshes) {  // CalculiX's own stresses too, as the battery grades them
@@ -400,17 +402,18 @@ TEST(CrossCodeSection, TheVerdictPageGivesEachOtherCodesAdvice) {
   const auto appendices = appendix_pages(index, study(), content);
   const std::string report = report_markdown(index, study(), content, {}, appendices);
   const std::string verdict = report.substr(0, report.find("## The study's claims"));
-  EXPECT_NE(verdict.find("**Other codes.** The matrix is ours. The other codes in these results "
-                         "are graded on the common basis"),
+  EXPECT_NE(verdict.find("| AL, PM ss | e +0.50 % |\n| calculix linear-ss | g +2.00 % |\n"),
             std::string::npos)
       << verdict;
-  EXPECT_NE(verdict.find("in [Other codes beside ours](appendix-cross-code.md)"), std::string::npos)
-      << verdict;
-  EXPECT_NE(verdict.find("\n- " + lines[0] + "\n"), std::string::npos) << verdict;
-  EXPECT_NE(verdict.find("**Caveats.** Solver: ours. Graded with patch-recovered nodal stresses "
-                         "(SPR);"),
-            std::string::npos)
-      << verdict;
+  EXPECT_NE(verdict.find("- **Smooth curved contact (Hertz):** use AL, PM ss Q4: e, +0.50 %."),
+            std::string::npos);
+  EXPECT_NE(verdict.find("**Other codes.** Their options are rows of the matrices, named by code"),
+            std::string::npos);
+  EXPECT_NE(verdict.find("([Other codes beside ours](appendix-cross-code.md))"), std::string::npos);
+  EXPECT_NE(verdict.find("\n- " + lines[0] + "\n"), std::string::npos);
+  EXPECT_NE(verdict.find("**Caveats.** Solver: ours and calculix. Graded with patch-recovered "
+                         "nodal stresses (SPR);"),
+            std::string::npos);
   EXPECT_EQ(verdict.find("extrapolated nodal stresses (as ANSYS prints them)"), std::string::npos);
 
   // One code: no such note.
@@ -419,6 +422,26 @@ TEST(CrossCodeSection, TheVerdictPageGivesEachOtherCodesAdvice) {
   EXPECT_TRUE(code_advice_lines(ours_only).empty());
   const std::string alone = report_markdown(ours_only, study(), {}, {}, {});
   EXPECT_EQ(alone.find("**Other codes.**"), std::string::npos);
+}
+
+// Requirement: results of another code alone (imported, or run without ours) get a verdict of
+// their own, graded as ours would be, and the caveat names that code; no cross-code note.
+TEST(CrossCodeSection, AnotherCodeAloneGetsItsOwnVerdict) {
+  std::vector<CaseResult> cases;
+  for (const auto m : kMeshes) {
+    const double errors[] = {3.0, 1.5, 0.6};
+    cases.push_back(hertz_case(kCalculix, m, errors[static_cast<int>(m)]));
+  }
+  const auto doc = document(cases);
+  const ResultsIndex index(doc);
+  EXPECT_TRUE(code_advice_lines(index).empty());
+  const std::string report = report_markdown(index, study(), {}, {}, {});
+  EXPECT_NE(report.find("| calculix linear-ss | e +0.60 % |"), std::string::npos) << report;
+  EXPECT_NE(report.find("- **Smooth curved contact (Hertz):** use calculix linear-ss Q4: e, "
+                        "+0.60 %."),
+            std::string::npos);
+  EXPECT_NE(report.find("**Caveats.** Solver: calculix. Graded with"), std::string::npos) << report;
+  EXPECT_EQ(report.find("**Other codes.**"), std::string::npos);
 }
 
 // Requirement (ccx-backed, small): the same H_p coarse-mesh case solved by ours and by CalculiX
