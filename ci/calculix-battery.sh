@@ -37,7 +37,9 @@
 # interruption the script picks up where it stopped. Delete OUT-parts to start afresh.
 # Two processes may share the work (e.g. a second one with CALCULIX_BATTERY_STAGES=calculix-F-S):
 # each part is claimed by a lock directory OUT-parts/<part>.lock, so no part runs twice; the
-# merge leaves out the parts another process still holds, and says how many.
+# merge leaves out the parts another process still holds, and says how many. Memory: one ccx on
+# a Steuermann F Q8 model takes 13-14 GB (LINEAR, ns and ss alike); two of them on a 24 GiB
+# machine were killed by the kernel's OOM killer, so run the calculix-F-S stage in one process.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 out=${1:-out/calculix}
