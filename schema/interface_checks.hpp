@@ -20,12 +20,15 @@
 
 namespace cs::schema {
 
-/// |force_balance| above this is a failure. Equilibrium holds to the solve's accuracy: about
-/// 1e-6 of the load on the Hertz problems (an indenter 1e6 times stiffer than the block) and
-/// up to 1e-5 on the graded Steuermann meshes (measured on the C meshes,
-/// tests/suites/test_interface_checks.cpp). A node whose force the sum misses costs at least
-/// 1e-3 of the load on these meshes, so 1e-4 separates the two.
-inline constexpr double kForceBalanceTolerance = 1e-4;
+/// |force_balance| above this is a failure. Equilibrium holds to the solve's accuracy: for our
+/// direct solves about 1e-6 of the load on the Hertz problems (an indenter 1e6 times stiffer
+/// than the block) and up to 1e-5 on the graded Steuermann meshes (measured on the C meshes,
+/// tests/suites/test_interface_checks.cpp); for a code that stops its Newton iterations at a
+/// residual tolerance, what that tolerance leaves: 2.3e-4 for CalculiX on the patch tests and
+/// Hertz ss (its default, 0.5 % of the average nodal force). A node whose force the sum misses
+/// costs at least 1e-3 of the load on these meshes, so 5e-4 separates a converged solve of
+/// either kind from a missing force.
+inline constexpr double kForceBalanceTolerance = 5e-4;
 /// Tensile pressure above this fraction of p is a failure.
 inline constexpr double kTensileTolerance = 1e-2;
 /// Pressure outside the exact patch above this fraction of p is a failure.

@@ -48,6 +48,17 @@ TEST(Credibility, EachSoundnessCheckMakesACaseNotCredible) {
   EXPECT_EQ(c.failures, (Names{"force balance", "tensile pressure", "pressure outside the patch"}));
 }
 
+TEST(Credibility, AnIterativeCodesResidualIsNotAMissingForce) {
+  // CalculiX on the patch tests stops Newton at its residual tolerance, leaving 2.3e-4 of the
+  // load; one node's force missing from the sum costs at least 1e-3 of it.
+  auto newton = sound();
+  newton.force_balance = 2.3e-4;
+  EXPECT_TRUE(credibility(newton).credible);
+  auto missing = sound();
+  missing.force_balance = -1e-3;
+  EXPECT_EQ(credibility(missing).failures, Names{"force balance"});
+}
+
 TEST(Credibility, PenetrationIsReportedButKeepsTheCaseCredible) {
   auto soft = sound();
   soft.max_penetration_over_h = 0.25;  // beyond FTOLN = 0.1
