@@ -83,7 +83,14 @@ DivergenceFacts divergence_of_row(const ResultsIndex& index, const schema::RowVe
 
 /// The facts of `rows`' nonsingular rows with an F value.
 std::vector<RowFacts> nonsingular_facts(const ResultsIndex& index,
-                                        const std::vector<const schema::RowVerdict*>& rows);
+                                        const std::vector<const schema::RowVerdict*>& rows) {
+  std::vector<RowFacts> out;
+  for (const schema::RowVerdict* r : rows) {
+    if (!index.singular(r->spec.problem) && r->errors[2])
+      out.push_back(facts_of_row(index, *r));
+  }
+  return out;
+}
 
 /// The divergence facts of `rows`' complete singular rows.
 std::vector<DivergenceFacts> singular_facts(const ResultsIndex& index,
@@ -132,20 +139,6 @@ RowFacts facts_of_row(const ResultsIndex& index, const schema::RowVerdict& r) {
     f.extrapolated_error = twin->errors[2];
   return f;
 }
-
-namespace {
-
-std::vector<RowFacts> nonsingular_facts(const ResultsIndex& index,
-                                        const std::vector<const schema::RowVerdict*>& rows) {
-  std::vector<RowFacts> out;
-  for (const schema::RowVerdict* r : rows) {
-    if (!index.singular(r->spec.problem) && r->errors[2])
-      out.push_back(facts_of_row(index, *r));
-  }
-  return out;
-}
-
-}  // namespace
 
 std::vector<RowFacts> row_facts(const ResultsIndex& index) {
   return nonsingular_facts(index, index.baseline_rows());
