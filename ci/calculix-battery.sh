@@ -39,7 +39,9 @@
 # each part is claimed by a lock directory OUT-parts/<part>.lock, so no part runs twice; the
 # merge leaves out the parts another process still holds, and says how many. Memory: one ccx on
 # a Steuermann F Q8 model takes 13-14 GB (LINEAR, ns and ss alike); two of them on a 24 GiB
-# machine were killed by the kernel's OOM killer, so run the calculix-F-S stage in one process.
+# machine were killed by the kernel's OOM killer, so the CalculiX Steuermann F parts take turns
+# across processes (lock OUT-parts/steuermann-F.lock): a process that finds the turn taken
+# leaves that part for later, says so, and goes on.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 out=${1:-out/calculix}
@@ -91,11 +93,23 @@ run_part() {
   [ "$solver" = builtin ] && options=("${builtin_options[@]}")
   local limit=600
   [[ $problem == S_* && $mesh != C ]] && limit=$s_limit
+  # A CalculiX Steuermann F part takes 13-14 GB: one at a time on the machine. A process that
+  # finds another holding that turn leaves the part to it (or to a later run) and goes on.
+  local heavy=0
+  if [[ $solver == calculix && $problem == S_* && $mesh == F ]]; then
+    if ! claim "$parts/steuermann-F"; then
+      echo "calculix-battery: $dir left for later: another process runs a Steuermann F part" >&2
+      rm -rf "$dir.lock"
+      return 0
+    fi
+    heavy=1
+  fi
   "$exe" run --solver "$solver" --problems "$problem" --meshes "$mesh" --elements "$element" \
     "${common[@]}" "${options[@]}" --time-limit "$limit" --jobs "$jobs" --out "$dir" || status=$?
   # Exit 1: some case did not converge or timed out; that is a result, recorded in the file.
   [ "$status" -le 1 ] || { echo "calculix-battery: $dir failed (exit $status)" >&2; exit "$status"; }
   rm -rf "$dir.lock"
+  [ "$heavy" = 0 ] || rm -rf "$parts/steuermann-F.lock"
 }
 
 # stage NAME SOLVER JOBS MESHES PROBLEMS...: every part of the given meshes and problems.
