@@ -96,7 +96,7 @@ std::vector<OptionCell> make_cells(const ResultsIndex& index,
   }
   std::vector<OptionCell> out;
   for (auto& [key, c] : cells) {
-    if (c.worst_error)
+    if (c.worst_error && c.n_not_converged == 0)  // no grade from a solve that failed
       c.worst_grade = grading::grade_of_error(*c.worst_error);
     c.evidence = c.n_not_credible == 0 && c.n_luck == 0 && c.n_not_converged == 0;
     out.push_back(std::move(c));
@@ -121,13 +121,14 @@ std::vector<std::string> common_failures(const SituationVerdict& v) {
   return {common.begin(), common.end()};
 }
 
-/// A cell to avoid: graded u, or failing an interface check that some other option passes.
+/// A cell to avoid: graded u, an F case that did not converge, or failing an interface check
+/// that some other option passes.
 bool fails_on_its_own(const OptionCell& c, const std::vector<std::string>& common) {
   const bool own_failure =
       std::any_of(c.failed_checks.begin(), c.failed_checks.end(), [&](const std::string& check) {
         return std::find(common.begin(), common.end(), check) == common.end();
       });
-  return own_failure || c.worst_grade == schema::Grade::u;
+  return own_failure || c.worst_grade == schema::Grade::u || c.n_not_converged > 0;
 }
 
 void rank(SituationVerdict& v) {

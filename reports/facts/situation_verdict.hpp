@@ -26,7 +26,7 @@ struct OptionCell {
   std::vector<const RowFacts*> rows;                  ///< nonsingular situations
   std::vector<const DivergenceFacts*> singular_rows;  ///< the flat punch
   std::optional<double> worst_error;                  ///< signed, the largest |F error|
-  std::optional<schema::Grade> worst_grade;           ///< of worst_error
+  std::optional<schema::Grade> worst_grade;           ///< of worst_error; none if not converged
   std::optional<double> min_error, max_error;         ///< signed range of the F errors
   double largest_m_to_f_change = 0.0;                 ///< max |e_F - e_M| over its rows (points)
   int n_not_credible = 0, n_luck = 0, n_not_converged = 0;
@@ -43,7 +43,8 @@ struct SituationVerdict {
   std::vector<schema::ProblemId> problems;
   std::vector<OptionCell> cells;        ///< every option set present
   std::vector<const OptionCell*> best;  ///< evidence cells of the best grade (ties)
-  /// u, failing an interface check not in `common_failures`, or failing divergence.
+  /// u, not converged on F, failing an interface check not in `common_failures`, or failing
+  /// divergence.
   std::vector<const OptionCell*> avoid;
   /// The interface checks that every cell fails: a cause shared by all options (the model, the
   /// mesh or the exact solution), which makes no cell evidence but is no reason to avoid one.

@@ -68,8 +68,10 @@ std::string failure_evidence(const std::vector<const OptionCell*>& cells,
                              const std::function<bool(const std::string&)>& shown) {
   std::map<std::string, double> worst;
   double worst_error = 0.0;
-  int eq47_failures = 0, singular = 0;
+  int eq47_failures = 0, singular = 0, not_converged = 0, rows = 0;
   for (const OptionCell* c : cells) {
+    not_converged += c->n_not_converged;
+    rows += static_cast<int>(c->rows.size() + c->singular_rows.size());
     for (const RowFacts* f : c->rows) {
       for (const auto& failure : f->failures)
         if (shown(failure.check))
@@ -85,6 +87,8 @@ std::string failure_evidence(const std::vector<const OptionCell*>& cells,
     parts.push_back(fmt::format("{} up to {}", check, format_measure(measure)));
   if (singular > 0)
     parts.push_back(fmt::format("Eq. 47 fails on {} of {} rows", eq47_failures, singular));
+  if (not_converged > 0)
+    parts.push_back(fmt::format("F not converged on {} of {} rows", not_converged, rows));
   if (parts.empty() && worst_error != 0.0)
     parts.push_back("F error " + format_error_resolved(worst_error));
   return fmt::format("{}", fmt::join(parts, "; "));
@@ -149,10 +153,12 @@ TemplateData advice(const SituationVerdict& s) {
 std::string verdict_cell(const OptionCell& c) {
   if (!c.singular_rows.empty())
     return singular_cell(c);
-  if (!c.worst_error || !c.worst_grade)
+  if (!c.worst_error)
     return kMissing;
-  std::string out = fmt::format("{} {}", schema::to_string(*c.worst_grade),
-                                format_error_resolved(*c.worst_error));
+  // A fine case that did not converge: its last iterate's error, and no grade.
+  std::string out = c.worst_grade ? fmt::format("{} {}", schema::to_string(*c.worst_grade),
+                                                format_error_resolved(*c.worst_error))
+                                  : format_error_resolved(*c.worst_error);
   if (c.n_not_credible > 0)
     out += " ✗";
   if (c.n_luck > 0)

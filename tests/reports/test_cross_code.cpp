@@ -444,6 +444,30 @@ TEST(CrossCodeSection, AnotherCodeAloneGetsItsOwnVerdict) {
   EXPECT_EQ(report.find("**Other codes.**"), std::string::npos);
 }
 
+// Requirement: no grade from a solve that failed, on the first screen either: an option whose F
+// case did not converge shows its last iterate's error marked †, no grade, is to be avoided, and
+// its failure says so.
+TEST(CrossCodeSection, TheVerdictGradesNoCellWhoseFineCaseDidNotConverge) {
+  std::vector<CaseResult> cases;
+  for (const auto m : kMeshes) {
+    const int i = static_cast<int>(m);
+    const double ours[] = {4.0, 2.0, 0.5}, theirs[] = {8.0, 4.0, 0.2};
+    cases.push_back(hertz_case(SolverKind::builtin, m, ours[i]));
+    cases.push_back(
+        hertz_case(kCalculix, m, theirs[i], 1.0, 10.0,
+                   m == MeshLevel::F ? CaseStatus::not_converged : CaseStatus::converged));
+  }
+  const auto doc = document(cases);
+  const ResultsIndex index(doc);
+  const std::string report = report_markdown(index, study(), {}, {}, {});
+  EXPECT_NE(report.find("| calculix linear-ss | +0.20 % † |"), std::string::npos) << report;
+  EXPECT_NE(report.find("use AL, PM ss Q4: e, +0.50 %. Avoid calculix linear-ss Q4."),
+            std::string::npos);
+  EXPECT_NE(report.find("- Smooth curved contact (Hertz), calculix linear-ss Q4: F not converged "
+                        "on 1 of 1 rows."),
+            std::string::npos);
+}
+
 // Requirement (ccx-backed, small): the same H_p coarse-mesh case solved by ours and by CalculiX
 // through the engine gives a section whose values are each solver's own, both within 10 % of
 // the exact 4/pi (the coarse mesh's errors, docs/calculix.md: +5.6 % for ns Q4 at h = a/8), and
