@@ -52,16 +52,32 @@ std::string code_label(const schema::CaseSpec& spec) {
                                         : solver_display_name(code) + " " + option_label_of(spec);
 }
 
-/// The rows of codes other than ours set beside the baseline (other_code_row_facts).
-std::vector<const schema::RowVerdict*> other_code_rows(const ResultsIndex& index) {
+/// The rows on the common basis without parameter overrides whose code and target `keep`
+/// accepts (ours on the discretized target: the baseline).
+template <typename Keep>
+std::vector<const schema::RowVerdict*> common_rows(const ResultsIndex& index, Keep&& keep) {
   std::vector<const schema::RowVerdict*> out;
   for (const auto& r : index.results().rows) {
     const schema::CaseSpec& s = r.spec;
-    if (code_of(s) != builtin_solver_label() && s.target == schema::TargetKind::Discretized &&
-        s.recovery == schema::Recovery::spr && s.overrides.empty())
+    if (s.recovery == schema::Recovery::spr && s.overrides.empty() && keep(code_of(s), s.target))
       out.push_back(&r);
   }
   return out;
+}
+
+/// The rows of codes other than ours set beside the baseline (other_code_row_facts).
+std::vector<const schema::RowVerdict*> other_code_rows(const ResultsIndex& index) {
+  return common_rows(index, [](const std::string& code, schema::TargetKind target) {
+    return code != builtin_solver_label() && target == schema::TargetKind::Discretized;
+  });
+}
+
+/// The rows of one code on one target (code_row_facts).
+std::vector<const schema::RowVerdict*> rows_of_code(const ResultsIndex& index,
+                                                    const std::string& code,
+                                                    schema::TargetKind target) {
+  return common_rows(
+      index, [&](const std::string& c, schema::TargetKind t) { return c == code && t == target; });
 }
 
 DivergenceFacts divergence_of_row(const ResultsIndex& index, const schema::RowVerdict& r) {
@@ -154,6 +170,17 @@ std::vector<RowFacts> other_code_row_facts(const ResultsIndex& index) {
 
 std::vector<DivergenceFacts> other_code_divergence_facts(const ResultsIndex& index) {
   return singular_facts(index, other_code_rows(index));
+}
+
+std::vector<RowFacts> code_row_facts(const ResultsIndex& index, const std::string& code,
+                                     schema::TargetKind target) {
+  return nonsingular_facts(index, rows_of_code(index, code, target));
+}
+
+std::vector<DivergenceFacts> code_divergence_facts(const ResultsIndex& index,
+                                                   const std::string& code,
+                                                   schema::TargetKind target) {
+  return singular_facts(index, rows_of_code(index, code, target));
 }
 
 std::vector<const RowFacts*> facts_of(const std::vector<RowFacts>& all, schema::ProblemId problem) {

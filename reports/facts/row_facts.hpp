@@ -81,6 +81,14 @@ std::vector<DivergenceFacts> divergence_facts(const ResultsIndex& index);
 std::vector<RowFacts> other_code_row_facts(const ResultsIndex& index);
 std::vector<DivergenceFacts> other_code_divergence_facts(const ResultsIndex& index);
 
+/// The facts of one code's rows ("calculix", solvers.hpp) on one target, on the common basis,
+/// without parameter overrides: what that code's own verdict cells are made of.
+std::vector<RowFacts> code_row_facts(const ResultsIndex& index, const std::string& code,
+                                     schema::TargetKind target);
+std::vector<DivergenceFacts> code_divergence_facts(const ResultsIndex& index,
+                                                   const std::string& code,
+                                                   schema::TargetKind target);
+
 /// The row facts of one problem (a view into `all`).
 std::vector<const RowFacts*> facts_of(const std::vector<RowFacts>& all, schema::ProblemId problem);
 

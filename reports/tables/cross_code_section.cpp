@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "reports/facts/row_facts.hpp"
+#include "reports/facts/situation_verdict.hpp"
 #include "reports/facts/solvers.hpp"
 #include "reports/figures/figures.hpp"
 #include "reports/figures/gnuplot.hpp"
@@ -23,6 +24,34 @@ using schema::RowVerdict;
 
 bool ours(const std::string& code) {
   return code == builtin_solver_label();
+}
+
+/// Counts each other code's options' verdict cells and those among the code's best: the verdict
+/// page's situations and rule (SituationVerdict::best), made from that code's rows on that
+/// target alone, so that its options are weighed against each other only.
+void add_verdict_cells(const ResultsIndex& index, std::vector<OptionTally>& tallies) {
+  std::set<std::pair<std::string, schema::TargetKind>> groups;
+  for (const auto& t : tallies) {
+    if (!ours(t.code))
+      groups.insert({t.code, t.target});
+  }
+  for (const auto& [code, target] : groups) {
+    const std::vector<RowFacts> rows = code_row_facts(index, code, target);
+    const std::vector<DivergenceFacts> singular = code_divergence_facts(index, code, target);
+    for (const SituationVerdict& v : situation_verdicts(index, rows, singular)) {
+      for (const OptionCell& c : v.cells) {
+        const auto t = std::ranges::find_if(tallies, [&](const OptionTally& t) {
+          return t.code == code && t.target == target &&
+                 solver_display_name(code) + " " + t.option == c.code;
+        });
+        if (t == tallies.end())
+          continue;
+        ++t->cells;
+        const bool best = std::ranges::count(v.best, &c) > 0;
+        t->best_cells += best && c.worst_grade != schema::Grade::u ? 1 : 0;  // never advise u
+      }
+    }
+  }
 }
 
 /// The codes of the results other than ours, in solvers_in's order.
@@ -187,7 +216,8 @@ std::string advice_line(const std::vector<OptionTally>& tallies, const std::stri
                                  : TemplateData(false));
     c.set("advised", text_or_false(join_words(names, " or ")));
     c.set("score", best.empty() ? std::string()
-                                : fmt::format("e on {} of {} rows", best[0]->e, best[0]->rows));
+                                : fmt::format("best in {} of {} verdict cells", best[0]->best_cells,
+                                              best[0]->cells));
     c.set("more", target != *targets.rbegin());
     choices.push_back(c);
   }
@@ -200,12 +230,13 @@ std::string advice_line(const std::vector<OptionTally>& tallies, const std::stri
 TemplateData advice_data(const std::vector<OptionTally>& tallies, const std::string& code,
                          const std::vector<SolverOptionMapping>& mappings) {
   TemplateData d("line", advice_line(tallies, code));
-  MarkdownTable tally({"Option", "rows with F", "e", "g", "s", "u", "not evidence"});
+  MarkdownTable tally(
+      {"Option", "best in verdict cells", "rows with F", "e", "g", "s", "u", "not evidence"});
   for (const auto& x : tallies) {
     if (x.code == code)
-      tally.add_row({option_text(x, tallies), std::to_string(x.rows), std::to_string(x.e),
-                     std::to_string(x.g), std::to_string(x.s), std::to_string(x.u),
-                     std::to_string(x.not_evidence)});
+      tally.add_row({option_text(x, tallies), fmt::format("{} of {}", x.best_cells, x.cells),
+                     std::to_string(x.rows), std::to_string(x.e), std::to_string(x.g),
+                     std::to_string(x.s), std::to_string(x.u), std::to_string(x.not_evidence)});
   }
   d.set("tally", tally.render());
   MarkdownTable mapped({"Option", "family", "study column", "what it runs"});
@@ -321,6 +352,7 @@ std::vector<OptionTally> option_tallies(const ResultsIndex& index) {
     }
     out.push_back(t);
   }
+  add_verdict_cells(index, out);
   return out;
 }
 
@@ -332,10 +364,10 @@ std::vector<const OptionTally*> advised(const std::vector<OptionTally>& tallies,
   };
   int best = 0;
   for (const auto& t : tallies)
-    best = counted(t) ? std::max(best, t.e) : best;
+    best = counted(t) ? std::max(best, t.best_cells) : best;
   std::vector<const OptionTally*> out;
   for (const auto& t : tallies) {
-    if (counted(t) && best > 0 && t.e == best)
+    if (counted(t) && best > 0 && t.best_cells == best)
       out.push_back(&t);
   }
   return out;

@@ -44,7 +44,8 @@ std::vector<CodeRow> code_rows(const ResultsIndex& index, schema::ProblemId prob
 
 /// One option of a code over the nonsingular rows with an F value (common basis) that every
 /// option of the code has, so that a code's options are counted on the same rows (an option
-/// without a contact pressure has no contact half-width row).
+/// without a contact pressure has no contact half-width row); and over its verdict cells (per
+/// situation and element, as the verdict page makes them, from the code's rows on that target).
 struct OptionTally {
   std::string code, option;
   schema::TargetKind target = schema::TargetKind::Discretized;
@@ -52,11 +53,14 @@ struct OptionTally {
   int e = 0;                ///< evidence and e on F
   int g = 0, s = 0, u = 0;  ///< evidence, by grade
   int not_evidence = 0;     ///< not converged on F, not credible, or luck
+  int cells = 0;            ///< its verdict cells (other codes only)
+  int best_cells = 0;       ///< those among the code's best there (SituationVerdict::best)
 };
 std::vector<OptionTally> option_tallies(const ResultsIndex& index);
 
-/// The advised options of `code` (on `target`, when given): its tallies with the most e rows
-/// (ties together); empty when none has an e row.
+/// The advised options of `code` (on `target`, when given): its tallies among the code's best in
+/// the most verdict cells (ties together; options of one grade are not ranked, as on the verdict
+/// page); empty when none is best anywhere.
 std::vector<const OptionTally*> advised(const std::vector<OptionTally>& tallies,
                                         const std::string& code,
                                         std::optional<schema::TargetKind> target = std::nullopt);

@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <map>
 #include <numbers>
 #include <string>
 #include <vector>
@@ -219,12 +220,56 @@ TEST(CrossCodeAdvice, MostERowsTiesTogetherNotCredibleLeftOut) {
   EXPECT_EQ(hard->e, 0);
   EXPECT_EQ(hard->not_evidence, 1);
   const std::string md = cross_code_section(index, study(), {}, {});
-  EXPECT_NE(md.find("**calculix**: use linear-ns or linear-ss (e on 1 of 1 rows)."),
+  EXPECT_NE(md.find("**calculix**: use linear-ns or linear-ss (best in 1 of 1 verdict cells)."),
             std::string::npos)
       << md;
   // Its table row: the grade marked as no evidence, beside the failed check.
   EXPECT_NE(md.find("| e, c ✗ | force balance 0.5 |"), std::string::npos) << md;
   EXPECT_NE(md.find("| linear-ss | discretized | PM ss | +2.00 % | +1.00 % | +0.50 % | e, c | — |"),
+            std::string::npos)
+      << md;
+}
+
+// Requirement: a code's advice follows its verdict cells, as the verdict page weighs options, not
+// a count of e rows that a situation of many rows can swing. On the rounded punch (S(1), S(1/3),
+// S(1/7): one cell per element) linear-ns is e, e and u, linear-ss g, g and g; on the patch both
+// are e. By e rows linear-ns led 6 to 2; by cells linear-ss is best in 4 of 4 (the punch's worst
+// is u for linear-ns, which is never counted) and linear-ns in 2.
+TEST(CrossCodeAdvice, AdviceFollowsTheVerdictCellsNotTheCountOfERows) {
+  std::vector<CaseResult> cases;
+  const auto add = [&](ProblemId problem, Quantity q, const std::string& option, MeshLevel m,
+                       Element el, double error) {
+    CaseResult c = hertz_case(kCalculix, m, error, 1.0, 10.0, CaseStatus::converged, option);
+    c.spec.problem = problem;
+    c.spec.element = el;
+    c.quantities[0].quantity = q;
+    cases.push_back(std::move(c));
+  };
+  for (const auto m : kMeshes) {
+    cases.push_back(hertz_case(SolverKind::builtin, m, 0.5));  // ours: a cross-code document
+    for (const Element el : {Element::Q4, Element::Q8}) {
+      add(ProblemId::P_p, Quantity::sigma_z_max, "linear-ns", m, el, 0.1);
+      add(ProblemId::P_p, Quantity::sigma_z_max, "linear-ss", m, el, 0.1);
+      for (const ProblemId p : {ProblemId::S_1, ProblemId::S_1_3, ProblemId::S_1_7}) {
+        add(p, Quantity::sigma_c, "linear-ns", m, el, p == ProblemId::S_1_7 ? 20.0 : 0.5);
+        add(p, Quantity::sigma_c, "linear-ss", m, el, 2.0);
+      }
+    }
+  }
+  const auto doc = document(cases);
+  const ResultsIndex index(doc);
+  const auto tallies = option_tallies(index);
+  std::map<std::string, const OptionTally*> by;
+  for (const auto& t : tallies)
+    by[t.option] = &t;
+  ASSERT_TRUE(by.count("linear-ns") && by.count("linear-ss"));
+  EXPECT_EQ(by["linear-ns"]->e, 6);  // the punch's S(1) and S(1/3), and the patch, Q4 and Q8
+  EXPECT_EQ(by["linear-ss"]->e, 2);
+  EXPECT_EQ(by["linear-ns"]->cells, 4);  // the punch and the patch, Q4 and Q8
+  EXPECT_EQ(by["linear-ns"]->best_cells, 2);
+  EXPECT_EQ(by["linear-ss"]->best_cells, 4);
+  const std::string md = cross_code_section(index, study(), {}, {});
+  EXPECT_NE(md.find("**calculix**: use linear-ss (best in 4 of 4 verdict cells)."),
             std::string::npos)
       << md;
 }
@@ -283,10 +328,11 @@ TEST(CrossCodeAdvice, OptionsOnAnotherTargetAreCountedApart) {
   EXPECT_EQ(rigid, 1);
   EXPECT_EQ(discretized, 2);
   const std::string md = cross_code_section(index, study(), {}, {});
-  EXPECT_NE(md.find("| linear-ns (rigid target) | 1 |"), std::string::npos) << md;
+  EXPECT_NE(md.find("| linear-ns (rigid target) | 1 of 1 | 1 |"), std::string::npos) << md;
   // The advice is given per target: the rigid target's one option is not outnumbered.
-  EXPECT_NE(md.find("**calculix**: with the discretized target, use linear-ns or linear-ss (e on 1 "
-                    "of 1 rows); with the rigid target, use linear-ns (e on 1 of 1 rows)."),
+  EXPECT_NE(md.find("**calculix**: with the discretized target, use linear-ns or linear-ss (best "
+                    "in 1 of 1 verdict cells); with the rigid target, use linear-ns (best in 1 of "
+                    "1 verdict cells)."),
             std::string::npos)
       << md;
 }
@@ -395,7 +441,7 @@ TEST(CrossCodeSection, TheVerdictPageGivesEachOtherCodesAdvice) {
   const ResultsIndex index(doc);
   const std::vector<std::string> lines = code_advice_lines(index);
   ASSERT_EQ(lines.size(), 1U);
-  EXPECT_EQ(lines[0], "**calculix**: no option has an e row that is evidence.");
+  EXPECT_EQ(lines[0], "**calculix**: use linear-ss (best in 1 of 1 verdict cells).");
   ReportContent content;
   content.cross_code_md = cross_code_section(index, study(), {}, {});
   EXPECT_NE(content.cross_code_md.find("\n" + lines[0] + "\n"), std::string::npos);
