@@ -196,7 +196,7 @@ std::string option_text(const OptionTally& t, const std::vector<OptionTally>& ta
                               : t.option;
 }
 
-/// "**getfem**: with the discretized target, use nodal_al (e on 8 of 8 rows); ...".
+/// "**getfem**: with the discretized target, use nodal_al (best in 9 of 10 verdict cells); ...".
 std::string advice_line(const std::vector<OptionTally>& tallies, const std::string& code) {
   TemplateData d("code", solver_display_name(code));
   std::set<schema::TargetKind> targets;

@@ -87,8 +87,9 @@ std::vector<Figure> render_cross_code_figure(const ResultsIndex& index,
                                              const FigureOptions& options = {});
 
 /// One line per code other than ours: its advised options per target, e.g. "**calculix**: use
-/// linear-ss (e on 18 of 32 rows)." (templates/code_advice.mustache); the section's advice and
-/// the verdict page's note on other codes. Empty, as the section is, for results of one code.
+/// linear-ss (best in 10 of 12 verdict cells)." (templates/code_advice.mustache); the section's
+/// advice and the verdict page's note on other codes. Empty, as the section is, for results of one
+/// code.
 std::vector<std::string> code_advice_lines(const ResultsIndex& index);
 
 /// The whole section (empty when the results hold one code only); its cost tables from
