@@ -4,8 +4,9 @@
 # plane-strain problems with a rigid target, and its bricks between non-matching meshes on the
 # interference fit IF_p (two meshed bodies; Nitsche is not supported there and fails with the
 # reason), C, M and F meshes, Q4 and Q8, and, like CalculiX and the study, with the meshed
-# indenter on P_p, P'_p, H_p and F_p (its bricks between non-matching meshes but Nitsche), graded on both stress bases (spr = common: our patch
-# recovery of GetFEM's displacements; own: GetFEM's own nodal stresses), and the same models with
+# indenter on P_p, P'_p, H_p and F_p (its bricks between non-matching meshes but Nitsche), graded
+# on both stress bases (spr = common: our patch recovery of GetFEM's displacements; own:
+# GetFEM's own nodal stresses), and the same models with
 # our built-in solver for the cost comparison. The axisymmetric problems are not supported by
 # the adapter: not run.
 #

@@ -86,7 +86,8 @@ double axis_radius(const Model& model, const CalculixOptions& options,
 
 void write_nodes(std::ostream& out, const Model& model, const CalculixOptions& options) {
   const bool axisymmetric = model.analysis == solver::AnalysisType::Axisymmetric;
-  const std::vector<char> on_axis = nodes_on_axis(model.mesh);
+  const std::vector<char> on_axis =
+      axisymmetric ? nodes_on_axis(model.mesh) : std::vector<char>(model.mesh.nodes.size(), 0);
   const double r_axis = axisymmetric ? axis_radius(model, options, on_axis) : 0.0;
   if (r_axis > 0.0)
     out << "** nodes on the axis are written at r = " << num(r_axis) << " (see axis_offset)\n";
