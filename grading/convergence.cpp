@@ -20,6 +20,14 @@ bool never_grows(double c, double m, double f, double tol) {
   return m <= c + tol && f <= m + tol;
 }
 
+/// |e| within the read's resolution on every mesh: r on C, r/2 on M, r/4 on F (h halves).
+bool within_read_resolution(double e_c, double e_m, double e_f, double r) {
+  const auto within = [](double e, double bound) {
+    return std::abs(e) <= bound * (1.0 + 1e-9);  // an edge at a node reads exactly h/2 off
+  };
+  return r > 0.0 && within(e_c, r) && within(e_m, r / 2) && within(e_f, r / 4);
+}
+
 }  // namespace
 
 bool study_converging(double e_c, double e_m, double e_f) {
@@ -30,10 +38,33 @@ bool study_converging(double e_c, double e_m, double e_f) {
   return never_grows(c, m, f, tol) && (f < c - tol || c <= tol);
 }
 
-ConvergenceAssessment assess_convergence(double e_c, double e_m, double e_f) {
+double node_read_resolution_percent(double node_spacing, double exact) {
+  if (!(node_spacing > 0.0) || !std::isfinite(node_spacing) || !(std::abs(exact) > 0.0) ||
+      !std::isfinite(exact))
+    return 0.0;
+  return 100.0 * 0.5 * node_spacing / std::abs(exact);
+}
+
+ConvergenceAssessment assess_convergence(double e_c, double e_m, double e_f,
+                                         double resolution_percent) {
   ConvergenceAssessment out;
   const double relative = kPlateauFraction * std::abs(e_f);
-  if (relative > kErrorResolutionPercent) {
+  if (within_read_resolution(e_c, e_m, e_f, resolution_percent)) {
+    out.trend = Trend::converging;
+    out.floor_percent = resolution_percent;
+    out.floor_reason = fmt::format(
+        "within half a node spacing on every mesh ({:.3g} points on C): the read converges "
+        "with the spacing",
+        resolution_percent);
+    return out;
+  }
+  if (resolution_percent > std::max(relative, kErrorResolutionPercent)) {
+    out.floor_percent = resolution_percent;
+    out.floor_reason = fmt::format(
+        "half the node spacing on C ({:.3g} points): the resolution of a value read between "
+        "two nodes",
+        resolution_percent);
+  } else if (relative > kErrorResolutionPercent) {
     out.floor_percent = relative;
     out.floor_reason = fmt::format(
         "a tenth of the F error ({:.3g} points): a smaller change cannot be told from the "
@@ -68,17 +99,26 @@ std::optional<double> pair_order(const std::optional<double>& e_coarse,
   return std::log2(c / f);
 }
 
-ObservedOrder observed_order(double e_c, double e_m, double e_f) {
+ObservedOrder observed_order(double e_c, double e_m, double e_f, double resolution_percent) {
   ObservedOrder out;
   out.pair_orders = {pair_order(e_c, e_m), pair_order(e_m, e_f)};
   const auto& [p1, p2] = out.pair_orders;
-  const Trend trend = assess_convergence(e_c, e_m, e_f).trend;
+  if (within_read_resolution(e_c, e_m, e_f, resolution_percent)) {
+    out.note = "within half a node spacing on every mesh";
+    return out;
+  }
+  const Trend trend = assess_convergence(e_c, e_m, e_f, resolution_percent).trend;
   if (!p1 || !p2 || trend == Trend::settled) {
     out.note = "at noise level";
     return out;
   }
   if (trend != Trend::converging || !(*p1 > 0.0) || !(*p2 > 0.0)) {
     out.note = "not monotone";
+    return out;
+  }
+  if (const double coarse = std::max(std::abs(e_c), std::abs(e_m));
+      coarse >= kUnresolvedErrorPercent) {
+    out.note = fmt::format("pre-asymptotic ({:.0f} % on C or M: not resolved)", coarse);
     return out;
   }
   const double spread = std::abs(*p1 - *p2);
@@ -97,11 +137,15 @@ bool luck_of_one_mesh(double e_c, double e_m, double e_f) {
          !schema::is_worse(grade_of_error(e_f), schema::Grade::g);
 }
 
-RefinementStep refinement_step(double e_f, double e_vf) {
+RefinementStep refinement_step(double e_f, double e_vf, double resolution_percent) {
   if (!std::isfinite(e_f) || !std::isfinite(e_vf))
     return RefinementStep::farther;
   const double f = std::abs(e_f), vf = std::abs(e_vf);
-  const double floor = std::max(kErrorResolutionPercent, kPlateauFraction * f);
+  if (resolution_percent > 0.0 && f <= resolution_percent * (1.0 + 1e-9) &&
+      vf <= 0.5 * resolution_percent * (1.0 + 1e-9))
+    return RefinementStep::closer;  // within half a node on both: converging with the spacing
+  const double floor =
+      std::max({kErrorResolutionPercent, kPlateauFraction * f, resolution_percent});
   if (vf < f - floor)
     return RefinementStep::closer;
   return std::abs(vf - f) <= floor ? RefinementStep::settled : RefinementStep::farther;

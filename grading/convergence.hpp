@@ -35,8 +35,19 @@ struct ConvergenceAssessment {
 /// plateau.
 inline constexpr double kPlateauFraction = 0.1;
 
+/// The resolution of a quantity read between two nodes (an edge of the contact or stick zone,
+/// placed halfway between the last node in the zone and the next): half the node spacing s at
+/// the contact, in percentage points of the exact value x: 100 (s / 2) / |x|. A change of its
+/// error smaller than this is a step from one node to the next, not convergence. 0 when s or x
+/// is not a positive finite length.
+double node_read_resolution_percent(double node_spacing, double exact);
+
 /// The noise-aware convergence verdict of the errors on C, M, F:
-///   floor = max(kErrorResolutionPercent, kPlateauFraction |e_F|);
+///   floor = max(kErrorResolutionPercent, kPlateauFraction |e_F|, r), where r =
+///           `resolution_percent` is the quantity's own resolution on C (0 for a value read at
+///           a point; node_read_resolution_percent on C for one read between two nodes);
+///   converging     when r > 0 and |e_C| <= r, |e_M| <= r/2, |e_F| <= r/4: the read is as
+///                  close as its resolution on every mesh, and that halves with h;
 ///   settled        when |e_M - e_C| < floor and |e_F - e_M| < floor (a plateau: the grade
 ///                  tells how good it is);
 ///   converging     when |e_M| <= |e_C| + floor, |e_F| <= |e_M| + floor and
@@ -44,22 +55,33 @@ inline constexpr double kPlateauFraction = 0.1;
 ///   not_converging otherwise, and when an error is not finite.
 /// A plateau reached through noise of a few thousandths of a point (S(1/3) Q8 LMP ss
 /// -0.3194/-0.3217/-0.3130 %, ns -0.3238/-0.3239/-0.3124 %) is settled either way, where the
-/// study's flag tells the two apart on a 0.001-point difference.
-ConvergenceAssessment assess_convergence(double e_c, double e_m, double e_f);
+/// study's flag tells the two apart on a 0.001-point difference. A contact half-width read
+/// between nodes 0.038 points apart on C (S(1/7) Q4: +0.12/+0.10/+0.07 %) is settled too; one
+/// that is half a node off on every mesh (H_p Q4: +12.5/+6.25/+3.12 %, r = 12.5) converges.
+ConvergenceAssessment assess_convergence(double e_c, double e_m, double e_f,
+                                         double resolution_percent = 0.0);
 
-/// One more refinement (F -> VF) of a row, with floor = max(kErrorResolutionPercent,
-/// kPlateauFraction |e_F|):
-///   closer   when |e_VF| < |e_F| - floor;
+/// One more refinement (F -> VF) of a row, with r = `resolution_percent` the quantity's own
+/// resolution on F (see assess_convergence) and floor = max(kErrorResolutionPercent,
+/// kPlateauFraction |e_F|, r):
+///   closer   when |e_VF| < |e_F| - floor, or when r > 0, |e_F| <= r and |e_VF| <= r/2 (within
+///            half a node on both meshes: converging with the spacing);
 ///   settled  when ||e_VF| - |e_F|| <= floor (a plateau, or an error at round-off: refinement
 ///            cannot improve it);
 ///   farther  otherwise, and when an error is not finite.
 enum class RefinementStep { closer, settled, farther };
-RefinementStep refinement_step(double e_f, double e_vf);
+RefinementStep refinement_step(double e_f, double e_vf, double resolution_percent = 0.0);
 
 /// The observed order of one mesh pair (h halving), log2(|e_coarse| / |e_fine|); empty where
 /// an error is missing or below schema::kErrorNoiseFloorPercent (round-off: no order fitted).
 std::optional<double> pair_order(const std::optional<double>& e_coarse,
                                  const std::optional<double>& e_fine);
+
+/// An error at or above this on C or M means the mesh does not resolve the quantity at all:
+/// to fall from it into the g band (< 5 %) within two halvings of h, the error must shrink
+/// 20-fold, an order above log2(20)/2 = 2.2 per halving, beyond what these elements deliver
+/// at a contact edge.
+inline constexpr double kUnresolvedErrorPercent = 100.0;
 
 /// The largest spread of the two pair orders for which the sequence counts as in its
 /// asymptotic range: within one order of each other.
@@ -73,18 +95,16 @@ struct ObservedOrder {
 };
 
 /// Pair orders p1 = log2(|e_C|/|e_M|), p2 = log2(|e_M|/|e_F|) (see pair_order) and their mean
-/// as the observed order, given only when assess_convergence finds the sequence converging,
-/// p1 > 0, p2 > 0 and |p1 - p2| <= kAsymptoticOrderSpread. Otherwise `note` says why: "at noise
+/// as the observed order, given only when assess_convergence (with `resolution_percent`) finds
+/// the sequence converging, p1 > 0, p2 > 0, |p1 - p2| <= kAsymptoticOrderSpread and neither C
+/// nor M is unresolved (|e| < kUnresolvedErrorPercent). Otherwise `note` says why: "within half
+/// a node spacing on every mesh" (the order would be the read's, not the solution's), "at noise
 /// level" (an error at round-off, or the trend settled), "not monotone" (the trend is not
-/// converging, or an error grows within the floor), or "pre-asymptotic (p1 = .., p2 = ..
-/// differ by ..)". 4 -> 1 -> 0.25 has order 2; 445 -> 310 -> 0.68 (p1 0.52, p2 8.8) has none.
-ObservedOrder observed_order(double e_c, double e_m, double e_f);
-
-/// An error at or above this on C or M means the mesh does not resolve the quantity at all:
-/// to fall from it into the g band (< 5 %) within two halvings of h, the error must shrink
-/// 20-fold, an order above log2(20)/2 = 2.2 per halving, beyond what these elements deliver
-/// at a contact edge.
-inline constexpr double kUnresolvedErrorPercent = 100.0;
+/// converging, or an error grows within the floor), "pre-asymptotic (p1 = .., p2 = .. differ by
+/// ..)" or "pre-asymptotic (.. % on C or M: not resolved)". 4 -> 1 -> 0.25 has order 2;
+/// 445 -> 310 -> 0.68 (p1 0.52, p2 8.8) has none, nor has 427 -> 65 -> 5.0 (p1 2.7, p2 3.7:
+/// within one order, but from a mesh that does not resolve the quantity).
+ObservedOrder observed_order(double e_c, double e_m, double e_f, double resolution_percent = 0.0);
 
 /// The luck of one mesh: the F error grades e or g (Eq. 46) after an error of at least
 /// kUnresolvedErrorPercent on C or M: max(|e_C|, |e_M|) >= 100 and |e_F| < 5. Such a fine

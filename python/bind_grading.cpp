@@ -75,23 +75,30 @@ void bind_grading(py::module_& m) {
       "missing or below 1e-6 %).");
   m.def(
       "trend",
-      [](double e_c, double e_m, double e_f) {
-        const grading::ConvergenceAssessment a = grading::assess_convergence(e_c, e_m, e_f);
+      [](double e_c, double e_m, double e_f, double resolution) {
+        const grading::ConvergenceAssessment a =
+            grading::assess_convergence(e_c, e_m, e_f, resolution);
         return py::make_tuple(std::string(to_string(a.trend)), a.floor_percent, a.floor_reason);
       },
-      py::kw_only(), "error_c"_a, "error_m"_a, "error_f"_a,
+      py::kw_only(), "error_c"_a, "error_m"_a, "error_f"_a, "resolution_percent"_a = 0.0,
       "The noise-aware verdict on the errors [%] of C, M, F: ('converging' | 'settled' | "
       "'not_converging', floor [percentage points], the floor's reason); floor = max(0.01, "
-      "0.1 |e_F|).");
+      "0.1 |e_F|, resolution_percent), the last the quantity's own resolution on C (half the "
+      "node spacing for one read between two nodes, node_read_resolution_percent).");
   m.def(
       "observed_order",
-      [](double e_c, double e_m, double e_f) {
-        const grading::ObservedOrder o = grading::observed_order(e_c, e_m, e_f);
+      [](double e_c, double e_m, double e_f, double resolution) {
+        const grading::ObservedOrder o = grading::observed_order(e_c, e_m, e_f, resolution);
         return py::make_tuple(o.order, o.note);
       },
-      py::kw_only(), "error_c"_a, "error_m"_a, "error_f"_a,
+      py::kw_only(), "error_c"_a, "error_m"_a, "error_f"_a, "resolution_percent"_a = 0.0,
       "The observed order of the errors [%] (mean of the two pair orders), or None with the "
-      "reason when the sequence is not converging, at noise level or pre-asymptotic.");
+      "reason when the sequence is not converging, at noise level or pre-asymptotic (the pair "
+      "orders differ by more than 1, or C or M is off by 100 % or more).");
+  m.def("node_read_resolution_percent", &grading::node_read_resolution_percent, py::kw_only(),
+        "node_spacing"_a, "exact"_a,
+        "The resolution [percentage points] of a value read between two nodes: 100 (s / 2) / "
+        "|exact|; 0 unless both are positive and finite.");
   m.def("luck_of_one_mesh", &grading::luck_of_one_mesh, py::kw_only(), "error_c"_a, "error_m"_a,
         "error_f"_a,
         "True when F is graded e or g after an error above 100 % on C or M: not evidence.");

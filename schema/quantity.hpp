@@ -73,4 +73,25 @@ constexpr std::string_view description(Quantity v) {
   return {};
 }
 
+/// True for a quantity read between two nodes: the contact half-width (halfway between the last
+/// node carrying pressure and the next) and the stick zone's (between the last sticking node
+/// and the first slipping one). Its resolution is half the node spacing
+/// (grading::node_read_resolution_percent); the others are read at a point.
+constexpr bool read_between_nodes(Quantity v) {
+  switch (v) {
+    case Quantity::contact_half_width:
+    case Quantity::c_over_a:
+      return true;
+    case Quantity::sigma_z_max:
+    case Quantity::sigma_c:
+    case Quantity::sigma_h:
+    case Quantity::sigma_c_star:
+    case Quantity::tau_max:
+    case Quantity::p_mean:
+    case Quantity::p_arc:
+      return false;
+  }
+  return false;
+}
+
 }  // namespace cs::schema

@@ -342,7 +342,8 @@ ClaimEvidence refinement(const ResultsIndex& index, const std::vector<RowFacts>&
       continue;
     }
     ++c.n;
-    const auto step = grading::refinement_step(*f.errors[2], *vf->error);
+    const auto step = grading::refinement_step(
+        *f.errors[2], *vf->error, index.read_resolution_percent(*f.row, schema::MeshLevel::F));
     if (step == grading::RefinementStep::closer)
       ++c.n_hold;
     else if (step == grading::RefinementStep::settled)

@@ -34,12 +34,13 @@ void add_credibility(const ResultsIndex& index, RowFacts& f) {
     f.failures.push_back({name, measure_of(*fine->interface, name)});
 }
 
-void add_trend(RowFacts& f) {
+void add_trend(const ResultsIndex& index, RowFacts& f) {
   const auto& e = f.errors;
   if (!e[0] || !e[1] || !e[2])
     return;
-  f.trend = grading::assess_convergence(*e[0], *e[1], *e[2]);
-  const grading::ObservedOrder o = grading::observed_order(*e[0], *e[1], *e[2]);
+  const double resolution = index.read_resolution_percent(*f.row, MeshLevel::C);
+  f.trend = grading::assess_convergence(*e[0], *e[1], *e[2], resolution);
+  const grading::ObservedOrder o = grading::observed_order(*e[0], *e[1], *e[2], resolution);
   f.order = o.order;
   f.order_note = o.note;
   f.luck = grading::luck_of_one_mesh(*e[0], *e[1], *e[2]);
@@ -149,7 +150,7 @@ RowFacts facts_of_row(const ResultsIndex& index, const schema::RowVerdict& r) {
   if (r.errors[2])
     f.grade = grading::grade_of_error(*r.errors[2]);
   f.study_c = r.converging.value_or(false);
-  add_trend(f);
+  add_trend(index, f);
   add_credibility(index, f);
   if (const schema::RowVerdict* twin = index.extrapolated_twin(r))
     f.extrapolated_error = twin->errors[2];

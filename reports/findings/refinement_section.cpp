@@ -42,12 +42,14 @@ double median(std::vector<double> v) {
   return n % 2 == 1 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 
+/// The trend of three errors, `resolution` the quantity's own on the coarsest of them.
 std::optional<grading::ConvergenceAssessment> trend_of(const std::optional<double>& a,
                                                        const std::optional<double>& b,
-                                                       const std::optional<double>& c) {
+                                                       const std::optional<double>& c,
+                                                       double resolution) {
   if (!a || !b || !c)
     return std::nullopt;
-  return grading::assess_convergence(*a, *b, *c);
+  return grading::assess_convergence(*a, *b, *c, resolution);
 }
 
 std::string trend_cell(const std::optional<grading::ConvergenceAssessment>& t) {
@@ -93,9 +95,11 @@ void add_vf(RefinementFacts& f, const ResultsIndex& index, const RowVerdict& row
     f.singular_vf_diverges += counted && row.refinement->divergence->diverges ? 1 : 0;
     return;
   }
-  v.trend_cmf = trend_of(row.errors[0], row.errors[1], row.errors[2]);
-  v.trend_mfvf = trend_of(row.errors[1], row.errors[2], row.refinement->error);
-  v.claim = refinement_claim(row, v.vf);
+  const double on_m = index.read_resolution_percent(row, schema::MeshLevel::M);
+  v.trend_cmf = trend_of(row.errors[0], row.errors[1], row.errors[2],
+                         index.read_resolution_percent(row, schema::MeshLevel::C));
+  v.trend_mfvf = trend_of(row.errors[1], row.errors[2], row.refinement->error, on_m);
+  v.claim = refinement_claim(row, v.vf, on_m);
   f.claim.applies += v.claim == RefinementClaim::not_applicable ? 0 : 1;
   f.claim.holds += v.claim == RefinementClaim::holds ? 1 : 0;
   f.claim.fails += v.claim == RefinementClaim::fails ? 1 : 0;
@@ -170,17 +174,18 @@ std::string csv_line(const ResultsIndex& index, const RowVerdict& row) {
   if (!row.refinement)
     return out + ",,,,,\n";
   const MeshState vf = index.state(row, schema::MeshLevel::VF);
-  const auto trend = trend_of(row.errors[1], row.errors[2], row.refinement->error);
+  const double on_m = index.read_resolution_percent(row, schema::MeshLevel::M);
+  const auto trend = trend_of(row.errors[1], row.errors[2], row.refinement->error, on_m);
   constexpr const char* kState[] = {"missing", "failed", "not_converged", "converged"};
   return out + fmt::format(",{},{},{},{},{}\n", csv_number(row.refinement->value),
                            csv_number(row.refinement->error), kState[static_cast<int>(vf)],
                            trend ? schema::to_string(trend->trend) : "",
-                           claim_cell(refinement_claim(row, vf)));
+                           claim_cell(refinement_claim(row, vf, on_m)));
 }
 
 }  // namespace
 
-RefinementClaim refinement_claim(const RowVerdict& row, MeshState vf) {
+RefinementClaim refinement_claim(const RowVerdict& row, MeshState vf, double resolution_on_m) {
   if (!row.errors[2] || !row.converging || *row.converging ||
       schema::is_worse(grading::grade_of_error(*row.errors[2]), schema::Grade::s))
     return RefinementClaim::not_applicable;
@@ -188,8 +193,9 @@ RefinementClaim refinement_claim(const RowVerdict& row, MeshState vf) {
     return RefinementClaim::no_vf;
   if (vf != MeshState::converged || !row.refinement->error || !row.errors[1])
     return RefinementClaim::vf_not_converged;
-  const schema::Trend t =
-      grading::assess_convergence(*row.errors[1], *row.errors[2], *row.refinement->error).trend;
+  const schema::Trend t = grading::assess_convergence(*row.errors[1], *row.errors[2],
+                                                      *row.refinement->error, resolution_on_m)
+                              .trend;
   return t == schema::Trend::not_converging ? RefinementClaim::fails : RefinementClaim::holds;
 }
 

@@ -23,8 +23,10 @@ namespace cs::reports {
 /// it open, and is never counted either way.
 enum class RefinementClaim { not_applicable, holds, fails, vf_not_converged, no_vf };
 
-/// The claim for one row, given how its VF case ended.
-RefinementClaim refinement_claim(const schema::RowVerdict& row, MeshState vf);
+/// The claim for one row, given how its VF case ended; `resolution_on_m` is the quantity's own
+/// resolution on M (ResultsIndex::read_resolution_percent), 0 for one read at a point.
+RefinementClaim refinement_claim(const schema::RowVerdict& row, MeshState vf,
+                                 double resolution_on_m = 0.0);
 
 /// Whether the GCI band of the F value contains the exact value:
 /// |f_F - exact| / |f_F| * 100 <= GCI. Empty without an estimate or an exact value.

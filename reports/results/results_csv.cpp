@@ -78,7 +78,8 @@ std::vector<std::string> verdict_fields(const ResultsIndex& index, const schema:
       strict = flag(d.diverges);
     }
   } else if (e[0] && e[1] && e[2]) {
-    trend = schema::to_string(grading::assess_convergence(*e[0], *e[1], *e[2]).trend);
+    const double resolution = index.read_resolution_percent(*r, schema::MeshLevel::C);
+    trend = schema::to_string(grading::assess_convergence(*e[0], *e[1], *e[2], resolution).trend);
   }
   return {flag(r->converging), trend, eq47, strict};
 }

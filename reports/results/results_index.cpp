@@ -7,6 +7,8 @@
 
 #include <fmt/format.h>
 
+#include "grading/convergence.hpp"
+
 namespace cs::reports {
 namespace {
 
@@ -208,6 +210,15 @@ std::optional<double> ResultsIndex::exact_of(const RowVerdict& row) const {
       return q->exact;
   }
   return std::nullopt;
+}
+
+double ResultsIndex::read_resolution_percent(const RowVerdict& row, schema::MeshLevel mesh) const {
+  const CaseResult* c = case_of(row, mesh);
+  const schema::QuantityResult* q = quantity_of(row, mesh);
+  if (!schema::read_between_nodes(row.quantity) || c == nullptr || q == nullptr)
+    return 0.0;
+  const double nodes_per_side = row.spec.element == schema::Element::Q8 ? 2.0 : 1.0;
+  return grading::node_read_resolution_percent(c->element_size_h / nodes_per_side, q->exact);
 }
 
 std::optional<double> ResultsIndex::study_exact_of(const RowVerdict& row) const {

@@ -101,6 +101,11 @@ class ResultsIndex {
 
   /// The exact value of a row's quantity (from its first case that has it), if finite.
   std::optional<double> exact_of(const schema::RowVerdict& row) const;
+  /// The resolution on `mesh` of a row whose quantity is read between two nodes
+  /// (schema::read_between_nodes), in percentage points: grading::node_read_resolution_percent
+  /// of the node spacing along the contact (the case's element size h; h/2 with Q8's mid-side
+  /// nodes) and the exact value. 0 for a quantity read at a point, or without that case.
+  double read_resolution_percent(const schema::RowVerdict& row, schema::MeshLevel mesh) const;
   /// The study's printed exact value recorded in the row's cases (`study_exact`), if any.
   std::optional<double> study_exact_of(const schema::RowVerdict& row) const;
 

@@ -66,6 +66,42 @@ TEST(AssessConvergence, SmallErrorsUseTheStudysResolutionAsTheFloor) {
   EXPECT_EQ(assess_convergence(0.05, 0.03, 0.02).trend, Trend::converging);
 }
 
+TEST(AssessConvergence, AValueReadBetweenNodesSettlesWithinHalfANodeSpacing) {
+  // S(1/7) Q4 a_FE: nodes 0.000764 b apart on C, exact 1.0047 b: half a spacing is 0.038
+  // points. +0.12 -> +0.10 -> +0.07 % moves by less on each mesh: settled, no order (it was
+  // "converging, order 0.39" against the 0.01-point floor of a value read at a point).
+  const double resolution = node_read_resolution_percent(0.000764, 1.0047);
+  EXPECT_TRUE(Near(resolution, 100.0 * 0.000382 / 1.0047, {1e-12, 0}));  // machine precision
+  const auto a = assess_convergence(0.12, 0.10, 0.07, resolution);
+  EXPECT_EQ(a.trend, Trend::settled);
+  EXPECT_EQ(a.floor_percent, resolution);
+  EXPECT_NE(a.floor_reason.find("node spacing"), std::string::npos) << a.floor_reason;
+  EXPECT_EQ(assess_convergence(0.12, 0.10, 0.07).trend, Trend::converging);
+  EXPECT_EQ(observed_order(0.12, 0.10, 0.07, resolution).note, "at noise level");
+  // H_p Q4 a_FE: the edge at a node, read half a node off on every mesh (nodes 0.25 a apart
+  // on C): +12.5 -> +6.25 -> +3.125 % converges with the spacing, with no order of its own.
+  const double h_p = node_read_resolution_percent(0.25, 1.0);
+  EXPECT_EQ(h_p, 12.5);
+  EXPECT_EQ(assess_convergence(12.5, 6.25, 3.125, h_p).trend, Trend::converging);
+  const auto read = observed_order(12.5, 6.25, 3.125, h_p);
+  EXPECT_FALSE(read.order.has_value());
+  EXPECT_EQ(read.note, "within half a node spacing on every mesh");
+  // MPC ss there: +87.5 -> +93.8 -> +96.9 % is further off than half a node: settled.
+  EXPECT_EQ(assess_convergence(87.5, 93.75, 96.875, h_p).trend, Trend::settled);
+  // MPC ss on the S(1/7) mesh: +2.16 -> +0.58 -> +0.25 % moves by far more: an order.
+  const auto mpc = observed_order(2.16, 0.58, 0.25, resolution);
+  ASSERT_TRUE(mpc.order.has_value()) << mpc.note;
+  EXPECT_TRUE(Near(*mpc.order, 0.5 * std::log2(2.16 / 0.25), {1e-12, 0}));  // machine precision
+}
+
+TEST(NodeReadResolution, IsZeroWithoutAPositiveFiniteSpacingAndExactValue) {
+  EXPECT_TRUE(Near(node_read_resolution_percent(0.5, -2.0), 12.5, {1e-15, 0}));  // |exact|
+  EXPECT_EQ(node_read_resolution_percent(0.0, 1.0), 0.0);
+  EXPECT_EQ(node_read_resolution_percent(0.1, 0.0), 0.0);
+  EXPECT_EQ(node_read_resolution_percent(kNaN, 1.0), 0.0);
+  EXPECT_EQ(node_read_resolution_percent(0.1, kNaN), 0.0);
+}
+
 TEST(ObservedOrder, OrderTwoOfAnExactPowerLaw) {
   const auto o = observed_order(4.0, 1.0, 0.25);
   ASSERT_TRUE(o.order.has_value()) << o.note;
@@ -82,6 +118,19 @@ TEST(ObservedOrder, NoOrderForThePreAsymptoticMpcRow) {
   EXPECT_NE(o.note.find("pre-asymptotic"), std::string::npos) << o.note;
   // H_p Q4 MPC ss: -116 -> -39 -> -4.8 %, pair orders 1.57 and 3.02.
   EXPECT_FALSE(observed_order(-116.0, -39.0, -4.8).order.has_value());
+}
+
+TEST(ObservedOrder, NoOrderFromAMeshThatDoesNotResolveTheQuantity) {
+  // S(1/7) Q8 MPC ns sigma_c: +427.3 -> +65.0 -> +5.04 %, pair orders 2.72 and 3.69: within
+  // one order of each other, once given an order of 3.20, beyond what Q8 delivers at an edge.
+  const auto o = observed_order(427.3, 65.0, 5.04);
+  EXPECT_FALSE(o.order.has_value());
+  EXPECT_LE(std::abs(*o.pair_orders[0] - *o.pair_orders[1]), kAsymptoticOrderSpread);
+  EXPECT_NE(o.note.find("427 % on C or M: not resolved"), std::string::npos) << o.note;
+  // Below 100 % on C and M the same shape has its order.
+  const auto resolved = observed_order(80.0, 20.0, 5.0);
+  ASSERT_TRUE(resolved.order.has_value()) << resolved.note;
+  EXPECT_TRUE(Near(*resolved.order, 2.0, {1e-12, 0}));  // machine precision
 }
 
 TEST(ObservedOrder, NoOrderForNoiseOrNonMonotoneSequences) {
@@ -133,4 +182,10 @@ TEST(RefinementStep, RoundOffAndPlateausAreSettled) {
   EXPECT_EQ(refinement_step(5.0, 4.6), RefinementStep::settled);
   EXPECT_EQ(refinement_step(5.0, 4.4), RefinementStep::closer);
   EXPECT_EQ(refinement_step(1.0, std::nan("")), RefinementStep::farther);
+  // A value read between two nodes, resolution 3.125 points on F (H_p Q4 a_FE): half a node
+  // off on F and on VF comes closer with the spacing; 5.0 -> 3.5 moves within the resolution.
+  EXPECT_EQ(refinement_step(3.125, 1.5625, 3.125), RefinementStep::closer);
+  EXPECT_EQ(refinement_step(3.125, 1.5625), RefinementStep::closer);
+  EXPECT_EQ(refinement_step(5.0, 3.5, 3.125), RefinementStep::settled);
+  EXPECT_EQ(refinement_step(5.0, 3.5), RefinementStep::closer);
 }

@@ -181,3 +181,17 @@ def test_grading_functions():
     assert est.asymptotic and est.observed_order == pytest.approx(2.0, rel=1e-14)
     assert est.richardson == pytest.approx(1.0, rel=1e-14)
     assert cs.pair_orders(error_c=4.0, error_m=2.0, error_f=None) == [pytest.approx(1.0), None]
+
+
+def test_trend_and_order_of_a_value_read_between_nodes():
+    """Requirement: the module's trend and observed order take the quantity's own resolution
+    (half the node spacing for a value read between two nodes) and give no order from a mesh
+    that does not resolve the quantity."""
+    resolution = cs.node_read_resolution_percent(node_spacing=0.000764, exact=1.0047)
+    assert resolution == pytest.approx(100 * 0.000382 / 1.0047, rel=1e-14)
+    trend, floor, reason = cs.trend(error_c=0.12, error_m=0.10, error_f=0.07,
+                                    resolution_percent=resolution)
+    assert trend == "settled" and floor == resolution and "node spacing" in reason
+    assert cs.trend(error_c=0.12, error_m=0.10, error_f=0.07)[0] == "converging"
+    order, note = cs.observed_order(error_c=427.3, error_m=65.0, error_f=5.04)
+    assert order is None and "not resolved" in note

@@ -4,10 +4,13 @@
 // names and records rejected by the schema with a one-line message naming the record.
 
 #include <cmath>
+#include <map>
+#include <string>
 
 #include <gtest/gtest.h>
 
 #include "report_test_support.hpp"
+#include "reports/facts/row_facts.hpp"
 #include "reports/results/results_index.hpp"
 #include "schema/schema_error.hpp"
 
@@ -191,6 +194,47 @@ TEST(ResultsIndex, BadNamesAndRecordsAreRejectedByTheSchema) {
   EXPECT_NE(read_error(doc).find("missing 'run'"), std::string::npos);
   for (const std::string& message : {e, read_error(doc)})
     EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+}
+
+// Requirement: a quantity read between two nodes (a_FE) is judged against half the node spacing
+// on C (Q8: its mid-side nodes halve it), so a move by less than that is settled, not
+// "converging" with an order; a quantity read at a point keeps the 0.01-point floor.
+TEST(ResultsIndex, AValueReadBetweenNodesIsJudgedAgainstHalfANodeSpacing) {
+  auto doc = testing::sample_json();
+  const std::map<std::string, double> a_fe{{"C", 1.09}, {"M", 1.08}, {"F", 1.07}};
+  for (auto& c : doc["cases"]) {
+    const std::string id = c["id"];
+    if (id.starts_with("H_p/") && id.ends_with("/Q4/LMP/ss")) {
+      const double v = a_fe.at(std::string(c["mesh"]));
+      c["quantities"]["contact_half_width"] = {
+          {"value", v}, {"exact", 1.0}, {"error_percent", 100.0 * (v - 1.0)}, {"grade", "g"}};
+    }
+  }
+  nlohmann::json row = doc["rows"][0];
+  row["id"] = "H_p/Q4/LMP/ss/contact_half_width";
+  row["problem"] = "H_p";
+  row["algorithm"] = "LMP";
+  row["quantity"] = "contact_half_width";
+  row["values"] = a_fe;
+  row["error_percent"] = {{"C", 9.0}, {"M", 8.0}, {"F", 7.0}};
+  doc["rows"].push_back(row);
+  const testing::Loaded data(doc);
+  const auto* r = data.index.row(ProblemId::H_p, Quantity::contact_half_width, schema::Element::Q4,
+                                 {schema::Algorithm::LMP, schema::ContactKind::ss});
+  ASSERT_NE(r, nullptr);
+  // Nodes 0.125 a apart on C: half of that is 6.25 % of a; on F, 1.5625 %.
+  EXPECT_DOUBLE_EQ(data.index.read_resolution_percent(*r, MeshLevel::C), 6.25);
+  EXPECT_DOUBLE_EQ(data.index.read_resolution_percent(*r, MeshLevel::F), 1.5625);
+  const RowFacts f = facts_of_row(data.index, *r);
+  ASSERT_TRUE(f.trend.has_value());
+  // 9 -> 8 -> 7 % moves by 1 < 6.25 points (read at a point: converging, order 0.18).
+  EXPECT_EQ(f.trend->trend, schema::Trend::settled);
+  EXPECT_FALSE(f.order.has_value());
+  // A quantity read at a point has no such floor.
+  const auto* sigma = data.index.row(ProblemId::H_p, Quantity::sigma_c, schema::Element::Q4,
+                                     {schema::Algorithm::LMP, schema::ContactKind::ss});
+  ASSERT_NE(sigma, nullptr);
+  EXPECT_EQ(data.index.read_resolution_percent(*sigma, MeshLevel::C), 0.0);
 }
 
 }  // namespace
