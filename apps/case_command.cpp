@@ -87,6 +87,8 @@ void check_vtu_path(const std::string& path) {
 void print_text(const suites::CaseResult& r) {
   fmt::print("{}  {}{}\n", suites::case_id(r.spec), suites::to_string(r.status),
              r.reason.empty() ? "" : "  (" + r.reason + ")");
+  if (!r.kept_files.empty())
+    fmt::print("  files kept in {}\n", r.kept_files);
   fmt::print("  {} elements, {} equations, {} iterations, {:.3f} s\n", r.n_elements, r.n_equations,
              r.iterations, r.wall_seconds);
   for (const auto& q : r.quantities) {

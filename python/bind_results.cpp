@@ -74,6 +74,8 @@ void bind_case(py::module_& m) {
       .def_property_readonly("id", [](const C& c) { return s::case_id(c.spec); })
       .def_property_readonly("status", [](const C& c) { return name(c.status); })
       .def_readonly("reason", &C::reason)
+      .def_readonly("kept_files", &C::kept_files,
+                    "where another code's failed or unconverged run left its files ('' if none)")
       .def_readonly("iterations", &C::iterations)
       .def_readonly("wall_seconds", &C::wall_seconds, "[s]")
       .def_readonly("peak_rss_mb", &C::peak_rss_mb, "[MB]")

@@ -59,6 +59,9 @@ struct CaseResult {
   CaseSpec spec;
   CaseStatus status = CaseStatus::failed;
   std::string reason;  ///< why a case did not converge or failed; empty when converged
+  /// Where another code's run that did not converge or failed left its files for inspection
+  /// (results.json only, not the reason: the directory differs between runs); empty if none.
+  std::string kept_files;
   int iterations = 0;  ///< active-set (+ augmentation) iterations
   double wall_seconds = 0.0;
   double peak_rss_mb = 0.0;     ///< process peak resident memory when the case finished

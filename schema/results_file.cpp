@@ -22,6 +22,23 @@ constexpr int kMigratedSchemaVersion = 3;
 /// Version 3's solver of every CalculiX case; version 4 names the option ("calculix:<label>").
 constexpr std::string_view kCalculixWithoutOption = "calculix";
 
+/// Files written before `kept_files` ended a kept run's reason with where its files were kept,
+/// "... (files kept in DIR)" or "... (CalculiX files kept in DIR)": split into the two fields,
+/// so that the reason is the same in every run.
+void split_kept_files(CaseResult& c) {
+  if (!c.kept_files.empty() || !c.reason.ends_with(")"))
+    return;
+  for (const std::string_view marker : {" (CalculiX files kept in ", " (files kept in "}) {
+    const auto at = c.reason.rfind(marker);
+    if (at == std::string::npos)
+      continue;
+    const auto dir = at + marker.size();
+    c.kept_files = c.reason.substr(dir, c.reason.size() - 1 - dir);
+    c.reason.erase(at);
+    return;
+  }
+}
+
 json numbers_or_null(const std::vector<double>& v) {
   json a = json::array();
   for (double x : v)
@@ -270,6 +287,8 @@ json to_json(const CaseResult& r) {
   spec_to_json(r.spec, j);
   j["status"] = to_string(r.status);
   j["reason"] = r.reason;
+  if (!r.kept_files.empty())
+    j["kept_files"] = r.kept_files;
   j["iterations"] = r.iterations;
   j["wall_seconds"] = number_or_null(r.wall_seconds);
   j["peak_rss_mb"] = number_or_null(r.peak_rss_mb);
@@ -305,6 +324,8 @@ CaseResult case_from_json(const json& j, const std::string& path) {
   check_id(r, case_id(c.spec));
   c.status = r.name<CaseStatus>("status");
   c.reason = r.optional_string("reason");
+  c.kept_files = r.optional_string("kept_files");
+  split_kept_files(c);
   c.iterations = static_cast<int>(r.optional_integer("iterations", 0, 0, kIntMax));
   c.wall_seconds = r.number("wall_seconds", true);
   c.peak_rss_mb = r.number("peak_rss_mb", true);

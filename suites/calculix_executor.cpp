@@ -89,9 +89,10 @@ void fill_values(const ProblemSetup& setup, const ccx::CalculixResult& run, Case
   result.interface = check_interface_of_displacements(setup, interface, u);
 }
 
-std::string with_kept_directory(std::string reason, const std::filesystem::path& dir) {
-  return (reason.empty() ? std::string("CalculiX failed") : std::move(reason)) +
-         " (CalculiX files kept in " + dir.string() + ")";
+/// A run that did not converge or failed: its reason, and the directory it keeps.
+void keep_failure(std::string reason, const std::filesystem::path& dir, CaseResult& result) {
+  result.reason = reason.empty() ? std::string("CalculiX failed") : std::move(reason);
+  result.kept_files = dir.string();
 }
 
 }  // namespace
@@ -140,7 +141,7 @@ CaseResult CalculixExecutor::run(const CaseSpec& spec) {
     try {
       last_ = ccx::run_calculix(setup_->model, setup_->pair, options, dir);
     } catch (const std::exception& e) {  // ccx missing, a deck it cannot take: this case only
-      result.reason = with_kept_directory(e.what(), dir);
+      keep_failure(e.what(), dir, result);
       mark_missing(*setup_, result);
       return result;
     }
@@ -154,7 +155,7 @@ CaseResult CalculixExecutor::run(const CaseSpec& spec) {
   result.iterations = std::max(last_->iterations, 0);
   result.peak_rss_mb = last_->peak_rss_mb;
   if (!last_->converged()) {
-    result.reason = with_kept_directory(last_->reason, dir);
+    keep_failure(last_->reason, dir, result);
     mark_missing(*setup_, result);
     return result;
   }

@@ -106,6 +106,7 @@ CaseSpec external_case(const CaseSpec& model_case, const protocol::SolverManifes
 struct ExternalExecutor::Run {
   std::string key;      ///< the case id less its recovery
   std::string failure;  ///< why there are no values ("" if there are)
+  fs::path kept;        ///< the case directory kept for inspection (empty: removed)
   bool not_converged = false;
   protocol::ResultFiles files;
   platform::ChildResult child;
@@ -162,33 +163,29 @@ const ExternalExecutor::Run& ExternalExecutor::run_code(const CaseSpec& spec) {
     if (entry.path().filename() != "case")
       beside.insert(entry.path().filename().string());
   const std::string adapter_change = first_change(adapter_before, listing(code.folder));
-  const auto keep = fmt::format(" (files kept in {})", case_dir.string());
   if (!run.child.succeeded()) {
     const std::string said = last_error_line(child.stderr_path);
     run.failure =
-        fmt::format("{} {}{}", code.name, run.child.describe(), said.empty() ? "" : ": " + said) +
-        keep;
+        fmt::format("{} {}{}", code.name, run.child.describe(), said.empty() ? "" : ": " + said);
   } else if (!beside.empty()) {
     run.failure = fmt::format("{} wrote outside the case directory: {}", code.name,
-                              (run_dir / *beside.begin()).string()) +
-                  keep;
+                              (run_dir / *beside.begin()).string());
   } else if (!adapter_change.empty()) {
     run.failure = fmt::format("{} wrote outside the case directory: {}", code.name,
-                              (code.folder / adapter_change).string()) +
-                  keep;
+                              (code.folder / adapter_change).string());
   } else {
     run.files = protocol::read_result_files(case_dir, setup_->model.mesh.n_nodes(),
                                             deformable_nodes(*setup_));
     if (!run.files.error.empty())
-      run.failure = run.files.error + keep;
+      run.failure = run.files.error;
     else if (run.files.converged && !*run.files.converged)
       run.not_converged = true;
   }
   if (run.failure.empty() && !run.not_converged) {
     std::error_code ignored;
     fs::remove_all(run_dir, ignored);
-  } else if (run.not_converged) {
-    run.files.reason += keep;
+  } else {
+    run.kept = case_dir;
   }
   return run;
 }
@@ -207,6 +204,7 @@ CaseResult ExternalExecutor::run(const CaseSpec& spec) {
     return result;
   }
   const Run& run = run_code(spec);
+  result.kept_files = run.kept.string();
   result.peak_rss_mb = run.child.peak_rss_mb;
   result.iterations = run.files.iterations;
   result.n_equations = run.files.n_equations;

@@ -112,7 +112,8 @@ TEST(SolverProtocolCli, StandInCodeIsRunAndGradedOnBothBases) {
 
 // Requirement: a run of another code leaves nothing in the temporary directory once its cases
 // converged (their directories and the process's run directory are removed), and keeps a
-// failed case's files there, under the path its reason names.
+// failed case's files there, under the path results.json's kept_files names (not the reason,
+// which stays the same from run to run).
 TEST(SolverProtocolCli, RunDirectoryIsRemovedUnlessACaseKeepsItsFiles) {
   TempDir dir;
   make_code_folder(dir.path() / "patch_code");
@@ -130,8 +131,11 @@ TEST(SolverProtocolCli, RunDirectoryIsRemovedUnlessACaseKeepsItsFiles) {
   ASSERT_FALSE(fs::is_empty(kept));
   const auto cases = cases_by_id(dir.path() / "exit3-out" / "results.json");
   ASSERT_FALSE(cases.empty());
-  const std::string reason = cases.begin()->second.at("reason");
-  EXPECT_NE(reason.find(kept.string()), std::string::npos) << reason;
+  const auto& failed = cases.begin()->second;
+  const std::string reason = failed.at("reason"), kept_files = failed.at("kept_files");
+  EXPECT_EQ(kept_files.rfind(kept.string(), 0), 0u) << kept_files;
+  EXPECT_TRUE(fs::is_directory(kept_files)) << kept_files;
+  EXPECT_EQ(reason.find(kept.string()), std::string::npos) << reason;
 }
 
 // Requirement: a temporary directory that does not exist is bad input: exit 2 and one line

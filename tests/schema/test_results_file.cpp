@@ -92,6 +92,29 @@ TEST(SchemaResultsFile, RoundTripsEveryField) {
   EXPECT_EQ(back.cases[0].interface->max_penetration_over_h, std::optional<double>(0.25));
 }
 
+// Requirement: where a kept run's files are is a field of its own, so that the reason is the
+// same in every run; a file written before the field existed has it split off its reason.
+TEST(SchemaResultsFile, KeptFilesRoundTripAndAreSplitOffAnOlderReason) {
+  ResultsDocument doc = small_document();
+  doc.cases[0].status = CaseStatus::failed;
+  doc.cases[0].reason = "*ERROR: too many cutbacks";
+  doc.cases[0].kept_files = "/tmp/contact-suite-ccx.AbC/F_p_M";
+  const json once = to_json(doc);
+  EXPECT_EQ(once["cases"][0]["kept_files"], "/tmp/contact-suite-ccx.AbC/F_p_M");
+  EXPECT_EQ(to_json(results_from_json(once, "mem")), once);
+  json older = once;
+  older["cases"][0].erase("kept_files");
+  older["cases"][0]["reason"] =
+      "*ERROR: too many cutbacks (CalculiX files kept in /tmp/contact-suite-ccx.AbC/F_p_M)";
+  EXPECT_EQ(to_json(results_from_json(older, "old")), once);
+  older["cases"][0]["reason"] = "GetFEM's Newton stopped (files kept in /tmp/x (1)/case)";
+  const CaseResult c = results_from_json(older, "old").cases[0];
+  EXPECT_EQ(c.reason, "GetFEM's Newton stopped");
+  EXPECT_EQ(c.kept_files, "/tmp/x (1)/case");
+  // A converged case writes no kept_files.
+  EXPECT_FALSE(to_json(small_document())["cases"][0].contains("kept_files"));
+}
+
 TEST(SchemaResultsFile, RejectsWrongTypesWithTheFieldPath) {
   expect_rejected([](json& j) { j["schema_version"] = "3"; }, "R.schema_version: is a string");
   expect_rejected([](json& j) { j["schema_version"] = 4294967298ULL; }, "out of range");
