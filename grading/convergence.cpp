@@ -20,12 +20,14 @@ bool never_grows(double c, double m, double f, double tol) {
   return m <= c + tol && f <= m + tol;
 }
 
+/// |e| within a read's resolution `r` > 0 (an edge at a node reads exactly half a node off).
+bool within(double e, double r) {
+  return r > 0.0 && std::abs(e) <= r * (1.0 + 1e-9);
+}
+
 /// |e| within the read's resolution on every mesh: r on C, r/2 on M, r/4 on F (h halves).
 bool within_read_resolution(double e_c, double e_m, double e_f, double r) {
-  const auto within = [](double e, double bound) {
-    return std::abs(e) <= bound * (1.0 + 1e-9);  // an edge at a node reads exactly h/2 off
-  };
-  return r > 0.0 && within(e_c, r) && within(e_m, r / 2) && within(e_f, r / 4);
+  return within(e_c, r) && within(e_m, r / 2) && within(e_f, r / 4);
 }
 
 }  // namespace
@@ -48,43 +50,44 @@ double node_read_resolution_percent(double node_spacing, double exact) {
 ConvergenceAssessment assess_convergence(double e_c, double e_m, double e_f,
                                          double resolution_percent) {
   ConvergenceAssessment out;
-  const double relative = kPlateauFraction * std::abs(e_f);
   if (within_read_resolution(e_c, e_m, e_f, resolution_percent)) {
     out.trend = Trend::converging;
     out.floor_percent = resolution_percent;
+    out.pair_floors = {resolution_percent, resolution_percent / 2};
     out.floor_reason = fmt::format(
         "within half a node spacing on every mesh ({:.3g} points on C): the read converges "
         "with the spacing",
         resolution_percent);
     return out;
   }
-  if (resolution_percent > std::max(relative, kErrorResolutionPercent)) {
-    out.floor_percent = resolution_percent;
+  const double relative = kPlateauFraction * std::abs(e_f);
+  const double base = std::max(relative, kErrorResolutionPercent);
+  out.pair_floors = {std::max(base, resolution_percent), std::max(base, resolution_percent / 2)};
+  out.floor_percent = out.pair_floors[0];
+  if (resolution_percent > base) {
     out.floor_reason = fmt::format(
-        "half the node spacing on C ({:.3g} points): the resolution of a value read between "
-        "two nodes",
+        "half the node spacing on the coarser mesh of each pair ({:.3g} points on C): the "
+        "resolution of a value read between two nodes",
         resolution_percent);
   } else if (relative > kErrorResolutionPercent) {
-    out.floor_percent = relative;
     out.floor_reason = fmt::format(
         "a tenth of the F error ({:.3g} points): a smaller change cannot be told from the "
         "error's plateau",
         relative);
   } else {
-    out.floor_percent = kErrorResolutionPercent;
     out.floor_reason =
         fmt::format("{:g} percentage points: the resolution of the study's 4-decimal values",
                     kErrorResolutionPercent);
   }
   if (!all_finite(e_c, e_m, e_f))
     return out;  // not_converging
-  const double floor = out.floor_percent;
-  if (std::abs(e_m - e_c) < floor && std::abs(e_f - e_m) < floor) {
+  const auto [f1, f2] = out.pair_floors;
+  if (std::abs(e_m - e_c) < f1 && std::abs(e_f - e_m) < f2) {
     out.trend = Trend::settled;
     return out;
   }
   const double c = std::abs(e_c), m = std::abs(e_m), f = std::abs(e_f);
-  if (never_grows(c, m, f, floor) && f < c - floor)
+  if (m <= c + f1 && f <= m + f2 && f < c - f1)
     out.trend = Trend::converging;
   return out;
 }
@@ -107,13 +110,21 @@ ObservedOrder observed_order(double e_c, double e_m, double e_f, double resoluti
     out.note = "within half a node spacing on every mesh";
     return out;
   }
-  const Trend trend = assess_convergence(e_c, e_m, e_f, resolution_percent).trend;
-  if (!p1 || !p2 || trend == Trend::settled) {
+  const ConvergenceAssessment a = assess_convergence(e_c, e_m, e_f, resolution_percent);
+  if (!p1 || !p2 || a.trend == Trend::settled) {
     out.note = "at noise level";
     return out;
   }
-  if (trend != Trend::converging || !(*p1 > 0.0) || !(*p2 > 0.0)) {
+  if (a.trend != Trend::converging || !(*p1 > 0.0) || !(*p2 > 0.0)) {
     out.note = "not monotone";
+    return out;
+  }
+  if (std::abs(e_m - e_c) < a.pair_floors[0] || std::abs(e_f - e_m) < a.pair_floors[1]) {
+    out.note = "at noise level";  // one pair's change within its floor: no order from it
+    return out;
+  }
+  if (e_c * e_m < 0.0 || e_m * e_f < 0.0) {
+    out.note = "changes sign";  // through zero: the magnitudes' ratios are no order
     return out;
   }
   if (const double coarse = std::max(std::abs(e_c), std::abs(e_m));
@@ -141,8 +152,7 @@ RefinementStep refinement_step(double e_f, double e_vf, double resolution_percen
   if (!std::isfinite(e_f) || !std::isfinite(e_vf))
     return RefinementStep::farther;
   const double f = std::abs(e_f), vf = std::abs(e_vf);
-  if (resolution_percent > 0.0 && f <= resolution_percent * (1.0 + 1e-9) &&
-      vf <= 0.5 * resolution_percent * (1.0 + 1e-9))
+  if (within(f, resolution_percent) && within(vf, resolution_percent / 2))
     return RefinementStep::closer;  // within half a node on both: converging with the spacing
   const double floor =
       std::max({kErrorResolutionPercent, kPlateauFraction * f, resolution_percent});

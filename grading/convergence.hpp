@@ -27,7 +27,8 @@ bool study_converging(double e_c, double e_m, double e_f);
 /// The noise-aware verdict, the floor below which a change is noise, and which bound set it.
 struct ConvergenceAssessment {
   Trend trend = Trend::not_converging;
-  double floor_percent = 0.0;  ///< percentage points
+  double floor_percent = 0.0;           ///< percentage points: C -> M's (the larger)
+  std::array<double, 2> pair_floors{};  ///< C -> M, M -> F
   std::string floor_reason;
 };
 
@@ -42,22 +43,23 @@ inline constexpr double kPlateauFraction = 0.1;
 /// is not a positive finite length.
 double node_read_resolution_percent(double node_spacing, double exact);
 
-/// The noise-aware convergence verdict of the errors on C, M, F:
-///   floor = max(kErrorResolutionPercent, kPlateauFraction |e_F|, r), where r =
-///           `resolution_percent` is the quantity's own resolution on C (0 for a value read at
-///           a point; node_read_resolution_percent on C for one read between two nodes);
+/// The noise-aware convergence verdict of the errors on C, M, F, with a floor per mesh pair:
+///   base = max(kErrorResolutionPercent, kPlateauFraction |e_F|); r = `resolution_percent`,
+///          the quantity's own resolution on C (0 for a value read at a point;
+///          node_read_resolution_percent on C for one read between two nodes, which halves
+///          with h); f1 = max(base, r) for C -> M and f2 = max(base, r/2) for M -> F;
 ///   converging     when r > 0 and |e_C| <= r, |e_M| <= r/2, |e_F| <= r/4: the read is as
 ///                  close as its resolution on every mesh, and that halves with h;
-///   settled        when |e_M - e_C| < floor and |e_F - e_M| < floor (a plateau: the grade
-///                  tells how good it is);
-///   converging     when |e_M| <= |e_C| + floor, |e_F| <= |e_M| + floor and
-///                  |e_F| < |e_C| - floor;
+///   settled        when |e_M - e_C| < f1 and |e_F - e_M| < f2 (a plateau: the grade tells how
+///                  good it is);
+///   converging     when |e_M| <= |e_C| + f1, |e_F| <= |e_M| + f2 and |e_F| < |e_C| - f1;
 ///   not_converging otherwise, and when an error is not finite.
 /// A plateau reached through noise of a few thousandths of a point (S(1/3) Q8 LMP ss
 /// -0.3194/-0.3217/-0.3130 %, ns -0.3238/-0.3239/-0.3124 %) is settled either way, where the
 /// study's flag tells the two apart on a 0.001-point difference. A contact half-width read
-/// between nodes 0.038 points apart on C (S(1/7) Q4: +0.12/+0.10/+0.07 %) is settled too; one
-/// that is half a node off on every mesh (H_p Q4: +12.5/+6.25/+3.12 %, r = 12.5) converges.
+/// between nodes (S(1/7) Q4, r = 0.038 points) that moves by 0.02 from C to M is within C's
+/// floor; one that is half a node off on every mesh (H_p Q4: +12.5/+6.25/+3.12 %, r = 12.5)
+/// converges.
 ConvergenceAssessment assess_convergence(double e_c, double e_m, double e_f,
                                          double resolution_percent = 0.0);
 
@@ -96,14 +98,16 @@ struct ObservedOrder {
 
 /// Pair orders p1 = log2(|e_C|/|e_M|), p2 = log2(|e_M|/|e_F|) (see pair_order) and their mean
 /// as the observed order, given only when assess_convergence (with `resolution_percent`) finds
-/// the sequence converging, p1 > 0, p2 > 0, |p1 - p2| <= kAsymptoticOrderSpread and neither C
-/// nor M is unresolved (|e| < kUnresolvedErrorPercent). Otherwise `note` says why: "within half
-/// a node spacing on every mesh" (the order would be the read's, not the solution's), "at noise
-/// level" (an error at round-off, or the trend settled), "not monotone" (the trend is not
-/// converging, or an error grows within the floor), "pre-asymptotic (p1 = .., p2 = .. differ by
-/// ..)" or "pre-asymptotic (.. % on C or M: not resolved)". 4 -> 1 -> 0.25 has order 2;
-/// 445 -> 310 -> 0.68 (p1 0.52, p2 8.8) has none, nor has 427 -> 65 -> 5.0 (p1 2.7, p2 3.7:
-/// within one order, but from a mesh that does not resolve the quantity).
+/// the sequence converging, each pair's change is at least its floor, p1 > 0, p2 > 0, the error
+/// keeps its sign, |p1 - p2| <= kAsymptoticOrderSpread and neither C nor M is unresolved
+/// (|e| < kUnresolvedErrorPercent). Otherwise `note` says why: "within half a node spacing on
+/// every mesh" (the order would be the read's, not the solution's), "at noise level" (an error
+/// at round-off, the trend settled, or one pair's change within its floor), "not monotone" (the
+/// trend is not converging, or an error grows within the floor), "changes sign" (H_a Q4 AL ss
+/// sigma_c +3.74 -> +1.92 -> -0.77 %: magnitudes through zero give no order), "pre-asymptotic
+/// (p1 = .., p2 = .. differ by ..)" or "pre-asymptotic (.. % on C or M: not resolved)". 4 -> 1 ->
+/// 0.25 has order 2; 445 -> 310 -> 0.68 (p1 0.52, p2 8.8) has none, nor has 427 -> 65 -> 5.0
+/// (p1 2.7, p2 3.7: within one order, but from a mesh that does not resolve the quantity).
 ObservedOrder observed_order(double e_c, double e_m, double e_f, double resolution_percent = 0.0);
 
 /// The luck of one mesh: the F error grades e or g (Eq. 46) after an error of at least

@@ -82,9 +82,10 @@ void bind_grading(py::module_& m) {
       },
       py::kw_only(), "error_c"_a, "error_m"_a, "error_f"_a, "resolution_percent"_a = 0.0,
       "The noise-aware verdict on the errors [%] of C, M, F: ('converging' | 'settled' | "
-      "'not_converging', floor [percentage points], the floor's reason); floor = max(0.01, "
-      "0.1 |e_F|, resolution_percent), the last the quantity's own resolution on C (half the "
-      "node spacing for one read between two nodes, node_read_resolution_percent).");
+      "'not_converging', floor [percentage points], the floor's reason); the floor of C -> M, "
+      "max(0.01, 0.1 |e_F|, resolution_percent), the last the quantity's own resolution on C "
+      "(half the node spacing for one read between two nodes, node_read_resolution_percent); "
+      "M -> F's takes half the resolution.");
   m.def(
       "observed_order",
       [](double e_c, double e_m, double e_f, double resolution) {

@@ -9,6 +9,7 @@
 
 #include "grading/accuracy.hpp"
 #include "grading/convergence.hpp"
+#include "reports/tables/option_classes.hpp"
 
 namespace cs::reports {
 namespace {
@@ -47,7 +48,41 @@ bool graded_in_verdict(const ResultsIndex& index, ProblemId problem, schema::Qua
          q != schema::Quantity::contact_half_width;
 }
 
-using CellKey = std::tuple<std::string, OptionFamily, schema::ContactKind, schema::Element>;
+using CellKey = std::tuple<std::string, OptionFamily, std::optional<schema::Algorithm>,
+                           schema::ContactKind, schema::Element>;
+
+/// Our families whose two members do not coincide (compare_options, the problem pages' rule)
+/// on some row of the situation's problems, e.g. AL and PM with friction: their cells there
+/// are split by algorithm, so that no cell shows one member's error under both names.
+std::set<OptionFamily> split_families(const ResultsIndex& index, const std::vector<RowFacts>& rows,
+                                      const std::vector<DivergenceFacts>& singular,
+                                      const std::vector<ProblemId>& problems) {
+  std::set<std::tuple<ProblemId, schema::Quantity, schema::Element>> keys;
+  const auto in_situation = [&](ProblemId p) {
+    return std::find(problems.begin(), problems.end(), p) != problems.end();
+  };
+  for (const auto& f : rows) {
+    if (f.code.empty() && in_situation(f.problem))
+      keys.insert({f.problem, f.quantity, f.element});
+  }
+  for (const auto& d : singular) {
+    if (d.code.empty() && in_situation(d.problem))
+      keys.insert({d.problem, d.row->quantity, d.element});
+  }
+  std::vector<Slot> slots;
+  for (const auto& [problem, quantity, element] : keys)
+    slots.push_back({problem, quantity, element});
+  std::set<OptionFamily> out;
+  for (const auto& [a, b] : {std::pair{schema::Algorithm::AL, schema::Algorithm::PM},
+                             std::pair{schema::Algorithm::LMP, schema::Algorithm::PLM}}) {
+    for (const auto contact : schema::values<schema::ContactKind>()) {
+      const OptionComparison c = compare_options(index, {a, contact}, {b, contact}, slots);
+      if (c.compared > 0 && !c.coincide())
+        out.insert(family_of(a));
+    }
+  }
+  return out;
+}
 
 void add_row(OptionCell& cell, const RowFacts& f) {
   cell.rows.push_back(&f);
@@ -70,11 +105,17 @@ std::vector<OptionCell> make_cells(const ResultsIndex& index,
                                    const std::vector<RowFacts>& rows,
                                    const std::vector<DivergenceFacts>& singular) {
   std::map<CellKey, OptionCell> cells;
+  const std::set<OptionFamily> split = split_families(index, rows, singular, problems);
   const auto cell_of = [&](const std::string& code, const Option& o,
                            schema::Element el) -> OptionCell& {
-    OptionCell& c = cells[{code, family_of(o.algorithm), o.contact, el}];
+    const OptionFamily family = family_of(o.algorithm);
+    std::optional<schema::Algorithm> algorithm;
+    if (code.empty() && split.contains(family))
+      algorithm = o.algorithm;
+    OptionCell& c = cells[{code, family, algorithm, o.contact, el}];
     c.code = code;
-    c.family = family_of(o.algorithm);
+    c.family = family;
+    c.algorithm = algorithm;
     c.contact = o.contact;
     c.element = el;
     return c;
@@ -193,17 +234,28 @@ std::string family_label(OptionFamily family) {
   return {};
 }
 
+namespace {
+
+/// "AL, PM", or "PM" for a cell of one algorithm of its family.
+std::string group_label(OptionFamily family, const std::optional<schema::Algorithm>& algorithm) {
+  return algorithm ? std::string(schema::to_string(*algorithm)) : family_label(family);
+}
+
+}  // namespace
+
 std::string option_label(const OptionCell& cell) {
-  return cell.code.empty() ? family_label(cell.family) + " " + std::string(to_string(cell.contact))
-                           : cell.code;
+  return cell.code.empty()
+             ? group_label(cell.family, cell.algorithm) + " " + std::string(to_string(cell.contact))
+             : cell.code;
 }
 
 std::string cells_label(const std::vector<const OptionCell*>& cells) {
   // Ours by family (its discretizations listed), then each other code's option (its label names
   // the discretization).
-  std::map<std::pair<std::string, OptionFamily>, std::map<schema::Element, std::string>> by;
+  using Key = std::tuple<std::string, OptionFamily, std::optional<schema::Algorithm>>;
+  std::map<Key, std::map<schema::Element, std::string>> by;
   for (const OptionCell* c : cells) {
-    std::string& contacts = by[{c->code, c->family}][c->element];
+    std::string& contacts = by[{c->code, c->family, c->algorithm}][c->element];
     if (c->code.empty())
       contacts += (contacts.empty() ? "" : "/") + std::string(schema::to_string(c->contact));
   }
@@ -218,8 +270,9 @@ std::string cells_label(const std::vector<const OptionCell*>& cells) {
     std::string part;
     for (const auto& [contacts, els] : by_contacts)
       part += (part.empty() ? " " : ", ") + (contacts.empty() ? "" : contacts + " ") + els;
-    const auto& [code, family] = key;
-    out += (out.empty() ? "" : "; ") + (code.empty() ? family_label(family) : code) + part;
+    const auto& [code, family, algorithm] = key;
+    out +=
+        (out.empty() ? "" : "; ") + (code.empty() ? group_label(family, algorithm) : code) + part;
   }
   return out;
 }

@@ -21,6 +21,9 @@ namespace cs::reports {
 struct OptionCell {
   std::string code;  ///< empty for ours
   OptionFamily family = OptionFamily::penalty;
+  /// Set where the family's members give other results in the situation (AL and PM with
+  /// friction): the cell is this algorithm's alone.
+  std::optional<schema::Algorithm> algorithm;
   schema::ContactKind contact = schema::ContactKind::ss;
   schema::Element element = schema::Element::Q4;
   std::vector<const RowFacts*> rows;                  ///< nonsingular situations
@@ -64,7 +67,8 @@ std::vector<SituationVerdict> situation_verdicts(const ResultsIndex& index,
 /// "AL, PM", "LMP, PLM" or "MPC".
 std::string family_label(OptionFamily family);
 
-/// A cell's option as a matrix row names it: "AL, PM ss", "calculix linear-ss".
+/// A cell's option as a matrix row names it: "AL, PM ss", "calculix linear-ss"; "PM ss" for a
+/// cell of one algorithm of its family.
 std::string option_label(const OptionCell& cell);
 
 /// A compact list of cells: "AL, PM ss/ns/mortar Q4, ss Q8; LMP, PLM ss Q4; calculix linear-ss

@@ -39,7 +39,9 @@ TemplateData matrix(const std::vector<SituationVerdict>& situations, Element ele
     for (const auto& c : s.cells) {
       if (c.element == element) {
         options.insert(row_of(c));
-        labels[row_of(c)] = option_label(c);
+        OptionCell family_row = c;  // the row is the family's, even where a cell is split
+        family_row.algorithm.reset();
+        labels[row_of(c)] = option_label(family_row);
       }
     }
   }
@@ -50,10 +52,17 @@ TemplateData matrix(const std::vector<SituationVerdict>& situations, Element ele
   for (const Row& option : options) {
     std::vector<std::string> row{labels.at(option)};
     for (const auto& s : situations) {
-      const auto c = std::find_if(s.cells.begin(), s.cells.end(), [&](const OptionCell& c) {
-        return c.element == element && row_of(c) == option;
-      });
-      row.push_back(c == s.cells.end() ? std::string(kMissing) : verdict_cell(*c));
+      // One cell, or one per algorithm where the family's members differ ("AL s −7.07 % · PM
+      // u +10.5 %").
+      std::vector<std::string> parts;
+      for (const auto& c : s.cells) {
+        if (c.element == element && row_of(c) == option)
+          parts.push_back(
+              c.algorithm ? fmt::format("{} {}", schema::to_string(*c.algorithm), verdict_cell(c))
+                          : verdict_cell(c));
+      }
+      row.push_back(parts.empty() ? std::string(kMissing)
+                                  : fmt::format("{}", fmt::join(parts, " · ")));
     }
     table.add_row(std::move(row));
   }
@@ -99,9 +108,11 @@ TemplateData failures(const SituationVerdict& s) {
     return std::find(s.common_failures.begin(), s.common_failures.end(), check) !=
            s.common_failures.end();
   };
-  std::map<std::pair<std::string, OptionFamily>, std::vector<const OptionCell*>> by_option;
+  std::map<std::tuple<std::string, OptionFamily, std::optional<schema::Algorithm>>,
+           std::vector<const OptionCell*>>
+      by_option;
   for (const OptionCell* c : s.avoid)
-    by_option[{c->code, c->family}].push_back(c);
+    by_option[{c->code, c->family, c->algorithm}].push_back(c);
   TemplateData list{TemplateData::type::list};
   if (!s.common_failures.empty()) {
     std::vector<const OptionCell*> all;

@@ -68,15 +68,18 @@ TEST(AssessConvergence, SmallErrorsUseTheStudysResolutionAsTheFloor) {
 
 TEST(AssessConvergence, AValueReadBetweenNodesSettlesWithinHalfANodeSpacing) {
   // S(1/7) Q4 a_FE: nodes 0.000764 b apart on C, exact 1.0047 b: half a spacing is 0.038
-  // points. +0.12 -> +0.10 -> +0.07 % moves by less on each mesh: settled, no order (it was
-  // "converging, order 0.39" against the 0.01-point floor of a value read at a point).
+  // points on C, 0.019 on M. +0.12 -> +0.10 -> +0.09 % moves by less on each pair: settled
+  // (against the 0.01-point floor of a value read at a point it converges).
   const double resolution = node_read_resolution_percent(0.000764, 1.0047);
   EXPECT_TRUE(Near(resolution, 100.0 * 0.000382 / 1.0047, {1e-12, 0}));  // machine precision
-  const auto a = assess_convergence(0.12, 0.10, 0.07, resolution);
+  const auto a = assess_convergence(0.12, 0.10, 0.09, resolution);
   EXPECT_EQ(a.trend, Trend::settled);
   EXPECT_EQ(a.floor_percent, resolution);
   EXPECT_NE(a.floor_reason.find("node spacing"), std::string::npos) << a.floor_reason;
-  EXPECT_EQ(assess_convergence(0.12, 0.10, 0.07).trend, Trend::converging);
+  EXPECT_EQ(assess_convergence(0.12, 0.10, 0.09).trend, Trend::converging);
+  // The committed row, +0.12 -> +0.10 -> +0.07 %, falls beyond M's 0.019 on F: converging, but
+  // with no order (it was 0.39): C -> M moves 0.02, within C's 0.038.
+  EXPECT_EQ(assess_convergence(0.12, 0.10, 0.07, resolution).trend, Trend::converging);
   EXPECT_EQ(observed_order(0.12, 0.10, 0.07, resolution).note, "at noise level");
   // H_p Q4 a_FE: the edge at a node, read half a node off on every mesh (nodes 0.25 a apart
   // on C): +12.5 -> +6.25 -> +3.125 % converges with the spacing, with no order of its own.
@@ -133,6 +136,34 @@ TEST(ObservedOrder, NoOrderFromAMeshThatDoesNotResolveTheQuantity) {
   EXPECT_TRUE(Near(*resolved.order, 2.0, {1e-12, 0}));  // machine precision
 }
 
+TEST(ObservedOrder, NoOrderThroughZeroOrFromAChangeWithinItsFloor) {
+  // H_a Q4 AL ss sigma_c: +3.74 -> +1.92 -> -0.77 %, magnitudes falling, once order 1.14.
+  const auto through_zero = observed_order(3.74, 1.92, -0.77);
+  EXPECT_EQ(assess_convergence(3.74, 1.92, -0.77).trend, Trend::converging);
+  EXPECT_FALSE(through_zero.order.has_value());
+  EXPECT_EQ(through_zero.note, "changes sign");
+  // H_a Q4 MPC ns: +55.4 -> +44.5 -> +41.9 %: M -> F moves 2.6 points, within the floor of
+  // 4.19 (a tenth of e_F); it once had order 0.20.
+  const auto plateau_on_f = observed_order(55.4, 44.5, 41.9);
+  EXPECT_FALSE(plateau_on_f.order.has_value());
+  EXPECT_EQ(plateau_on_f.note, "at noise level");
+}
+
+TEST(AssessConvergence, AValueReadBetweenNodesHasAFloorPerMeshPair) {
+  // A stick-zone edge read between nodes 10 points apart on C (resolution 10, 5 on M):
+  // +23.7 -> +14.9 -> +6.07 % moves by 8.8 twice: within C's half spacing, beyond M's, and
+  // falls by more than C's: converging, with no order (C -> M is within its floor).
+  const auto a = assess_convergence(23.7, 14.9, 6.07, 10.0);
+  EXPECT_EQ(a.trend, Trend::converging);
+  EXPECT_EQ(a.pair_floors[0], 10.0);
+  EXPECT_EQ(a.pair_floors[1], 5.0);
+  EXPECT_EQ(observed_order(23.7, 14.9, 6.07, 10.0).note, "at noise level");
+  // +40 -> +10 -> +2.5 % resolves both pairs: order 2.
+  const auto resolved = observed_order(40.0, 10.0, 2.5, 10.0);
+  ASSERT_TRUE(resolved.order.has_value()) << resolved.note;
+  EXPECT_TRUE(Near(*resolved.order, 2.0, {1e-12, 0}));  // machine precision
+}
+
 TEST(ObservedOrder, NoOrderForNoiseOrNonMonotoneSequences) {
   const auto plateau = observed_order(-0.3194, -0.3217, -0.3130);
   EXPECT_FALSE(plateau.order.has_value());
@@ -148,6 +179,8 @@ TEST(ObservedOrder, NoOrderForNoiseOrNonMonotoneSequences) {
   const auto dip = observed_order(4.0, 4.05, 1.0);
   EXPECT_FALSE(dip.order.has_value());
   EXPECT_EQ(dip.note, "not monotone");
+  // Not converging, with one pair within its floor: not monotone, not noise.
+  EXPECT_EQ(observed_order(-0.47, -0.61, -0.56).note, "not monotone");
 }
 
 TEST(PairOrder, MissingOrRoundOffErrorsHaveNoOrder) {

@@ -189,9 +189,9 @@ def test_trend_and_order_of_a_value_read_between_nodes():
     that does not resolve the quantity."""
     resolution = cs.node_read_resolution_percent(node_spacing=0.000764, exact=1.0047)
     assert resolution == pytest.approx(100 * 0.000382 / 1.0047, rel=1e-14)
-    trend, floor, reason = cs.trend(error_c=0.12, error_m=0.10, error_f=0.07,
+    trend, floor, reason = cs.trend(error_c=0.12, error_m=0.10, error_f=0.09,
                                     resolution_percent=resolution)
     assert trend == "settled" and floor == resolution and "node spacing" in reason
-    assert cs.trend(error_c=0.12, error_m=0.10, error_f=0.07)[0] == "converging"
+    assert cs.trend(error_c=0.12, error_m=0.10, error_f=0.09)[0] == "converging"
     order, note = cs.observed_order(error_c=427.3, error_m=65.0, error_f=5.04)
     assert order is None and "not resolved" in note

@@ -316,6 +316,55 @@ TEST(VerdictPage, ACheckEveryOptionFailsIsSharedNotAReasonToAvoidOne) {
   EXPECT_EQ(s3[0].avoid.size(), 1U);
 }
 
+// Requirement: a row names two algorithms only where they give the same results: where AL and
+// PM differ in a situation (as with friction), the situation's cells are split by algorithm,
+// the matrix cell gives each one's error, and the advice names the one to avoid alone.
+TEST(VerdictPage, AFamilyWhoseMembersDifferIsSplitInThatSituation) {
+  schema::ResultsDocument doc = battery().doc;
+  schema::RowVerdict* pm = nullptr;
+  for (auto& r : doc.rows) {
+    if (r.id == "H_p/Q4/PM/ss/sigma_c")
+      pm = &r;
+  }
+  ASSERT_NE(pm, nullptr);
+  ASSERT_TRUE(pm->values[2] && pm->errors[2]);
+  const double exact = *pm->values[2] / (1.0 + *pm->errors[2] / 100.0);
+  pm->values[2] = 1.2 * exact;  // PM alone: +20 %, graded u
+  pm->errors[2] = 20.0;
+  const ResultsIndex index(doc);
+  const std::vector<RowFacts> rows = row_facts(index);
+  const auto situations = situation_verdicts(index, rows, divergence_facts(index));
+  const auto hertz =
+      std::find_if(situations.begin(), situations.end(),
+                   [](const SituationVerdict& s) { return s.key == "smooth_curved"; });
+  ASSERT_NE(hertz, situations.end());
+  std::map<Algorithm, const OptionCell*> ss_q4;
+  for (const auto& c : hertz->cells) {
+    if (c.code.empty() && c.family == OptionFamily::penalty &&
+        c.contact == schema::ContactKind::ss && c.element == schema::Element::Q4) {
+      ASSERT_TRUE(c.algorithm.has_value());
+      ss_q4[*c.algorithm] = &c;
+    }
+  }
+  ASSERT_EQ(ss_q4.size(), 2U);
+  EXPECT_EQ(*ss_q4.at(Algorithm::PM)->worst_grade, schema::Grade::u);
+  EXPECT_NE(*ss_q4.at(Algorithm::AL)->worst_grade, schema::Grade::u);
+  EXPECT_EQ(option_label(*ss_q4.at(Algorithm::PM)), "PM ss");
+  EXPECT_TRUE(std::count(hertz->avoid.begin(), hertz->avoid.end(), ss_q4.at(Algorithm::PM)));
+  EXPECT_FALSE(std::count(hertz->avoid.begin(), hertz->avoid.end(), ss_q4.at(Algorithm::AL)));
+  // The patch tests, where the two still coincide, keep one cell for both.
+  for (const auto& s : situations) {
+    for (const auto& c : s.cells) {
+      if (s.key != "smooth_curved")
+        EXPECT_FALSE(c.algorithm.has_value()) << s.key << " " << option_label(c);
+    }
+  }
+  const std::string md = verdict_page(index, situations);
+  EXPECT_NE(md.find("| AL, PM ss |"), std::string::npos) << md;
+  EXPECT_NE(md.find(" · PM u +20.0 %"), std::string::npos) << md;
+  EXPECT_NE(md.find("Avoid PM ss Q4"), std::string::npos) << md;
+}
+
 TEST(VerdictPage, FitsOnTheFirstScreen) {
   const auto situations = situation_verdicts(battery().index, battery().rows, battery().singular);
   const std::string md = verdict_page(battery().index, situations);
