@@ -39,6 +39,9 @@ struct ClaimEvidence {
   /// Refinement claims (9, 10): rows that settle at a nonzero error (a bias), and rows at the
   /// study's resolution already (nothing to improve).
   int n_plateau = 0, n_round_off = 0;
+  /// Claim 6: rows counted as unsatisfactory because their F case fails an interface check or
+  /// did not converge (see mpc_unsatisfactory).
+  int n_unsound = 0;
   std::string exception_examples{};
 };
 

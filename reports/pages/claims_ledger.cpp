@@ -39,6 +39,9 @@ TemplateData claim_data(const ClaimEvidence& c) {
   d.set("has_plateau", c.n_plateau > 0);
   d.set("n_round_off", std::to_string(c.n_round_off));
   d.set("has_round_off", c.n_round_off > 0);
+  d.set("n_unsound", std::to_string(c.n_unsound));
+  d.set("has_unsound", c.n_unsound > 0);
+  d.set("n_graded_unsatisfactory", std::to_string(c.n_hold - c.n_unsound));
   d.set("n_not_closer", std::to_string(c.n - c.n_hold - c.n_plateau));
   return d;
 }
