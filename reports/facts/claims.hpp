@@ -3,8 +3,11 @@
 // three Table 2 trends, AL = PM, LMP = PLM, ss = ns for the multiplier options, IMC fastest, low
 // vs high order, convergence under refinement, divergence for all options, the closing remarks),
 // each with the numbers that decide it and a verdict. Only rows that are evidence
-// (RowFacts::evidence) count; the rule that turns numbers into a verdict is written once per
-// claim, in claims.cpp. The words are in templates/claims_ledger.mustache.
+// (RowFacts::evidence; for accuracy, RowFacts::accuracy_evidence) count, except that "IMC
+// uniformly unsatisfactory" counts a row that fails an interface check or did not converge as
+// unsatisfactory; the rule that turns numbers into a verdict is written once per claim, in
+// claims.cpp, and a claim of parts takes the worst of its parts' verdicts. The words are in
+// templates/claims_ledger.mustache.
 
 #include <optional>
 #include <string>
