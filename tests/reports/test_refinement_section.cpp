@@ -176,7 +176,8 @@ namespace {
 // Requirement: the claims ledger (claims 9 and 10) and the estimates appendix judge "further
 // refinement would converge" by one rule, the trend over M-F-VF: a row whose error is the same
 // +0.71 % on every mesh is a plateau (a bias), not convergence, and fails the claim in both;
-// an MPC row exact to round-off has nothing to improve and is left out of claim 10.
+// an MPC row exact to round-off has nothing to improve and is left out of claim 10; a row that
+// is not evidence on F counts in neither place.
 TEST(RefinementSection, LedgerAndAppendixJudgeRefinementByOneRule) {
   schema::ResultsDocument doc = vf_document();
   doc.rows.clear();
@@ -190,12 +191,20 @@ TEST(RefinementSection, LedgerAndAppendixJudgeRefinementByOneRule) {
   add_row(doc, A::MPC, K::ss, {1.08, 1.07, 1.06}, 1.03);         // converges
   add_row(doc, A::MPC, K::ns, {1.0, 1.0, 1.0}, 1.0);             // round-off
   doc.rows.back().converging = true;
+  // Converging on VF, but its F case did not converge: not evidence, judged nowhere.
+  add_row(doc, A::MPC, K::mortar, {1.08, 1.07, 1.06}, 1.03);
+  for (auto& c : doc.cases) {
+    if (c.spec.contact == K::mortar && c.spec.mesh == schema::MeshLevel::F)
+      c.status = schema::CaseStatus::not_converged;
+  }
   const ResultsIndex index(doc);
   const RefinementFacts f = refinement_facts(index);
-  EXPECT_EQ(f.claim.applies, 4);
+  EXPECT_EQ(f.claim.applies, 5);
   EXPECT_EQ(f.claim.holds, 2);
   EXPECT_EQ(f.claim.plateau, 1);
   EXPECT_EQ(f.claim.fails, 1);
+  EXPECT_EQ(f.claim.not_evidence, 1);
+  EXPECT_EQ(f.mpc.not_evidence, 1);
   EXPECT_EQ(f.mpc.judged, 1);
   EXPECT_EQ(f.mpc.converges, 1);
   EXPECT_EQ(f.mpc.at_resolution, 1);
@@ -208,11 +217,13 @@ TEST(RefinementSection, LedgerAndAppendixJudgeRefinementByOneRule) {
   EXPECT_EQ(nine.n, f.claim.holds + f.claim.plateau + f.claim.fails);
   EXPECT_EQ(nine.n_hold, f.claim.holds);
   EXPECT_EQ(nine.n_plateau, f.claim.plateau);
+  EXPECT_EQ(nine.n_excluded, f.claim.not_evidence);
   EXPECT_EQ(nine.verdict, ClaimVerdict::not_reproduced);  // 2 of 4
   const ClaimEvidence ten = claim("mpc_refinement");
   EXPECT_EQ(ten.n, f.mpc.judged);
   EXPECT_EQ(ten.n_hold, f.mpc.converges);
   EXPECT_EQ(ten.n_round_off, f.mpc.at_resolution);
+  EXPECT_EQ(ten.n_excluded, f.mpc.not_evidence);
   EXPECT_EQ(ten.verdict, ClaimVerdict::reproduced);
   const std::string md = claims_ledger(claims);
   EXPECT_NE(md.find("further refinement converges in 2"), std::string::npos) << md;
