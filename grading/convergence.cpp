@@ -148,17 +148,17 @@ bool luck_of_one_mesh(double e_c, double e_m, double e_f) {
          !schema::is_worse(grade_of_error(e_f), schema::Grade::g);
 }
 
-RefinementStep refinement_step(double e_f, double e_vf, double resolution_percent) {
-  if (!std::isfinite(e_f) || !std::isfinite(e_vf))
-    return RefinementStep::farther;
-  const double f = std::abs(e_f), vf = std::abs(e_vf);
-  if (within(f, resolution_percent) && within(vf, resolution_percent / 2))
-    return RefinementStep::closer;  // within half a node on both: converging with the spacing
-  const double floor =
-      std::max({kErrorResolutionPercent, kPlateauFraction * f, resolution_percent});
-  if (vf < f - floor)
-    return RefinementStep::closer;
-  return std::abs(vf - f) <= floor ? RefinementStep::settled : RefinementStep::farther;
+FurtherRefinement further_refinement(double e_m, double e_f, double e_vf, double resolution_on_m) {
+  switch (assess_convergence(e_m, e_f, e_vf, resolution_on_m).trend) {
+    case Trend::converging:
+      return FurtherRefinement::converges;
+    case Trend::settled:
+      return std::abs(e_vf) <= kErrorResolutionPercent ? FurtherRefinement::at_resolution
+                                                       : FurtherRefinement::plateau;
+    case Trend::not_converging:
+      return FurtherRefinement::fails;
+  }
+  return FurtherRefinement::fails;
 }
 
 }  // namespace cs::grading

@@ -63,16 +63,17 @@ double node_read_resolution_percent(double node_spacing, double exact);
 ConvergenceAssessment assess_convergence(double e_c, double e_m, double e_f,
                                          double resolution_percent = 0.0);
 
-/// One more refinement (F -> VF) of a row, with r = `resolution_percent` the quantity's own
-/// resolution on F (see assess_convergence) and floor = max(kErrorResolutionPercent,
-/// kPlateauFraction |e_F|, r):
-///   closer   when |e_VF| < |e_F| - floor, or when r > 0, |e_F| <= r and |e_VF| <= r/2 (within
-///            half a node on both meshes: converging with the spacing);
-///   settled  when ||e_VF| - |e_F|| <= floor (a plateau, or an error at round-off: refinement
-///            cannot improve it);
-///   farther  otherwise, and when an error is not finite.
-enum class RefinementStep { closer, settled, farther };
-RefinementStep refinement_step(double e_f, double e_vf, double resolution_percent = 0.0);
+/// What one more mesh (VF, h/8) says of a row, judged by the noise-aware trend over M, F, VF
+/// (assess_convergence with r = `resolution_on_m`, the quantity's own resolution on M):
+///   converges      when that trend is converging (within half a node on every mesh included);
+///   at_resolution  when it is settled with |e_VF| <= kErrorResolutionPercent: nothing is left
+///                  to converge (a patch test at round-off);
+///   plateau        when it is settled at a larger error: a bias refinement does not remove
+///                  (P_a Q8 AL ns +0.71 % on C, M, F and VF), not convergence to the exact value;
+///   fails          otherwise (not converging, or an error not finite).
+enum class FurtherRefinement { converges, at_resolution, plateau, fails };
+FurtherRefinement further_refinement(double e_m, double e_f, double e_vf,
+                                     double resolution_on_m = 0.0);
 
 /// The observed order of one mesh pair (h halving), log2(|e_coarse| / |e_fine|); empty where
 /// an error is missing or below schema::kErrorNoiseFloorPercent (round-off: no order fitted).

@@ -3,8 +3,11 @@
 // three Table 2 trends, AL = PM, LMP = PLM, ss = ns for the multiplier options, IMC fastest, low
 // vs high order, convergence under refinement, divergence for all options, the closing remarks),
 // each with the numbers that decide it and a verdict. Only rows that are evidence
-// (RowFacts::evidence) count; the rule that turns numbers into a verdict is written once per
-// claim, in claims.cpp. The words are in templates/claims_ledger.mustache.
+// (RowFacts::evidence; for accuracy, RowFacts::accuracy_evidence) count, except that "IMC
+// uniformly unsatisfactory" counts a row that fails an interface check or did not converge as
+// unsatisfactory; the rule that turns numbers into a verdict is written once per claim, in
+// claims.cpp, and a claim of parts takes the worst of its parts' verdicts. The words are in
+// templates/claims_ledger.mustache.
 
 #include <optional>
 #include <string>
@@ -14,6 +17,7 @@
 
 namespace cs::reports {
 
+/// Ordered from best to worst, not testable last.
 enum class ClaimVerdict { reproduced, refined, not_reproduced, not_testable };
 std::string to_string(ClaimVerdict v);
 
@@ -27,7 +31,21 @@ struct ClaimEvidence {
   std::optional<double> figure{};   ///< a claim's deciding figure (a ratio, a difference)
   std::optional<double> figure2{};  ///< a second figure where the claim has two parts
   int n2 = 0, n2_hold = 0;          ///< a second part's counts
+  int n2_exact = 0;                 ///< second-part pairs exact on both: left out
   std::string examples{};           ///< the rows or models that break the claim, a few
+  std::string examples2{};          ///< those that break its second part, a few
+  /// A claim of parts: each part's own verdict; the claim's is the worst of them.
+  ClaimVerdict verdict1 = ClaimVerdict::not_testable, verdict2 = ClaimVerdict::not_testable;
+  /// A stated exception ("except for ..."): its evidence rows, those where it shows (below g),
+  /// and a few where it does not.
+  int n_exception = 0, n_exception_holds = 0;
+  /// Refinement claims (9, 10): rows that settle at a nonzero error (a bias), and rows at the
+  /// study's resolution already (nothing to improve).
+  int n_plateau = 0, n_round_off = 0;
+  /// Claim 6: rows counted as unsatisfactory because their F case fails an interface check or
+  /// did not converge (see mpc_unsatisfactory).
+  int n_unsound = 0;
+  std::string exception_examples{};
 };
 
 /// Every claim of the study, in the ledger's order.

@@ -136,6 +136,12 @@ OptionFamily family_of(schema::Algorithm algorithm) {
   return OptionFamily::mpc;
 }
 
+bool RowFacts::within_read_resolution() const {
+  // An edge at a node reads exactly half a spacing off (grading::node_read_resolution_percent).
+  return read_resolution_on_f > 0.0 && errors[2] &&
+         std::abs(*errors[2]) <= read_resolution_on_f * (1.0 + 1e-9);
+}
+
 RowFacts facts_of_row(const ResultsIndex& index, const schema::RowVerdict& r) {
   RowFacts f;
   f.row = &r;
@@ -150,6 +156,7 @@ RowFacts facts_of_row(const ResultsIndex& index, const schema::RowVerdict& r) {
   if (r.errors[2])
     f.grade = grading::grade_of_error(*r.errors[2]);
   f.study_c = r.converging.value_or(false);
+  f.read_resolution_on_f = index.read_resolution_percent(r, MeshLevel::F);
   add_trend(index, f);
   add_credibility(index, f);
   if (const schema::RowVerdict* twin = index.extrapolated_twin(r))

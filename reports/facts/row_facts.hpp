@@ -49,8 +49,22 @@ struct RowFacts {
   /// The same option set graded with extrapolated nodal stresses (as ANSYS prints them).
   std::optional<double> extrapolated_error;
 
+  /// The read's own resolution on F (ResultsIndex::read_resolution_percent): half a node
+  /// spacing for a value read between two nodes, 0 for one read at a point.
+  double read_resolution_on_f = 0.0;
+
   /// May this row support or refute a statement? Graded, converged on F, credible, not luck.
   bool evidence() const { return grade && fine_converged && credible && !luck; }
+
+  /// A value read between two nodes whose F error is within that read's resolution (H_a Q4
+  /// a_FE, +-6.25 %: the edge half a node spacing off): as close as the read can tell, so its
+  /// grade says nothing of the option's accuracy.
+  bool within_read_resolution() const;
+
+  /// May this row support or refute a statement about an option's accuracy (a grade, which of
+  /// two errors is larger)? evidence() and not within_read_resolution(); the verdict page
+  /// leaves the contact half-width out for the same reason.
+  bool accuracy_evidence() const { return evidence() && !within_read_resolution(); }
 };
 
 /// The flat punch's divergence verdicts of one baseline row.

@@ -67,7 +67,12 @@ std::string vf_cell(const VfRow& v) {
 
 /// A claim as the table and estimates.csv print it, in RefinementClaim's order.
 std::string claim_cell(RefinementClaim claim) {
-  constexpr const char* kText[] = {"n/a", "holds", "fails", "open: VF not converged",
+  constexpr const char* kText[] = {"n/a",
+                                   "holds",
+                                   "fails: a plateau (bias)",
+                                   "fails",
+                                   "open: not evidence on F",
+                                   "open: VF not converged",
                                    "open: no VF"};
   return kText[static_cast<int>(claim)];
 }
@@ -99,27 +104,47 @@ void add_vf(RefinementFacts& f, const ResultsIndex& index, const RowVerdict& row
   v.trend_cmf = trend_of(row.errors[0], row.errors[1], row.errors[2],
                          index.read_resolution_percent(row, schema::MeshLevel::C));
   v.trend_mfvf = trend_of(row.errors[1], row.errors[2], row.refinement->error, on_m);
-  v.claim = refinement_claim(row, v.vf, on_m);
+  v.claim = refinement_claim(index, row);
   f.claim.applies += v.claim == RefinementClaim::not_applicable ? 0 : 1;
   f.claim.holds += v.claim == RefinementClaim::holds ? 1 : 0;
+  f.claim.plateau += v.claim == RefinementClaim::plateau ? 1 : 0;
   f.claim.fails += v.claim == RefinementClaim::fails ? 1 : 0;
+  f.claim.not_evidence += v.claim == RefinementClaim::not_evidence ? 1 : 0;
   f.claim.vf_not_converged += v.claim == RefinementClaim::vf_not_converged ? 1 : 0;
   f.vf_rows.push_back(v);
 }
 
-void add_mpc(RefinementFacts& f, std::vector<double>& on_f, std::vector<double>& on_vf) {
+void add_mpc(RefinementFacts& f, const ResultsIndex& index, std::vector<double>& on_f,
+             std::vector<double>& on_vf) {
   for (const VfRow& v : f.vf_rows) {
     const RowVerdict& r = *v.row;
-    if (r.spec.algorithm != schema::Algorithm::MPC || !r.errors[2] || !r.refinement->error)
+    if (r.spec.algorithm != schema::Algorithm::MPC || !r.errors[2])
       continue;
-    if (v.vf != MeshState::converged) {
-      ++f.mpc.not_converged;
-      continue;
+    switch (vf_judgement(index, r)) {
+      case VfJudgement::converges:
+        ++f.mpc.converges;
+        break;
+      case VfJudgement::plateau:
+        ++f.mpc.plateau;
+        break;
+      case VfJudgement::fails:
+        ++f.mpc.fails;
+        break;
+      case VfJudgement::at_resolution:
+        ++f.mpc.at_resolution;
+        continue;
+      case VfJudgement::not_evidence:
+        ++f.mpc.not_evidence;
+        continue;
+      case VfJudgement::vf_not_converged:
+        ++f.mpc.not_converged;
+        continue;
+      case VfJudgement::no_vf:
+        continue;
     }
-    ++f.mpc.rows;
+    ++f.mpc.judged;
     on_f.push_back(std::abs(*r.errors[2]));
     on_vf.push_back(std::abs(*r.refinement->error));
-    f.mpc.improved += on_vf.back() < on_f.back() ? 1 : 0;
   }
 }
 
@@ -180,24 +205,10 @@ std::string csv_line(const ResultsIndex& index, const RowVerdict& row) {
   return out + fmt::format(",{},{},{},{},{}\n", csv_number(row.refinement->value),
                            csv_number(row.refinement->error), kState[static_cast<int>(vf)],
                            trend ? schema::to_string(trend->trend) : "",
-                           claim_cell(refinement_claim(row, vf, on_m)));
+                           claim_cell(refinement_claim(index, row)));
 }
 
 }  // namespace
-
-RefinementClaim refinement_claim(const RowVerdict& row, MeshState vf, double resolution_on_m) {
-  if (!row.errors[2] || !row.converging || *row.converging ||
-      schema::is_worse(grading::grade_of_error(*row.errors[2]), schema::Grade::s))
-    return RefinementClaim::not_applicable;
-  if (!row.refinement || vf == MeshState::missing)
-    return RefinementClaim::no_vf;
-  if (vf != MeshState::converged || !row.refinement->error || !row.errors[1])
-    return RefinementClaim::vf_not_converged;
-  const schema::Trend t = grading::assess_convergence(*row.errors[1], *row.errors[2],
-                                                      *row.refinement->error, resolution_on_m)
-                              .trend;
-  return t == schema::Trend::not_converging ? RefinementClaim::fails : RefinementClaim::holds;
-}
 
 std::optional<bool> gci_bounds_error(const RowVerdict& row, double exact) {
   if (!row.estimate || !row.estimate->gci_percent || !row.values[2] || *row.values[2] == 0.0)
@@ -236,7 +247,7 @@ RefinementFacts refinement_facts(const ResultsIndex& index) {
       add_vf(f, index, *row);
   }
   std::vector<double> on_f, on_vf;
-  add_mpc(f, on_f, on_vf);
+  add_mpc(f, index, on_f, on_vf);
   f.mpc.median_f = median(on_f);
   f.mpc.median_vf = median(on_vf);
   return f;
@@ -284,18 +295,27 @@ std::string refinement_section(const ResultsIndex& index) {
            {"n_vf", n(static_cast<int>(f.vf_rows.size()))},
            {"applies", n(f.claim.applies)},
            {"holds", n(f.claim.holds)},
-           {"judged", n(f.claim.holds + f.claim.fails)},
+           {"judged", n(f.claim.holds + f.claim.plateau + f.claim.fails)},
+           {"plateau", n(f.claim.plateau)},
+           {"has_plateau", f.claim.plateau > 0},
+           {"not_evidence", n(f.claim.not_evidence)},
+           {"has_not_evidence", f.claim.not_evidence > 0},
            {"vf_not_converged", n(f.claim.vf_not_converged)},
            {"has_vf_not_converged", f.claim.vf_not_converged > 0},
            {"vf_rows", vf_table(shown)},
            {"has_shown", !shown.empty()}};
-  if (f.mpc.rows > 0)
-    d["mpc"] = Fields{{"rows", n(f.mpc.rows)},
-                      {"improved", n(f.mpc.improved)},
+  if (f.mpc.judged + f.mpc.at_resolution + f.mpc.not_evidence > 0)
+    d["mpc"] = Fields{{"judged", n(f.mpc.judged)},
+                      {"converges", n(f.mpc.converges)},
+                      {"plateau", n(f.mpc.plateau)},
+                      {"fails", n(f.mpc.fails)},
+                      {"at_resolution", n(f.mpc.at_resolution)},
+                      {"not_evidence", n(f.mpc.not_evidence)},
                       {"not_converged", n(f.mpc.not_converged)},
+                      {"has_judged", f.mpc.judged > 0},
                       {"median_f", fmt::format("{:.3g}", f.mpc.median_f)},
                       {"median_vf", fmt::format("{:.3g}", f.mpc.median_vf)},
-                      {"mostly", f.mpc.improved * 2 > f.mpc.rows}};
+                      {"mostly", f.mpc.converges * 2 > f.mpc.judged}};
   if (f.singular_vf > 0)
     d["singular"] = Fields{{"n", n(f.singular_vf)}, {"diverges", n(f.singular_vf_diverges)}};
   return render_template(templates::refinement_section, d);

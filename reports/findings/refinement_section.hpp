@@ -11,22 +11,10 @@
 #include <vector>
 
 #include "grading/convergence.hpp"
+#include "reports/facts/refinement_claim.hpp"
 #include "reports/results/results_index.hpp"
 
 namespace cs::reports {
-
-/// The study's claim about a row: "It is probable that in instances not demarked by c's with
-/// satisfactory or better results, further mesh refinement would lead to converging results".
-/// It applies to a nonsingular row graded s or better on F (Eq. 46) without the study's c over
-/// C-M-F. It holds when the noise-aware trend over M-F-VF (grading::assess_convergence) is
-/// converging or settled, fails otherwise; a VF case that is missing or did not converge leaves
-/// it open, and is never counted either way.
-enum class RefinementClaim { not_applicable, holds, fails, vf_not_converged, no_vf };
-
-/// The claim for one row, given how its VF case ended; `resolution_on_m` is the quantity's own
-/// resolution on M (ResultsIndex::read_resolution_percent), 0 for one read at a point.
-RefinementClaim refinement_claim(const schema::RowVerdict& row, MeshState vf,
-                                 double resolution_on_m = 0.0);
 
 /// Whether the GCI band of the F value contains the exact value:
 /// |f_F - exact| / |f_F| * 100 <= GCI. Empty without an estimate or an exact value.
@@ -56,14 +44,16 @@ struct VfRow {
 
 /// Counts of the study's claim over the rows with a VF case (see RefinementClaim).
 struct ClaimCounts {
-  int applies = 0, holds = 0, fails = 0, vf_not_converged = 0;
+  int applies = 0, holds = 0, plateau = 0, fails = 0, not_evidence = 0, vf_not_converged = 0;
 };
 
-/// MPC rows with a converged VF case and errors on F and VF: how many, how many have
-/// |e_VF| < |e_F|, the median |error| (percent) on each mesh; and the MPC rows left out because
-/// their VF case did not converge.
+/// MPC rows with a VF case, by vf_judgement (the rule of the study's claim, applicability
+/// aside): judged (converges, plateau or fails) and of them converging; at the study's
+/// resolution already (nothing to improve), not evidence, or VF not converged: left out. The
+/// median |error| (percent) on F and VF is over the judged rows.
 struct MpcRefinement {
-  int rows = 0, improved = 0, not_converged = 0;
+  int judged = 0, converges = 0, plateau = 0, fails = 0;
+  int at_resolution = 0, not_evidence = 0, not_converged = 0;
   double median_f = 0.0, median_vf = 0.0;
 };
 

@@ -19,11 +19,30 @@ TemplateData claim_data(const ClaimEvidence& c) {
   d.set("n2", std::to_string(c.n2));
   d.set("n2_hold", std::to_string(c.n2_hold));
   d.set("has_n2", c.n2 > 0);
+  d.set("n2_exact", std::to_string(c.n2_exact));
+  d.set("has_n2_exact", c.n2_exact > 0);
   d.set("has_figure", c.figure.has_value());
   d.set("figure", c.figure ? fmt::format("{:.3g}", *c.figure) : std::string());
   d.set("figure2", c.figure2 ? fmt::format("{:.3g}", *c.figure2) : std::string());
   d.set("has_examples", !c.examples.empty());
   d.set("examples", c.examples);
+  d.set("has_examples2", !c.examples2.empty());
+  d.set("examples2", c.examples2);
+  d.set("verdict1", to_string(c.verdict1));
+  d.set("verdict2", to_string(c.verdict2));
+  d.set("has_exception", c.n_exception > 0);
+  d.set("n_exception", std::to_string(c.n_exception));
+  d.set("n_exception_holds", std::to_string(c.n_exception_holds));
+  d.set("has_exception_examples", !c.exception_examples.empty());
+  d.set("exception_examples", c.exception_examples);
+  d.set("n_plateau", std::to_string(c.n_plateau));
+  d.set("has_plateau", c.n_plateau > 0);
+  d.set("n_round_off", std::to_string(c.n_round_off));
+  d.set("has_round_off", c.n_round_off > 0);
+  d.set("n_unsound", std::to_string(c.n_unsound));
+  d.set("has_unsound", c.n_unsound > 0);
+  d.set("n_graded_unsatisfactory", std::to_string(c.n_hold - c.n_unsound));
+  d.set("n_not_closer", std::to_string(c.n - c.n_hold - c.n_plateau));
   return d;
 }
 

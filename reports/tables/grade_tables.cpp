@@ -117,8 +117,13 @@ std::string ansys_physical_regrade(const ResultsIndex& index, const schema::Stud
   return fmt::format(" (phys. {})", schema::to_string(grading::grade_of_error(error)));
 }
 
-void count(AnsysComparison& c, schema::Grade ours, schema::Grade theirs, const std::string& where,
-           const std::optional<double>& error) {
+/// Counts one cell graded by both; a grade of ours that is not evidence is left out.
+void count(AnsysComparison& c, bool evidence, schema::Grade ours, schema::Grade theirs,
+           const std::string& where, const std::optional<double>& error) {
+  if (!evidence) {
+    ++c.not_evidence;
+    return;
+  }
   ++c.compared;
   // schema::Grade is ordered best first.
   c.same += ours == theirs ? 1 : 0;
@@ -163,10 +168,12 @@ std::string table_cell(const ResultsIndex& index, const schema::StudyReference& 
   t.in_study_any = t.in_study_any || g != nullptr;
   if (g != nullptr && row != nullptr && row->grade) {
     const std::string where = r.label_md + " " + cls.label();
-    count(t.patch, *row->grade, g->grade, where, row->errors[2]);
+    const bool evidence = facts_of_row(index, *row).evidence();
+    count(t.patch, evidence, *row->grade, g->grade, where, row->errors[2]);
     const schema::RowVerdict* printed = twin && twin->grade ? twin : row;
     t.extrapolated = t.extrapolated || printed == twin;
-    count(t.as_printed, *printed->grade, g->grade, where, printed->errors[2]);
+    count(t.as_printed, evidence && facts_of_row(index, *printed).evidence(), *printed->grade,
+          g->grade, where, printed->errors[2]);
   }
   return text;
 }
@@ -177,6 +184,8 @@ TemplateData comparison_data(const AnsysComparison& c) {
   d.set("better", std::to_string(c.better));
   d.set("worse", std::to_string(c.worse));
   d.set("worse_cells", joined_or_false(c.worse_cells, "; "));
+  d.set("not_evidence",
+        c.not_evidence > 0 ? TemplateData(std::to_string(c.not_evidence)) : TemplateData(false));
   return d;
 }
 
@@ -187,7 +196,7 @@ TemplateData table_data(const GradeTableFacts& t) {
   d.set("table", t.table.render());
   d.set("twins", t.extrapolated);
   d.set("in_study_any", t.in_study_any);
-  d.set("has_compared", t.as_printed.compared > 0);
+  d.set("has_compared", t.as_printed.compared + t.as_printed.not_evidence > 0);
   d.set("as_printed", comparison_data(t.as_printed));
   d.set("patch", comparison_data(t.patch));
   d.set("not_credible", std::to_string(t.not_credible));

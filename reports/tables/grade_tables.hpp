@@ -34,6 +34,9 @@ std::vector<StudyRowKey> grade_table_rows(const ResultsIndex& index,
 /// Our grades against ANSYS's over the cells that have both.
 struct AnsysComparison {
   int compared = 0, same = 0, better = 0, worse = 0;
+  /// Cells graded by both whose grade of ours is not evidence (RowFacts::evidence: marked ✗,
+  /// ‡, or not converged on F): left out of the counts above.
+  int not_evidence = 0;
   std::vector<std::string> worse_cells;  ///< "H<sub>a</sub> LMP ss: +2.76 %"
 };
 

@@ -201,24 +201,20 @@ TEST(LuckOfOneMesh, AFineGradeAfterAnUnresolvedMesh) {
 }  // namespace
 }  // namespace cs::grading
 
-// Requirement: one more refinement is judged against the same noise floor as the C-M-F trend:
-// round-off changes and plateaus are settled, never "farther"; a real move either way is seen.
-TEST(RefinementStep, RoundOffAndPlateausAreSettled) {
-  using cs::grading::refinement_step;
-  using cs::grading::RefinementStep;
-  EXPECT_EQ(refinement_step(-2.0e-12, -1.6e-11), RefinementStep::settled);  // round-off
-  EXPECT_EQ(refinement_step(0.71, 0.712), RefinementStep::settled);         // a plateau
-  EXPECT_EQ(refinement_step(2.0, 1.0), RefinementStep::closer);
-  EXPECT_EQ(refinement_step(-2.0, 1.0), RefinementStep::closer);  // sign does not matter
-  EXPECT_EQ(refinement_step(1.0, 1.5), RefinementStep::farther);
-  // The floor is 10 % of |e_F| above 0.1 points: 5 % -> 4.6 % is within it, 4.4 % is not.
-  EXPECT_EQ(refinement_step(5.0, 4.6), RefinementStep::settled);
-  EXPECT_EQ(refinement_step(5.0, 4.4), RefinementStep::closer);
-  EXPECT_EQ(refinement_step(1.0, std::nan("")), RefinementStep::farther);
-  // A value read between two nodes, resolution 3.125 points on F (H_p Q4 a_FE): half a node
-  // off on F and on VF comes closer with the spacing; 5.0 -> 3.5 moves within the resolution.
-  EXPECT_EQ(refinement_step(3.125, 1.5625, 3.125), RefinementStep::closer);
-  EXPECT_EQ(refinement_step(3.125, 1.5625), RefinementStep::closer);
-  EXPECT_EQ(refinement_step(5.0, 3.5, 3.125), RefinementStep::settled);
-  EXPECT_EQ(refinement_step(5.0, 3.5), RefinementStep::closer);
+// Requirement: one more mesh is judged by the noise-aware trend over M, F, VF: a bias that is
+// the same on every mesh is a plateau, not convergence; only an error at the study's resolution
+// counts as settled for good; a read between nodes within half a node on every mesh converges.
+TEST(FurtherRefinement, APlateauAtANonzeroErrorIsNotConvergence) {
+  using cs::grading::further_refinement;
+  using cs::grading::FurtherRefinement;
+  EXPECT_EQ(further_refinement(0.71, 0.71, 0.71), FurtherRefinement::plateau);   // P_a Q8 AL ns
+  EXPECT_EQ(further_refinement(-0.23, -0.30, -0.30), FurtherRefinement::fails);  // H_p sigma_h
+  EXPECT_EQ(further_refinement(3e-12, -2e-12, 1.6e-11), FurtherRefinement::at_resolution);
+  EXPECT_EQ(further_refinement(4.0, 2.0, 1.0), FurtherRefinement::converges);
+  EXPECT_EQ(further_refinement(-2.0, 1.0, 0.5), FurtherRefinement::converges);  // sign aside
+  EXPECT_EQ(further_refinement(1.0, 1.0, 1.5), FurtherRefinement::fails);
+  EXPECT_EQ(further_refinement(1.0, 1.0, std::nan("")), FurtherRefinement::fails);
+  // A value read between two nodes, resolution 6.25 points on M (H_p Q4 a_FE): half a node
+  // off on M, F and VF converges with the spacing.
+  EXPECT_EQ(further_refinement(6.25, 3.125, 1.5625, 6.25), FurtherRefinement::converges);
 }
