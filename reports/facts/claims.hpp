@@ -46,6 +46,12 @@ struct ClaimEvidence {
   /// did not converge (see mpc_unsatisfactory).
   int n_unsound = 0;
   std::string exception_examples{};
+  /// Claim 7: models with both LMP and PLM (the same equations, PLM run after LMP), those
+  /// where PLM is the faster, and the sign test's z = |2 n_later_faster - n_order_pairs| /
+  /// sqrt(n_order_pairs); above kOrderBiasZ the case times rank the run's order, not the
+  /// algorithms, and the claim is not testable from them.
+  int n_order_pairs = 0, n_later_faster = 0;
+  double order_bias_z = 0.0;
 };
 
 /// Every claim of the study, in the ledger's order.

@@ -35,6 +35,10 @@ TemplateData claim_data(const ClaimEvidence& c) {
   d.set("n_exception_holds", std::to_string(c.n_exception_holds));
   d.set("has_exception_examples", !c.exception_examples.empty());
   d.set("exception_examples", c.exception_examples);
+  d.set("order_biased", c.n_order_pairs > 0 && c.verdict == ClaimVerdict::not_testable);
+  d.set("n_order_pairs", std::to_string(c.n_order_pairs));
+  d.set("n_later_faster", std::to_string(c.n_later_faster));
+  d.set("order_bias_z", fmt::format("{:.1f}", c.order_bias_z));
   d.set("n_plateau", std::to_string(c.n_plateau));
   d.set("has_plateau", c.n_plateau > 0);
   d.set("n_round_off", std::to_string(c.n_round_off));

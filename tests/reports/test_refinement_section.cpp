@@ -228,6 +228,9 @@ TEST(RefinementSection, LedgerAndAppendixJudgeRefinementByOneRule) {
   const std::string md = claims_ledger(claims);
   EXPECT_NE(md.find("further refinement converges in 2"), std::string::npos) << md;
   EXPECT_NE(md.find("1 settle at a larger error"), std::string::npos) << md;
+  // The examples of rows that do not converge name only those: the plateau is not among them.
+  EXPECT_NE(nine.examples.find("LMP"), std::string::npos) << nine.examples;
+  EXPECT_EQ(nine.examples.find(" PM "), std::string::npos) << nine.examples;
 }
 
 }  // namespace

@@ -386,6 +386,38 @@ TEST(ClaimsLedger, MpcFastestIsMeasuredPerModelBeyondTheTimingNoise) {
   EXPECT_NEAR(*c.figure2, 100.0 * noise, 1e-9);
 }
 
+// Requirement: case times that rank the run's order rather than the algorithms make claim 7
+// not testable: PLM solves LMP's equations after it, so a sign test over the models
+// where one is systematically the faster (z > 3) shows an order bias the noise estimate misses.
+TEST(ClaimsLedger, MpcFastestIsNotTestableWhenTheRunOrderBiasesTheTimes) {
+  schema::ResultsDocument doc = battery().doc;
+  int pairs = 0;
+  for (auto& c : doc.cases) {  // PLM 10 % faster than LMP in every fine-mesh model
+    if (c.spec.mesh == MeshLevel::F && c.spec.algorithm == Algorithm::PLM) {
+      schema::CaseSpec lmp = c.spec;
+      lmp.algorithm = Algorithm::LMP;
+      for (const auto& l : doc.cases) {
+        if (schema::case_id(l.spec) == schema::case_id(lmp)) {
+          c.wall_seconds = 0.9 * l.wall_seconds;
+          ++pairs;
+        }
+      }
+    }
+  }
+  ASSERT_GE(pairs, 12);  // z = sqrt(pairs) > 3
+  const ResultsIndex index(doc);
+  const auto claims = study_claims(index, row_facts(index), divergence_facts(index));
+  const ClaimEvidence& c = *std::find_if(claims.begin(), claims.end(),
+                                         [](const auto& e) { return e.key == "mpc_fastest"; });
+  EXPECT_EQ(c.n_later_faster, c.n_order_pairs);
+  EXPECT_GT(c.order_bias_z, 3.0);
+  EXPECT_EQ(c.verdict, ClaimVerdict::not_testable);
+  const std::string md = claims_ledger(claims);
+  EXPECT_NE(md.find("rank the run's order more than the algorithms"), std::string::npos) << md;
+  // The fixture's own times show no such bias: the verdict is the count's.
+  EXPECT_NE(claim("mpc_fastest").verdict, ClaimVerdict::not_testable);
+}
+
 // Requirement: each verdict cell is the worst signed F error over its rows, graded by Eq. 46,
 // and is marked when a row is not evidence; the page prints it with its sign.
 TEST(VerdictPage, CellsAreTheWorstSignedFineErrorGradedByEq46) {
