@@ -20,14 +20,10 @@ bool never_grows(double c, double m, double f, double tol) {
   return m <= c + tol && f <= m + tol;
 }
 
-/// |e| within a read's resolution `r` > 0 (an edge at a node reads exactly half a node off).
-bool within(double e, double r) {
-  return r > 0.0 && std::abs(e) <= r * (1.0 + 1e-9);
-}
-
 /// |e| within the read's resolution on every mesh: r on C, r/2 on M, r/4 on F (h halves).
 bool within_read_resolution(double e_c, double e_m, double e_f, double r) {
-  return within(e_c, r) && within(e_m, r / 2) && within(e_f, r / 4);
+  return within_resolution(e_c, r) && within_resolution(e_m, r / 2) &&
+         within_resolution(e_f, r / 4);
 }
 
 }  // namespace
@@ -38,6 +34,11 @@ bool study_converging(double e_c, double e_m, double e_f) {
     return false;
   constexpr double tol = kErrorResolutionPercent;
   return never_grows(c, m, f, tol) && (f < c - tol || c <= tol);
+}
+
+bool within_resolution(double error_percent, double resolution_percent) {
+  // An edge at a node reads exactly half a node off: equality within round-off counts.
+  return resolution_percent > 0.0 && std::abs(error_percent) <= resolution_percent * (1.0 + 1e-9);
 }
 
 double node_read_resolution_percent(double node_spacing, double exact) {

@@ -43,6 +43,10 @@ inline constexpr double kPlateauFraction = 0.1;
 /// is not a positive finite length.
 double node_read_resolution_percent(double node_spacing, double exact);
 
+/// True when a read's error is within its resolution r > 0 (|e| <= r, an edge at a node reading
+/// exactly half a node off included): as close as the read can tell.
+bool within_resolution(double error_percent, double resolution_percent);
+
 /// The noise-aware convergence verdict of the errors on C, M, F, with a floor per mesh pair:
 ///   base = max(kErrorResolutionPercent, kPlateauFraction |e_F|); r = `resolution_percent`,
 ///          the quantity's own resolution on C (0 for a value read at a point;

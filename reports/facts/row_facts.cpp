@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "grading/accuracy.hpp"
+#include "grading/convergence.hpp"
 #include "grading/credibility.hpp"
 #include "grading/divergence.hpp"
 #include "reports/facts/solvers.hpp"
@@ -137,9 +138,7 @@ OptionFamily family_of(schema::Algorithm algorithm) {
 }
 
 bool RowFacts::within_read_resolution() const {
-  // An edge at a node reads exactly half a spacing off (grading::node_read_resolution_percent).
-  return read_resolution_on_f > 0.0 && errors[2] &&
-         std::abs(*errors[2]) <= read_resolution_on_f * (1.0 + 1e-9);
+  return errors[2] && grading::within_resolution(*errors[2], read_resolution_on_f);
 }
 
 RowFacts facts_of_row(const ResultsIndex& index, const schema::RowVerdict& r) {

@@ -103,6 +103,10 @@ TEST(NodeReadResolution, IsZeroWithoutAPositiveFiniteSpacingAndExactValue) {
   EXPECT_EQ(node_read_resolution_percent(0.1, 0.0), 0.0);
   EXPECT_EQ(node_read_resolution_percent(kNaN, 1.0), 0.0);
   EXPECT_EQ(node_read_resolution_percent(0.1, kNaN), 0.0);
+  EXPECT_TRUE(within_resolution(-6.25, 6.25));  // an edge at a node: exactly half a node off
+  EXPECT_FALSE(within_resolution(6.3, 6.25));
+  EXPECT_FALSE(within_resolution(0.0, 0.0));  // a value read at a point has no such band
+  EXPECT_FALSE(within_resolution(kNaN, 1.0));
 }
 
 TEST(ObservedOrder, OrderTwoOfAnExactPowerLaw) {
