@@ -113,6 +113,8 @@ std::vector<OptionCell> make_cells(const ResultsIndex& index,
     if (code.empty() && split.contains(family))
       algorithm = o.algorithm;
     OptionCell& c = cells[{code, family, algorithm, o.contact, el}];
+    if (code.empty())
+      c.members.insert(o.algorithm);
     c.code = code;
     c.family = family;
     c.algorithm = algorithm;
@@ -184,6 +186,7 @@ void rank(SituationVerdict& v) {
     if (!v.best_grade || schema::is_worse(*v.best_grade, *c.worst_grade))
       v.best_grade = c.worst_grade;
   }
+  double lowest = INFINITY, highest = 0.0;  // of the best cells' |worst error|
   for (const auto& c : v.cells) {
     if (v.singular) {
       if (c.n_strict == static_cast<int>(c.singular_rows.size()) && c.n_not_converged == 0)
@@ -193,6 +196,10 @@ void rank(SituationVerdict& v) {
     if (!c.evidence || c.worst_grade != v.best_grade)
       continue;
     v.best.push_back(&c);
+    const double a = std::abs(*c.worst_error);
+    lowest = std::min(lowest, a);
+    highest = std::max(highest, a);
+    v.best_abs_spread = highest - lowest;
     v.best_min = v.best_min ? std::min(*v.best_min, *c.min_error) : *c.min_error;
     v.best_max = v.best_max ? std::max(*v.best_max, *c.max_error) : *c.max_error;
     v.best_noise =
@@ -236,16 +243,21 @@ std::string family_label(OptionFamily family) {
 
 namespace {
 
-/// "AL, PM", or "PM" for a cell of one algorithm of its family.
-std::string group_label(OptionFamily family, const std::optional<schema::Algorithm>& algorithm) {
-  return algorithm ? std::string(schema::to_string(*algorithm)) : family_label(family);
+/// "AL, PM": the algorithms run, in the vocabulary's order; the family's label without any.
+std::string members_label(OptionFamily family, const std::set<schema::Algorithm>& members) {
+  if (members.empty())
+    return family_label(family);
+  std::string out;
+  for (const auto a : members)
+    out += (out.empty() ? "" : ", ") + std::string(schema::to_string(a));
+  return out;
 }
 
 }  // namespace
 
 std::string option_label(const OptionCell& cell) {
   return cell.code.empty()
-             ? group_label(cell.family, cell.algorithm) + " " + std::string(to_string(cell.contact))
+             ? members_label(cell.family, cell.members) + " " + std::string(to_string(cell.contact))
              : cell.code;
 }
 
@@ -254,7 +266,9 @@ std::string cells_label(const std::vector<const OptionCell*>& cells) {
   // the discretization).
   using Key = std::tuple<std::string, OptionFamily, std::optional<schema::Algorithm>>;
   std::map<Key, std::map<schema::Element, std::string>> by;
+  std::map<Key, std::set<schema::Algorithm>> members;
   for (const OptionCell* c : cells) {
+    members[{c->code, c->family, c->algorithm}].insert(c->members.begin(), c->members.end());
     std::string& contacts = by[{c->code, c->family, c->algorithm}][c->element];
     if (c->code.empty())
       contacts += (contacts.empty() ? "" : "/") + std::string(schema::to_string(c->contact));
@@ -271,8 +285,8 @@ std::string cells_label(const std::vector<const OptionCell*>& cells) {
     for (const auto& [contacts, els] : by_contacts)
       part += (part.empty() ? " " : ", ") + (contacts.empty() ? "" : contacts + " ") + els;
     const auto& [code, family, algorithm] = key;
-    out +=
-        (out.empty() ? "" : "; ") + (code.empty() ? group_label(family, algorithm) : code) + part;
+    out += (out.empty() ? "" : "; ") +
+           (code.empty() ? members_label(family, members.at(key)) : code) + part;
   }
   return out;
 }

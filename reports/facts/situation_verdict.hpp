@@ -24,6 +24,9 @@ struct OptionCell {
   /// Set where the family's members give other results in the situation (AL and PM with
   /// friction): the cell is this algorithm's alone.
   std::optional<schema::Algorithm> algorithm;
+  /// Our algorithms with rows in the cell: a family's label names only those that were run
+  /// ("LMP" where the results hold no PLM).
+  std::set<schema::Algorithm> members;
   schema::ContactKind contact = schema::ContactKind::ss;
   schema::Element element = schema::Element::Q4;
   std::vector<const RowFacts*> rows;                  ///< nonsingular situations
@@ -54,6 +57,9 @@ struct SituationVerdict {
   std::vector<std::string> common_failures;
   std::optional<schema::Grade> best_grade;
   std::optional<double> best_min, best_max;  ///< signed F error range over `best`
+  /// How far apart `best` are in accuracy (points): the spread of their worst |F errors|, the
+  /// figure a ranking would rest on (−0.59 % and +0.55 % are 0.04 points apart, not 1.1).
+  double best_abs_spread = 0.0;
   /// What a ranking of `best` would have to beat (points): the largest M -> F change over its
   /// rows, and at least the study's printed resolution, 0.01 points.
   double best_noise = 0.0;
@@ -67,8 +73,9 @@ std::vector<SituationVerdict> situation_verdicts(const ResultsIndex& index,
 /// "AL, PM", "LMP, PLM" or "MPC".
 std::string family_label(OptionFamily family);
 
-/// A cell's option as a matrix row names it: "AL, PM ss", "calculix linear-ss"; "PM ss" for a
-/// cell of one algorithm of its family.
+/// A cell's option as a matrix row names it: its members and discretization, "AL, PM ss" ("PM
+/// ss" for a cell of one algorithm of its family, or where only PM was run), or another code's
+/// option, "calculix linear-ss".
 std::string option_label(const OptionCell& cell);
 
 /// A compact list of cells: "AL, PM ss/ns/mortar Q4, ss Q8; LMP, PLM ss Q4; calculix linear-ss

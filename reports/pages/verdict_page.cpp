@@ -34,14 +34,14 @@ TemplateData matrix(const std::vector<SituationVerdict>& situations, Element ele
   using Row = std::tuple<std::string, OptionFamily, schema::ContactKind>;
   const auto row_of = [](const OptionCell& c) { return Row{c.code, c.family, c.contact}; };
   std::set<Row> options;
-  std::map<Row, std::string> labels;
+  std::map<Row, OptionCell> label_of;  // the family's row: every member run in any situation
   for (const auto& s : situations) {
     for (const auto& c : s.cells) {
       if (c.element == element) {
         options.insert(row_of(c));
-        OptionCell family_row = c;  // the row is the family's, even where a cell is split
-        family_row.algorithm.reset();
-        labels[row_of(c)] = option_label(family_row);
+        OptionCell& row = label_of.try_emplace(row_of(c), c).first->second;
+        row.algorithm.reset();
+        row.members.insert(c.members.begin(), c.members.end());
       }
     }
   }
@@ -50,18 +50,24 @@ TemplateData matrix(const std::vector<SituationVerdict>& situations, Element ele
     header.push_back(s.title);
   MarkdownTable table(header);
   for (const Row& option : options) {
-    std::vector<std::string> row{labels.at(option)};
+    std::vector<std::string> row{option_label(label_of.at(option))};
     for (const auto& s : situations) {
       // One cell, or one per algorithm where the family's members differ ("AL s −7.07 % · PM
       // u +10.5 %").
-      std::vector<std::string> parts;
+      std::vector<std::string> parts, texts;
       for (const auto& c : s.cells) {
-        if (c.element == element && row_of(c) == option)
-          parts.push_back(
-              c.algorithm ? fmt::format("{} {}", schema::to_string(*c.algorithm), verdict_cell(c))
-                          : verdict_cell(c));
+        if (c.element != element || row_of(c) != option)
+          continue;
+        texts.push_back(verdict_cell(c));
+        parts.push_back(c.algorithm
+                            ? fmt::format("{} {}", schema::to_string(*c.algorithm), texts.back())
+                            : texts.back());
       }
+      // Split cells that read alike to the printed digits are shown once.
+      const bool alike = std::all_of(texts.begin(), texts.end(),
+                                     [&](const std::string& t) { return t == texts.front(); });
       row.push_back(parts.empty() ? std::string(kMissing)
+                    : alike       ? texts.front()
                                   : fmt::format("{}", fmt::join(parts, " · ")));
     }
     table.add_row(std::move(row));
@@ -146,7 +152,7 @@ TemplateData advice(const SituationVerdict& s) {
   d.set("has_common", !s.common_failures.empty());
   d.set("common", join_words(s.common_failures));  // "force balance and tensile pressure"
   if (s.best_grade && s.best_min && s.best_max) {
-    const double spread = *s.best_max - *s.best_min;
+    const double spread = s.best_abs_spread;
     d.set("grade", std::string(schema::to_string(*s.best_grade)));
     d.set("min", format_error_resolved(*s.best_min));
     d.set("max", format_error_resolved(*s.best_max));

@@ -480,6 +480,23 @@ RowFacts rounded_punch_row(Algorithm algorithm, std::vector<std::string> checks)
   return f;
 }
 
+// Requirement: the best options are tied when their worst |errors| lie within the noise, whatever
+// their signs: -0.59 % and +0.55 % are 0.04 points apart in accuracy, not 1.14.
+TEST(VerdictPage, TiesCompareTheMagnitudesOfTheErrors) {
+  RowFacts below = rounded_punch_row(Algorithm::AL, {});
+  below.errors = {-0.9, -0.7, -0.59};
+  RowFacts above = rounded_punch_row(Algorithm::LMP, {});
+  above.errors = {0.9, 0.7, 0.55};  // M -> F moves 0.15 and 0.11 points: the noise
+  const auto situations = situation_verdicts(battery().index, {below, above}, {});
+  ASSERT_EQ(situations.size(), 1U);
+  const SituationVerdict& s = situations[0];
+  ASSERT_EQ(s.best.size(), 2U);
+  EXPECT_NEAR(s.best_abs_spread, 0.04, 1e-12);
+  EXPECT_NEAR(s.best_noise, 0.15, 1e-12);
+  const std::string md = verdict_page(battery().index, situations);
+  EXPECT_NE(md.find("tied (their worst |errors| 0.04 points apart"), std::string::npos) << md;
+}
+
 // Requirement: a check that every option fails alike (e.g. pressure a few elements beyond the
 // exact patch edge for every option and target) makes no option evidence, but is no reason to
 // avoid one: only an option that fails a check some other option passes, or grades u, is to be
