@@ -51,6 +51,8 @@ struct ClaimEvidence {
   /// sqrt(n_order_pairs); above kOrderBiasZ the case times rank the run's order, not the
   /// algorithms, and the claim is not testable from them.
   int n_order_pairs = 0, n_later_faster = 0;
+  /// Claim 11 ("all options"): the study's algorithms with no row in the results.
+  std::string not_run{};
   double order_bias_z = 0.0;
 };
 

@@ -39,6 +39,8 @@ TemplateData claim_data(const ClaimEvidence& c) {
   d.set("n_order_pairs", std::to_string(c.n_order_pairs));
   d.set("n_later_faster", std::to_string(c.n_later_faster));
   d.set("order_bias_z", fmt::format("{:.1f}", c.order_bias_z));
+  d.set("has_not_run", !c.not_run.empty());
+  d.set("not_run", c.not_run);
   d.set("n_plateau", std::to_string(c.n_plateau));
   d.set("has_plateau", c.n_plateau > 0);
   d.set("n_round_off", std::to_string(c.n_round_off));

@@ -341,6 +341,65 @@ TEST(ClaimsLedger, AReadWithinItsResolutionIsNotEvidenceOfInaccuracy) {
   EXPECT_LT(*ss_ns.figure, 0.01);  // not 12.5 points from -6.25 vs +6.25
 }
 
+// Requirement: claim 3 judges LMP/PLM and IMC apart, the verdict the worse part's; IMC pairs
+// exact on both (a patch test, where any tie is exact) show nothing and are left out, so IMC
+// is not testable from them, and an IMC pair that differs in grade makes the claim fail.
+TEST(ClaimsLedger, SsEqualsNsJudgesImcApartFromItsPatchTests) {
+  using schema::ContactKind;
+  using schema::Element;
+  using schema::ProblemId;
+  using schema::Quantity;
+  FixtureRows fx;
+  fx.add(ProblemId::H_p, Quantity::sigma_c, Element::Q4, Algorithm::LMP, ContactKind::ss, 0.2);
+  fx.add(ProblemId::H_p, Quantity::sigma_c, Element::Q4, Algorithm::LMP, ContactKind::ns, 0.3);
+  fx.add(ProblemId::P_p, Quantity::sigma_z_max, Element::Q4, Algorithm::MPC, ContactKind::ss,
+         3e-12);
+  fx.add(ProblemId::P_p, Quantity::sigma_z_max, Element::Q4, Algorithm::MPC, ContactKind::ns,
+         2e-12);
+  ClaimEvidence c = fx.claim("ss_equals_ns");
+  EXPECT_EQ(c.n, 1);
+  EXPECT_EQ(c.n2, 0);
+  EXPECT_EQ(c.n2_exact, 1);
+  EXPECT_EQ(c.verdict2, ClaimVerdict::not_testable);
+  EXPECT_EQ(c.verdict, ClaimVerdict::reproduced);
+  const std::string md = claims_ledger({c});
+  EXPECT_NE(md.find("IMC: no pair that is evidence away from round-off"), std::string::npos) << md;
+  // An IMC pair away from round-off with other grades (e +0.5 % vs g +3 %): not reproduced.
+  fx.add(ProblemId::H_p, Quantity::sigma_c, Element::Q8, Algorithm::MPC, ContactKind::ss, 0.5);
+  fx.add(ProblemId::H_p, Quantity::sigma_c, Element::Q8, Algorithm::MPC, ContactKind::ns, 3.0);
+  c = fx.claim("ss_equals_ns");
+  EXPECT_EQ(c.n2, 1);
+  EXPECT_EQ(c.n2_hold, 0);
+  EXPECT_EQ(c.verdict, ClaimVerdict::not_reproduced);
+}
+
+// Requirement: claim 11 names every exception by option, and "for all options" checked on
+// results that lack some of the study's algorithms is at best refined, saying which.
+TEST(ClaimsLedger, DivergenceNamesEveryExceptionAndTheOptionsNotRun) {
+  std::vector<DivergenceFacts> singular;
+  for (const Algorithm a : {Algorithm::AL, Algorithm::PM, Algorithm::LMP}) {
+    DivergenceFacts d;
+    d.option = {a, schema::ContactKind::ss};
+    d.eq47 = d.strict = true;
+    singular.push_back(d);
+  }
+  const auto claims = study_claims(battery().index, {}, singular);
+  const ClaimEvidence& c = *std::find_if(claims.begin(), claims.end(),
+                                         [](const auto& e) { return e.key == "divergence"; });
+  EXPECT_EQ(c.n_hold, 3);
+  EXPECT_EQ(c.not_run, "PLM, MPC");
+  EXPECT_EQ(c.verdict, ClaimVerdict::refined);
+  // The battery's flat punch: all five run; every failing option named with its count.
+  const ClaimEvidence& all = claim("divergence");
+  EXPECT_TRUE(all.not_run.empty());
+  int named = 0;
+  for (std::size_t at = all.examples.find(" rows"); at != std::string::npos;
+       at = all.examples.find(" rows", at + 1))
+    ++named;
+  EXPECT_GT(named, 0);
+  EXPECT_EQ(all.examples.find("AL "), std::string::npos) << all.examples;
+}
+
 // Requirement: "IMC fastest" is measured: per fine-mesh model, MPC's case time against the
 // fastest other option's, beyond the run's timing noise (the median relative difference of the
 // LMP and PLM case times of one model, which solve the same equations); within it is a tie.
