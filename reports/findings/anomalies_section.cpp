@@ -49,14 +49,19 @@ const RowFacts* find(const std::vector<RowFacts>& rows, const RowFacts& like, El
 
 AlPmFacts al_pm(const ResultsIndex& index, const std::vector<RowFacts>& rows) {
   AlPmFacts out;
+  const auto frictional = [&](schema::ProblemId p) {
+    const schema::ProblemRecord* r = index.problem(p);
+    return r && r->situation == schema::Situation::frictional;
+  };
   for (const auto& f : rows) {
     const RowFacts* pm =
         f.option.algorithm == Algorithm::AL ? find(rows, f, f.element, Algorithm::PM) : nullptr;
-    out.rows += pm ? 1 : 0;
-    out.coinciding += pm && coincide(*f.row, *pm->row) ? 1 : 0;
+    const int both = pm ? 1 : 0, alike = pm && coincide(*f.row, *pm->row) ? 1 : 0;
+    (frictional(f.problem) ? out.frictional_rows : out.rows) += both;
+    (frictional(f.problem) ? out.frictional_coinciding : out.coinciding) += alike;
   }
   for (const auto& c : index.results().cases) {
-    if (c.spec.algorithm != Algorithm::AL || !c.is_baseline())
+    if (c.spec.algorithm != Algorithm::AL || !c.is_baseline() || frictional(c.spec.problem))
       continue;
     ++out.cases;
     if (c.interface && c.interface->max_penetration_over_h)
@@ -193,6 +198,10 @@ std::string anomalies_section(const ResultsIndex& index) {
              {"same_iterations", std::to_string(a.al_pm.same_iterations)}};
     if (a.al_pm.largest_penetration)
       p["penetration"] = g("{:.3g}", *a.al_pm.largest_penetration);
+    if (a.al_pm.frictional_rows > 0) {
+      p["frictional_rows"] = std::to_string(a.al_pm.frictional_rows);
+      p["frictional_coinciding"] = std::to_string(a.al_pm.frictional_coinciding);
+    }
     d["al_pm"] = p;
   }
   int on_axis = 0, profiles = 0;

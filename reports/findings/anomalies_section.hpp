@@ -36,12 +36,15 @@ double bernstein_axisymmetric_weight(int node, double h);
 double linear_edge_axisymmetric_weight(int node, double h);
 
 /// AL against PM on the baseline rows and cases.
+/// Frictionless rows and cases only, but for the frictional rows' own count: the penetration
+/// argument is about the normal contact alone.
 struct AlPmFacts {
   int rows = 0;             ///< AL rows with a PM twin
   int coinciding = 0;       ///< of them, equal to the printed digits on every mesh (coincide())
   int cases = 0;            ///< AL cases
   int same_iterations = 0;  ///< of them, as many iterations as their PM twin
-  std::optional<double> largest_penetration;  ///< over h, of any AL case
+  std::optional<double> largest_penetration;           ///< over h, of any AL case
+  int frictional_rows = 0, frictional_coinciding = 0;  ///< the same with friction
 };
 
 /// An axisymmetric row where PM ns Q8 errs by 5 % or more on F, beside LMP ns Q8 and PM ns Q4.

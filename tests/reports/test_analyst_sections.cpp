@@ -84,7 +84,18 @@ TEST(Anomalies, ExplainsCrossingsAndAlEqualsPm) {
   // pairs have no F case, so no graded row).
   EXPECT_EQ(a.al_pm.rows, 2);
   EXPECT_EQ(a.al_pm.coinciding, 2);
+  EXPECT_EQ(a.al_pm.frictional_rows, 0);
   EXPECT_FALSE(anomalies_section(data.index).empty());
+  // With friction the penetration argument does not hold: those rows are counted apart.
+  for (auto& p : doc["problems"]) {
+    if (p["id"] == "H_p")
+      p["situation"] = "frictional";
+  }
+  const Loaded with_friction(doc);
+  const AnomalyFacts f = anomaly_facts(with_friction.index, row_facts(with_friction.index));
+  EXPECT_EQ(f.al_pm.rows, 0);
+  EXPECT_EQ(f.al_pm.frictional_rows, 2);
+  EXPECT_EQ(f.al_pm.frictional_coinciding, 2);
 }
 
 // Requirement (issue 12, item 3): the issue's three flat-punch sequences pass Eq. 47 but do not
