@@ -556,6 +556,21 @@ TEST(VerdictPage, TiesCompareTheMagnitudesOfTheErrors) {
   EXPECT_NE(md.find("tied (their worst |errors| 0.04 points apart"), std::string::npos) << md;
 }
 
+// Requirement: a value read between two nodes within its own resolution grades the read, not
+// the option: it has no part in the option's verdict cell.
+TEST(VerdictPage, AReadWithinItsResolutionIsNoPartOfTheCell) {
+  RowFacts read = rounded_punch_row(Algorithm::LMP, {});
+  read.errors = {8.0, 4.0, 2.0};
+  read.read_resolution_on_f = 2.5;  // within half a node on F
+  RowFacts point = rounded_punch_row(Algorithm::LMP, {});
+  point.errors = {1.0, 0.6, 0.4};
+  const auto situations = situation_verdicts(battery().index, {read, point}, {});
+  ASSERT_EQ(situations.size(), 1U);
+  ASSERT_EQ(situations[0].cells.size(), 1U);
+  EXPECT_EQ(situations[0].cells[0].rows.size(), 1U);
+  EXPECT_DOUBLE_EQ(*situations[0].cells[0].worst_error, 0.4);
+}
+
 // Requirement: a check that every option fails alike (e.g. pressure a few elements beyond the
 // exact patch edge for every option and target) makes no option evidence, but is no reason to
 // avoid one: only an option that fails a check some other option passes, or grades u, is to be
