@@ -84,6 +84,15 @@ std::string row_name(const RowFacts& f) {
                      format_error_resolved(*f.errors[2]));
 }
 
+/// A row's errors over M, F and VF, the window the refinement rule judges: "H<sub>p</sub>
+/// sigma_h Q8 AL ss: M −0.23 % → F −0.30 % → VF −0.30 %".
+std::string refinement_example(const RowFacts& f) {
+  return fmt::format("{} {} {} {}: M {} → F {} → VF {}", schema::label(f.problem),
+                     schema::to_string(f.quantity), schema::to_string(f.element), f.option.label(),
+                     format_error_resolved(*f.errors[1]), format_error_resolved(*f.errors[2]),
+                     format_error_resolved(*f.row->refinement->error));
+}
+
 /// Appends `text` to a list of examples, a few at most.
 void add_example(std::string& examples, const std::string& text) {
   if (std::count(examples.begin(), examples.end(), ';') >= 3)
@@ -437,8 +446,7 @@ ClaimEvidence refinement(const ResultsIndex& index, const std::vector<RowFacts>&
         ++c.n_plateau;
         break;
       case RefinementClaim::fails:
-        add_example(c, fmt::format("{} → VF {}", row_name(f),
-                                   format_error_resolved(*f.row->refinement->error)));
+        add_example(c, refinement_example(f));
         break;
       case RefinementClaim::not_evidence:
       case RefinementClaim::vf_not_converged:
@@ -472,8 +480,7 @@ ClaimEvidence mpc_refinement(const ResultsIndex& index, const std::vector<RowFac
         ++c.n_plateau;
         break;
       case VfJudgement::fails:
-        add_example(c, fmt::format("{} → VF {}", row_name(f),
-                                   format_error_resolved(*f.row->refinement->error)));
+        add_example(c, refinement_example(f));
         break;
       case VfJudgement::at_resolution:
         ++c.n_round_off;

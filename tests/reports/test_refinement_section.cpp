@@ -231,6 +231,9 @@ TEST(RefinementSection, LedgerAndAppendixJudgeRefinementByOneRule) {
   // The examples of rows that do not converge name only those: the plateau is not among them.
   EXPECT_NE(nine.examples.find("LMP"), std::string::npos) << nine.examples;
   EXPECT_EQ(nine.examples.find(" PM "), std::string::npos) << nine.examples;
+  // Each example shows the window judged, M, F and VF.
+  EXPECT_NE(nine.examples.find(": M +7.00 % → F +6.00 % → VF +9.00 %"), std::string::npos)
+      << nine.examples;
 }
 
 // Requirement: with no MPC row left to judge (here one at round-off), the appendix draws no
