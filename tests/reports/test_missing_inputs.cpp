@@ -52,7 +52,7 @@ TEST(MissingInputs, EveryAppendixLeftOutIsNamedWithItsReason) {
   EXPECT_EQ(static_cast<int>(reasons.size()), omitted) << md;
   EXPECT_NE(md.find("- *Parameter sweeps*: no parameter was swept"), std::string::npos);
   EXPECT_NE(md.find("- *Benchmarks*: no benchmark file was given"), std::string::npos);
-  EXPECT_NE(md.find("- *Other codes beside ours*: the results hold one solver only."),
+  EXPECT_NE(md.find("- *Other codes beside ours*: these results hold one solver only"),
             std::string::npos);
   EXPECT_EQ(md.find("- *Interface checks*:"), std::string::npos);  // it has content
 }
