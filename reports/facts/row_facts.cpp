@@ -61,7 +61,7 @@ std::vector<const schema::RowVerdict*> common_rows(const ResultsIndex& index, Ke
   std::vector<const schema::RowVerdict*> out;
   for (const auto& r : index.results().rows) {
     const schema::CaseSpec& s = r.spec;
-    if (s.recovery == schema::Recovery::spr && s.overrides.empty() && keep(code_of(s), s.target))
+    if (on_common_basis(s) && keep(code_of(s), s.target))
       out.push_back(&r);
   }
   return out;
@@ -139,6 +139,14 @@ OptionFamily family_of(schema::Algorithm algorithm) {
 
 bool RowFacts::within_read_resolution() const {
   return errors[2] && grading::within_resolution(*errors[2], read_resolution_on_f);
+}
+
+bool on_common_basis(const schema::CaseSpec& spec) {
+  return spec.recovery == schema::Recovery::spr && spec.overrides.empty();
+}
+
+std::string code_label_of(const schema::CaseSpec& spec) {
+  return code_label(spec);
 }
 
 RowFacts facts_of_row(const ResultsIndex& index, const schema::RowVerdict& r) {

@@ -80,6 +80,13 @@ struct DivergenceFacts {
   bool fine_converged = false;
 };
 
+/// The rows the verdicts are made of: patch-recovered stresses of the code's displacements (for
+/// ours the baseline's), without parameter overrides.
+bool on_common_basis(const schema::CaseSpec& spec);
+
+/// RowFacts::code of a row's spec: "calculix linear-ss", empty for ours.
+std::string code_label_of(const schema::CaseSpec& spec);
+
 /// The facts of any row (another code's, a rigid target's): ungraded without an F value.
 RowFacts facts_of_row(const ResultsIndex& index, const schema::RowVerdict& row);
 

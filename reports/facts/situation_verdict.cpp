@@ -4,7 +4,9 @@
 #include <array>
 #include <cctype>
 #include <cmath>
+#include <functional>
 #include <map>
+#include <set>
 #include <tuple>
 
 #include "grading/accuracy.hpp"
@@ -100,6 +102,38 @@ void add_row(OptionCell& cell, const RowFacts& f) {
   cell.n_not_converged += f.fine_converged ? 0 : 1;
 }
 
+/// Rows of the same codes and targets as `rows` and `singular`, on the common basis, whose F
+/// case failed or timed out: they have no F value, so no row facts, but their option's cell
+/// must say so.
+void add_failed_rows(
+    const ResultsIndex& index, const std::vector<ProblemId>& problems,
+    const std::vector<RowFacts>& rows, const std::vector<DivergenceFacts>& singular,
+    const std::function<OptionCell&(const std::string&, const Option&, schema::Element)>& cell_of) {
+  std::set<std::pair<std::string, schema::TargetKind>> populations;
+  for (const auto& f : rows) {
+    if (f.row != nullptr)  // a fact without its row names no population
+      populations.insert({f.code, f.row->spec.target});
+  }
+  for (const auto& d : singular) {
+    if (d.row != nullptr)
+      populations.insert({d.code, d.row->spec.target});
+  }
+  for (const auto& r : index.results().rows) {
+    const ProblemId p = r.spec.problem;
+    const std::string code = code_label_of(r.spec);
+    if (!on_common_basis(r.spec) || !populations.contains({code, r.spec.target}) ||
+        std::find(problems.begin(), problems.end(), p) == problems.end() ||
+        (!index.singular(p) && !graded_in_verdict(index, p, r.quantity)) ||
+        index.state(r, schema::MeshLevel::F) != MeshState::failed)
+      continue;
+    OptionCell& c = cell_of(code, {r.spec.algorithm, r.spec.contact}, r.spec.element);
+    ++c.n_failed;
+    const schema::CaseResult* fine = index.case_of(r, schema::MeshLevel::F);
+    if (c.failed_reason.empty() && fine != nullptr)
+      c.failed_reason = fine->reason;
+  }
+}
+
 std::vector<OptionCell> make_cells(const ResultsIndex& index,
                                    const std::vector<ProblemId>& problems,
                                    const std::vector<RowFacts>& rows,
@@ -139,11 +173,13 @@ std::vector<OptionCell> make_cells(const ResultsIndex& index,
       c.n_not_converged += d.fine_converged ? 0 : 1;
     }
   }
+  add_failed_rows(index, problems, rows, singular, cell_of);
   std::vector<OptionCell> out;
   for (auto& [key, c] : cells) {
-    if (c.worst_error && c.n_not_converged == 0)  // no grade from a solve that failed
+    if (c.worst_error && c.n_not_converged == 0 && c.n_failed == 0)  // no grade from a failed solve
       c.worst_grade = grading::grade_of_error(*c.worst_error);
-    c.evidence = c.n_not_credible == 0 && c.n_luck == 0 && c.n_not_converged == 0;
+    c.evidence =
+        c.n_not_credible == 0 && c.n_luck == 0 && c.n_not_converged == 0 && c.n_failed == 0;
     out.push_back(std::move(c));
   }
   return out;
@@ -173,14 +209,16 @@ bool fails_on_its_own(const OptionCell& c, const std::vector<std::string>& commo
       std::any_of(c.failed_checks.begin(), c.failed_checks.end(), [&](const std::string& check) {
         return std::find(common.begin(), common.end(), check) == common.end();
       });
-  return own_failure || c.worst_grade == schema::Grade::u || c.n_not_converged > 0;
+  return own_failure || c.worst_grade == schema::Grade::u || c.n_not_converged > 0 ||
+         c.n_failed > 0;
 }
 
 void rank(SituationVerdict& v) {
   v.common_failures = common_failures(v);
   for (const auto& c : v.cells) {
-    const bool fails = v.singular ? c.n_eq47 < static_cast<int>(c.singular_rows.size())
-                                  : fails_on_its_own(c, v.common_failures);
+    const bool fails = v.singular
+                           ? c.n_eq47 < static_cast<int>(c.singular_rows.size()) || c.n_failed > 0
+                           : fails_on_its_own(c, v.common_failures);
     if (fails)
       v.avoid.push_back(&c);
     if (!c.evidence || v.singular || !c.worst_grade)
@@ -191,7 +229,8 @@ void rank(SituationVerdict& v) {
   double lowest = INFINITY, highest = 0.0;  // of the best cells' |worst error|
   for (const auto& c : v.cells) {
     if (v.singular) {
-      if (c.n_strict == static_cast<int>(c.singular_rows.size()) && c.n_not_converged == 0)
+      if (c.n_strict == static_cast<int>(c.singular_rows.size()) && c.n_not_converged == 0 &&
+          c.n_failed == 0)
         v.best.push_back(&c);
       continue;
     }

@@ -36,6 +36,8 @@ struct OptionCell {
   std::optional<double> min_error, max_error;         ///< signed range of the F errors
   double largest_m_to_f_change = 0.0;                 ///< max |e_F - e_M| over its rows (points)
   int n_not_credible = 0, n_luck = 0, n_not_converged = 0;
+  int n_failed = 0;           ///< rows whose F case failed (or timed out): no F value at all
+  std::string failed_reason;  ///< the first of those cases' reasons
   std::set<std::string> failed_checks;  ///< the interface checks its F cases fail, by name
   bool evidence = false;                ///< every row is evidence (RowFacts::evidence)
   int n_eq47 = 0, n_strict = 0;         ///< the flat punch: rows passing each divergence verdict

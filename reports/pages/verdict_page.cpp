@@ -83,10 +83,14 @@ std::string failure_evidence(const std::vector<const OptionCell*>& cells,
                              const std::function<bool(const std::string&)>& shown) {
   std::map<std::string, double> worst;
   double worst_error = 0.0;
-  int eq47_failures = 0, singular = 0, not_converged = 0, rows = 0;
+  int eq47_failures = 0, singular = 0, not_converged = 0, rows = 0, failed = 0;
+  std::string failed_reason;
   for (const OptionCell* c : cells) {
     not_converged += c->n_not_converged;
-    rows += static_cast<int>(c->rows.size() + c->singular_rows.size());
+    failed += c->n_failed;
+    if (failed_reason.empty())
+      failed_reason = c->failed_reason;
+    rows += static_cast<int>(c->rows.size() + c->singular_rows.size()) + c->n_failed;
     for (const RowFacts* f : c->rows) {
       for (const auto& failure : f->failures)
         if (shown(failure.check))
@@ -104,6 +108,9 @@ std::string failure_evidence(const std::vector<const OptionCell*>& cells,
     parts.push_back(fmt::format("Eq. 47 fails on {} of {} rows", eq47_failures, singular));
   if (not_converged > 0)
     parts.push_back(fmt::format("F not converged on {} of {} rows", not_converged, rows));
+  if (failed > 0)
+    parts.push_back(fmt::format("F failed on {} of {} rows{}", failed, rows,
+                                failed_reason.empty() ? "" : " (" + failed_reason + ")"));
   if (parts.empty() && worst_error != 0.0)
     parts.push_back("F error " + format_error_resolved(worst_error));
   return fmt::format("{}", fmt::join(parts, "; "));
@@ -168,10 +175,13 @@ TemplateData advice(const SituationVerdict& s) {
 }  // namespace
 
 std::string verdict_cell(const OptionCell& c) {
+  const std::string failed =
+      c.n_failed > 0 ? fmt::format("F failed on {} row{}", c.n_failed, c.n_failed > 1 ? "s" : "")
+                     : std::string();
   if (!c.singular_rows.empty())
-    return singular_cell(c);
+    return singular_cell(c) + (failed.empty() ? "" : " · " + failed);
   if (!c.worst_error)
-    return kMissing;
+    return failed.empty() ? std::string(kMissing) : failed;
   // A fine case that did not converge: its last iterate's error, and no grade.
   std::string out = c.worst_grade ? fmt::format("{} {}", schema::to_string(*c.worst_grade),
                                                 format_error_resolved(*c.worst_error))
@@ -182,7 +192,7 @@ std::string verdict_cell(const OptionCell& c) {
     out += " ‡";
   if (c.n_not_converged > 0)
     out += " †";
-  return out;
+  return failed.empty() ? out : out + " · " + failed;
 }
 
 std::string verdict_page(const ResultsIndex& index, const std::vector<SituationVerdict>& situations,

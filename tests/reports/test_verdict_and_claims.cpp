@@ -571,6 +571,32 @@ TEST(VerdictPage, AReadWithinItsResolutionIsNoPartOfTheCell) {
   EXPECT_DOUBLE_EQ(*situations[0].cells[0].worst_error, 0.4);
 }
 
+// Requirement: an option whose F case failed has no F value, but its cell says so, with no
+// grade, and the option is listed to avoid with the failure's reason (it once showed "—", as
+// if it had not been run).
+TEST(VerdictPage, ACellWhoseFineCaseFailedSaysSo) {
+  const testing::Loaded data(testing::sample_json());  // H_p F Q8 PM ss failed
+  const auto situations =
+      situation_verdicts(data.index, row_facts(data.index), divergence_facts(data.index));
+  const auto hertz = std::find_if(situations.begin(), situations.end(),
+                                  [](const auto& s) { return s.key == "smooth_curved"; });
+  ASSERT_NE(hertz, situations.end());
+  const OptionCell* pm_q8 = nullptr;
+  for (const auto& c : hertz->cells) {
+    if (c.element == schema::Element::Q8 && c.contact == schema::ContactKind::ss &&
+        c.members.contains(Algorithm::PM))
+      pm_q8 = &c;
+  }
+  ASSERT_NE(pm_q8, nullptr);
+  EXPECT_GE(pm_q8->n_failed, 1);
+  EXPECT_FALSE(pm_q8->worst_grade.has_value());
+  EXPECT_FALSE(pm_q8->evidence);
+  EXPECT_TRUE(std::count(hertz->avoid.begin(), hertz->avoid.end(), pm_q8));
+  EXPECT_NE(verdict_cell(*pm_q8).find("F failed on"), std::string::npos) << verdict_cell(*pm_q8);
+  const std::string md = verdict_page(data.index, situations);
+  EXPECT_NE(md.find("singular stiffness matrix (rigid body mode)"), std::string::npos) << md;
+}
+
 // Requirement: a check that every option fails alike (e.g. pressure a few elements beyond the
 // exact patch edge for every option and target) makes no option evidence, but is no reason to
 // avoid one: only an option that fails a check some other option passes, or grades u, is to be
