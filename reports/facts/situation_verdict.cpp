@@ -11,6 +11,7 @@
 
 #include "grading/accuracy.hpp"
 #include "grading/convergence.hpp"
+#include "reports/facts/solvers.hpp"
 #include "reports/tables/option_classes.hpp"
 
 namespace cs::reports {
@@ -102,31 +103,38 @@ void add_row(OptionCell& cell, const RowFacts& f) {
   cell.n_not_converged += f.fine_converged ? 0 : 1;
 }
 
-/// Rows of the same codes and targets as `rows` and `singular`, on the common basis, whose F
-/// case failed or timed out: they have no F value, so no row facts, but their option's cell
-/// must say so.
+/// Rows of the same solvers and targets as `rows` and `singular`, on the common basis, with C
+/// and M cases but no F value: an F case that failed or timed out (n_failed), or none at all
+/// (n_missing, e.g. a battery part not run). They have no row facts, but their option's cell
+/// must say so, and an option none of whose F cases ran still gets one.
 void add_failed_rows(
     const ResultsIndex& index, const std::vector<ProblemId>& problems,
     const std::vector<RowFacts>& rows, const std::vector<DivergenceFacts>& singular,
     const std::function<OptionCell&(const std::string&, const Option&, schema::Element)>& cell_of) {
-  std::set<std::pair<std::string, schema::TargetKind>> populations;
+  std::set<std::pair<std::string, schema::TargetKind>> populations;  // solver, target
   for (const auto& f : rows) {
     if (f.row != nullptr)  // a fact without its row names no population
-      populations.insert({f.code, f.row->spec.target});
+      populations.insert({code_of(f.row->spec), f.row->spec.target});
   }
   for (const auto& d : singular) {
     if (d.row != nullptr)
-      populations.insert({d.code, d.row->spec.target});
+      populations.insert({code_of(d.row->spec), d.row->spec.target});
   }
   for (const auto& r : index.results().rows) {
     const ProblemId p = r.spec.problem;
-    const std::string code = code_label_of(r.spec);
-    if (!on_common_basis(r.spec) || !populations.contains({code, r.spec.target}) ||
+    const MeshState fine_state = index.state(r, schema::MeshLevel::F);
+    if (!on_common_basis(r.spec) || !populations.contains({code_of(r.spec), r.spec.target}) ||
         std::find(problems.begin(), problems.end(), p) == problems.end() ||
         (!index.singular(p) && !graded_in_verdict(index, p, r.quantity)) ||
-        index.state(r, schema::MeshLevel::F) != MeshState::failed)
+        (fine_state != MeshState::failed && fine_state != MeshState::missing) ||
+        index.state(r, schema::MeshLevel::C) == MeshState::missing)
       continue;
-    OptionCell& c = cell_of(code, {r.spec.algorithm, r.spec.contact}, r.spec.element);
+    OptionCell& c =
+        cell_of(code_label_of(r.spec), {r.spec.algorithm, r.spec.contact}, r.spec.element);
+    if (fine_state == MeshState::missing) {
+      ++c.n_missing;
+      continue;
+    }
     ++c.n_failed;
     const schema::CaseResult* fine = index.case_of(r, schema::MeshLevel::F);
     if (c.failed_reason.empty() && fine != nullptr)
@@ -176,10 +184,11 @@ std::vector<OptionCell> make_cells(const ResultsIndex& index,
   add_failed_rows(index, problems, rows, singular, cell_of);
   std::vector<OptionCell> out;
   for (auto& [key, c] : cells) {
-    if (c.worst_error && c.n_not_converged == 0 && c.n_failed == 0)  // no grade from a failed solve
+    // No grade from a solve that failed, nor from part of the situation's problems.
+    const bool whole = c.n_not_converged == 0 && c.n_failed == 0 && c.n_missing == 0;
+    if (c.worst_error && whole)
       c.worst_grade = grading::grade_of_error(*c.worst_error);
-    c.evidence =
-        c.n_not_credible == 0 && c.n_luck == 0 && c.n_not_converged == 0 && c.n_failed == 0;
+    c.evidence = c.n_not_credible == 0 && c.n_luck == 0 && whole;
     out.push_back(std::move(c));
   }
   return out;
@@ -230,7 +239,7 @@ void rank(SituationVerdict& v) {
   for (const auto& c : v.cells) {
     if (v.singular) {
       if (c.n_strict == static_cast<int>(c.singular_rows.size()) && c.n_not_converged == 0 &&
-          c.n_failed == 0)
+          c.n_failed == 0 && c.n_missing == 0)
         v.best.push_back(&c);
       continue;
     }

@@ -38,6 +38,7 @@ struct OptionCell {
   int n_not_credible = 0, n_luck = 0, n_not_converged = 0;
   int n_failed = 0;           ///< rows whose F case failed (or timed out): no F value at all
   std::string failed_reason;  ///< the first of those cases' reasons
+  int n_missing = 0;          ///< rows with a C case but no F case (not run): no grade
   std::set<std::string> failed_checks;  ///< the interface checks its F cases fail, by name
   bool evidence = false;                ///< every row is evidence (RowFacts::evidence)
   int n_eq47 = 0, n_strict = 0;         ///< the flat punch: rows passing each divergence verdict

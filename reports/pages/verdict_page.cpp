@@ -156,6 +156,14 @@ TemplateData advice(const SituationVerdict& s) {
   d.set("best", cells_label(s.best));
   d.set("has_avoid", !s.avoid.empty());
   d.set("avoid", cells_label(s.avoid));
+  // The flat punch: Eq. 47 failures apart from options whose F case failed (not judged).
+  std::vector<const OptionCell*> eq47, unjudged;
+  for (const OptionCell* c : s.avoid)
+    (c->n_eq47 < static_cast<int>(c->singular_rows.size()) ? eq47 : unjudged).push_back(c);
+  d.set("has_eq47_avoid", !eq47.empty());
+  d.set("eq47_avoid", cells_label(eq47));
+  d.set("has_unjudged", !unjudged.empty());
+  d.set("unjudged", cells_label(unjudged));
   d.set("has_common", !s.common_failures.empty());
   d.set("common", join_words(s.common_failures));  // "force balance and tensile pressure"
   if (s.best_grade && s.best_min && s.best_max) {
@@ -178,10 +186,14 @@ std::string verdict_cell(const OptionCell& c) {
   const std::string failed =
       c.n_failed > 0 ? fmt::format("F failed on {} row{}", c.n_failed, c.n_failed > 1 ? "s" : "")
                      : std::string();
+  std::string lacking = failed;
+  if (c.n_missing > 0)
+    lacking += fmt::format("{}no F on {} row{}", lacking.empty() ? "" : " · ", c.n_missing,
+                           c.n_missing > 1 ? "s" : "");
   if (!c.singular_rows.empty())
-    return singular_cell(c) + (failed.empty() ? "" : " · " + failed);
+    return singular_cell(c) + (lacking.empty() ? "" : " · " + lacking);
   if (!c.worst_error)
-    return failed.empty() ? std::string(kMissing) : failed;
+    return lacking.empty() ? std::string(kMissing) : lacking;
   // A fine case that did not converge: its last iterate's error, and no grade.
   std::string out = c.worst_grade ? fmt::format("{} {}", schema::to_string(*c.worst_grade),
                                                 format_error_resolved(*c.worst_error))
@@ -192,7 +204,7 @@ std::string verdict_cell(const OptionCell& c) {
     out += " ‡";
   if (c.n_not_converged > 0)
     out += " †";
-  return failed.empty() ? out : out + " · " + failed;
+  return lacking.empty() ? out : out + " · " + lacking;
 }
 
 std::string verdict_page(const ResultsIndex& index, const std::vector<SituationVerdict>& situations,

@@ -575,9 +575,10 @@ TEST(VerdictPage, AReadWithinItsResolutionIsNoPartOfTheCell) {
 // grade, and the option is listed to avoid with the failure's reason (it once showed "—", as
 // if it had not been run).
 TEST(VerdictPage, ACellWhoseFineCaseFailedSaysSo) {
-  const testing::Loaded data(testing::sample_json());  // H_p F Q8 PM ss failed
-  const auto situations =
-      situation_verdicts(data.index, row_facts(data.index), divergence_facts(data.index));
+  const testing::Loaded data(testing::sample_json());        // H_p F Q8 PM ss failed
+  const std::vector<RowFacts> rows = row_facts(data.index);  // the cells point into them
+  const std::vector<DivergenceFacts> singular = divergence_facts(data.index);
+  const auto situations = situation_verdicts(data.index, rows, singular);
   const auto hertz = std::find_if(situations.begin(), situations.end(),
                                   [](const auto& s) { return s.key == "smooth_curved"; });
   ASSERT_NE(hertz, situations.end());
@@ -595,6 +596,38 @@ TEST(VerdictPage, ACellWhoseFineCaseFailedSaysSo) {
   EXPECT_NE(verdict_cell(*pm_q8).find("F failed on"), std::string::npos) << verdict_cell(*pm_q8);
   const std::string md = verdict_page(data.index, situations);
   EXPECT_NE(md.find("singular stiffness matrix (rigid body mode)"), std::string::npos) << md;
+  // AL's Q8 rows have C and M cases but no F case (not run): the cell covers part of the
+  // situation and says so.
+  EXPECT_GE(pm_q8->n_missing, 1);
+  EXPECT_NE(verdict_cell(*pm_q8).find("no F on"), std::string::npos) << verdict_cell(*pm_q8);
+}
+
+// Requirement: on the flat punch, an option whose F case failed is not judged by Eq. 47: the
+// advice names it apart from the options that fail Eq. 47.
+TEST(VerdictPage, AFlatPunchOptionWhoseFineCaseFailedIsNotJudged) {
+  auto doc = testing::sample_json();
+  for (auto& c : doc["cases"]) {
+    if (c["id"] == "F_p/F/Q4/AL/ss") {
+      c["status"] = "failed";
+      c["reason"] = "the solver stopped";
+      for (auto& [name, q] : c["quantities"].items())
+        q["value"] = nullptr;
+    }
+  }
+  for (auto& r : doc["rows"]) {
+    if (r["id"] == "F_p/Q4/AL/ss/sigma_c_star") {
+      r["values"].erase("F");
+      r["diverging"] = nullptr;
+    }
+  }
+  const testing::Loaded data(doc);
+  const std::vector<RowFacts> rows = row_facts(data.index);  // the cells point into them
+  const std::vector<DivergenceFacts> singular = divergence_facts(data.index);
+  const auto situations = situation_verdicts(data.index, rows, singular);
+  const std::string md = verdict_page(data.index, situations);
+  EXPECT_NE(md.find("Not judged, an F case failed: AL ss Q4."), std::string::npos) << md;
+  EXPECT_EQ(md.find("Eq. 47 fails with AL"), std::string::npos) << md;
+  EXPECT_NE(md.find("Eq. 47 fails with MPC ss Q4"), std::string::npos) << md;
 }
 
 // Requirement: a check that every option fails alike (e.g. pressure a few elements beyond the
@@ -654,8 +687,9 @@ TEST(VerdictPage, AFamilyWhoseMembersDifferIsSplitInThatSituation) {
   pm->values[2] = 1.2 * exact;  // PM alone: +20 %, graded u
   pm->errors[2] = 20.0;
   const ResultsIndex index(doc);
-  const std::vector<RowFacts> rows = row_facts(index);
-  const auto situations = situation_verdicts(index, rows, divergence_facts(index));
+  const std::vector<RowFacts> rows = row_facts(index);  // the cells point into them
+  const std::vector<DivergenceFacts> singular = divergence_facts(index);
+  const auto situations = situation_verdicts(index, rows, singular);
   const auto hertz =
       std::find_if(situations.begin(), situations.end(),
                    [](const SituationVerdict& s) { return s.key == "smooth_curved"; });
