@@ -32,6 +32,10 @@ FigureSet render_figures(const ResultsIndex& index, const std::filesystem::path&
     set.figures.push_back(std::move(figure));
   };
   for (const schema::ProblemRecord* p : index.problems()) {
+    // The profile is -sigma_z/p along a flat contact surface z = 0 (the study's Figure 4); a
+    // fit's contact is an arc, graded by p_mean and p_arc: it has none.
+    if (p->situation == schema::Situation::conformal_fit)
+      continue;
     for (const auto element : schema::values<schema::Element>()) {
       Figure f(FigureKind::profile,
                fmt::format("figures/profile_{}_{}.png", schema::to_string(p->id),

@@ -154,6 +154,27 @@ TEST(Figures, PlainTextOfTheVocabularysLabels) {
   EXPECT_EQ(plain_label("a <b>bold</b> word"), "a bold word");
 }
 
+// Requirement: a conformal fit, whose contact is an arc, has no profile along z = 0 (it once
+// drew -sigma_z against a step, captioned as the study's Figure 4); its convergence figures stay.
+TEST(Figures, AConformalFitHasNoProfileFigure) {
+  auto doc = sample_json();
+  for (auto& p : doc["problems"]) {
+    if (p["id"] == "H_p")
+      p["situation"] = "conformal_fit";
+  }
+  const Loaded data(doc);
+  TempDir tmp;
+  const FigureSet set = render_figures(data.index, tmp.path());
+  bool convergence = false;
+  for (const auto& f : set.figures) {
+    if (f.problem == ProblemId::H_p) {
+      EXPECT_NE(f.kind, FigureKind::profile) << f.file;
+      convergence = convergence || f.kind == FigureKind::convergence;
+    }
+  }
+  EXPECT_TRUE(convergence);
+}
+
 TEST(Figures, WithoutGnuplotTheSetSaysSo) {
   const Loaded data(sample_json());
   TempDir tmp;
