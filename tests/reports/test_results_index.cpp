@@ -209,6 +209,9 @@ TEST(ResultsIndex, AValueReadBetweenNodesIsJudgedAgainstHalfANodeSpacing) {
       c["quantities"]["contact_half_width"] = {
           {"value", v}, {"exact", 1.0}, {"error_percent", 100.0 * (v - 1.0)}, {"grade", "g"}};
     }
+    if (id == "H_p/C/Q8/AL/ss")  // Q8, and an exact value other than 1
+      c["quantities"]["contact_half_width"] = {
+          {"value", 0.85}, {"exact", 0.8}, {"error_percent", 6.25}, {"grade", "s"}};
   }
   nlohmann::json row = doc["rows"][0];
   row["id"] = "H_p/Q4/LMP/ss/contact_half_width";
@@ -217,6 +220,12 @@ TEST(ResultsIndex, AValueReadBetweenNodesIsJudgedAgainstHalfANodeSpacing) {
   row["quantity"] = "contact_half_width";
   row["values"] = a_fe;
   row["error_percent"] = {{"C", 9.0}, {"M", 8.0}, {"F", 7.0}};
+  doc["rows"].push_back(row);
+  row["id"] = "H_p/Q8/AL/ss/contact_half_width";
+  row["element"] = "Q8";
+  row["algorithm"] = "AL";
+  row["values"] = {{"C", 0.85}};
+  row["error_percent"] = {{"C", 6.25}};
   doc["rows"].push_back(row);
   const testing::Loaded data(doc);
   const auto* r = data.index.row(ProblemId::H_p, Quantity::contact_half_width, schema::Element::Q4,
@@ -230,6 +239,12 @@ TEST(ResultsIndex, AValueReadBetweenNodesIsJudgedAgainstHalfANodeSpacing) {
   // 9 -> 8 -> 7 % moves by 1 < 6.25 points (read at a point: converging, order 0.18).
   EXPECT_EQ(f.trend->trend, schema::Trend::settled);
   EXPECT_FALSE(f.order.has_value());
+  // Q8's mid-side nodes halve the spacing, and the resolution is relative to the exact value:
+  // nodes 0.0625 apart on C, half of that over 0.8 is 3.90625 %.
+  const auto* q8 = data.index.row(ProblemId::H_p, Quantity::contact_half_width, schema::Element::Q8,
+                                  {schema::Algorithm::AL, schema::ContactKind::ss});
+  ASSERT_NE(q8, nullptr);
+  EXPECT_DOUBLE_EQ(data.index.read_resolution_percent(*q8, MeshLevel::C), 3.90625);
   // A quantity read at a point has no such floor.
   const auto* sigma = data.index.row(ProblemId::H_p, Quantity::sigma_c, schema::Element::Q4,
                                      {schema::Algorithm::LMP, schema::ContactKind::ss});
