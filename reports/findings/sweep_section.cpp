@@ -169,6 +169,19 @@ std::vector<std::string> crossings(const ParameterSeries& s, double target) {
   return out;
 }
 
+/// The exact value of a series' quantity, from its first point that records one.
+std::optional<double> exact_of(const ParameterSeries& s) {
+  for (const SeriesPoint& p : s.points) {
+    if (p.result == nullptr)
+      continue;
+    for (const schema::QuantityResult& q : p.result->quantities) {
+      if (q.quantity == s.quantity && std::isfinite(q.exact))
+        return q.exact;
+    }
+  }
+  return std::nullopt;
+}
+
 /// Can any FKN reproduce the study's AL error on S(1/3) (sigma_c, Q4, ss, mesh F)? Into `d`.
 /// Only our own series of the study's option set count (builtin, discretized target, spr).
 void set_study_al(TemplateData& d, const std::vector<ParameterSeries>& series,
@@ -178,10 +191,6 @@ void set_study_al(TemplateData& d, const std::vector<ParameterSeries>& series,
                                       Algorithm::AL, ContactKind::ss, MeshLevel::F);
   if (match.value == nullptr || !match.value->exact)
     return;
-  const double target = grading::error_percent(match.value->value, *match.value->exact);
-  d.set("printed", match.value->printed);
-  d.set("exact", match.value->exact_printed);
-  d.set("target", format_percent(target));
   const SeriesRefs ours = select_series(series, [](const ParameterSeries& s) {
     const schema::CaseSpec& b = s.spec;
     return b.problem == ProblemId::S_1_3 && s.quantity == Quantity::sigma_c &&
@@ -189,6 +198,15 @@ void set_study_al(TemplateData& d, const std::vector<ParameterSeries>& series,
            b.contact == ContactKind::ss && b.mesh == MeshLevel::F && schema::is_baseline(b) &&
            s.error_range();
   });
+  const std::optional<double> exact = ours.empty() ? std::nullopt : exact_of(*ours.front());
+  if (!exact)
+    return;
+  // Against the exact value our errors use, so that the study's value and ours are on one basis.
+  const double target = grading::error_percent(match.value->value, *exact);
+  d.set("printed", match.value->printed);
+  d.set("exact", format_value(*exact));
+  d.set("study_exact", match.value->exact_printed);
+  d.set("target", format_percent(target));
   d.set("study_al", template_list(ours, [&](const ParameterSeries* s) {
           TemplateData r("crossings",
                          text_or_false(fmt::format("{}", fmt::join(crossings(*s, target), ", "))));
@@ -205,7 +223,7 @@ TemplateData fkn_convergence(const ResultsIndex& index, const SeriesRefs& series
   for (const auto& r : index.results().rows)
     rows[r.id] = &r;
   std::vector<double> converging;
-  bool any_row = false;
+  std::set<const ParameterSeries*> complete;
   for (double v : values) {
     bool every = true, some = false;
     for (const ParameterSeries* s : series) {
@@ -216,14 +234,18 @@ TemplateData fkn_convergence(const ResultsIndex& index, const SeriesRefs& series
       if (it == rows.end() || !ResultsIndex::complete(*it->second))
         continue;
       some = true;
+      complete.insert(s);
       every = every && it->second->converging.value_or(false);
     }
-    any_row = any_row || some;
     if (some && every)
       converging.push_back(v);
   }
-  return any_row ? TemplateData("window", parameter_window(converging, values))
-                 : TemplateData(false);
+  if (complete.empty())
+    return TemplateData(false);
+  TemplateData d("n", std::to_string(complete.size()));
+  d.set("window", converging.empty() ? TemplateData(false)
+                                     : TemplateData(parameter_window(converging, values)));
+  return d;
 }
 
 /// The default FKN: the smallest at which every swept AL/PM row is e or g (`eg` not empty).
@@ -276,8 +298,10 @@ TemplateData fkn(const ResultsIndex& index, const std::vector<ParameterSeries>& 
   const auto e = values_where_all(penalty, values, Grade::e);
   const auto eg = values_where_all(penalty, values, Grade::g);
   d.set("n_rows", std::to_string(penalty.size()));
-  d.set("e", parameter_window(e, values));
-  d.set("eg", parameter_window(eg, values));
+  d.set("e", e.empty() ? TemplateData(false) : TemplateData(parameter_window(e, values)));
+  d.set("eg",
+        eg == e || eg.empty() ? TemplateData(false) : TemplateData(parameter_window(eg, values)));
+  d.set("eg_none", eg.empty());
   SeriesRefs never;
   std::ranges::copy_if(penalty, std::back_inserter(never), [&](const ParameterSeries* s) {
     return values_where_all({s}, values, Grade::e).empty();

@@ -10,6 +10,7 @@
 #include "report_test_support.hpp"
 #include "reports/figures/sweep_figure.hpp"
 #include "reports/findings/sweep_section.hpp"
+#include "suites/row_verdict.hpp"
 
 namespace cs::reports {
 namespace {
@@ -84,7 +85,8 @@ TEST(SweepSection, FknAnswersFromTheNumbers) {
   EXPECT_NE(md.find("## Parameter sweeps"), std::string::npos);
   EXPECT_NE(md.find("### FKN, the normal penalty stiffness (fkn)"), std::string::npos);
   // e at 100 only (1e4 did not converge), e or g likewise.
-  EXPECT_NE(md.find("is e at FKN = 100, and e or g at FKN = 100"), std::string::npos) << md;
+  // The two windows coincide: said once.
+  EXPECT_NE(md.find("is e at FKN = 100, and e or g at no other"), std::string::npos) << md;
   EXPECT_NE(md.find("AL iterations (most of any swept case) go from 3 at FKN = 0.01 to 16 at "
                     "FKN = 10000; AL/PM cases that do not converge: 2 at FKN = 10000"),
             std::string::npos)
@@ -111,13 +113,20 @@ TEST(SweepSection, FknAnswersFromTheNumbers) {
 // Requirement: the S(1/3) question is answered against the study's own printed AL value
 // (sigma_c, 4Q, ss, F): a crossing is interpolated in log FKN; none is reported as none.
 TEST(SweepSection, StudyAlErrorOnSOneThird) {
-  const auto crossing =
-      document({swept_case(ProblemId::S_1_3, Element::Q4, Algorithm::AL, "fkn", 0.1, -30.0, 4),
-                swept_case(ProblemId::S_1_3, Element::Q4, Algorithm::AL, "fkn", 10, -2.0, 8)},
-               {{"fkn", {0.1, 10}}});
+  // Our exact value, not the study's printed 10.9571: the study's 9.5320 is -15.21 % of it.
+  const auto s13 = [](double fkn, double error, int iterations) {
+    CaseResult c =
+        swept_case(ProblemId::S_1_3, Element::Q4, Algorithm::AL, "fkn", fkn, error, iterations);
+    c.quantities[0].exact = 11.2424;
+    c.quantities[0].value = 11.2424 * (1.0 + error / 100.0);
+    return c;
+  };
+  const auto crossing = document({s13(0.1, -30.0, 4), s13(10, -2.0, 8)}, {{"fkn", {0.1, 10}}});
   const ResultsIndex a(crossing);
   const std::string md = sweep_section(a, testing::study(), {});
-  EXPECT_NE(md.find("9.5320 against 10.9571: −13.0 %) is reproduced near FKN = 1.6"),
+  // -15.21 % lies 0.528 of the way from -30 % to -2 %: 10^(-1 + 2 * 0.528) = 1.1.
+  EXPECT_NE(md.find("9.5320, −15.2 % against the exact value 11.2424 of our errors; the study "
+                    "printed 10.9571) is reproduced near FKN = 1.1"),
             std::string::npos)
       << md;
   const auto none =
@@ -135,6 +144,35 @@ TEST(SweepSection, StudyAlErrorOnSOneThird) {
   const ResultsIndex r(rigid);
   const std::string rigid_md = sweep_section(r, testing::study(), {});
   EXPECT_EQ(rigid_md.find("is reproduced near FKN"), std::string::npos) << rigid_md;
+}
+
+// Requirement: the convergence answer counts the AL/PM rows it speaks of (run on C, M and F)
+// and says where all of them converge; with none converging everywhere it says so.
+TEST(SweepSection, FknConvergenceCountsItsRows) {
+  // One AL row per FKN on C, M and F: errors 2, 1, 0.5 % (converging), or 2, 9, 0.5 % (not).
+  const auto row_at = [](double fkn, double m_error) {
+    std::vector<CaseResult> out;
+    const double errors[] = {2.0, m_error, 0.5};
+    for (const MeshLevel m : {MeshLevel::C, MeshLevel::M, MeshLevel::F}) {
+      out.push_back(swept_case(ProblemId::H_a, Element::Q4, Algorithm::AL, "fkn", fkn,
+                               errors[static_cast<int>(m)], 5, true, m));
+    }
+    return out;
+  };
+  const auto section = [&](double m_error_at_1) {
+    auto doc = document(row_at(1, m_error_at_1), {{"fkn", {1, 100}}});
+    std::ranges::copy(row_at(100, 9.0), std::back_inserter(doc.cases));
+    doc.rows = suites::make_row_verdicts(doc.cases);
+    const ResultsIndex index(doc);
+    return sweep_section(index, testing::study(), {});
+  };
+  const std::string md = section(1.0);
+  EXPECT_NE(md.find("Of these rows, the 1 run on C, M and F all converge (c) at FKN = 1."),
+            std::string::npos)
+      << md;
+  EXPECT_NE(section(9.0).find("the 1 run on C, M and F do not all converge (c) at any swept FKN"),
+            std::string::npos)
+      << section(9.0);
 }
 
 // Requirement: the E ratio stops mattering where every larger ratio is within kSettledPoints
