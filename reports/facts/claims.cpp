@@ -429,71 +429,50 @@ ClaimEvidence element_order(const std::vector<RowFacts>& rows) {
   return c;
 }
 
-/// Claim 9: the baseline rows the study's claim applies to (s or better on F without its c),
-/// judged by refinement_claim, the rule the estimates appendix uses: n judged (VF converged,
-/// the row evidence), n_hold of them hold (M-F-VF converges, or settles at the study's
-/// resolution), n_plateau settle at a larger error (a bias: fails the claim); rows that are not
-/// evidence or whose VF case did not converge are left out (n_excluded). Reproduced when most
-/// judged rows hold (kRefined).
+/// The rows `keep` accepts, tallied by vf_judgement, with the failing ones as examples.
+template <typename Keep>
+VfTally refinement_tally(ClaimEvidence& c, const ResultsIndex& index,
+                         const std::vector<RowFacts>& rows, Keep&& keep) {
+  std::vector<const schema::RowVerdict*> kept;
+  for (const auto& f : rows) {
+    if (!keep(f))
+      continue;
+    kept.push_back(f.row);
+    if (vf_judgement(index, *f.row) == VfJudgement::fails)
+      add_example(c, refinement_example(f));  // plateaus are a class the text describes
+  }
+  return tally_vf(index, kept);
+}
+
+/// Claim 9: the baseline rows the study's claim applies to (refinement_claim_applies), by the
+/// rule of the estimates appendix: n judged, n_hold of them hold (converge over M-F-VF, or
+/// settle at the study's resolution), n_plateau settle at a larger error (a bias: fails the
+/// claim); n_excluded left open. Reproduced when most judged rows hold (kRefined).
 ClaimEvidence refinement(const ResultsIndex& index, const std::vector<RowFacts>& rows) {
   ClaimEvidence c{.key = "refinement"};
-  for (const auto& f : rows) {
-    switch (refinement_claim(index, *f.row)) {
-      case RefinementClaim::holds:
-        ++c.n_hold;
-        break;
-      case RefinementClaim::plateau:  // a class the text describes; examples are of fails
-        ++c.n_plateau;
-        break;
-      case RefinementClaim::fails:
-        add_example(c, refinement_example(f));
-        break;
-      case RefinementClaim::not_evidence:
-      case RefinementClaim::vf_not_converged:
-        ++c.n_excluded;
-        continue;
-      case RefinementClaim::not_applicable:
-      case RefinementClaim::no_vf:
-        continue;
-    }
-    ++c.n;
-  }
+  const VfTally t = refinement_tally(
+      c, index, rows, [](const RowFacts& f) { return refinement_claim_applies(*f.row); });
+  c.n_hold = t[VfJudgement::converges] + t[VfJudgement::at_resolution];
+  c.n = t.trends() + t[VfJudgement::at_resolution];
+  c.n_plateau = t[VfJudgement::plateau];
+  c.n_excluded = t.open();
   c.verdict = verdict_of(c.n_hold, c.n, kRefined);
   return c;
 }
 
-/// Claim 10: MPC's baseline rows with a VF case, by the same rule (vf_judgement), whatever their
-/// grade: n judged, n_hold of them converge over M-F-VF, n_plateau settle at a nonzero error.
-/// Rows at the study's resolution already (n_round_off: nothing to improve), rows that are not
-/// evidence and rows whose VF case did not converge (n_excluded) are left out. Reproduced when
-/// most judged rows converge (kRefined).
+/// Claim 10: MPC's baseline rows with a VF case, by the same rule, whatever their grade: n
+/// judged, n_hold of them converge, n_plateau settle at a nonzero error; rows at the study's
+/// resolution already (n_round_off: nothing to improve) and n_excluded open ones are left out.
+/// Reproduced when most judged rows converge (kRefined).
 ClaimEvidence mpc_refinement(const ResultsIndex& index, const std::vector<RowFacts>& rows) {
   ClaimEvidence c{.key = "mpc_refinement"};
-  for (const auto& f : rows) {
-    if (f.option.algorithm != Algorithm::MPC)
-      continue;
-    switch (vf_judgement(index, *f.row)) {
-      case VfJudgement::converges:
-        ++c.n_hold;
-        break;
-      case VfJudgement::plateau:  // a class the text describes; examples are of fails
-        ++c.n_plateau;
-        break;
-      case VfJudgement::fails:
-        add_example(c, refinement_example(f));
-        break;
-      case VfJudgement::at_resolution:
-        ++c.n_round_off;
-        continue;
-      case VfJudgement::not_evidence:
-      case VfJudgement::vf_not_converged:
-        ++c.n_excluded;
-        continue;
-      case VfJudgement::no_vf:
-        continue;
-    }
-    ++c.n;
-  }
+  const VfTally t = refinement_tally(
+      c, index, rows, [](const RowFacts& f) { return f.option.algorithm == Algorithm::MPC; });
+  c.n_hold = t[VfJudgement::converges];
+  c.n = t.trends();
+  c.n_plateau = t[VfJudgement::plateau];
+  c.n_round_off = t[VfJudgement::at_resolution];
+  c.n_excluded = t.open();
   c.verdict = verdict_of(c.n_hold, c.n, kRefined);
   return c;
 }

@@ -4,35 +4,6 @@
 #include "reports/facts/row_facts.hpp"
 
 namespace cs::reports {
-namespace {
-
-/// Whether the study's claim applies: s or better on F, without the study's c.
-bool claim_applies(const schema::RowVerdict& row) {
-  return row.errors[2] && row.converging && !*row.converging &&
-         !schema::is_worse(grading::grade_of_error(*row.errors[2]), schema::Grade::s);
-}
-
-/// The claim where it applies: VF converging or settled at the study's resolution holds it.
-RefinementClaim claim_of(VfJudgement j) {
-  switch (j) {
-    case VfJudgement::converges:
-    case VfJudgement::at_resolution:
-      return RefinementClaim::holds;
-    case VfJudgement::plateau:
-      return RefinementClaim::plateau;
-    case VfJudgement::fails:
-      return RefinementClaim::fails;
-    case VfJudgement::not_evidence:
-      return RefinementClaim::not_evidence;
-    case VfJudgement::vf_not_converged:
-      return RefinementClaim::vf_not_converged;
-    case VfJudgement::no_vf:
-      break;
-  }
-  return RefinementClaim::no_vf;
-}
-
-}  // namespace
 
 VfJudgement vf_judgement(const schema::RowVerdict& row, MeshState vf, double resolution_on_m,
                          bool evidence) {
@@ -62,14 +33,25 @@ VfJudgement vf_judgement(const ResultsIndex& index, const schema::RowVerdict& ro
                       facts_of_row(index, row).evidence());
 }
 
-RefinementClaim refinement_claim(const schema::RowVerdict& row, MeshState vf,
-                                 double resolution_on_m, bool evidence) {
-  return claim_applies(row) ? claim_of(vf_judgement(row, vf, resolution_on_m, evidence))
-                            : RefinementClaim::not_applicable;
+bool refinement_claim_applies(const schema::RowVerdict& row) {
+  return row.errors[2] && row.converging && !*row.converging &&
+         !schema::is_worse(grading::grade_of_error(*row.errors[2]), schema::Grade::s);
 }
 
-RefinementClaim refinement_claim(const ResultsIndex& index, const schema::RowVerdict& row) {
-  return claim_applies(row) ? claim_of(vf_judgement(index, row)) : RefinementClaim::not_applicable;
+int VfTally::trends() const {
+  return (*this)[VfJudgement::converges] + (*this)[VfJudgement::plateau] +
+         (*this)[VfJudgement::fails];
+}
+
+int VfTally::open() const {
+  return (*this)[VfJudgement::not_evidence] + (*this)[VfJudgement::vf_not_converged];
+}
+
+VfTally tally_vf(const ResultsIndex& index, const std::vector<const schema::RowVerdict*>& rows) {
+  VfTally t;
+  for (const schema::RowVerdict* row : rows)
+    ++t.by[static_cast<std::size_t>(vf_judgement(index, *row))];
+  return t;
 }
 
 }  // namespace cs::reports

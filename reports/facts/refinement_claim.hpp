@@ -1,7 +1,10 @@
 #pragma once
 // The study's "further mesh refinement would lead to converging results", judged for one row
-// from its fourth mesh VF (h/8, `bash ci/refine.sh`): one rule, used by the claims ledger
-// (claims 9 and 10) and the estimates appendix alike.
+// from its fourth mesh VF (h/8, `bash ci/refine.sh`): one rule and one tally of it, used by the
+// claims ledger (claims 9 and 10) and the estimates appendix alike.
+
+#include <array>
+#include <vector>
 
 #include "grading/convergence.hpp"
 #include "reports/results/results_index.hpp"
@@ -30,26 +33,25 @@ VfJudgement vf_judgement(const schema::RowVerdict& row, MeshState vf, double res
 /// The same, with those inputs read from `index`.
 VfJudgement vf_judgement(const ResultsIndex& index, const schema::RowVerdict& row);
 
-/// The study's claim about a row: "It is probable that in instances not demarked by c's with
-/// satisfactory or better results, further mesh refinement would lead to converging results".
-/// It applies to a nonsingular row graded s or better on F (Eq. 46) without the study's c over
-/// C-M-F. It holds when VF converges, or settles at the study's resolution; a plateau at a
-/// larger error (a bias) and a trend that does not converge fail it; a row that is not
-/// evidence, or whose VF case is missing or did not converge, leaves it open and is never
-/// counted either way.
-enum class RefinementClaim {
-  not_applicable,
-  holds,
-  plateau,
-  fails,
-  not_evidence,
-  vf_not_converged,
-  no_vf
+/// Whether the study's claim applies to a row: "It is probable that in instances not demarked
+/// by c's with satisfactory or better results, further mesh refinement would lead to converging
+/// results", so a row graded s or better on F (Eq. 46) without the study's c over C-M-F. Where
+/// it applies, it holds when VF converges or settles at the study's resolution; a plateau at a
+/// larger error (a bias) and a trend that does not converge fail it; a row that is not evidence,
+/// or whose VF case is missing or did not converge, leaves it open and is never counted.
+bool refinement_claim_applies(const schema::RowVerdict& row);
+
+/// How many rows took each vf_judgement.
+struct VfTally {
+  std::array<int, 7> by{};
+  int operator[](VfJudgement j) const { return by[static_cast<std::size_t>(j)]; }
+  /// Rows whose trend was judged: converges, plateau or fails (at_resolution apart).
+  int trends() const;
+  /// Rows left open: not evidence, or VF not converged.
+  int open() const;
 };
 
-/// The claim for one row (see vf_judgement for the inputs).
-RefinementClaim refinement_claim(const schema::RowVerdict& row, MeshState vf,
-                                 double resolution_on_m = 0.0, bool evidence = true);
-RefinementClaim refinement_claim(const ResultsIndex& index, const schema::RowVerdict& row);
+/// vf_judgement over `rows`.
+VfTally tally_vf(const ResultsIndex& index, const std::vector<const schema::RowVerdict*>& rows);
 
 }  // namespace cs::reports

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 
 #include <fmt/format.h>
 
@@ -65,16 +66,16 @@ std::string vf_cell(const VfRow& v) {
   return v.vf == MeshState::converged ? value : value + " (not converged)";
 }
 
-/// A claim as the table and estimates.csv print it, in RefinementClaim's order.
-std::string claim_cell(RefinementClaim claim) {
-  constexpr const char* kText[] = {"n/a",
+/// The study's claim on a row as the table and estimates.csv print it.
+std::string claim_cell(bool applies, VfJudgement j) {
+  constexpr const char* kText[] = {"holds",
                                    "holds",
                                    "fails: a plateau (bias)",
                                    "fails",
                                    "open: not evidence on F",
                                    "open: VF not converged",
                                    "open: no VF"};
-  return kText[static_cast<int>(claim)];
+  return applies ? kText[static_cast<int>(j)] : "n/a";
 }
 
 void add_estimate(EstimateSummary& s, std::vector<double>& gci, const ResultsIndex& index,
@@ -104,48 +105,31 @@ void add_vf(RefinementFacts& f, const ResultsIndex& index, const RowVerdict& row
   v.trend_cmf = trend_of(row.errors[0], row.errors[1], row.errors[2],
                          index.read_resolution_percent(row, schema::MeshLevel::C));
   v.trend_mfvf = trend_of(row.errors[1], row.errors[2], row.refinement->error, on_m);
-  v.claim = refinement_claim(index, row);
-  f.claim.applies += v.claim == RefinementClaim::not_applicable ? 0 : 1;
-  f.claim.holds += v.claim == RefinementClaim::holds ? 1 : 0;
-  f.claim.plateau += v.claim == RefinementClaim::plateau ? 1 : 0;
-  f.claim.fails += v.claim == RefinementClaim::fails ? 1 : 0;
-  f.claim.not_evidence += v.claim == RefinementClaim::not_evidence ? 1 : 0;
-  f.claim.vf_not_converged += v.claim == RefinementClaim::vf_not_converged ? 1 : 0;
+  v.claim_applies = refinement_claim_applies(row);
+  v.judgement = vf_judgement(index, row);
   f.vf_rows.push_back(v);
 }
 
-void add_mpc(RefinementFacts& f, const ResultsIndex& index, std::vector<double>& on_f,
-             std::vector<double>& on_vf) {
+/// The claim's and MPC's tallies over the nonsingular rows with a VF case, and MPC's medians.
+void add_tallies(RefinementFacts& f, const ResultsIndex& index) {
+  std::vector<const RowVerdict*> applies, mpc;
+  std::vector<double> on_f, on_vf;
   for (const VfRow& v : f.vf_rows) {
-    const RowVerdict& r = *v.row;
-    if (r.spec.algorithm != schema::Algorithm::MPC || !r.errors[2])
+    if (v.claim_applies)
+      applies.push_back(v.row);
+    if (v.row->spec.algorithm != schema::Algorithm::MPC || !v.row->errors[2])
       continue;
-    switch (vf_judgement(index, r)) {
-      case VfJudgement::converges:
-        ++f.mpc.converges;
-        break;
-      case VfJudgement::plateau:
-        ++f.mpc.plateau;
-        break;
-      case VfJudgement::fails:
-        ++f.mpc.fails;
-        break;
-      case VfJudgement::at_resolution:
-        ++f.mpc.at_resolution;
-        continue;
-      case VfJudgement::not_evidence:
-        ++f.mpc.not_evidence;
-        continue;
-      case VfJudgement::vf_not_converged:
-        ++f.mpc.not_converged;
-        continue;
-      case VfJudgement::no_vf:
-        continue;
+    mpc.push_back(v.row);
+    if (v.judgement == VfJudgement::converges || v.judgement == VfJudgement::plateau ||
+        v.judgement == VfJudgement::fails) {
+      on_f.push_back(std::abs(*v.row->errors[2]));
+      on_vf.push_back(std::abs(*v.row->refinement->error));
     }
-    ++f.mpc.judged;
-    on_f.push_back(std::abs(*r.errors[2]));
-    on_vf.push_back(std::abs(*r.refinement->error));
   }
+  f.claim = tally_vf(index, applies);
+  f.mpc = tally_vf(index, mpc);
+  f.mpc_median_f = median(on_f);
+  f.mpc_median_vf = median(on_vf);
 }
 
 std::string percent(int part, int whole) {
@@ -174,7 +158,7 @@ std::string vf_table(const std::vector<VfRow>& rows) {
       return v.row->errors[m] ? format_error_resolved(*v.row->errors[m]) : std::string(kMissing);
     };
     t.add_row({row_label(*v.row), error(0), error(1), error(2), vf_cell(v), trend_cell(v.trend_cmf),
-               trend_cell(v.trend_mfvf), claim_cell(v.claim)});
+               trend_cell(v.trend_mfvf), claim_cell(v.claim_applies, v.judgement)});
   }
   return t.render();
 }
@@ -205,7 +189,7 @@ std::string csv_line(const ResultsIndex& index, const RowVerdict& row) {
   return out + fmt::format(",{},{},{},{},{}\n", csv_number(row.refinement->value),
                            csv_number(row.refinement->error), kState[static_cast<int>(vf)],
                            trend ? schema::to_string(trend->trend) : "",
-                           claim_cell(refinement_claim(index, row)));
+                           claim_cell(refinement_claim_applies(row), vf_judgement(index, row)));
 }
 
 }  // namespace
@@ -246,10 +230,7 @@ RefinementFacts refinement_facts(const ResultsIndex& index) {
     if (row->refinement)
       add_vf(f, index, *row);
   }
-  std::vector<double> on_f, on_vf;
-  add_mpc(f, index, on_f, on_vf);
-  f.mpc.median_f = median(on_f);
-  f.mpc.median_vf = median(on_vf);
+  add_tallies(f, index);
   return f;
 }
 
@@ -280,7 +261,7 @@ std::string refinement_section(const ResultsIndex& index) {
   }
   std::vector<VfRow> shown;
   std::copy_if(f.vf_rows.begin(), f.vf_rows.end(), std::back_inserter(shown),
-               [](const VfRow& v) { return v.claim != RefinementClaim::not_applicable; });
+               [](const VfRow& v) { return v.claim_applies; });
   const auto n = [](int v) { return std::to_string(v); };
   Fields d{{"round_off", n(f.round_off)},
            {"rows", n(rows)},
@@ -293,29 +274,30 @@ std::string refinement_section(const ResultsIndex& index) {
            {"problems", summary_table(f.problems)},
            {"has_vf", !f.vf_rows.empty() || f.singular_vf > 0},
            {"n_vf", n(static_cast<int>(f.vf_rows.size()))},
-           {"applies", n(f.claim.applies)},
-           {"holds", n(f.claim.holds)},
-           {"judged", n(f.claim.holds + f.claim.plateau + f.claim.fails)},
-           {"plateau", n(f.claim.plateau)},
-           {"has_plateau", f.claim.plateau > 0},
-           {"not_evidence", n(f.claim.not_evidence)},
-           {"has_not_evidence", f.claim.not_evidence > 0},
-           {"vf_not_converged", n(f.claim.vf_not_converged)},
-           {"has_vf_not_converged", f.claim.vf_not_converged > 0},
+           {"applies", n(std::accumulate(f.claim.by.begin(), f.claim.by.end(), 0))},
+           {"holds", n(f.claim[VfJudgement::converges] + f.claim[VfJudgement::at_resolution])},
+           {"judged", n(f.claim.trends() + f.claim[VfJudgement::at_resolution])},
+           {"plateau", n(f.claim[VfJudgement::plateau])},
+           {"has_plateau", f.claim[VfJudgement::plateau] > 0},
+           {"not_evidence", n(f.claim[VfJudgement::not_evidence])},
+           {"has_not_evidence", f.claim[VfJudgement::not_evidence] > 0},
+           {"vf_not_converged", n(f.claim[VfJudgement::vf_not_converged])},
+           {"has_vf_not_converged", f.claim[VfJudgement::vf_not_converged] > 0},
            {"vf_rows", vf_table(shown)},
            {"has_shown", !shown.empty()}};
-  if (f.mpc.judged + f.mpc.at_resolution + f.mpc.not_evidence > 0)
-    d["mpc"] = Fields{{"judged", n(f.mpc.judged)},
-                      {"converges", n(f.mpc.converges)},
-                      {"plateau", n(f.mpc.plateau)},
-                      {"fails", n(f.mpc.fails)},
-                      {"at_resolution", n(f.mpc.at_resolution)},
-                      {"not_evidence", n(f.mpc.not_evidence)},
-                      {"not_converged", n(f.mpc.not_converged)},
-                      {"has_judged", f.mpc.judged > 0},
-                      {"median_f", fmt::format("{:.3g}", f.mpc.median_f)},
-                      {"median_vf", fmt::format("{:.3g}", f.mpc.median_vf)},
-                      {"mostly", f.mpc.converges * 2 > f.mpc.judged}};
+  const VfTally& m = f.mpc;
+  if (m.trends() + m[VfJudgement::at_resolution] + m[VfJudgement::not_evidence] > 0)
+    d["mpc"] = Fields{{"judged", n(m.trends())},
+                      {"converges", n(m[VfJudgement::converges])},
+                      {"plateau", n(m[VfJudgement::plateau])},
+                      {"fails", n(m[VfJudgement::fails])},
+                      {"at_resolution", n(m[VfJudgement::at_resolution])},
+                      {"not_evidence", n(m[VfJudgement::not_evidence])},
+                      {"not_converged", n(m[VfJudgement::vf_not_converged])},
+                      {"has_judged", m.trends() > 0},
+                      {"median_f", fmt::format("{:.3g}", f.mpc_median_f)},
+                      {"median_vf", fmt::format("{:.3g}", f.mpc_median_vf)},
+                      {"mostly", m[VfJudgement::converges] * 2 > m.trends()}};
   if (f.singular_vf > 0)
     d["singular"] = Fields{{"n", n(f.singular_vf)}, {"diverges", n(f.singular_vf_diverges)}};
   return render_template(templates::refinement_section, d);

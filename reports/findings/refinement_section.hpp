@@ -39,22 +39,8 @@ struct VfRow {
   const schema::RowVerdict* row = nullptr;
   MeshState vf = MeshState::missing;
   std::optional<grading::ConvergenceAssessment> trend_cmf, trend_mfvf;
-  RefinementClaim claim = RefinementClaim::not_applicable;
-};
-
-/// Counts of the study's claim over the rows with a VF case (see RefinementClaim).
-struct ClaimCounts {
-  int applies = 0, holds = 0, plateau = 0, fails = 0, not_evidence = 0, vf_not_converged = 0;
-};
-
-/// MPC rows with a VF case, by vf_judgement (the rule of the study's claim, applicability
-/// aside): judged (converges, plateau or fails) and of them converging; at the study's
-/// resolution already (nothing to improve), not evidence, or VF not converged: left out. The
-/// median |error| (percent) on F and VF is over the judged rows.
-struct MpcRefinement {
-  int judged = 0, converges = 0, plateau = 0, fails = 0;
-  int at_resolution = 0, not_evidence = 0, not_converged = 0;
-  double median_f = 0.0, median_vf = 0.0;
+  bool claim_applies = false;  ///< refinement_claim_applies
+  VfJudgement judgement = VfJudgement::no_vf;
 };
 
 /// The section's facts.
@@ -62,8 +48,10 @@ struct RefinementFacts {
   std::vector<EstimateSummary> problems;
   int round_off = 0;           ///< rows left out: exact to round-off on every mesh
   std::vector<VfRow> vf_rows;  ///< every row with a VF case, in document order
-  ClaimCounts claim;
-  MpcRefinement mpc;
+  VfTally claim;               ///< the rows the study's claim applies to
+  VfTally mpc;                 ///< the MPC rows with an F value
+  /// The median |error| (percent) on F and on VF of the MPC rows whose trend was judged.
+  double mpc_median_f = 0.0, mpc_median_vf = 0.0;
   int singular_vf = 0;           ///< singular rows with a converged VF case
   int singular_vf_diverges = 0;  ///< of them, strict divergence over M-F-VF
 };

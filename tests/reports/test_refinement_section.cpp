@@ -3,6 +3,8 @@
 // that converged counts), the GCI band test, round-off rows left out, and estimates.csv.
 
 #include <algorithm>
+#include <array>
+#include <numeric>
 
 #include <gtest/gtest.h>
 
@@ -34,16 +36,15 @@ RowVerdict row(std::array<double, 3> errors, bool converging, std::optional<doub
 // the VF case is missing or did not converge.
 TEST(RefinementSection, StudyClaimCountsOnlyConvergedVfCases) {
   const auto s_row = [](std::optional<double> vf) { return row({8.0, 7.0, 6.0}, false, vf); };
-  EXPECT_EQ(refinement_claim(s_row(3.0), MeshState::converged), RefinementClaim::holds);
-  EXPECT_EQ(refinement_claim(s_row(9.0), MeshState::converged), RefinementClaim::fails);
-  EXPECT_EQ(refinement_claim(s_row(3.0), MeshState::not_converged),
-            RefinementClaim::vf_not_converged);
-  EXPECT_EQ(refinement_claim(s_row(3.0), MeshState::failed), RefinementClaim::vf_not_converged);
-  EXPECT_EQ(refinement_claim(s_row(std::nullopt), MeshState::missing), RefinementClaim::no_vf);
-  EXPECT_EQ(refinement_claim(row({8.0, 7.0, 6.0}, true, 3.0), MeshState::converged),
-            RefinementClaim::not_applicable);  // already c
-  EXPECT_EQ(refinement_claim(row({14.0, 13.0, 12.0}, false, 3.0), MeshState::converged),
-            RefinementClaim::not_applicable);  // u on F
+  EXPECT_TRUE(refinement_claim_applies(s_row(3.0)));
+  EXPECT_EQ(vf_judgement(s_row(3.0), MeshState::converged, 0.0), VfJudgement::converges);
+  EXPECT_EQ(vf_judgement(s_row(9.0), MeshState::converged, 0.0), VfJudgement::fails);
+  EXPECT_EQ(vf_judgement(s_row(3.0), MeshState::not_converged, 0.0), VfJudgement::vf_not_converged);
+  EXPECT_EQ(vf_judgement(s_row(3.0), MeshState::failed, 0.0), VfJudgement::vf_not_converged);
+  EXPECT_EQ(vf_judgement(s_row(std::nullopt), MeshState::missing, 0.0), VfJudgement::no_vf);
+  EXPECT_EQ(vf_judgement(s_row(3.0), MeshState::converged, 0.0, false), VfJudgement::not_evidence);
+  EXPECT_FALSE(refinement_claim_applies(row({8.0, 7.0, 6.0}, true, 3.0)));      // already c
+  EXPECT_FALSE(refinement_claim_applies(row({14.0, 13.0, 12.0}, false, 3.0)));  // u on F
 }
 
 // Requirement: the GCI band holds the exact value when |f_F - exact| / |f_F| <= GCI.
@@ -124,12 +125,9 @@ TEST(RefinementSection, FactsCountOnlyConvergedVfCases) {
   const schema::ResultsDocument doc = vf_document();
   const ResultsIndex index(doc);
   const RefinementFacts f = refinement_facts(index);
-  EXPECT_EQ(f.claim.applies, 3);
-  EXPECT_EQ(f.claim.holds, 1);
-  EXPECT_EQ(f.claim.fails, 1);
-  EXPECT_EQ(f.claim.vf_not_converged, 1);
-  EXPECT_EQ(f.mpc.judged, 0);
-  EXPECT_EQ(f.mpc.not_converged, 1);
+  EXPECT_EQ(f.claim.by, (std::array{1, 0, 0, 1, 0, 1, 0}));  // holds, fails, VF not converged
+  EXPECT_EQ(f.mpc.trends(), 0);
+  EXPECT_EQ(f.mpc[VfJudgement::vf_not_converged], 1);
   EXPECT_EQ(f.round_off, 1);
   ASSERT_EQ(f.problems.size(), 1u);
   EXPECT_EQ(f.problems[0].rows, 3);
@@ -199,31 +197,32 @@ TEST(RefinementSection, LedgerAndAppendixJudgeRefinementByOneRule) {
   }
   const ResultsIndex index(doc);
   const RefinementFacts f = refinement_facts(index);
-  EXPECT_EQ(f.claim.applies, 5);
-  EXPECT_EQ(f.claim.holds, 2);
-  EXPECT_EQ(f.claim.plateau, 1);
-  EXPECT_EQ(f.claim.fails, 1);
-  EXPECT_EQ(f.claim.not_evidence, 1);
-  EXPECT_EQ(f.mpc.not_evidence, 1);
-  EXPECT_EQ(f.mpc.judged, 1);
-  EXPECT_EQ(f.mpc.converges, 1);
-  EXPECT_EQ(f.mpc.at_resolution, 1);
+  const int holds = f.claim[VfJudgement::converges] + f.claim[VfJudgement::at_resolution];
+  EXPECT_EQ(holds, 2);
+  EXPECT_EQ(f.claim[VfJudgement::plateau], 1);
+  EXPECT_EQ(f.claim[VfJudgement::fails], 1);
+  EXPECT_EQ(f.claim[VfJudgement::not_evidence], 1);
+  EXPECT_EQ(std::accumulate(f.claim.by.begin(), f.claim.by.end(), 0), 5);  // it applies to 5
+  EXPECT_EQ(f.mpc[VfJudgement::not_evidence], 1);
+  EXPECT_EQ(f.mpc.trends(), 1);
+  EXPECT_EQ(f.mpc[VfJudgement::converges], 1);
+  EXPECT_EQ(f.mpc[VfJudgement::at_resolution], 1);
   const auto claims = study_claims(index, row_facts(index), {});
   const auto claim = [&](const std::string& key) {
     return *std::find_if(claims.begin(), claims.end(),
                          [&](const ClaimEvidence& c) { return c.key == key; });
   };
   const ClaimEvidence nine = claim("refinement");
-  EXPECT_EQ(nine.n, f.claim.holds + f.claim.plateau + f.claim.fails);
-  EXPECT_EQ(nine.n_hold, f.claim.holds);
-  EXPECT_EQ(nine.n_plateau, f.claim.plateau);
-  EXPECT_EQ(nine.n_excluded, f.claim.not_evidence);
+  EXPECT_EQ(nine.n, 4);
+  EXPECT_EQ(nine.n_hold, 2);
+  EXPECT_EQ(nine.n_plateau, 1);
+  EXPECT_EQ(nine.n_excluded, 1);
   EXPECT_EQ(nine.verdict, ClaimVerdict::not_reproduced);  // 2 of 4
   const ClaimEvidence ten = claim("mpc_refinement");
-  EXPECT_EQ(ten.n, f.mpc.judged);
-  EXPECT_EQ(ten.n_hold, f.mpc.converges);
-  EXPECT_EQ(ten.n_round_off, f.mpc.at_resolution);
-  EXPECT_EQ(ten.n_excluded, f.mpc.not_evidence);
+  EXPECT_EQ(ten.n, 1);
+  EXPECT_EQ(ten.n_hold, 1);
+  EXPECT_EQ(ten.n_round_off, 1);
+  EXPECT_EQ(ten.n_excluded, 1);
   EXPECT_EQ(ten.verdict, ClaimVerdict::reproduced);
   const std::string md = claims_ledger(claims);
   EXPECT_NE(md.find("further refinement converges in 2"), std::string::npos) << md;
@@ -245,7 +244,7 @@ TEST(RefinementSection, NoVerdictFromNoMpcRowJudged) {
   add_row(doc, schema::Algorithm::MPC, schema::ContactKind::ns, {1.0, 1.0, 1.0}, 1.0);
   doc.rows.back().converging = true;
   const ResultsIndex index(doc);
-  ASSERT_EQ(refinement_facts(index).mpc.judged, 0);
+  ASSERT_EQ(refinement_facts(index).mpc.trends(), 0);
   const std::string md = refinement_section(index);
   EXPECT_NE(md.find("is not testable here: no row is left to judge"), std::string::npos) << md;
   EXPECT_EQ(md.find("for most of the rows judged"), std::string::npos) << md;
