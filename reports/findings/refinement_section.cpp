@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "grading/accuracy.hpp"
+#include "reports/facts/trusted_estimate.hpp"
 #include "reports/findings/variant_rows.hpp"
 #include "reports/render/template_text.hpp"
 #include "reports/tables/markdown_table.hpp"
@@ -81,11 +82,12 @@ std::string claim_cell(bool applies, VfJudgement j) {
 void add_estimate(EstimateSummary& s, std::vector<double>& gci, const ResultsIndex& index,
                   const RowVerdict& row) {
   ++s.rows;
-  if (!row.estimate->asymptotic)
+  const TrustedEstimate t = trusted_estimate(index, row);
+  if (!t.estimate)
     return;
   ++s.asymptotic;
-  if (row.estimate->gci_percent)
-    gci.push_back(*row.estimate->gci_percent);
+  if (t.estimate->gci_percent)
+    gci.push_back(*t.estimate->gci_percent);
   const auto exact = index.exact_of(row);
   if (const auto b = exact ? gci_bounds_error(row, *exact) : std::nullopt) {
     ++s.with_exact;
@@ -168,12 +170,13 @@ std::string csv_number(const std::optional<double>& v) {
 }
 
 std::string csv_line(const ResultsIndex& index, const RowVerdict& row) {
-  const schema::ErrorEstimate& e = *row.estimate;
+  const TrustedEstimate t = trusted_estimate(index, row);
+  const schema::ErrorEstimate e = t.estimate ? *t.estimate : schema::ErrorEstimate{.note = t.note};
   const auto exact = index.exact_of(row);
   std::optional<double> limit_error;
   if (exact && e.richardson && *exact != 0.0)
     limit_error = grading::error_percent(*e.richardson, *exact);
-  const auto bounded = exact ? gci_bounds_error(row, *exact) : std::nullopt;
+  const auto bounded = exact && t.estimate ? gci_bounds_error(row, *exact) : std::nullopt;
   std::string out = fmt::format(
       "{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}", row.id, csv_number(row.values[0]),
       csv_number(row.values[1]), csv_number(row.values[2]), csv_number(row.errors[2]),

@@ -9,7 +9,9 @@
 #include <gtest/gtest.h>
 
 #include "grading/accuracy.hpp"
+#include "grading/richardson.hpp"
 #include "reports/facts/claims.hpp"
+#include "reports/facts/trusted_estimate.hpp"
 #include "reports/findings/refinement_section.hpp"
 #include "reports/pages/claims_ledger.hpp"
 
@@ -45,6 +47,31 @@ TEST(RefinementSection, StudyClaimCountsOnlyConvergedVfCases) {
   EXPECT_EQ(vf_judgement(s_row(3.0), MeshState::converged, 0.0, false), VfJudgement::not_evidence);
   EXPECT_FALSE(refinement_claim_applies(row({8.0, 7.0, 6.0}, true, 3.0)));      // already c
   EXPECT_FALSE(refinement_claim_applies(row({14.0, 13.0, 12.0}, false, 3.0)));  // u on F
+}
+
+// Requirement: an estimate is used only where the order rule trusts an order of the errors: a
+// Richardson estimate from +0.35/+0.11/-0.10 % (like S(1) AL ns at extent 8: differences of one
+// sign that shrink, order 0.19: a limit at -1.6 % from values within 0.35 % of the exact one) is
+// refused with the rule's reason; 4/1/0.25 % keeps its estimate.
+TEST(RefinementSection, EstimateOnlyWhereAnOrderIsTrusted) {
+  const auto estimated = [](std::array<double, 3> errors) {
+    RowVerdict r = row(errors, false, std::nullopt);
+    for (std::size_t m = 0; m < 3; ++m)
+      r.values[m] = 10.0 * (1.0 + errors[m] / 100.0);
+    r.estimate = grading::error_estimate(*r.values[0], *r.values[1], *r.values[2]);
+    return r;
+  };
+  const schema::ResultsDocument doc;
+  const ResultsIndex index(doc);
+  const RowVerdict sign = estimated({0.35, 0.11, -0.10});
+  ASSERT_TRUE(sign.estimate->asymptotic);  // by the differences alone
+  const TrustedEstimate refused = trusted_estimate(index, sign);
+  EXPECT_EQ(refused.estimate, nullptr);
+  EXPECT_EQ(refused.note, "changes sign");
+  const RowVerdict clean = estimated({4.0, 1.0, 0.25});
+  const TrustedEstimate kept = trusted_estimate(index, clean);
+  ASSERT_NE(kept.estimate, nullptr);
+  EXPECT_NEAR(*kept.estimate->richardson, 10.0, 1e-9);  // order 2: the exact value
 }
 
 // Requirement: the GCI band holds the exact value when |f_F - exact| / |f_F| <= GCI.
