@@ -99,7 +99,7 @@ std::optional<std::pair<double, std::string>> weighted_force_balance(const Resul
                            (s.algorithm == Algorithm::LMP || s.algorithm == Algorithm::PLM));
     const schema::ProblemRecord* p = index.problem(s.problem);
     if (s.element != Element::Q8 || !weighted || s.algorithm == Algorithm::MPC || !p ||
-        !p->axisymmetric || !c.interface || !c.interface->force_balance)
+        !p->axisymmetric || !c.is_baseline() || !c.interface || !c.interface->force_balance)
       continue;
     const double v = std::abs(*c.interface->force_balance);
     if (!worst || v > worst->first)

@@ -9,6 +9,7 @@
 #include <fmt/ranges.h>
 
 #include "grading/accuracy.hpp"
+#include "grading/convergence.hpp"
 #include "reports/figures/sweep_figure.hpp"
 #include "reports/findings/extent_section.hpp"
 #include "reports/render/template_text.hpp"
@@ -107,8 +108,27 @@ TemplateData spread(const SeriesRefs& series, const std::string& key,
   d.set("key", key);
   d.set("values", parameter_window(values, values));
   d.set("spread", fmt::format("{:.3g}", worst));
-  d.set("curve", worst >= 0 ? TemplateData((*widest)->label()) : TemplateData(false));
-  d.set("nothing", worst <= kSamePoints);
+  d.set("any", worst >= 0);
+  // The widest curve is named only where it moves: among curves that do not, none is widest.
+  d.set("curve", worst > kSamePoints ? TemplateData((*widest)->label()) : TemplateData(false));
+  return d;
+}
+
+/// The largest penetration (in h) of the swept AL cases, against the smallest FTOLN swept: AL
+/// augments only where a penetration exceeds FTOLN h, so below it the sweep cannot show FTOLN.
+TemplateData ftoln_reach(const SeriesRefs& al, const std::vector<double>& values) {
+  std::optional<double> deepest;
+  for (const ParameterSeries* s : al) {
+    for (const SeriesPoint& p : s->points) {
+      if (p.result && p.result->interface && p.result->interface->max_penetration_over_h)
+        deepest = std::max(deepest.value_or(0.0), *p.result->interface->max_penetration_over_h);
+    }
+  }
+  if (!deepest)
+    return TemplateData(false);
+  TemplateData d("penetration", fmt::format("{:.2g}", *deepest));
+  d.set("smallest", format_parameter(values.front()));
+  d.set("below", *deepest < values.front());
   return d;
 }
 
@@ -350,7 +370,8 @@ TemplateData pinball(const std::vector<ParameterSeries>& series) {
   });
 }
 
-/// From which E ratio on every stress error stays within kSettledPoints of its value at the
+/// From which E ratio on every stress error stays within the study's resolution
+/// (grading::kErrorResolutionPercent) of its value at the
 /// largest ratio swept.
 TemplateData e_ratio(const std::vector<ParameterSeries>& series, double smallest) {
   double latest = 0;
@@ -360,7 +381,7 @@ TemplateData e_ratio(const std::vector<ParameterSeries>& series, double smallest
     if (!last.error)
       continue;
     const auto moved = std::find_if(s->points.rbegin(), s->points.rend(), [&](const auto& p) {
-      return !p.error || std::abs(*p.error - *last.error) > kSettledPoints;
+      return !p.error || std::abs(*p.error - *last.error) > grading::kErrorResolutionPercent;
     });
     const double settled = moved.base()->parameter;  // the first point of the settled run
     latest = std::max(latest, settled);
@@ -409,6 +430,7 @@ void set_answers(TemplateData& d, const ResultsIndex& index, const std::string& 
     const auto al = select_series(
         series, [](const ParameterSeries& s) { return s.spec.algorithm == Algorithm::AL; });
     d.set("spread", spread(al.empty() ? all : al, "FTOLN", values));
+    d.set("ftoln_reach", ftoln_reach(al, values));
   } else {
     d.set("spread", spread(all, key == "p_over_E" ? "p/E" : key, values));
     d.set("load", key == "p_over_E");
@@ -521,7 +543,7 @@ std::string sweep_section(const ResultsIndex& index, const schema::StudyReferenc
     return {};
   TemplateData d("keys", keys);
   d.set("same_points", fmt::format("{:g}", kSamePoints));
-  d.set("settled_points", fmt::format("{:g}", kSettledPoints));
+  d.set("settled_points", fmt::format("{:g}", grading::kErrorResolutionPercent));
   return tidy_markdown(render_template(templates::sweep_section, d));
 }
 

@@ -18,9 +18,6 @@ namespace cs::reports {
 
 /// Two errors closer than this (percentage points) are "the same" in the plain answers.
 inline constexpr double kSamePoints = 0.01;
-/// The E ratio "stops mattering" once every larger ratio is within this (percentage points)
-/// of the error at the largest ratio swept.
-inline constexpr double kSettledPoints = 0.05;
 
 /// The keys the document's runs swept: run.sweep's, then those of the runs combined with it.
 std::vector<std::string> run_sweep_keys(const schema::ResultsDocument& doc);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <map>
 #include <span>
 
 #include <fmt/format.h>
@@ -21,14 +22,33 @@ bool covered(const schema::CaseResult& c) {
   return c.interface && c.spec.recovery == schema::Recovery::spr;
 }
 
+/// "FP<sub>p</sub>, IF<sub>p</sub> (120 cases)" in the report's problem order, or "—".
+std::string unmeasured_text(const ResultsIndex& index,
+                            const std::map<schema::ProblemId, int>& unmeasured) {
+  std::vector<std::string> labels;
+  int cases = 0;
+  for (const schema::ProblemRecord* p : index.problems()) {
+    if (const auto it = unmeasured.find(p->id); it != unmeasured.end()) {
+      labels.emplace_back(schema::label(p->id));
+      cases += it->second;
+    }
+  }
+  return labels.empty() ? std::string(kMissing)
+                        : fmt::format("{} ({} cases)", join_words(labels, ", "), cases);
+}
+
 std::string summary_table(const ResultsIndex& index) {
-  MarkdownTable table({"Check", "Measure", "Tolerance", "Cases checked", "Failing", "Worst case"});
+  MarkdownTable table({"Check", "Measure", "Tolerance", "Cases checked", "Failing", "Worst case",
+                       "Not measured on"});
   for (const auto& check : grading::interface_check_rules()) {
     int checked = 0, failing = 0;
     const schema::CaseResult* worst = nullptr;
     double worst_value = -1.0;
+    std::map<schema::ProblemId, int> unmeasured;  // cases the check does not apply to
     for (const auto& c : index.results().cases) {
       const auto v = covered(c) ? check.measure(*c.interface) : std::nullopt;
+      if (covered(c) && !v)
+        ++unmeasured[c.spec.problem];
       if (!v)
         continue;
       ++checked;
@@ -42,7 +62,8 @@ std::string summary_table(const ResultsIndex& index) {
         {std::string(check.name), std::string(check.measure_text),
          fmt::format("{:g}", check.tolerance), std::to_string(checked), std::to_string(failing),
          worst != nullptr ? fmt::format("`{}`: {:.3g}", schema::case_id(worst->spec), worst_value)
-                          : std::string(kMissing)});
+                          : std::string(kMissing),
+         unmeasured_text(index, unmeasured)});
   }
   return table.render();
 }
