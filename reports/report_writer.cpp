@@ -96,12 +96,13 @@ std::string variants_section(const ResultsIndex& index) {
             format_value_and_error(r->values[0], r->errors[0]),
             format_value_and_error(r->values[1], r->errors[1]),
             format_value_and_error(r->values[2], r->errors[2]),
-            !r->diverging   ? format_grade_cell(index, r)
+            !r->diverging   ? format_marked_grade_cell(index, r)
             : *r->diverging ? "diverges"
                             : "does not diverge"};
   };
-  return render_template(templates::variants_section,
-                         TemplateData("table", table_of(header, rows, cells).render()));
+  TemplateData d("table", table_of(header, rows, cells).render());
+  d.set("marks_legend", evidence_marks_legend());
+  return render_template(templates::variants_section, d);
 }
 
 std::string report_title(const ResultsIndex& index) {

@@ -229,9 +229,9 @@ TemplateData pair_rows(const ResultsIndex& index, const SeriesRefs& series, doub
     d.set("element", std::string(schema::to_string(s->spec.element)));
     d.set("option", s->option_label());
     d.set("first", errors(a));
-    d.set("first_grade", format_grade_cell(index, a->row));
+    d.set("first_grade", format_marked_grade_cell(index, a->row));
     d.set("second", errors(b));
-    d.set("second_grade", format_grade_cell(index, b->row));
+    d.set("second_grade", format_marked_grade_cell(index, b->row));
     list.push_back(d);
   }
   return list.is_empty_list() ? TemplateData(false) : TemplateData("rows", list);
@@ -323,7 +323,9 @@ std::string extent_section(const ResultsIndex& index) {
   TemplateData list{TemplateData::type::list};
   for (const auto& [problem, series] : by_problem(index, all))
     list.push_back(problem_data(index, facts_of(index, problem, all, series), all, series));
-  return render_template(templates::extent_section, TemplateData("problems", list));
+  TemplateData d("problems", list);
+  d.set("marks_legend", evidence_marks_legend());
+  return render_template(templates::extent_section, d);
 }
 
 }  // namespace cs::reports

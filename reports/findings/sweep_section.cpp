@@ -10,6 +10,7 @@
 
 #include "grading/accuracy.hpp"
 #include "grading/convergence.hpp"
+#include "grading/credibility.hpp"
 #include "reports/figures/sweep_figure.hpp"
 #include "reports/findings/extent_section.hpp"
 #include "reports/render/template_text.hpp"
@@ -71,6 +72,13 @@ int most_iterations(const std::vector<ParameterSeries>& series, double v, Algori
   return most;
 }
 
+/// Whether a point's case passes the interface checks that make a result credible
+/// (grading::credibility); a case without checks is not marked.
+bool credible(const SeriesPoint& p) {
+  return p.result == nullptr || !p.result->interface ||
+         grading::credibility(*p.result->interface).credible;
+}
+
 /// One key's table: per series on the finest mesh swept, per value the signed error, grade and
 /// iterations, or the status of a case without an error.
 std::string error_table(const std::vector<ParameterSeries>& series,
@@ -86,9 +94,10 @@ std::string error_table(const std::vector<ParameterSeries>& series,
       const SeriesPoint* p = s.at(v);
       row.push_back(!p || !p->error
                         ? (p ? std::string(to_string(p->status)) : kMissing)
-                        : fmt::format("{} {}, {} it{}", format_error_resolved(*p->error),
+                        : fmt::format("{} {}{}, {} it{}", format_error_resolved(*p->error),
                                       schema::to_string(grading::grade_of_error(*p->error)),
-                                      p->iterations, p->converged() ? "" : " (not converged)"));
+                                      credible(*p) ? "" : " ✗", p->iterations,
+                                      p->converged() ? "" : " (not converged)"));
     }
     t.add_row(std::move(row));
   }
@@ -357,8 +366,8 @@ TemplateData pinball(const std::vector<ParameterSeries>& series) {
     std::vector<std::string> cells;
     for (const auto& p : s->points) {
       if (p.converged() && p.error)
-        cells.push_back(
-            fmt::format("{} at {}", format_percent(*p.error), format_parameter(p.parameter)));
+        cells.push_back(fmt::format("{}{} at {}", format_percent(*p.error), credible(p) ? "" : " ✗",
+                                    format_parameter(p.parameter)));
       else
         failed.push_back(p.parameter);
     }

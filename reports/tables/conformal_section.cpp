@@ -27,8 +27,8 @@ std::string option_cell(const ResultsIndex& index, schema::ProblemId id, schema:
   if (mean == nullptr && arc == nullptr)
     return kMissing;
   return fmt::format("{} / {} ({} / {})", format_error_resolved(fine_error(mean)),
-                     format_error_resolved(fine_error(arc)), format_grade_cell(index, mean),
-                     format_grade_cell(index, arc));
+                     format_error_resolved(fine_error(arc)), format_marked_grade_cell(index, mean),
+                     format_marked_grade_cell(index, arc));
 }
 
 std::string options_table(const ResultsIndex& index, const schema::ProblemRecord& p) {

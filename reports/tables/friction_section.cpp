@@ -21,7 +21,7 @@ std::string fine_cell(const ResultsIndex& index, const RowVerdict* row) {
   if (row == nullptr || !row->errors[kF])
     return format_grade_cell(index, row);
   return fmt::format("{} ({})", format_error_resolved(*row->errors[kF]),
-                     format_grade_cell(index, row));
+                     format_marked_grade_cell(index, row));
 }
 
 std::string grades_table(const ResultsIndex& index, const schema::ProblemRecord& p) {

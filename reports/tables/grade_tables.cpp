@@ -135,14 +135,13 @@ void count(AnsysComparison& c, bool evidence, schema::Grade ours, schema::Grade 
   }
 }
 
-/// " ✗" when the F case is not credible, " ‡" when the grade is the luck of one mesh; counted.
-std::string marks(const ResultsIndex& index, const schema::RowVerdict* row, GradeTableFacts& t) {
+/// Counts a cell's evidence marks (evidence_marks) in `t`.
+void count_marks(const ResultsIndex& index, const schema::RowVerdict* row, GradeTableFacts& t) {
   if (row == nullptr || !row->errors[2])
-    return {};
+    return;
   const RowFacts f = facts_of_row(index, *row);
   t.not_credible += f.credible ? 0 : 1;
   t.luck += f.luck ? 1 : 0;
-  return std::string(f.credible ? "" : " ✗") + (f.luck ? " ‡" : "");
 }
 
 /// One cell of the table, counted in `t`; a cell compared with ANSYS is graded on extrapolated
@@ -151,7 +150,8 @@ std::string table_cell(const ResultsIndex& index, const schema::StudyReference& 
                        GradeTableFacts& t, const StudyRowKey& r, const OptionClass& cls) {
   const schema::RowVerdict* row = class_row(index, cls, {r.problem, *r.quantity, t.element});
   const Option& first = cls.members.front();
-  const std::string spr = format_grade_cell(index, row) + marks(index, row, t);
+  count_marks(index, row, t);
+  const std::string spr = format_marked_grade_cell(index, row);
   if (!schema::traits(first.contact).in_study)
     return spr;
   const schema::RowVerdict* twin = row ? index.extrapolated_twin(*row) : nullptr;
@@ -267,6 +267,19 @@ std::string format_grade_cell(const ResultsIndex& index, const schema::RowVerdic
       text += "*";
   }
   return index.any_not_converged(*row) ? text + "!" : text;
+}
+
+std::string evidence_marks(const RowFacts& f) {
+  return std::string(f.credible ? "" : " ✗") + (f.luck ? " ‡" : "");
+}
+
+std::string format_marked_grade_cell(const ResultsIndex& index, const schema::RowVerdict* row) {
+  const std::string text = format_grade_cell(index, row);
+  return row != nullptr && row->errors[2] ? text + evidence_marks(facts_of_row(index, *row)) : text;
+}
+
+std::string evidence_marks_legend() {
+  return render_template(templates::evidence_marks, TemplateData(true));
 }
 
 std::optional<GradeTableFacts> build_grade_table(const ResultsIndex& index,

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "reports/facts/row_facts.hpp"
 #include "reports/results/results_index.hpp"
 #include "reports/tables/markdown_table.hpp"
 #include "reports/tables/option_classes.hpp"
@@ -70,6 +71,17 @@ std::optional<GradeTableFacts> build_grade_table(const ResultsIndex& index,
 /// Markers: (M) graded on the medium mesh because F is missing; * not all of C, M, F present;
 /// ! some mesh did not converge (values are the last iterate).
 std::string format_grade_cell(const ResultsIndex& index, const schema::RowVerdict* row);
+
+/// The marks of a row that is not evidence, wherever its grade is printed: " ✗" when its F case
+/// fails an interface check (not credible), " ‡" when its grade is the luck of one mesh.
+std::string evidence_marks(const RowFacts& f);
+
+/// format_grade_cell with the row's evidence_marks.
+std::string format_marked_grade_cell(const ResultsIndex& index, const schema::RowVerdict* row);
+
+/// The sentence that explains evidence_marks (templates/evidence_marks.mustache), for the
+/// sections whose tables carry them.
+std::string evidence_marks_legend();
 
 /// The section "Tables 2a and 2b" of the report (empty if neither table has rows).
 std::string grade_tables_section(const ResultsIndex& index, const schema::StudyReference& study);

@@ -1,5 +1,7 @@
 #include "reports/tables/section_support.hpp"
 
+#include "reports/tables/grade_tables.hpp"
+
 namespace cs::reports {
 
 std::vector<Slot> slots_of(const ResultsIndex& index) {
@@ -34,7 +36,9 @@ std::string per_problem_section(
   }
   if (problems.is_empty_list())
     return {};
-  return tidy_markdown(render_template(text, TemplateData("problems", problems)));
+  TemplateData d("problems", problems);
+  d.set("marks_legend", evidence_marks_legend());
+  return tidy_markdown(render_template(text, d));
 }
 
 }  // namespace cs::reports

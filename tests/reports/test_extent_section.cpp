@@ -145,6 +145,21 @@ TEST(ExtentSection, GradesAtTheWidestExtentOfMostOptions) {
   EXPECT_NE(md.find("| Q8 | AL ss | −11.0 % | u, c | −0.50 % | e, c |"), std::string::npos) << md;
 }
 
+// Requirement: a grade whose F case fails an interface check is marked ✗ here as in Tables 2′
+// (not evidence), and the legend says what the mark means.
+TEST(ExtentSection, MarksGradesThatAreNotEvidence) {
+  schema::ResultsDocument doc = extent_document();
+  for (auto& c : doc.cases) {
+    if (c.spec.algorithm == schema::Algorithm::AL && c.spec.overrides.contains("extent") &&
+        c.spec.mesh == schema::MeshLevel::F)
+      c.interface.emplace().force_balance = 0.2;  // the contact carries 20 % too much load
+  }
+  const ResultsIndex index(doc);
+  const std::string md = extent_section(index);
+  EXPECT_NE(md.find("| Q8 | AL ss | −11.0 % | u, c | −0.50 % | e, c ✗ |"), std::string::npos) << md;
+  EXPECT_NE(md.find("✗: the F case fails an interface check"), std::string::npos) << md;
+}
+
 TEST(ExtentSection, SaysSoWhenNoExtentIsWideEnough) {
   schema::ResultsDocument doc;
   schema::ProblemRecord p;

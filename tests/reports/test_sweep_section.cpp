@@ -175,6 +175,22 @@ TEST(SweepSection, FknConvergenceCountsItsRows) {
       << section(9.0);
 }
 
+// Requirement: a swept case that fails an interface check is marked ✗ in the table and the
+// pinball answer: its grade is not evidence.
+TEST(SweepSection, MarksCasesThatAreNotCredible) {
+  std::vector<CaseResult> cases;
+  for (double pinball : {0.5, 1.0}) {
+    cases.push_back(
+        swept_case(ProblemId::H_p, Element::Q8, Algorithm::MPC, "pinball", pinball, -0.3, 3));
+    cases.back().interface.emplace().max_tensile_over_p = pinball == 0.5 ? 160.0 : 0.0;
+  }
+  const auto doc = document(cases, {{"pinball", {0.5, 1.0}}});
+  const ResultsIndex index(doc);
+  const std::string md = sweep_section(index, testing::study(), {});
+  EXPECT_NE(md.find("| −0.30 % e ✗, 3 it | −0.30 % e, 3 it |"), std::string::npos) << md;
+  EXPECT_NE(md.find("−0.30 % ✗ at 0.5, −0.30 % at 1"), std::string::npos) << md;
+}
+
 // Requirement: the E ratio stops mattering where every larger ratio is within the study's
 // resolution (0.01 points) of the error at the largest (0.02 points off is not settled); an FTOLN
 // sweep where nothing moves names no curve, and says it cannot show FTOLN when no penetration
