@@ -8,6 +8,8 @@
 #include <fmt/format.h>
 
 #include "grading/accuracy.hpp"
+#include "grading/convergence.hpp"
+#include "reports/facts/row_facts.hpp"
 #include "reports/render/template_text.hpp"
 #include "reports/tables/markdown_table.hpp"
 
@@ -21,7 +23,7 @@ struct RecoveryPair {
   const RowVerdict* spr = nullptr;
   const RowVerdict* extrapolated = nullptr;
   schema::MeshLevel mesh = kFinestMesh;  ///< the mesh both are graded on
-  std::optional<double> pressure_error;  ///< % error of the contact pressure there
+  std::optional<double> pressure_error;  ///< % error of the contact pressure there (shown)
 };
 
 std::optional<double> pressure_error(const ResultsIndex& index, const RowVerdict& row,
@@ -68,16 +70,20 @@ std::string converging_text(const std::optional<bool>& c) {
 
 TemplateData comparison_data(const RecoveryComparison& c) {
   TemplateData d;
+  const auto n = [](int v) { return std::to_string(v); };
   d.set("element", std::string(schema::to_string(c.element)));
-  d.set("compared", std::to_string(c.compared));
+  d.set("compared", n(c.compared));
+  d.set("unaffected", n(c.unaffected));
+  d.set("not_evidence", n(c.not_evidence));
+  d.set("any", c.compared > 0);
   d.set("median_spr", fmt::format("{:.2f}", c.median_spr));
   d.set("median_extrapolated", fmt::format("{:.2f}", c.median_extrapolated));
-  d.set("better", std::to_string(c.better));
-  d.set("worse", std::to_string(c.worse));
-  d.set("same", std::to_string(c.compared - c.better - c.worse));
-  d.set("has_pressure", c.differing_with_pressure > 0);
-  d.set("with_pressure", std::to_string(c.differing_with_pressure));
-  d.set("spr_closer", std::to_string(c.spr_closer_to_pressure));
+  d.set("closer", n(c.closer));
+  d.set("farther", n(c.farther));
+  d.set("ties", n(c.compared - c.closer - c.farther));
+  d.set("better", n(c.better));
+  d.set("worse", n(c.worse));
+  d.set("same", n(c.compared - c.better - c.worse));
   return d;
 }
 
@@ -117,23 +123,30 @@ std::vector<RecoveryComparison> compare_recoveries(const ResultsIndex& index) {
         continue;
       const std::size_t m = mesh_index(p.mesh);
       const double e_spr = *p.spr->errors[m], e_ext = *p.extrapolated->errors[m];
+      if (std::abs(e_spr - e_ext) <= schema::kErrorNoiseFloorPercent) {  // round-off apart
+        ++c.unaffected;
+        continue;
+      }
+      if (!facts_of_row(index, *p.spr).evidence()) {
+        ++c.not_evidence;
+        continue;
+      }
       spr.push_back(std::abs(e_spr));
       ext.push_back(std::abs(e_ext));
       const schema::Grade g_spr = *p.spr->grade, g_ext = *p.extrapolated->grade;
       c.better += g_spr < g_ext ? 1 : 0;  // schema::Grade is ordered best first
       c.worse += g_spr > g_ext ? 1 : 0;
-      if (g_spr != g_ext && p.pressure_error) {
-        ++c.differing_with_pressure;
-        const bool closer =
-            std::abs(e_spr - *p.pressure_error) < std::abs(e_ext - *p.pressure_error);
-        c.spr_closer_to_pressure += closer ? 1 : 0;
-      }
+      const double gain = std::abs(e_ext) - std::abs(e_spr);
+      c.closer += gain > grading::kErrorResolutionPercent ? 1 : 0;
+      c.farther += gain < -grading::kErrorResolutionPercent ? 1 : 0;
     }
-    if (spr.empty())
-      continue;
     c.compared = static_cast<int>(spr.size());
-    c.median_spr = median(spr);
-    c.median_extrapolated = median(ext);
+    if (c.compared + c.unaffected + c.not_evidence == 0)
+      continue;
+    if (c.compared > 0) {
+      c.median_spr = median(spr);
+      c.median_extrapolated = median(ext);
+    }
     out.push_back(c);
   }
   return out;

@@ -53,20 +53,39 @@ TEST(RecoverySection, ListsTheOptionSetsWhoseGradeDiffers) {
   EXPECT_EQ(md.find("Q8:"), std::string::npos);  // no Q8 twins in the sample
 }
 
-// Requirement: the comparison counts, per element, the grades that change and in how many of
-// those the patch-recovered value is the closer to the contact pressure (the sample's contact
-// pressures are 0.995 times the patch-recovered values: closer in both).
-TEST(RecoverySection, ComparesWithTheContactPressureAsWitness) {
+// Requirement: the comparison counts, per element, the rows whose value depends on the
+// recovery, judged against the exact value: sigma_c +0.45 % against +1.25 % (closer, better
+// grade), sigma_h +2.10 % against -0.51 % (farther, worse grade).
+TEST(RecoverySection, ComparesAgainstTheExactValue) {
   const Loaded data(sample_json());
   const auto comparisons = compare_recoveries(data.index);
   ASSERT_EQ(comparisons.size(), 1u);
   const RecoveryComparison& c = comparisons[0];
   EXPECT_EQ(c.element, Element::Q4);
   EXPECT_EQ(c.compared, 2);
+  EXPECT_EQ(c.unaffected, 0);
   EXPECT_EQ(c.better, 1);
   EXPECT_EQ(c.worse, 1);
-  EXPECT_EQ(c.differing_with_pressure, 2);
-  EXPECT_EQ(c.spr_closer_to_pressure, 2);
+  EXPECT_EQ(c.closer, 1);
+  EXPECT_EQ(c.farther, 1);
+  EXPECT_NEAR(c.median_spr, 0.5 * (0.45 + 2.10), 0.005);  // printed to two decimals
+}
+
+// Requirement: a row that reads alike both ways (its quantity is not a recovered stress) and a
+// row that is not evidence do not enter the medians or the counts; they are counted apart.
+TEST(RecoverySection, LeavesOutRowsTheRecoveryDoesNotChange) {
+  Loaded data(sample_json());
+  for (auto& r : data.file.rows) {
+    if (r.spec.recovery == schema::Recovery::extrapolated && r.quantity == Quantity::sigma_h)
+      r.errors = data.index
+                     .row(ProblemId::H_p, Quantity::sigma_h, Element::Q4,
+                          {Algorithm::LMP, ContactKind::ss})
+                     ->errors;
+  }
+  const auto c = compare_recoveries(ResultsIndex(data.file)).at(0);
+  EXPECT_EQ(c.compared, 1);
+  EXPECT_EQ(c.unaffected, 1);
+  EXPECT_NEAR(c.median_spr, 0.45, 0.005);
 }
 
 // Requirement: without extrapolated rows the section is one line saying how to get it.
