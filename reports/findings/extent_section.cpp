@@ -108,7 +108,7 @@ std::string series_table(const ResultsIndex& index, const SeriesRefs& series) {
                    "F − limit", "Change of F from the previous extent"},
                   {l, c, l, r, r, r, r, r, r, r});
   for (const ParameterSeries* s : series) {
-    std::optional<double> previous;
+    const SeriesPoint* previous = nullptr;
     for (const SeriesPoint& p : s->points) {
       const schema::RowVerdict& row = *p.row;
       const auto exact = index.exact_of(row);
@@ -124,8 +124,11 @@ std::string series_table(const ResultsIndex& index, const SeriesRefs& series) {
                  with_error(row.values[1]), with_error(row.values[2]),
                  lim ? with_error(lim) : trusted_estimate(index, row).note,
                  format_error_resolved(percent_of(p.value, lim)),
-                 format_error_resolved(percent_of(p.value, previous))});
-      previous = p.value;
+                 previous ? fmt::format("{} (from {})",
+                                        format_error_resolved(percent_of(p.value, previous->value)),
+                                        format_parameter(previous->parameter))
+                          : std::string(kMissing)});
+      previous = &p;
     }
   }
   return t.render();
@@ -198,6 +201,14 @@ ExtentFacts facts_of(const ResultsIndex& index, schema::ProblemId problem,
     if (change && *change < kHalfSpaceChangePercent)
       std::tie(f.half_space, f.change_after_half_space) = std::make_pair(ks[i], *change);
   }
+  f.n_series = static_cast<int>(series.size());
+  if (f.half_space) {
+    f.half_space_series = static_cast<int>(std::ranges::count_if(series, [&](const auto* s) {
+      return std::ranges::count_if(s->points, [&](const SeriesPoint& p) {
+               return p.parameter >= *f.half_space;
+             }) >= 2;
+    }));
+  }
   if (f.half_space && !singular) {
     f.grades_extent = widest_extent_of_most_options(series, *f.half_space);
   } else if (!f.half_space && ks.size() >= 2) {
@@ -262,6 +273,8 @@ TemplateData problem_data(const ResultsIndex& index, const ExtentFacts& f,
   };
   d.set("half_space", num(f.half_space));
   d.set("change_after", num(f.change_after_half_space, "{:.3f}"));
+  d.set("half_space_series", std::to_string(f.half_space_series));
+  d.set("n_series", std::to_string(f.n_series));
   d.set("threshold", fmt::format("{:g}", kHalfSpaceChangePercent));
   d.set("second_widest", num(f.second_widest));
   d.set("widest", num(f.widest));

@@ -37,6 +37,9 @@ struct ExtentFacts {
   /// The smallest extent from which on no fine-mesh value changes by kHalfSpaceChangePercent
   /// or more between consecutive extents, and the largest such change from it on (percent).
   std::optional<double> half_space, change_after_half_space;
+  /// The series (option set and quantity) with two or more extents at or beyond half_space:
+  /// those the statement rests on, of `n_series`.
+  int half_space_series = 0, n_series = 0;
   /// Where no extent qualifies: the two widest extents and the change between them (percent).
   std::optional<double> second_widest, widest, last_change;
   /// The extent of the "half-space" grades: of those at or beyond the half-space extent, the

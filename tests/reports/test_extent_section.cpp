@@ -109,7 +109,14 @@ TEST(ExtentSection, SplitsTheErrorAndFindsTheHalfSpaceExtent) {
   // The series table: one cell per column, the quantity first.
   EXPECT_NE(md.find("| " + std::string(schema::label(schema::Quantity::sigma_c)) +
                     " | Q8 | LMP ss | 2 | 9.8500 (−1.50 %) | 9.9000 (−1.00 %) | 9.9240 (−0.76 %) | "
-                    "9.9600 (−0.40 %) | −0.36 % | +0.50 % |\n"),
+                    "9.9600 (−0.40 %) | −0.36 % | +0.50 % (from 1) |\n"),
+            std::string::npos)
+      << md;
+  // The half-space statement says how many series it rests on: LMP alone runs at 4 and 8.
+  EXPECT_EQ(f.half_space_series, 1);
+  EXPECT_EQ(f.n_series, 2);
+  EXPECT_NE(md.find("(0.040 % at most, over the 1 of 2 series run at two or more extents from "
+                    "there on)"),
             std::string::npos)
       << md;
   // AL: u at the study's extent (-11 %), e at the widest (-0.5 %).
