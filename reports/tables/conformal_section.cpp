@@ -6,6 +6,8 @@
 
 #include <fmt/format.h>
 
+#include "grading/convergence.hpp"
+
 #include "reports/tables/grade_tables.hpp"
 #include "reports/tables/section_support.hpp"
 
@@ -65,6 +67,20 @@ std::optional<double> lm_mean_error(const ResultsIndex& index, schema::ProblemId
   return out;
 }
 
+/// "Q8 LMP mortar, Q8 PLM mortar": every option whose arc deviation on F lies within the study's
+/// resolution of |`extreme`|: a tie is named whole, not by its first member.
+std::string tied_options(const ResultsIndex& index, schema::ProblemId id, double extreme) {
+  std::vector<std::string> tied;
+  for (const auto element : schema::values<schema::Element>()) {
+    for (const Option& option : all_options()) {
+      const auto e = fine_error(index.row(id, Quantity::p_arc, element, option));
+      if (e && std::abs(std::abs(*e) - std::abs(extreme)) <= grading::kErrorResolutionPercent)
+        tied.push_back(fmt::format("{} {}", schema::to_string(element), option.label()));
+    }
+  }
+  return join_words(tied, ", ");
+}
+
 /// The part of one problem; false when it has no row to show.
 bool problem_part(const ResultsIndex& index, const schema::ProblemRecord& p, TemplateData& d) {
   const std::string table = options_table(index, p);
@@ -76,8 +92,7 @@ bool problem_part(const ResultsIndex& index, const schema::ProblemRecord& p, Tem
     d.set("arc", true);
     for (const auto& [key, e] : {std::pair{"worst", arc->worst}, {"best", arc->best}}) {
       d.set(key, format_error_resolved(e.deviation_percent));
-      d.set(std::string(key) + "_option",
-            fmt::format("{} {}", schema::to_string(e.element), e.option.label()));
+      d.set(std::string(key) + "_option", tied_options(index, p.id, e.deviation_percent));
     }
   }
   return !table.empty();

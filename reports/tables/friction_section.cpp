@@ -5,6 +5,8 @@
 
 #include <fmt/format.h>
 
+#include "grading/convergence.hpp"
+
 #include "reports/tables/grade_tables.hpp"
 #include "reports/tables/section_support.hpp"
 
@@ -99,8 +101,7 @@ bool problem_part(const ResultsIndex& index, const schema::ProblemRecord& p, Tem
   d.set("n_pairs", std::to_string(diff.n_pairs));
   d.set("n_equal", std::to_string(diff.n_equal));
   d.set("points", fmt::format("{:.2f}", diff.points));
-  d.set("where", fmt::format("{}, {} {}", schema::label(diff.quantity),
-                             schema::to_string(diff.element), schema::to_string(diff.contact)));
+  d.set("where", join_words(diff.largest_at, "; "));
   return !grades.empty();
 }
 
@@ -118,7 +119,15 @@ LmpPlmDifference lmp_plm_difference(const ResultsIndex& index, schema::ProblemId
     ++out.n_pairs;
     out.n_equal += points < 0.01 ? 1 : 0;
     if (points > out.points)
-      out = {points, quantity, element, contact, out.n_pairs, out.n_equal};
+      out = {points, quantity, element, contact, out.n_pairs, out.n_equal, {}};
+  }
+  for (const auto& [quantity, element, contact, lmp, plm] :
+       lmp_plm_pairs(index, *index.problem(problem))) {
+    if (lmp->errors[kF] && plm->errors[kF] &&
+        std::abs(std::abs(*lmp->errors[kF] - *plm->errors[kF]) - out.points) <=
+            grading::kErrorResolutionPercent)
+      out.largest_at.push_back(fmt::format("{}, {} {}", schema::label(quantity),
+                                           schema::to_string(element), schema::to_string(contact)));
   }
   return out;
 }

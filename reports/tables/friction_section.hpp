@@ -6,6 +6,7 @@
 // wherever the shear varies along the contact. The section states by how much, from the rows.
 
 #include <string>
+#include <vector>
 
 #include "reports/results/results_index.hpp"
 
@@ -19,6 +20,9 @@ struct LmpPlmDifference {
   schema::ContactKind contact = schema::ContactKind::ss;
   int n_pairs = 0;  ///< pairs of rows (element, contact, quantity) with both on F
   int n_equal = 0;  ///< of which equal to within 0.01 percentage points
+  /// Every pair within the study's resolution of the largest difference ("τ̄max, Q4 ss"): a tie
+  /// is named whole.
+  std::vector<std::string> largest_at;
 };
 
 /// The LMP-PLM comparison of `problem` over every element, contact and quantity (empty

@@ -59,6 +59,7 @@ schema::ResultsDocument conformal_document() {
   add(Element::Q8, Algorithm::LMP, ContactKind::ss, 0.3, -0.4);
   add(Element::Q4, Algorithm::PLM, ContactKind::mortar, -0.6, 0.05);
   add(Element::Q4, Algorithm::PM, ContactKind::ss, -3.0, -3.2);
+  add(Element::Q8, Algorithm::PLM, ContactKind::ss, 0.3, -0.055);  // ties the best, 0.005 off
   return doc;
 }
 
@@ -74,6 +75,7 @@ TEST(ConformalSection, FindsTheWorstAndBestArcOptionsAndJudgesTheLmMean) {
   EXPECT_DOUBLE_EQ(best->deviation_percent, 0.05);
   EXPECT_EQ(best->option.label(), "PLM mortar");
   const std::string md = conformal_section(index);
+  EXPECT_NE(md.find("the smallest +0.05 % (Q4 PLM mortar, Q8 PLM ss)"), std::string::npos) << md;
   EXPECT_NE(md.find("## Conformal contact"), std::string::npos);
   EXPECT_NE(md.find("### IF<sub>p</sub>"), std::string::npos);
   // LM ss/mortar worst mean: -0.6 % (Q4 PLM mortar), within 1 %; PM (-3 %) is not LM.
@@ -89,23 +91,26 @@ TEST(ConformalSection, FindsTheWorstAndBestArcOptionsAndJudgesTheLmMean) {
 TEST(FrictionSection, ComparesLmpWithPlm) {
   schema::ResultsDocument doc;
   doc.problems.push_back(suites::problem_descriptor(ProblemId::CM_p).record);
-  for (const auto c : {ContactKind::ss, ContactKind::mortar}) {
+  for (const auto c : {ContactKind::ss, ContactKind::ns, ContactKind::mortar}) {
     doc.rows.push_back(
         row(ProblemId::CM_p, Quantity::c_over_a, Element::Q4, Algorithm::PLM, c, {8, 4, 2}));
     doc.rows.push_back(row(ProblemId::CM_p, Quantity::c_over_a, Element::Q4, Algorithm::LMP, c,
-                           {8, 4, c == ContactKind::ss ? -3.5 : 2.005}));
+                           {8, 4, c == ContactKind::mortar ? 2.005 : -3.5}));
   }
   const ResultsIndex index(doc);
   const LmpPlmDifference d = lmp_plm_difference(index, ProblemId::CM_p);
-  EXPECT_EQ(d.n_pairs, 2);
+  EXPECT_EQ(d.n_pairs, 3);
   EXPECT_EQ(d.n_equal, 1);  // 0.005 points apart: equal
   EXPECT_DOUBLE_EQ(d.points, 5.5);
   EXPECT_EQ(d.contact, ContactKind::ss);
+  EXPECT_EQ(d.largest_at.size(), 2u);  // ss and ns tie: both named
   const std::string md = friction_section(index);
   EXPECT_NE(md.find("## Friction"), std::string::npos);
-  EXPECT_NE(md.find("on 1 of 2 pairs; the largest difference is 5.50 percentage points"),
+  EXPECT_NE(md.find("on 1 of 3 pairs; the largest difference is 5.50 percentage points"),
             std::string::npos)
       << md;
+  EXPECT_NE(md.find(" Q4 ss; "), std::string::npos) << md;
+  EXPECT_NE(md.find(" Q4 ns)"), std::string::npos) << md;
   EXPECT_EQ(conformal_section(index), "");
 }
 
