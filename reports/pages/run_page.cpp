@@ -2,11 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <set>
 #include <vector>
 
 #include <fmt/format.h>
 
 #include "reports/render/template_text.hpp"
+#include "reports/tables/markdown_table.hpp"
 
 namespace cs::reports {
 namespace {
@@ -14,10 +16,30 @@ namespace {
 /// Every run of the set: the document's own (its source) and those combined into it.
 std::vector<std::pair<std::string, const schema::RunInfo*>> runs_of(
     const schema::ResultsDocument& doc) {
-  std::vector<std::pair<std::string, const schema::RunInfo*>> out{{doc.source, &doc.run}};
+  // A combined document's source names every file ("first, second, ..."); its own run is the
+  // first file's.
+  std::string added;
+  for (const auto& [source, run] : doc.added_runs)
+    added += ", " + source;
+  const std::string first = doc.source.ends_with(added)
+                                ? doc.source.substr(0, doc.source.size() - added.size())
+                                : doc.source;
+  std::vector<std::pair<std::string, const schema::RunInfo*>> out{{first, &doc.run}};
   for (const auto& [source, run] : doc.added_runs)
     out.emplace_back(source, &run);
   return out;
+}
+
+/// The analyses behind the cases: a case graded on another stress basis (extrapolated, a
+/// code's own) shares the solve of its patch-recovered twin.
+std::size_t analysis_count(const schema::ResultsDocument& doc) {
+  std::set<std::string> solves;
+  for (const auto& c : doc.cases) {
+    schema::CaseSpec spec = c.spec;
+    spec.recovery = schema::Recovery::spr;
+    solves.insert(schema::case_id(spec));
+  }
+  return solves.size();
 }
 
 /// Files behind the set: each run counts once, a merged one as its parts.
@@ -61,6 +83,9 @@ std::string run_line(const schema::ResultsDocument& doc) {
   }
   TemplateData d;
   d.set("n_cases", std::to_string(doc.cases.size()));
+  const std::size_t analyses = analysis_count(doc);
+  d.set("analyses",
+        analyses < doc.cases.size() ? TemplateData(std::to_string(analyses)) : TemplateData(false));
   d.set("converged", std::to_string(converged));
   d.set("not_converged", std::to_string(not_converged));
   d.set("failed", std::to_string(other));
@@ -84,6 +109,7 @@ std::string run_page(const schema::ResultsDocument& doc) {
           rd.set("peak", std::isfinite(r.peak_rss_mb) ? fmt::format("{:.0f}", r.peak_rss_mb)
                                                       : std::string("—"));
           rd.set("command", r.command_line);
+          rd.set("build", r.environment.value("contact_suite_version", std::string(kMissing)));
           return rd;
         }));
   TemplateData env{TemplateData::type::list};

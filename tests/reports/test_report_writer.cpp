@@ -13,8 +13,10 @@
 
 #include "apps/report_command.hpp"
 #include "report_test_support.hpp"
+#include "reports/pages/run_page.hpp"
 #include "reports/report_error.hpp"
 #include "reports/report_writer.hpp"
+#include "schema/combined_results.hpp"
 #include "schema/schema_error.hpp"
 
 namespace cs::reports {
@@ -308,6 +310,43 @@ TEST(ReportCommand, ExecutableExitsWith2OnBadInput) {
   EXPECT_EQ(std::count(err.begin(), err.end(), '\n'), 1) << err;
   EXPECT_NE(err.find("is not valid JSON"), std::string::npos) << err;
   user.expect_untouched();
+}
+
+}  // namespace
+}  // namespace cs::reports
+
+namespace cs::reports {
+namespace {
+
+// Requirement: the run appendix of a combined set names each file once (the first row is the
+// first file, not the whole list), gives each file's build, and counts the analyses behind the
+// cases (an extrapolated twin shares its case's solve).
+TEST(RunPage, CombinedFilesOneRowEachWithTheirBuild) {
+  const auto document = [](const std::string& source, const std::string& build,
+                           schema::ProblemId problem) {
+    schema::ResultsDocument d;
+    d.source = source;
+    d.run.environment["contact_suite_version"] = build;
+    for (const auto recovery : {schema::Recovery::spr, schema::Recovery::extrapolated}) {
+      schema::CaseResult c;
+      c.spec.problem = problem;
+      c.spec.recovery = recovery;
+      c.status = schema::CaseStatus::converged;
+      d.cases.push_back(c);
+    }
+    return d;
+  };
+  std::vector<schema::ResultsDocument> docs;
+  docs.push_back(document("a/results.json", "0.1.0+aaa", schema::ProblemId::H_p));
+  docs.push_back(document("b/results.json", "0.1.0+bbb", schema::ProblemId::H_a));
+  const std::string md = run_page(schema::combine_results(std::move(docs)));
+  EXPECT_NE(md.find("| `a/results.json` | 0.1.0+aaa |"), std::string::npos) << md;
+  EXPECT_NE(md.find("| `b/results.json` | 0.1.0+bbb |"), std::string::npos) << md;
+  EXPECT_EQ(md.find("a/results.json, b/results.json"), std::string::npos) << md;
+  EXPECT_NE(md.find("These results hold 4 cases (4 converged, 0 not converged, 0 failed or timed "
+                    "out) from 2 analyses"),
+            std::string::npos)
+      << md;
 }
 
 }  // namespace
