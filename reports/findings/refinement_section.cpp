@@ -165,6 +165,29 @@ std::string vf_table(const std::vector<VfRow>& rows) {
   return t.render();
 }
 
+/// Where the claim's rows settle at a larger error, grouped: "S(1/3) a_FE Q4 (5), P_a sigma_c Q8
+/// (2)", in the rows' order, so that a reader can tell one bias from another.
+std::string plateau_where(const std::vector<VfRow>& rows) {
+  std::vector<std::pair<std::string, int>> groups;
+  for (const VfRow& v : rows) {
+    if (!v.claim_applies || v.judgement != VfJudgement::plateau)
+      continue;
+    const schema::CaseSpec& s = v.row->spec;
+    const std::string key =
+        fmt::format("{} {} {}", schema::label(s.problem), schema::label(v.row->quantity),
+                    schema::to_string(s.element));
+    const auto it = std::ranges::find(groups, key, &std::pair<std::string, int>::first);
+    if (it == groups.end())
+      groups.emplace_back(key, 1);
+    else
+      ++it->second;
+  }
+  std::vector<std::string> parts;
+  for (const auto& [key, n] : groups)
+    parts.push_back(fmt::format("{} ({})", key, n));
+  return join_words(parts, ", ");
+}
+
 std::string csv_number(const std::optional<double>& v) {
   return v ? fmt::format("{:.10g}", *v) : std::string();
 }
@@ -282,6 +305,7 @@ std::string refinement_section(const ResultsIndex& index) {
            {"judged", n(f.claim.trends() + f.claim[VfJudgement::at_resolution])},
            {"plateau", n(f.claim[VfJudgement::plateau])},
            {"has_plateau", f.claim[VfJudgement::plateau] > 0},
+           {"plateau_where", plateau_where(shown)},
            {"not_evidence", n(f.claim[VfJudgement::not_evidence])},
            {"has_not_evidence", f.claim[VfJudgement::not_evidence] > 0},
            {"vf_not_converged", n(f.claim[VfJudgement::vf_not_converged])},

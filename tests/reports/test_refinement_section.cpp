@@ -254,6 +254,11 @@ TEST(RefinementSection, LedgerAndAppendixJudgeRefinementByOneRule) {
   const std::string md = claims_ledger(claims);
   EXPECT_NE(md.find("further refinement converges in 2"), std::string::npos) << md;
   EXPECT_NE(md.find("1 settle at a larger error"), std::string::npos) << md;
+  // The appendix says where its plateaus are, so that one bias can be told from another.
+  const std::string appendix = refinement_section(index);
+  EXPECT_NE(appendix.find("(by problem, quantity and element: H<sub>p</sub> σ̄<sub>c</sub> Q4 (1))"),
+            std::string::npos)
+      << appendix;
   // The examples of rows that do not converge name only those: the plateau is not among them.
   EXPECT_NE(nine.examples.find("LMP"), std::string::npos) << nine.examples;
   EXPECT_EQ(nine.examples.find(" PM "), std::string::npos) << nine.examples;
