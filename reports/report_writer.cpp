@@ -138,8 +138,8 @@ std::vector<ReportPage> appendix_pages(const ResultsIndex& index,
   return pages;
 }
 
-std::string report_markdown(const ResultsIndex& index, const schema::StudyReference& /*study*/,
-                            const ReportContent& content, const std::vector<ReportPage>& problems,
+std::string report_markdown(const ResultsIndex& index, const ReportContent& content,
+                            const std::vector<ReportPage>& problems,
                             const std::vector<ReportPage>& appendices) {
   const std::vector<RowFacts> rows = row_facts(index);
   const std::vector<DivergenceFacts> singular = divergence_facts(index);
@@ -245,7 +245,7 @@ ReportOutcome write_report(const schema::ResultsDocument& results, const ReportO
   for (const auto& page : appendices | std::views::filter(has_content))
     output.write_text(page.file, "# " + page.title + "\n\n[← the report](report.md)\n\n" +
                                      strip_heading(page.markdown));
-  output.write_text("report.md", report_markdown(index, study, content, problems, appendices));
+  output.write_text("report.md", report_markdown(index, content, problems, appendices));
   output.write_text("results.csv", results_csv(index, study));
   if (const std::string estimates = estimates_csv(index); !estimates.empty())
     output.write_text("estimates.csv", estimates);

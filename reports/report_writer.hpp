@@ -104,8 +104,8 @@ std::vector<ReportPage> appendix_pages(const ResultsIndex& index,
 
 /// report.md: the verdict page, the claims ledger, and links to the problem pages and the
 /// appendices (no I/O).
-std::string report_markdown(const ResultsIndex& index, const schema::StudyReference& study,
-                            const ReportContent& content, const std::vector<ReportPage>& problems,
+std::string report_markdown(const ResultsIndex& index, const ReportContent& content,
+                            const std::vector<ReportPage>& problems,
                             const std::vector<ReportPage>& appendices);
 
 /// The section listing rows with a rigid target or parameter overrides (empty if none).

@@ -166,8 +166,6 @@ RowFacts facts_of_row(const ResultsIndex& index, const schema::RowVerdict& r) {
   f.read_resolution_on_f = index.read_resolution_percent(r, MeshLevel::F);
   add_trend(index, f);
   add_credibility(index, f);
-  if (const schema::RowVerdict* twin = index.extrapolated_twin(r))
-    f.extrapolated_error = twin->errors[2];
   return f;
 }
 
