@@ -1,7 +1,6 @@
 #include "reports/report_writer.hpp"
 
 #include <algorithm>
-#include <ranges>
 
 #include <fmt/format.h>
 
@@ -22,7 +21,6 @@
 #include "reports/findings/sweep_section.hpp"
 #include "reports/findings/variant_rows.hpp"
 #include "reports/pages/claims_ledger.hpp"
-#include "reports/pages/page_format.hpp"
 #include "reports/pages/problem_page.hpp"
 #include "reports/pages/run_page.hpp"
 #include "reports/pages/verdict_page.hpp"
@@ -63,10 +61,6 @@ std::string appendix_text(const std::string& key, const std::string& part) {
   if (text.empty())
     throw ReportError(fmt::format("templates/appendices.mustache has no {} for {}", part, key));
   return text;
-}
-
-bool has_content(const ReportPage& page) {
-  return !page.markdown.empty();
 }
 
 /// A section's text without its "## Title" line (its page carries the title).
@@ -242,9 +236,11 @@ ReportOutcome write_report(const schema::ResultsDocument& results, const ReportO
   const std::vector<ReportPage> appendices = appendix_pages(index, study, content);
   for (const auto& page : problems)
     output.write_text(page.file, page.markdown);
-  for (const auto& page : appendices | std::views::filter(has_content))
-    output.write_text(page.file, "# " + page.title + "\n\n[← the report](report.md)\n\n" +
-                                     strip_heading(page.markdown));
+  for (const auto& page : appendices) {
+    if (!page.markdown.empty())
+      output.write_text(page.file, "# " + page.title + "\n\n[← the report](report.md)\n\n" +
+                                       strip_heading(page.markdown));
+  }
   output.write_text("report.md", report_markdown(index, content, problems, appendices));
   output.write_text("results.csv", results_csv(index, study));
   if (const std::string estimates = estimates_csv(index); !estimates.empty())

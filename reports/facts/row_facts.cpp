@@ -47,13 +47,6 @@ void add_trend(const ResultsIndex& index, RowFacts& f) {
   f.luck = grading::luck_of_one_mesh(*e[0], *e[1], *e[2]);
 }
 
-/// "calculix linear-ss" for another code's row, empty for ours.
-std::string code_label(const schema::CaseSpec& spec) {
-  const std::string code = code_of(spec);
-  return code == builtin_solver_label() ? std::string()
-                                        : solver_display_name(code) + " " + option_label_of(spec);
-}
-
 /// The rows on the common basis without parameter overrides whose code and target `keep`
 /// accepts (ours on the discretized target: the baseline).
 template <typename Keep>
@@ -145,8 +138,10 @@ bool on_common_basis(const schema::CaseSpec& spec) {
   return spec.recovery == schema::Recovery::spr && spec.overrides.empty();
 }
 
-std::string code_label_of(const schema::CaseSpec& spec) {
-  return code_label(spec);
+std::string code_label(const schema::CaseSpec& spec) {
+  const std::string code = code_of(spec);
+  return code == builtin_solver_label() ? std::string()
+                                        : solver_display_name(code) + " " + option_label_of(spec);
 }
 
 RowFacts facts_of_row(const ResultsIndex& index, const schema::RowVerdict& r) {

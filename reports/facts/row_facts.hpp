@@ -82,8 +82,8 @@ struct DivergenceFacts {
 /// ours the baseline's), without parameter overrides.
 bool on_common_basis(const schema::CaseSpec& spec);
 
-/// RowFacts::code of a row's spec: "calculix linear-ss", empty for ours.
-std::string code_label_of(const schema::CaseSpec& spec);
+/// RowFacts::code of a row's spec: "calculix linear-ss" for another code's row, empty for ours.
+std::string code_label(const schema::CaseSpec& spec);
 
 /// The facts of any row (another code's, a rigid target's): ungraded without an F value.
 RowFacts facts_of_row(const ResultsIndex& index, const schema::RowVerdict& row);

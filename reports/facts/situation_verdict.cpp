@@ -129,8 +129,7 @@ void add_failed_rows(
         (fine_state != MeshState::failed && fine_state != MeshState::missing) ||
         index.state(r, schema::MeshLevel::C) == MeshState::missing)
       continue;
-    OptionCell& c =
-        cell_of(code_label_of(r.spec), {r.spec.algorithm, r.spec.contact}, r.spec.element);
+    OptionCell& c = cell_of(code_label(r.spec), {r.spec.algorithm, r.spec.contact}, r.spec.element);
     if (fine_state == MeshState::missing) {
       ++c.n_missing;
       continue;
