@@ -71,6 +71,33 @@ std::string strip_heading(const std::string& section) {
   return end == std::string::npos ? std::string() : section.substr(end + 1);
 }
 
+/// The report's title: with several solvers in the document, their names.
+std::string report_title(const ResultsIndex& index) {
+  const std::string solvers = solver_names(index);
+  return (solvers == "ours" ? "our contact elements" : solvers) +
+         " beside the study's ANSYS results";
+}
+
+/// The problem pages, one per problem in the results, with their figures.
+std::vector<ReportPage> problem_pages(const ResultsIndex& index, const FigureSet& figures,
+                                      const FigureSet& mesh_figures) {
+  const std::vector<RowFacts> rows = row_facts(index);
+  const std::vector<DivergenceFacts> singular = divergence_facts(index);
+  std::vector<ReportPage> pages;
+  for (const schema::ProblemRecord* p : index.problems()) {
+    std::vector<const Figure*> own;
+    for (const FigureSet* set : {&mesh_figures, &figures}) {
+      for (const auto& f : set->figures) {
+        if (f.produced && f.problem == p->id)
+          own.push_back(&f);
+      }
+    }
+    pages.push_back({problem_page_file(p->id), std::string(schema::label(p->id)) + ": " + p->title,
+                     problem_page(index, *p, rows, singular, own)});
+  }
+  return pages;
+}
+
 }  // namespace
 
 std::string variants_section(const ResultsIndex& index) {
@@ -96,12 +123,6 @@ std::string variants_section(const ResultsIndex& index) {
   };
   return render_template(templates::variants_section,
                          TemplateData("table", table_of(header, rows, cells).render()));
-}
-
-std::string report_title(const ResultsIndex& index) {
-  const std::string solvers = solver_names(index);
-  return (solvers == "ours" ? "our contact elements" : solvers) +
-         " beside the study's ANSYS results";
 }
 
 std::vector<ReportPage> appendix_pages(const ResultsIndex& index,
@@ -172,25 +193,6 @@ std::string report_markdown(const ResultsIndex& index, const ReportContent& cont
   d.set("companions", companions_markdown(content.companions));
   d.set("has_regression", content.has_regression);
   return tidy_markdown(render_template(templates::report, d));
-}
-
-std::vector<ReportPage> problem_pages(const ResultsIndex& index, const FigureSet& figures,
-                                      const FigureSet& mesh_figures) {
-  const std::vector<RowFacts> rows = row_facts(index);
-  const std::vector<DivergenceFacts> singular = divergence_facts(index);
-  std::vector<ReportPage> pages;
-  for (const schema::ProblemRecord* p : index.problems()) {
-    std::vector<const Figure*> own;
-    for (const FigureSet* set : {&mesh_figures, &figures}) {
-      for (const auto& f : set->figures) {
-        if (f.produced && f.problem == p->id)
-          own.push_back(&f);
-      }
-    }
-    pages.push_back({problem_page_file(p->id), std::string(schema::label(p->id)) + ": " + p->title,
-                     problem_page(index, *p, rows, singular, own)});
-  }
-  return pages;
 }
 
 ReportOutcome write_report(const schema::ResultsDocument& results, const ReportOptions& options) {

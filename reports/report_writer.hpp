@@ -81,19 +81,12 @@ struct ReportContent {
   std::vector<CompanionReport> companions;  ///< other reports linked under the title
 };
 
-/// The report's title: with several solvers in the document, their names.
-std::string report_title(const ResultsIndex& index);
-
 /// One Markdown file of the report besides report.md: a problem's page or an appendix.
 struct ReportPage {
   std::string file;   ///< relative to the report directory, e.g. "problem-H_p.md"
   std::string title;  ///< as report.md links it
   std::string markdown;
 };
-
-/// The problem pages, one per problem in the results, with their figures.
-std::vector<ReportPage> problem_pages(const ResultsIndex& index, const FigureSet& figures,
-                                      const FigureSet& mesh_figures);
 
 /// Every appendix in the report's order (the one list of them and their titles); one without
 /// content (its inputs are not in the results) has an empty text, is not written, and report.md

@@ -278,6 +278,9 @@ std::vector<SituationVerdict> situation_verdicts(const ResultsIndex& index,
   return out;
 }
 
+namespace {
+
+/// "AL, PM", "LMP, PLM" or "MPC".
 std::string family_label(OptionFamily family) {
   switch (family) {
     case OptionFamily::penalty:
@@ -289,8 +292,6 @@ std::string family_label(OptionFamily family) {
   }
   return {};
 }
-
-namespace {
 
 /// "AL, PM": the algorithms run, in the vocabulary's order; the family's label without any.
 std::string members_label(OptionFamily family, const std::set<schema::Algorithm>& members) {

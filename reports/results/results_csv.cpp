@@ -84,8 +84,7 @@ std::vector<std::string> verdict_fields(const ResultsIndex& index, const schema:
   return {flag(r->converging), trend, eq47, strict};
 }
 
-}  // namespace
-
+/// The CSV header line's fields, in order.
 const std::vector<std::string>& results_csv_columns() {
   static const std::vector<std::string> columns{"case_id",
                                                 "problem",
@@ -118,6 +117,8 @@ const std::vector<std::string>& results_csv_columns() {
                                                 "strict_divergence"};
   return columns;
 }
+
+}  // namespace
 
 std::string results_csv(const ResultsIndex& index, const schema::StudyReference& study) {
   const RowsByCase rows = rows_by_case(index);
