@@ -6,6 +6,7 @@
 
 #include "grading/convergence.hpp"
 #include "grading/divergence.hpp"
+#include "reports/tables/markdown_table.hpp"
 
 namespace cs::reports {
 namespace {
@@ -29,11 +30,6 @@ std::string number(const std::optional<double>& v) {
 
 std::string number(double v) {
   return number(finite(v));
-}
-
-template <schema::Axis E>
-std::string name(E v) {
-  return std::string(schema::to_string(v));
 }
 
 std::string overrides_text(const schema::CaseSpec& s) {
@@ -129,15 +125,15 @@ std::string results_csv(const ResultsIndex& index, const schema::StudyReference&
   for (const auto& c : index.results().cases) {
     const schema::CaseSpec& s = c.spec;
     const std::vector<std::string> head{schema::case_id(s),
-                                        name(s.problem),
-                                        name(s.mesh),
-                                        name(s.element),
-                                        name(s.algorithm),
-                                        name(s.contact),
-                                        name(s.target),
-                                        name(s.recovery),
+                                        name_of(s.problem),
+                                        name_of(s.mesh),
+                                        name_of(s.element),
+                                        name_of(s.algorithm),
+                                        name_of(s.contact),
+                                        name_of(s.target),
+                                        name_of(s.recovery),
                                         overrides_text(s),
-                                        name(c.status),
+                                        name_of(c.status),
                                         c.reason,
                                         std::to_string(c.iterations),
                                         number(c.wall_seconds),
@@ -173,11 +169,11 @@ std::string results_csv(const ResultsIndex& index, const schema::StudyReference&
       }
       const auto row = rows.find({&c, q.quantity});
       const bool converged = c.status == schema::CaseStatus::converged;  // else no grade
-      std::vector<std::string> tail{name(q.quantity),
+      std::vector<std::string> tail{name_of(q.quantity),
                                     number(q.value),
                                     q.singular() ? "inf" : number(q.exact),
                                     number(q.error_percent),
-                                    converged ? name(q.grade) : "",
+                                    converged ? name_of(q.grade) : "",
                                     number(q.contact_pressure),
                                     number(q.study_exact),
                                     ansys_value,

@@ -61,6 +61,19 @@ bool study_options(const schema::CaseSpec& spec, const std::string& solver,
          schema::is_baseline(as_ours);
 }
 
+/// The first value `value_of` finds in a row's quantity on C, M, then F.
+template <class ValueOf>
+std::optional<double> first_on_meshes(const ResultsIndex& index, const RowVerdict& row,
+                                      ValueOf&& value_of) {
+  for (const auto m : kMeshes) {
+    const schema::QuantityResult* q = index.quantity_of(row, m);
+    const std::optional<double> v = q != nullptr ? value_of(*q) : std::nullopt;
+    if (v)
+      return v;
+  }
+  return std::nullopt;
+}
+
 }  // namespace
 
 std::optional<double> finite(double v) {
@@ -204,12 +217,8 @@ bool ResultsIndex::has(schema::ProblemId problem, schema::Quantity quantity,
 }
 
 std::optional<double> ResultsIndex::exact_of(const RowVerdict& row) const {
-  for (const auto m : kMeshes) {
-    const schema::QuantityResult* q = quantity_of(row, m);
-    if (q != nullptr && std::isfinite(q->exact))
-      return q->exact;
-  }
-  return std::nullopt;
+  return first_on_meshes(*this, row,
+                         [](const schema::QuantityResult& q) { return finite(q.exact); });
 }
 
 double ResultsIndex::read_resolution_percent(const RowVerdict& row, schema::MeshLevel mesh) const {
@@ -222,12 +231,7 @@ double ResultsIndex::read_resolution_percent(const RowVerdict& row, schema::Mesh
 }
 
 std::optional<double> ResultsIndex::study_exact_of(const RowVerdict& row) const {
-  for (const auto m : kMeshes) {
-    const schema::QuantityResult* q = quantity_of(row, m);
-    if (q != nullptr && q->study_exact)
-      return q->study_exact;
-  }
-  return std::nullopt;
+  return first_on_meshes(*this, row, [](const schema::QuantityResult& q) { return q.study_exact; });
 }
 
 }  // namespace cs::reports
