@@ -1,5 +1,6 @@
 #include "reports/facts/row_facts.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "grading/accuracy.hpp"
@@ -201,13 +202,9 @@ std::vector<const RowFacts*> facts_of(const std::vector<RowFacts>& all, schema::
 }
 
 bool coincide(const schema::RowVerdict& a, const schema::RowVerdict& b) {
-  for (std::size_t m = 0; m < a.values.size(); ++m) {
-    if (a.values[m].has_value() != b.values[m].has_value())
-      return false;
-    if (a.values[m] && std::abs(*a.values[m] - *b.values[m]) >= 5e-5)
-      return false;
-  }
-  return true;
+  return std::ranges::equal(a.values, b.values, [](const auto& x, const auto& y) {
+    return x.has_value() == y.has_value() && (!x || std::abs(*x - *y) < 5e-5);
+  });
 }
 
 }  // namespace cs::reports

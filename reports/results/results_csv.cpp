@@ -3,6 +3,7 @@
 #include <map>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "grading/convergence.hpp"
 #include "grading/divergence.hpp"
@@ -118,10 +119,7 @@ const std::vector<std::string>& results_csv_columns() {
 
 std::string results_csv(const ResultsIndex& index, const schema::StudyReference& study) {
   const RowsByCase rows = rows_by_case(index);
-  std::string out;
-  for (const auto& name : results_csv_columns())
-    out += (out.empty() ? "" : ",") + name;
-  out += "\n";
+  std::string out = fmt::format("{}\n", fmt::join(results_csv_columns(), ","));
   for (const auto& c : index.results().cases) {
     const schema::CaseSpec& s = c.spec;
     const std::vector<std::string> head{schema::case_id(s),

@@ -1,7 +1,7 @@
 #include "reports/results/results_index.hpp"
 
 #include <algorithm>
-#include <cctype>
+#include <charconv>
 #include <climits>
 #include <cmath>
 
@@ -26,15 +26,11 @@ std::vector<Option> make_all_options() {
 
 /// The first table number of "7, 8" (7); INT_MAX when the problem records no study table.
 int first_study_table(const schema::ProblemRecord& p) {
+  const std::string& tables = p.study_tables;
   int n = 0;
-  bool any = false;
-  for (const char c : p.study_tables) {
-    if (std::isdigit(static_cast<unsigned char>(c)) == 0)
-      break;
-    n = 10 * n + (c - '0');
-    any = true;
-  }
-  return any ? n : INT_MAX;
+  const std::from_chars_result read =
+      std::from_chars(tables.data(), tables.data() + tables.size(), n);
+  return read.ec == std::errc() ? n : INT_MAX;
 }
 
 /// The solver whose rows are the baseline: ours when the document has a row of ours, else the
