@@ -21,10 +21,7 @@ std::vector<reports::SolverOptionMapping> solver_option_mappings() {
       const auto algorithm = suites::study_algorithm(o.family);
       out.push_back({code.name + ":" + o.label,
                      fmt::format("{} {}", schema::to_string(algorithm), o.discretization),
-                     o.description, std::string(adapters::protocol::to_string(o.family)),
-                     fmt::format("family {}: rows sit in the study's {} column",
-                                 adapters::protocol::to_string(o.family),
-                                 schema::traits(algorithm).study_column)});
+                     o.description, std::string(adapters::protocol::to_string(o.family))});
     }
   }
   return out;

@@ -1,7 +1,6 @@
 #include "reports/report_writer.hpp"
 
 #include <algorithm>
-#include <ranges>
 
 #include <fmt/format.h>
 
@@ -22,7 +21,6 @@
 #include "reports/findings/sweep_section.hpp"
 #include "reports/findings/variant_rows.hpp"
 #include "reports/pages/claims_ledger.hpp"
-#include "reports/pages/page_format.hpp"
 #include "reports/pages/problem_page.hpp"
 #include "reports/pages/run_page.hpp"
 #include "reports/pages/verdict_page.hpp"
@@ -65,16 +63,39 @@ std::string appendix_text(const std::string& key, const std::string& part) {
   return text;
 }
 
-bool has_content(const ReportPage& page) {
-  return !page.markdown.empty();
-}
-
 /// A section's text without its "## Title" line (its page carries the title).
 std::string strip_heading(const std::string& section) {
   if (section.rfind("## ", 0) != 0)
     return section;
   const std::size_t end = section.find('\n');
   return end == std::string::npos ? std::string() : section.substr(end + 1);
+}
+
+/// The report's title: with several solvers in the document, their names.
+std::string report_title(const ResultsIndex& index) {
+  const std::string solvers = solver_names(index);
+  return (solvers == "ours" ? "our contact elements" : solvers) +
+         " beside the study's ANSYS results";
+}
+
+/// The problem pages, one per problem in the results, with their figures.
+std::vector<ReportPage> problem_pages(const ResultsIndex& index, const FigureSet& figures,
+                                      const FigureSet& mesh_figures) {
+  const std::vector<RowFacts> rows = row_facts(index);
+  const std::vector<DivergenceFacts> singular = divergence_facts(index);
+  std::vector<ReportPage> pages;
+  for (const schema::ProblemRecord* p : index.problems()) {
+    std::vector<const Figure*> own;
+    for (const FigureSet* set : {&mesh_figures, &figures}) {
+      for (const auto& f : set->figures) {
+        if (f.produced && f.problem == p->id)
+          own.push_back(&f);
+      }
+    }
+    pages.push_back({problem_page_file(p->id), std::string(schema::label(p->id)) + ": " + p->title,
+                     problem_page(index, *p, rows, singular, own)});
+  }
+  return pages;
 }
 
 }  // namespace
@@ -105,12 +126,6 @@ std::string variants_section(const ResultsIndex& index) {
   return render_template(templates::variants_section, d);
 }
 
-std::string report_title(const ResultsIndex& index) {
-  const std::string solvers = solver_names(index);
-  return (solvers == "ours" ? "our contact elements" : solvers) +
-         " beside the study's ANSYS results";
-}
-
 std::vector<ReportPage> appendix_pages(const ResultsIndex& index,
                                        const schema::StudyReference& study,
                                        const ReportContent& content) {
@@ -139,8 +154,8 @@ std::vector<ReportPage> appendix_pages(const ResultsIndex& index,
   return pages;
 }
 
-std::string report_markdown(const ResultsIndex& index, const schema::StudyReference& /*study*/,
-                            const ReportContent& content, const std::vector<ReportPage>& problems,
+std::string report_markdown(const ResultsIndex& index, const ReportContent& content,
+                            const std::vector<ReportPage>& problems,
                             const std::vector<ReportPage>& appendices) {
   const std::vector<RowFacts> rows = row_facts(index);
   const std::vector<DivergenceFacts> singular = divergence_facts(index);
@@ -179,25 +194,6 @@ std::string report_markdown(const ResultsIndex& index, const schema::StudyRefere
   d.set("companions", companions_markdown(content.companions));
   d.set("has_regression", content.has_regression);
   return tidy_markdown(render_template(templates::report, d));
-}
-
-std::vector<ReportPage> problem_pages(const ResultsIndex& index, const FigureSet& figures,
-                                      const FigureSet& mesh_figures) {
-  const std::vector<RowFacts> rows = row_facts(index);
-  const std::vector<DivergenceFacts> singular = divergence_facts(index);
-  std::vector<ReportPage> pages;
-  for (const schema::ProblemRecord* p : index.problems()) {
-    std::vector<const Figure*> own;
-    for (const FigureSet* set : {&mesh_figures, &figures}) {
-      for (const auto& f : set->figures) {
-        if (f.produced && f.problem == p->id)
-          own.push_back(&f);
-      }
-    }
-    pages.push_back({problem_page_file(p->id), std::string(schema::label(p->id)) + ": " + p->title,
-                     problem_page(index, *p, rows, singular, own)});
-  }
-  return pages;
 }
 
 ReportOutcome write_report(const schema::ResultsDocument& results, const ReportOptions& options) {
@@ -243,10 +239,12 @@ ReportOutcome write_report(const schema::ResultsDocument& results, const ReportO
   const std::vector<ReportPage> appendices = appendix_pages(index, study, content);
   for (const auto& page : problems)
     output.write_text(page.file, page.markdown);
-  for (const auto& page : appendices | std::views::filter(has_content))
-    output.write_text(page.file, "# " + page.title + "\n\n[← the report](report.md)\n\n" +
-                                     strip_heading(page.markdown));
-  output.write_text("report.md", report_markdown(index, study, content, problems, appendices));
+  for (const auto& page : appendices) {
+    if (!page.markdown.empty())
+      output.write_text(page.file, "# " + page.title + "\n\n[← the report](report.md)\n\n" +
+                                       strip_heading(page.markdown));
+  }
+  output.write_text("report.md", report_markdown(index, content, problems, appendices));
   output.write_text("results.csv", results_csv(index, study));
   if (const std::string estimates = estimates_csv(index); !estimates.empty())
     output.write_text("estimates.csv", estimates);

@@ -81,19 +81,12 @@ struct ReportContent {
   std::vector<CompanionReport> companions;  ///< other reports linked under the title
 };
 
-/// The report's title: with several solvers in the document, their names.
-std::string report_title(const ResultsIndex& index);
-
 /// One Markdown file of the report besides report.md: a problem's page or an appendix.
 struct ReportPage {
   std::string file;   ///< relative to the report directory, e.g. "problem-H_p.md"
   std::string title;  ///< as report.md links it
   std::string markdown;
 };
-
-/// The problem pages, one per problem in the results, with their figures.
-std::vector<ReportPage> problem_pages(const ResultsIndex& index, const FigureSet& figures,
-                                      const FigureSet& mesh_figures);
 
 /// Every appendix in the report's order (the one list of them and their titles); one without
 /// content (its inputs are not in the results) has an empty text, is not written, and report.md
@@ -104,8 +97,8 @@ std::vector<ReportPage> appendix_pages(const ResultsIndex& index,
 
 /// report.md: the verdict page, the claims ledger, and links to the problem pages and the
 /// appendices (no I/O).
-std::string report_markdown(const ResultsIndex& index, const schema::StudyReference& study,
-                            const ReportContent& content, const std::vector<ReportPage>& problems,
+std::string report_markdown(const ResultsIndex& index, const ReportContent& content,
+                            const std::vector<ReportPage>& problems,
                             const std::vector<ReportPage>& appendices);
 
 /// The section listing rows with a rigid target or parameter overrides (empty if none).

@@ -1,7 +1,6 @@
 #include "reports/bench/bench_section.hpp"
 
 #include <algorithm>
-#include <regex>
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -9,21 +8,10 @@
 #include "reports/render/template_text.hpp"
 #include "reports/results/results_index.hpp"
 #include "reports/tables/markdown_table.hpp"
+#include "reports/tables/section_support.hpp"
 
 namespace cs::reports {
 namespace {
-
-template <schema::Axis E>
-std::string name(E v) {
-  return std::string(schema::to_string(v));
-}
-
-template <schema::Axis E>
-std::vector<std::string> names(const std::vector<E>& values) {
-  std::vector<std::string> out;
-  std::ranges::transform(values, std::back_inserter(out), name<E>);
-  return out;
-}
 
 bool contains(const auto& range, const auto& value) {
   return std::ranges::find(range, value) != std::ranges::end(range);
@@ -38,26 +26,15 @@ std::string fixed(const std::optional<double>& value, int decimals) {
   return value ? fmt::format("{:.{}f}", *value, decimals) : std::string(kMissing);
 }
 
-/// A count, or false when it is 0, so that "{{#key}}…{{/key}}" shows only a count.
-TemplateData count_or_false(std::size_t n) {
-  return text_or_false(n > 0 ? std::to_string(n) : "");
-}
-
-/// `text` as a Markdown table cell: '|' escaped, line breaks as spaces.
-std::string cell_text(const std::string& text) {
-  return std::regex_replace(std::regex_replace(text, std::regex("[\r\n]"), " "), std::regex("\\|"),
-                            "\\|");
-}
-
 /// A benchmark's facts for the template's tables and lists.
 TemplateData row_data(const BenchRow* b) {
   TemplateData d("model", model_md(b->model));
-  d.set("contact", name(b->contact));
-  d.set("algorithm", name(b->algorithm));
+  d.set("contact", name_of(b->contact));
+  d.set("algorithm", name_of(b->algorithm));
   d.set("time", format_ms(b->time_ms));
   d.set("ratio", fixed(b->ratio(), 2));
-  d.set("failure", cell_text(b->failure()));
-  d.set("error", text_or_false(cell_text(b->error)));
+  d.set("failure", escape_cell(b->failure()));
+  d.set("error", text_or_false(escape_cell(b->error)));
   d.set("reference", format_ms(b->reference_ms()));
   d.set("cases", fixed(b->counter("cases"), 0));
   d.set("converged", fixed(b->counter("converged"), 0));
@@ -93,14 +70,14 @@ TemplateData not_judged(const BenchResults& bench, BenchTarget target) {
     return std::ranges::any_of(contact, [m](const BenchRow* b) { return b->model.mesh == m; });
   });
   TemplateData d("files", bench.sources.size() > 1 ? "s" : "");
-  d.set("meshes", meshes.empty() ? std::string("none") : join_words(names(meshes)));
+  d.set("meshes", meshes.empty() ? std::string("none") : join_words(names_of(meshes)));
   d.set("finest", TemplateData(false));
   if (meshes.empty())
     return d;
   target.mesh = meshes.back();
   const TargetCheck there = check_target(bench, target);
   if (there.n_cases() > 0) {
-    TemplateData f("mesh", name(target.mesh));
+    TemplateData f("mesh", name_of(target.mesh));
     f.set("met", std::to_string(there.met.size()));
     f.set("cases", std::to_string(there.n_cases()));
     d.set("finest", f);
@@ -114,9 +91,9 @@ TemplateData target_data(const BenchResults& bench, const BenchTarget& target) {
   for (const auto p : target.problems)
     problems.emplace_back(schema::label(p));
   TemplateData d("max_ratio", fmt::format("{:g}", target.max_ratio));
-  d.set("algorithms", join_words(names(target.algorithms)));
-  d.set("algorithms_or", join_words(names(target.algorithms), " or "));
-  d.set("mesh", name(target.mesh));
+  d.set("algorithms", join_words(names_of(target.algorithms)));
+  d.set("algorithms_or", join_words(names_of(target.algorithms), " or "));
+  d.set("mesh", name_of(target.mesh));
   d.set("problems", join_words(problems));
   d.set("judged", check.n_cases() > 0);
   d.set("not_judged", check.n_cases() > 0 ? TemplateData(false) : not_judged(bench, target));
@@ -127,7 +104,7 @@ TemplateData target_data(const BenchResults& bench, const BenchTarget& target) {
   std::vector<std::pair<std::string, std::string>> met;  // model, "ss PM 1.40, ..."
   for (const BenchRow* b : check.met) {
     const std::string item =
-        fmt::format("{} {} {}", name(b->contact), name(b->algorithm), fixed(b->ratio(), 2));
+        fmt::format("{} {} {}", name_of(b->contact), name_of(b->algorithm), fixed(b->ratio(), 2));
     if (met.empty() || met.back().first != model_md(b->model))
       met.emplace_back(model_md(b->model), item);
     else
@@ -182,9 +159,9 @@ std::string case_cell(const BenchRow* b) {
 /// The table of one model's cases (algorithms x contact discretizations) and its failures.
 TemplateData model_data(const BenchGrid& grid) {
   std::vector<std::string> header{"Algorithm"};
-  std::ranges::transform(grid.contacts, std::back_inserter(header), name<schema::ContactKind>);
+  std::ranges::transform(grid.contacts, std::back_inserter(header), name_of<schema::ContactKind>);
   const MarkdownTable table = table_of(header, grid.methods, [&](BenchMethod a) {
-    std::vector<std::string> row{name(a)};
+    std::vector<std::string> row{name_of(a)};
     for (const auto c : grid.contacts)
       row.push_back(case_cell(grid.at(c, a)));
     return row;
@@ -252,7 +229,8 @@ TargetCheck check_target(const BenchResults& bench, const BenchTarget& target) {
     for (const auto element : schema::values<schema::Element>()) {
       const BenchModel model{problem, target.mesh, element};
       if (std::ranges::none_of(contact, [&](const BenchRow* b) { return b->model == model; }))
-        check.not_measured.push_back(fmt::format("{} {}", schema::label(problem), name(element)));
+        check.not_measured.push_back(
+            fmt::format("{} {}", schema::label(problem), name_of(element)));
     }
   }
   return check;

@@ -1,5 +1,6 @@
 #include "reports/facts/row_facts.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "grading/accuracy.hpp"
@@ -45,13 +46,6 @@ void add_trend(const ResultsIndex& index, RowFacts& f) {
   f.order = o.order;
   f.order_note = o.note;
   f.luck = grading::luck_of_one_mesh(*e[0], *e[1], *e[2]);
-}
-
-/// "calculix linear-ss" for another code's row, empty for ours.
-std::string code_label(const schema::CaseSpec& spec) {
-  const std::string code = code_of(spec);
-  return code == builtin_solver_label() ? std::string()
-                                        : solver_display_name(code) + " " + option_label_of(spec);
 }
 
 /// The rows on the common basis without parameter overrides whose code and target `keep`
@@ -145,8 +139,10 @@ bool on_common_basis(const schema::CaseSpec& spec) {
   return spec.recovery == schema::Recovery::spr && spec.overrides.empty();
 }
 
-std::string code_label_of(const schema::CaseSpec& spec) {
-  return code_label(spec);
+std::string code_label(const schema::CaseSpec& spec) {
+  const std::string code = code_of(spec);
+  return code == builtin_solver_label() ? std::string()
+                                        : solver_display_name(code) + " " + option_label_of(spec);
 }
 
 RowFacts facts_of_row(const ResultsIndex& index, const schema::RowVerdict& r) {
@@ -166,8 +162,6 @@ RowFacts facts_of_row(const ResultsIndex& index, const schema::RowVerdict& r) {
   f.read_resolution_on_f = index.read_resolution_percent(r, MeshLevel::F);
   add_trend(index, f);
   add_credibility(index, f);
-  if (const schema::RowVerdict* twin = index.extrapolated_twin(r))
-    f.extrapolated_error = twin->errors[2];
   return f;
 }
 
@@ -208,13 +202,9 @@ std::vector<const RowFacts*> facts_of(const std::vector<RowFacts>& all, schema::
 }
 
 bool coincide(const schema::RowVerdict& a, const schema::RowVerdict& b) {
-  for (std::size_t m = 0; m < a.values.size(); ++m) {
-    if (a.values[m].has_value() != b.values[m].has_value())
-      return false;
-    if (a.values[m] && std::abs(*a.values[m] - *b.values[m]) >= 5e-5)
-      return false;
-  }
-  return true;
+  return std::ranges::equal(a.values, b.values, [](const auto& x, const auto& y) {
+    return x.has_value() == y.has_value() && (!x || std::abs(*x - *y) < 5e-5);
+  });
 }
 
 }  // namespace cs::reports

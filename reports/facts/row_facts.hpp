@@ -46,8 +46,6 @@ struct RowFacts {
   bool credible = true;                ///< the F case passes the interface checks
   std::vector<CheckFailure> failures;  ///< the F case's failed interface checks
   bool luck = false;                   ///< e or g on F after an error above 100 % on C or M
-  /// The same option set graded with extrapolated nodal stresses (as ANSYS prints them).
-  std::optional<double> extrapolated_error;
 
   /// The read's own resolution on F (ResultsIndex::read_resolution_percent): half a node
   /// spacing for a value read between two nodes, 0 for one read at a point.
@@ -84,8 +82,8 @@ struct DivergenceFacts {
 /// ours the baseline's), without parameter overrides.
 bool on_common_basis(const schema::CaseSpec& spec);
 
-/// RowFacts::code of a row's spec: "calculix linear-ss", empty for ours.
-std::string code_label_of(const schema::CaseSpec& spec);
+/// RowFacts::code of a row's spec: "calculix linear-ss" for another code's row, empty for ours.
+std::string code_label(const schema::CaseSpec& spec);
 
 /// The facts of any row (another code's, a rigid target's): ungraded without an F value.
 RowFacts facts_of_row(const ResultsIndex& index, const schema::RowVerdict& row);

@@ -129,8 +129,7 @@ void add_failed_rows(
         (fine_state != MeshState::failed && fine_state != MeshState::missing) ||
         index.state(r, schema::MeshLevel::C) == MeshState::missing)
       continue;
-    OptionCell& c =
-        cell_of(code_label_of(r.spec), {r.spec.algorithm, r.spec.contact}, r.spec.element);
+    OptionCell& c = cell_of(code_label(r.spec), {r.spec.algorithm, r.spec.contact}, r.spec.element);
     if (fine_state == MeshState::missing) {
       ++c.n_missing;
       continue;
@@ -279,6 +278,9 @@ std::vector<SituationVerdict> situation_verdicts(const ResultsIndex& index,
   return out;
 }
 
+namespace {
+
+/// "AL, PM", "LMP, PLM" or "MPC".
 std::string family_label(OptionFamily family) {
   switch (family) {
     case OptionFamily::penalty:
@@ -290,8 +292,6 @@ std::string family_label(OptionFamily family) {
   }
   return {};
 }
-
-namespace {
 
 /// "AL, PM": the algorithms run, in the vocabulary's order; the family's label without any.
 std::string members_label(OptionFamily family, const std::set<schema::Algorithm>& members) {

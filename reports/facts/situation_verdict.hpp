@@ -73,9 +73,6 @@ std::vector<SituationVerdict> situation_verdicts(const ResultsIndex& index,
                                                  const std::vector<RowFacts>& rows,
                                                  const std::vector<DivergenceFacts>& singular);
 
-/// "AL, PM", "LMP, PLM" or "MPC".
-std::string family_label(OptionFamily family);
-
 /// A cell's option as a matrix row names it: its members and discretization, "AL, PM ss" ("PM
 /// ss" for a cell of one algorithm of its family, or where only PM was run), or another code's
 /// option, "calculix linear-ss".

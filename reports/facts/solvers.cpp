@@ -2,6 +2,8 @@
 
 #include <set>
 
+#include "reports/tables/markdown_table.hpp"
+
 namespace cs::reports {
 
 std::string builtin_solver_label() {
@@ -39,6 +41,13 @@ std::vector<std::string> solvers_in(const ResultsIndex& index) {
 
 std::string solver_display_name(const std::string& code) {
   return code == builtin_solver_label() ? "ours" : code;
+}
+
+std::string solver_names(const ResultsIndex& index, const char* last) {
+  std::vector<std::string> names;
+  for (const auto& s : solvers_in(index))
+    names.push_back(solver_display_name(s));
+  return join_words(names, last);
 }
 
 bool is_cross_code(const ResultsIndex& index) {

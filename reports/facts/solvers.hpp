@@ -28,6 +28,10 @@ std::vector<std::string> solvers_in(const ResultsIndex& index);
 /// How the report names a code: "ours" for the built-in solver, else its name.
 std::string solver_display_name(const std::string& code);
 
+/// The solvers whose cases the results hold, as a reader knows them: "ours", "ours and
+/// CalculiX" (`last` joins the last two).
+std::string solver_names(const ResultsIndex& index, const char* last = " and ");
+
 /// True when the document has cases of more than one code.
 bool is_cross_code(const ResultsIndex& index);
 

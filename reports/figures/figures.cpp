@@ -52,7 +52,7 @@ FigureSet render_figures(const ResultsIndex& index, const std::filesystem::path&
       Figure f(FigureKind::convergence,
                fmt::format("figures/convergence_{}_{}.png", schema::to_string(p->id),
                            schema::to_string(q.quantity)),
-               p->id, q.quantity);
+               p->id);
       const Plot plot = convergence_plot(index, rows, singular, *p, q, f);
       add(plot, std::move(f));
     }

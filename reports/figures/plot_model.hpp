@@ -10,7 +10,6 @@
 #include <vector>
 
 #include "schema/case_axes.hpp"
-#include "schema/quantity.hpp"
 
 namespace cs::reports {
 
@@ -97,12 +96,10 @@ enum class FigureKind { profile, convergence, sweep, bench, mesh };
 /// One figure of the report, as the pages link it.
 struct Figure {
   Figure() = default;
-  Figure(FigureKind kind, std::string file, std::optional<schema::ProblemId> problem = {},
-         std::optional<schema::Quantity> quantity = {})
-      : kind(kind), problem(problem), quantity(quantity), file(std::move(file)) {}
+  Figure(FigureKind kind, std::string file, std::optional<schema::ProblemId> problem = {})
+      : kind(kind), problem(problem), file(std::move(file)) {}
   FigureKind kind = FigureKind::profile;
   std::optional<schema::ProblemId> problem;  ///< the problem page that embeds it; none: no page
-  std::optional<schema::Quantity> quantity;
   std::string file;  ///< relative to the report directory, e.g. "figures/profile_H_p_Q4.png"
   std::string caption_md;
   std::vector<std::string> notes;  ///< what the figure leaves out, and why

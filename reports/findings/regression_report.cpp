@@ -28,11 +28,6 @@ std::string grade_text(const std::optional<schema::Grade>& g) {
   return g ? std::string(schema::to_string(*g)) : std::string(kMissing);
 }
 
-template <schema::Axis E>
-std::string name(E v) {
-  return std::string(schema::to_string(v));
-}
-
 /// One quantity of a case present in both files.
 QuantityDrift drift_of(const schema::CaseResult& o, const schema::CaseResult& c,
                        const schema::QuantityResult& oq, const schema::QuantityResult& q) {
@@ -76,8 +71,9 @@ std::string drift_text(const QuantityDrift& d) {
 
 /// "e → s" when the grade changed, else the grade.
 std::string grade_change(const QuantityDrift& q) {
-  return q.old_grade == q.new_grade ? name(q.new_grade)
-                                    : fmt::format("{} → {}", name(q.old_grade), name(q.new_grade));
+  return q.old_grade == q.new_grade
+             ? name_of(q.new_grade)
+             : fmt::format("{} → {}", name_of(q.old_grade), name_of(q.new_grade));
 }
 
 /// The grade change marked "**worse**" or "better", and any status change.
@@ -85,8 +81,8 @@ std::string marked_change(const QuantityDrift& q) {
   const std::string mark = q.grade_worse() ? "**worse** " : q.grade_better() ? "better " : "";
   if (q.old_status == q.new_status)
     return mark + grade_change(q);
-  return fmt::format("{}{} (status {} → {})", mark, grade_change(q), name(q.old_status),
-                     name(q.new_status));
+  return fmt::format("{}{} (status {} → {})", mark, grade_change(q), name_of(q.old_status),
+                     name_of(q.new_status));
 }
 
 }  // namespace
@@ -134,7 +130,7 @@ Regression compare_results(const schema::ResultsDocument& baseline,
       const schema::QuantityResult* oq = o.quantity(q.quantity);
       if (oq == nullptr) {
         out.quantities_only_in_one.push_back(
-            fmt::format("{}: {} (new only)", id, name(q.quantity)));
+            fmt::format("{}: {} (new only)", id, name_of(q.quantity)));
         continue;
       }
       const QuantityDrift d = drift_of(o, c, *oq, q);
@@ -147,7 +143,7 @@ Regression compare_results(const schema::ResultsDocument& baseline,
     for (const auto& oq : o.quantities) {
       if (c.quantity(oq.quantity) == nullptr) {
         out.quantities_only_in_one.push_back(
-            fmt::format("{}: {} (baseline only)", id, name(oq.quantity)));
+            fmt::format("{}: {} (baseline only)", id, name_of(oq.quantity)));
       }
     }
   }
@@ -187,7 +183,7 @@ std::string regression_markdown(const Regression& r) {
   const MarkdownTable changes = table_of(
       {"Case", "Quantity", "Grade", "Baseline", "Current", "Drift"}, changed,
       [](const QuantityDrift* q) -> std::vector<std::string> {
-        return {fmt::format("`{}`", q->case_id), name(q->quantity),          marked_change(*q),
+        return {fmt::format("`{}`", q->case_id), name_of(q->quantity),       marked_change(*q),
                 format_value(q->old_value),      format_value(q->new_value), drift_text(*q)};
       },
       {l, l, l, right, right, right});
@@ -204,8 +200,8 @@ std::string regression_markdown(const Regression& r) {
   const MarkdownTable drifts = table_of(
       {"Case", "Quantity", "Baseline", "Current", "Drift (relative)", "Grade"}, drifted,
       [&](const QuantityDrift* q) -> std::vector<std::string> {
-        return {fmt::format("`{}`", q->case_id), name(q->quantity), format_value(q->old_value),
-                format_value(q->new_value),      drift_text(*q),    grade_change(*q)};
+        return {fmt::format("`{}`", q->case_id), name_of(q->quantity), format_value(q->old_value),
+                format_value(q->new_value),      drift_text(*q),       grade_change(*q)};
       },
       {l, l, right, right, right, l});
   const auto table = [](const MarkdownTable& t) {
@@ -241,7 +237,7 @@ std::string regression_markdown(const Regression& r) {
   if (!drifted.empty()) {
     const QuantityDrift* q = drifted.front();
     d["largest"] =
-        Fields{{"case", q->case_id}, {"quantity", name(q->quantity)}, {"drift", drift_text(*q)}};
+        Fields{{"case", q->case_id}, {"quantity", name_of(q->quantity)}, {"drift", drift_text(*q)}};
   }
   return tidy_markdown(render_template(templates::regression_report, d));
 }

@@ -4,8 +4,8 @@
 
 #include <fmt/format.h>
 
-#include "reports/pages/page_format.hpp"
 #include "reports/render/template_text.hpp"
+#include "reports/tables/markdown_table.hpp"
 
 namespace cs::reports {
 namespace {
@@ -33,7 +33,7 @@ std::string credible_cell(const RowFacts& f) {
   std::string out = "no:";
   for (const auto& failure : f.failures)
     out += fmt::format(" {}{}", failure.check,
-                       failure.measure ? " " + format_measure(*failure.measure) : "");
+                       failure.measure ? fmt::format(" {:.3g}", *failure.measure) : "");
   return out + (f.luck ? "; luck of one mesh" : "");
 }
 

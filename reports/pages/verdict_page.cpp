@@ -11,13 +11,21 @@
 #include <fmt/ranges.h>
 
 #include "reports/facts/solvers.hpp"
-#include "reports/pages/page_format.hpp"
 #include "reports/render/template_text.hpp"
+#include "reports/tables/markdown_table.hpp"
 
 namespace cs::reports {
 namespace {
 
 using schema::Element;
+
+/// A difference of percentages, unsigned: "0.012 points".
+std::string format_points(double points) {
+  const double p = std::abs(points);
+  if (p == 0.0)
+    return "0 points";
+  return fmt::format("{:.2g} points", p);
+}
 
 std::string singular_cell(const OptionCell& c) {
   const int n = static_cast<int>(c.singular_rows.size());
@@ -103,7 +111,7 @@ std::string failure_evidence(const std::vector<const OptionCell*>& cells,
   }
   std::vector<std::string> parts;
   for (const auto& [check, measure] : worst)
-    parts.push_back(fmt::format("{} up to {}", check, format_measure(measure)));
+    parts.push_back(fmt::format("{} up to {}", check, fmt::format("{:.3g}", measure)));
   if (singular > 0)
     parts.push_back(fmt::format("Eq. 47 fails on {} of {} rows", eq47_failures, singular));
   if (not_converged > 0)

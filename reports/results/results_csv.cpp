@@ -3,9 +3,11 @@
 #include <map>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "grading/convergence.hpp"
 #include "grading/divergence.hpp"
+#include "reports/tables/markdown_table.hpp"
 
 namespace cs::reports {
 namespace {
@@ -29,11 +31,6 @@ std::string number(const std::optional<double>& v) {
 
 std::string number(double v) {
   return number(finite(v));
-}
-
-template <schema::Axis E>
-std::string name(E v) {
-  return std::string(schema::to_string(v));
 }
 
 std::string overrides_text(const schema::CaseSpec& s) {
@@ -84,8 +81,7 @@ std::vector<std::string> verdict_fields(const ResultsIndex& index, const schema:
   return {flag(r->converging), trend, eq47, strict};
 }
 
-}  // namespace
-
+/// The CSV header line's fields, in order.
 const std::vector<std::string>& results_csv_columns() {
   static const std::vector<std::string> columns{"case_id",
                                                 "problem",
@@ -119,24 +115,23 @@ const std::vector<std::string>& results_csv_columns() {
   return columns;
 }
 
+}  // namespace
+
 std::string results_csv(const ResultsIndex& index, const schema::StudyReference& study) {
   const RowsByCase rows = rows_by_case(index);
-  std::string out;
-  for (const auto& name : results_csv_columns())
-    out += (out.empty() ? "" : ",") + name;
-  out += "\n";
+  std::string out = fmt::format("{}\n", fmt::join(results_csv_columns(), ","));
   for (const auto& c : index.results().cases) {
     const schema::CaseSpec& s = c.spec;
     const std::vector<std::string> head{schema::case_id(s),
-                                        name(s.problem),
-                                        name(s.mesh),
-                                        name(s.element),
-                                        name(s.algorithm),
-                                        name(s.contact),
-                                        name(s.target),
-                                        name(s.recovery),
+                                        name_of(s.problem),
+                                        name_of(s.mesh),
+                                        name_of(s.element),
+                                        name_of(s.algorithm),
+                                        name_of(s.contact),
+                                        name_of(s.target),
+                                        name_of(s.recovery),
                                         overrides_text(s),
-                                        name(c.status),
+                                        name_of(c.status),
                                         c.reason,
                                         std::to_string(c.iterations),
                                         number(c.wall_seconds),
@@ -172,11 +167,11 @@ std::string results_csv(const ResultsIndex& index, const schema::StudyReference&
       }
       const auto row = rows.find({&c, q.quantity});
       const bool converged = c.status == schema::CaseStatus::converged;  // else no grade
-      std::vector<std::string> tail{name(q.quantity),
+      std::vector<std::string> tail{name_of(q.quantity),
                                     number(q.value),
                                     q.singular() ? "inf" : number(q.exact),
                                     number(q.error_percent),
-                                    converged ? name(q.grade) : "",
+                                    converged ? name_of(q.grade) : "",
                                     number(q.contact_pressure),
                                     number(q.study_exact),
                                     ansys_value,

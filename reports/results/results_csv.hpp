@@ -14,9 +14,6 @@
 
 namespace cs::reports {
 
-/// The CSV header line's fields, in order.
-const std::vector<std::string>& results_csv_columns();
-
 /// The whole CSV text (RFC 4180 quoting; numbers with 10 significant digits; empty = none).
 std::string results_csv(const ResultsIndex& index, const schema::StudyReference& study);
 

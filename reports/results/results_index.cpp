@@ -1,7 +1,7 @@
 #include "reports/results/results_index.hpp"
 
 #include <algorithm>
-#include <cctype>
+#include <charconv>
 #include <climits>
 #include <cmath>
 
@@ -26,15 +26,11 @@ std::vector<Option> make_all_options() {
 
 /// The first table number of "7, 8" (7); INT_MAX when the problem records no study table.
 int first_study_table(const schema::ProblemRecord& p) {
+  const std::string& tables = p.study_tables;
   int n = 0;
-  bool any = false;
-  for (const char c : p.study_tables) {
-    if (std::isdigit(static_cast<unsigned char>(c)) == 0)
-      break;
-    n = 10 * n + (c - '0');
-    any = true;
-  }
-  return any ? n : INT_MAX;
+  const std::from_chars_result read =
+      std::from_chars(tables.data(), tables.data() + tables.size(), n);
+  return read.ec == std::errc() ? n : INT_MAX;
 }
 
 /// The solver whose rows are the baseline: ours when the document has a row of ours, else the
@@ -59,6 +55,19 @@ bool study_options(const schema::CaseSpec& spec, const std::string& solver,
   as_ours.recovery = schema::Recovery::spr;
   return spec.recovery == recovery && schema::solver_label(spec) == solver &&
          schema::is_baseline(as_ours);
+}
+
+/// The first value `value_of` finds in a row's quantity on C, M, then F.
+template <class ValueOf>
+std::optional<double> first_on_meshes(const ResultsIndex& index, const RowVerdict& row,
+                                      ValueOf&& value_of) {
+  for (const auto m : kMeshes) {
+    const schema::QuantityResult* q = index.quantity_of(row, m);
+    const std::optional<double> v = q != nullptr ? value_of(*q) : std::nullopt;
+    if (v)
+      return v;
+  }
+  return std::nullopt;
 }
 
 }  // namespace
@@ -204,12 +213,8 @@ bool ResultsIndex::has(schema::ProblemId problem, schema::Quantity quantity,
 }
 
 std::optional<double> ResultsIndex::exact_of(const RowVerdict& row) const {
-  for (const auto m : kMeshes) {
-    const schema::QuantityResult* q = quantity_of(row, m);
-    if (q != nullptr && std::isfinite(q->exact))
-      return q->exact;
-  }
-  return std::nullopt;
+  return first_on_meshes(*this, row,
+                         [](const schema::QuantityResult& q) { return finite(q.exact); });
 }
 
 double ResultsIndex::read_resolution_percent(const RowVerdict& row, schema::MeshLevel mesh) const {
@@ -222,12 +227,7 @@ double ResultsIndex::read_resolution_percent(const RowVerdict& row, schema::Mesh
 }
 
 std::optional<double> ResultsIndex::study_exact_of(const RowVerdict& row) const {
-  for (const auto m : kMeshes) {
-    const schema::QuantityResult* q = quantity_of(row, m);
-    if (q != nullptr && q->study_exact)
-      return q->study_exact;
-  }
-  return std::nullopt;
+  return first_on_meshes(*this, row, [](const schema::QuantityResult& q) { return q.study_exact; });
 }
 
 }  // namespace cs::reports

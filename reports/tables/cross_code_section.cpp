@@ -13,7 +13,6 @@
 #include "reports/facts/solvers.hpp"
 #include "reports/figures/figures.hpp"
 #include "reports/figures/gnuplot.hpp"
-#include "reports/pages/page_format.hpp"
 #include "reports/tables/section_support.hpp"
 
 namespace cs::reports {

@@ -25,7 +25,6 @@ struct SolverOptionMapping {
   std::string study_option;  ///< "PM ss": the study's column the option's rows sit in
   std::string target;        ///< what the code runs, e.g. "penalty (HARD, K = 50 E), ..."
   std::string fidelity;      ///< the option's family, e.g. "penalty"
-  std::string note;          ///< why, in one line
 };
 
 /// One option of one code on one problem quantity, element and target, on both bases.

@@ -29,20 +29,13 @@ std::vector<ContactKind> contacts_in_study(bool in_study) {
   return out;
 }
 
-std::string names_of(const std::vector<Algorithm>& algorithms) {
-  std::vector<std::string> names;
-  for (const Algorithm a : algorithms)
-    names.emplace_back(schema::to_string(a));
-  return join_words(names, ", ");
-}
-
 /// The study's columns (split by contact type where its Table 2 splits them), then one group
 /// per contact type the study did not have.
 std::vector<ColumnGroup> column_groups(const schema::StudyReference& study) {
   std::vector<ColumnGroup> groups;
   for (const Algorithm first : schema::study_columns()) {
     const auto members = schema::study_column_members(first);
-    const std::string ours = names_of(members);
+    const std::string ours = join_words(names_of(members), ", ");
     const std::string theirs = schema::study_column_label(first);
     const bool split = study.separates_contacts(first);
     const auto contacts = contacts_in_study(true);

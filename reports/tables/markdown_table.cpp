@@ -5,7 +5,6 @@
 #include <fmt/format.h>
 
 namespace cs::reports {
-namespace {
 
 std::string escape_cell(const std::string& text) {
   std::string out;
@@ -21,6 +20,8 @@ std::string escape_cell(const std::string& text) {
   }
   return out;
 }
+
+namespace {
 
 std::string render_row(const std::vector<std::string>& cells, std::size_t width) {
   std::string line = "|";

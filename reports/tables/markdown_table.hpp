@@ -1,11 +1,13 @@
 #pragma once
-// A GitHub-flavoured Markdown table, and the number formats every section of the report uses
-// (values to the study's 4 decimals, signed percentages).
+// A GitHub-flavoured Markdown table, and the number and name formats every section of the report
+// uses (values to the study's 4 decimals, signed percentages, the vocabulary's names).
 
 #include <array>
 #include <optional>
 #include <string>
 #include <vector>
+
+#include "schema/name_table.hpp"
 
 namespace cs::reports {
 
@@ -33,6 +35,9 @@ class MarkdownTable {
   std::vector<Align> align_;
   std::vector<std::vector<std::string>> rows_;
 };
+
+/// `text` as a Markdown table cell: '|' escaped, line breaks as spaces.
+std::string escape_cell(const std::string& text);
 
 /// The table of `rows`: one body row per element, in order, its cells `cells(row)` under `header`.
 template <class Rows, class Cells>
@@ -71,6 +76,21 @@ std::string join_meshes(const std::array<std::string, 3>& cells);
 
 /// "a, b and c": `items` joined by ", ", the last two by `last` (" and ", " or ", ", ").
 std::string join_words(const std::vector<std::string>& items, const char* last = " and ");
+
+/// The vocabulary's name of `v` (schema/name_table.hpp): "PM", "ss", "F".
+template <schema::Axis E>
+std::string name_of(E v) {
+  return std::string(schema::to_string(v));
+}
+
+/// The vocabulary's names of `values`, in their order: {"AL", "PM"}.
+template <class Values>
+std::vector<std::string> names_of(const Values& values) {
+  std::vector<std::string> out;
+  for (const auto v : values)
+    out.push_back(name_of(v));
+  return out;
+}
 
 /// The em dash the report uses for "not in this results file".
 inline constexpr const char* kMissing = "—";

@@ -6,6 +6,8 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include "reports/tables/markdown_table.hpp"
+
 namespace cs::reports {
 namespace {
 
@@ -14,10 +16,7 @@ template <class E>
 std::vector<std::string> unique_in_order(std::vector<E> values) {
   std::sort(values.begin(), values.end());
   values.erase(std::unique(values.begin(), values.end()), values.end());
-  std::vector<std::string> names;
-  for (const E v : values)
-    names.emplace_back(schema::to_string(v));
-  return names;
+  return names_of(values);
 }
 
 bool has_rows(const ResultsIndex& index, const Option& o, const std::vector<Slot>& slots) {

@@ -408,7 +408,7 @@ TEST(CrossCodeSection, InTheReportOnlyWithSeveralCodes) {
   const auto doc = document(hertz_pair());
   const ResultsIndex index(doc);
   const std::vector<SolverOptionMapping> mapping{
-      {"calculix:linear-ss", "PM ss", "PRESSURE-OVERCLOSURE=LINEAR", "penalty", "why"}};
+      {"calculix:linear-ss", "PM ss", "PRESSURE-OVERCLOSURE=LINEAR", "penalty"}};
   const std::string md = cross_code_section(index, study(), {}, mapping);
   EXPECT_NE(md.find("## Other codes beside ours: ours and calculix"), std::string::npos);
   EXPECT_NE(md.find("| linear-ss | penalty | PM ss | PRESSURE-OVERCLOSURE=LINEAR |"),
@@ -417,7 +417,7 @@ TEST(CrossCodeSection, InTheReportOnlyWithSeveralCodes) {
   content.cross_code_md = md;
   content.companions = {{"x/report.md", "T"}};
   const auto appendices = appendix_pages(index, study(), content);
-  const std::string report = report_markdown(index, study(), content, {}, appendices);
+  const std::string report = report_markdown(index, content, {}, appendices);
   EXPECT_NE(report.find("(appendix-cross-code.md)"), std::string::npos);
   EXPECT_EQ(report.rfind(
                 "# contact-suite report: ours and calculix beside the study's ANSYS results\n", 0),
@@ -446,7 +446,7 @@ TEST(CrossCodeSection, TheVerdictPageGivesEachOtherCodesAdvice) {
   content.cross_code_md = cross_code_section(index, study(), {}, {});
   EXPECT_NE(content.cross_code_md.find("\n" + lines[0] + "\n"), std::string::npos);
   const auto appendices = appendix_pages(index, study(), content);
-  const std::string report = report_markdown(index, study(), content, {}, appendices);
+  const std::string report = report_markdown(index, content, {}, appendices);
   const std::string verdict = report.substr(0, report.find("## The study's claims"));
   // Our row names the algorithm run, PM alone here (not "AL, PM": no AL case is in the results).
   EXPECT_NE(verdict.find("| PM ss | e +0.50 % |\n| calculix linear-ss | g +2.00 % |\n"),
@@ -467,7 +467,7 @@ TEST(CrossCodeSection, TheVerdictPageGivesEachOtherCodesAdvice) {
   const auto ours_doc = document({hertz_case(SolverKind::builtin, MeshLevel::F, 0.5)});
   const ResultsIndex ours_only(ours_doc);
   EXPECT_TRUE(code_advice_lines(ours_only).empty());
-  const std::string alone = report_markdown(ours_only, study(), {}, {}, {});
+  const std::string alone = report_markdown(ours_only, {}, {}, {});
   EXPECT_EQ(alone.find("**Other codes.**"), std::string::npos);
 }
 
@@ -482,7 +482,7 @@ TEST(CrossCodeSection, AnotherCodeAloneGetsItsOwnVerdict) {
   const auto doc = document(cases);
   const ResultsIndex index(doc);
   EXPECT_TRUE(code_advice_lines(index).empty());
-  const std::string report = report_markdown(index, study(), {}, {}, {});
+  const std::string report = report_markdown(index, {}, {}, {});
   EXPECT_NE(report.find("| calculix linear-ss | e +0.60 % |"), std::string::npos) << report;
   EXPECT_NE(report.find("- **Smooth curved contact (Hertz):** use calculix linear-ss Q4: e, "
                         "+0.60 %."),
@@ -506,7 +506,7 @@ TEST(CrossCodeSection, TheVerdictGradesNoCellWhoseFineCaseDidNotConverge) {
   }
   const auto doc = document(cases);
   const ResultsIndex index(doc);
-  const std::string report = report_markdown(index, study(), {}, {}, {});
+  const std::string report = report_markdown(index, {}, {}, {});
   EXPECT_NE(report.find("| calculix linear-ss | +0.20 % † |"), std::string::npos) << report;
   EXPECT_NE(report.find("use PM ss Q4: e, +0.50 %. Avoid calculix linear-ss Q4."),
             std::string::npos);

@@ -43,7 +43,7 @@ TEST(MissingInputs, EveryAppendixLeftOutIsNamedWithItsReason) {
   const ResultsIndex index(doc);
   const ReportContent content;
   const auto appendices = appendix_pages(index, study(), content);
-  const std::string md = report_markdown(index, study(), content, {}, appendices);
+  const std::string md = report_markdown(index, content, {}, appendices);
   int omitted = 0;
   for (const auto& page : appendices)
     omitted += page.markdown.empty() ? 1 : 0;
