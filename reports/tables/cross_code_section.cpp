@@ -13,6 +13,7 @@
 #include "reports/facts/solvers.hpp"
 #include "reports/figures/figures.hpp"
 #include "reports/figures/gnuplot.hpp"
+#include "reports/tables/grade_tables.hpp"
 #include "reports/tables/section_support.hpp"
 
 namespace cs::reports {
@@ -100,9 +101,8 @@ std::string grade_cell(const ResultsIndex& index, const RowVerdict* row) {
   if (!row->grade || row->graded_mesh != kFinestMesh)
     return "no grade";
   const std::string g(schema::to_string(*row->grade));
-  const RowFacts f = facts_of_row(index, *row);
-  const std::string mark = !f.credible ? " ✗" : f.luck ? " ‡" : "";  // not evidence
-  return (row->converging.value_or(false) ? g + ", c" : g) + mark;
+  return (row->converging.value_or(false) ? g + ", c" : g) +
+         evidence_marks(facts_of_row(index, *row));
 }
 
 std::string checks_cell(const ResultsIndex& index, const RowVerdict* row) {
