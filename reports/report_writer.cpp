@@ -229,7 +229,8 @@ ReportOutcome write_report(const schema::ResultsDocument& results, const ReportO
         render_cross_code_figure(index, output.staging_dir(), options.figure_options);
   if (options.figures && bench)
     bench_figures = render_bench_figures(*bench, output.staging_dir(), {}, options.figure_options);
-  const std::string bench_md = bench ? bench_section(*bench, bench_figures) : std::string();
+  const std::string bench_md =
+      bench ? bench_section(*bench, bench_figures, {}, &index) : std::string();
   const std::string cross_code_md =
       cross_code_section(index, study, cross_code_figures, options.option_mappings,
                          cost_index ? &*cost_index : nullptr);

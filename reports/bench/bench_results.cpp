@@ -4,6 +4,7 @@
 #include <cctype>
 #include <cmath>
 #include <fstream>
+#include <set>
 #include <sstream>
 #include <tuple>
 
@@ -159,6 +160,19 @@ bool merge_into(std::vector<BenchRow>& rows, BenchRow row) {
   return false;
 }
 
+/// The ratio's standard deviation of a stddev aggregate, onto the row of its case (read before
+/// it: Google Benchmark writes the median first).
+void attach_stddev(std::vector<BenchRow>& rows, const json& e, std::size_t i,
+                   const std::string& file) {
+  const auto aggregate = read_row(e, i, file);
+  if (!aggregate)
+    return;
+  const auto row = std::ranges::find_if(
+      rows, [&](const BenchRow& r) { return case_of(r) == case_of(*aggregate); });
+  if (row != rows.end())
+    row->ratio_stddev = aggregate->ratio();
+}
+
 /// Reads one parsed benchmark document: its source and its rows, one per case.
 std::pair<BenchSource, std::vector<BenchRow>> read_document(const json& doc,
                                                             const std::string& file) {
@@ -175,8 +189,14 @@ std::pair<BenchSource, std::vector<BenchRow>> read_document(const json& doc,
       // Repetitions are followed by their aggregates: the median replaces them; mean, stddev and
       // cv are left out.
       const json& e = list[i];
-      if (e.is_object() && e.value("run_type", "") == "aggregate" &&
-          e.value("aggregate_name", "") != "median")
+      const std::string aggregate = e.is_object() && e.value("run_type", "") == "aggregate"
+                                        ? e.value("aggregate_name", "")
+                                        : "";
+      if (aggregate == "stddev") {
+        attach_stddev(rows, e, i, file);
+        continue;
+      }
+      if (!aggregate.empty() && aggregate != "median")
         continue;
       auto row = read_row(e, i, file);
       source.n_other += row ? 0 : 1;
@@ -279,12 +299,25 @@ std::string model_md(const BenchModel& m) {
 
 BenchResults load_bench_files(const std::vector<std::filesystem::path>& files) {
   BenchResults all;
+  std::set<std::size_t> remeasured;  // indices into all.rows
   for (const auto& file : files) {
     auto [source, rows] = load_bench_file(file);
     all.sources.push_back(std::move(source));
-    for (BenchRow& r : rows)
-      all.n_replaced += merge_into(all.rows, std::move(r)) ? 1 : 0;
+    for (BenchRow& r : rows) {
+      const auto same = std::ranges::find_if(
+          all.rows, [&](const BenchRow& old) { return case_of(old) == case_of(r); });
+      if (same == all.rows.end()) {
+        all.rows.push_back(std::move(r));
+        continue;
+      }
+      remeasured.insert(static_cast<std::size_t>(same - all.rows.begin()));
+      r.earlier_ratios = std::move(same->earlier_ratios);
+      if (same->ratio())
+        r.earlier_ratios.push_back(*same->ratio());
+      *same = std::move(r);
+    }
   }
+  all.n_replaced = static_cast<int>(remeasured.size());
   return all;
 }
 

@@ -69,6 +69,10 @@ struct BenchRow {
   std::map<std::string, double> counters;  ///< every finite number of the entry, by name
   std::string label;  ///< Google Benchmark's label, e.g. "not converged: <reason>"
   std::string error;  ///< error or skip message; non-empty when the run did not finish
+  /// The ratio's standard deviation over the repetitions (the stddev aggregate), if repeated.
+  std::optional<double> ratio_stddev;
+  /// The ratios of the same case measured in earlier files (this row is the last file's).
+  std::vector<double> earlier_ratios;
 
   /// The counter `key`; nullopt when the entry has none (or a non-finite one).
   std::optional<double> counter(std::string_view key) const;
@@ -92,7 +96,8 @@ struct BenchSource {
 struct BenchResults {
   std::vector<BenchSource> sources;
   std::vector<BenchRow> rows;
-  /// Cases measured in more than one file: the later file's measurement is kept.
+  /// Cases measured in more than one file: the later file's measurement is shown, the
+  /// earlier ratios kept beside it (BenchRow::earlier_ratios).
   int n_replaced = 0;
   /// The rows of `family` in the report's order: model, contact (kBenchContacts), algorithm.
   std::vector<const BenchRow*> of(BenchFamily family) const;

@@ -1,6 +1,7 @@
 #include "reports/bench/bench_section.hpp"
 
 #include <algorithm>
+#include <map>
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -26,6 +27,16 @@ std::string fixed(const std::optional<double>& value, int decimals) {
   return value ? fmt::format("{:.{}f}", *value, decimals) : std::string(kMissing);
 }
 
+/// The ratio with every measurement of it: "1.27 ± 0.05 (earlier: 1.40, 1.78)", the spread
+/// over the last file's repetitions and the ratios of earlier files.
+std::string ratio_text(const BenchRow& b) {
+  std::vector<std::string> earlier;
+  for (double r : b.earlier_ratios)
+    earlier.push_back(fmt::format("{:.2f}", r));
+  return fixed(b.ratio(), 2) + (b.ratio_stddev ? fmt::format(" ± {:.2f}", *b.ratio_stddev) : "") +
+         (earlier.empty() ? "" : fmt::format(" (earlier: {})", join_words(earlier, ", ")));
+}
+
 /// A benchmark's facts for the template's tables and lists.
 TemplateData row_data(const BenchRow* b) {
   TemplateData d("model", model_md(b->model));
@@ -33,6 +44,7 @@ TemplateData row_data(const BenchRow* b) {
   d.set("algorithm", name_of(b->algorithm));
   d.set("time", format_ms(b->time_ms));
   d.set("ratio", fixed(b->ratio(), 2));
+  d.set("measurements", ratio_text(*b));
   d.set("failure", escape_cell(b->failure()));
   d.set("error", text_or_false(escape_cell(b->error)));
   d.set("reference", format_ms(b->reference_ms()));
@@ -101,6 +113,10 @@ TemplateData target_data(const BenchResults& bench, const BenchTarget& target) {
   d.set("met", std::to_string(check.met.size()));
   d.set("n_missed", count_or_false(check.missed.size()));
   d.set("missed", template_list(check.missed, row_data));
+  d.set("n_split", count_or_false(check.split.size()));
+  d.set("split", template_list(check.split, row_data));
+  d.set("n_tied", count_or_false(check.tied.size()));
+  d.set("tied", template_list(check.tied, row_data));
   std::vector<std::pair<std::string, std::string>> met;  // model, "ss PM 1.40, ..."
   for (const BenchRow* b : check.met) {
     const std::string item =
@@ -219,8 +235,15 @@ TargetCheck check_target(const BenchResults& bench, const BenchTarget& target) {
     if (b->model.mesh != target.mesh || !contains(target.problems, b->model.problem) ||
         !contains(target.algorithms, b->algorithm))
       continue;
-    const bool meets = b->converged() && b->ratio() && *b->ratio() <= target.max_ratio;
-    (meets ? check.met : check.missed).push_back(b);
+    const auto under = [&](double r) { return r <= target.max_ratio; };
+    const bool measured = b->converged() && b->ratio();
+    const bool tie =
+        measured && b->ratio_stddev && std::abs(*b->ratio() - target.max_ratio) <= *b->ratio_stddev;
+    const bool all_under =
+        measured && under(*b->ratio()) && std::ranges::all_of(b->earlier_ratios, under);
+    const bool all_over =
+        !measured || (!under(*b->ratio()) && std::ranges::none_of(b->earlier_ratios, under));
+    (tie ? check.tied : all_under ? check.met : all_over ? check.missed : check.split).push_back(b);
   }
   // The worst first: the largest ratio, then those without one.
   std::ranges::stable_sort(check.missed, std::greater{},
@@ -236,8 +259,37 @@ TargetCheck check_target(const BenchResults& bench, const BenchTarget& target) {
   return check;
 }
 
+BenchProvenance bench_provenance(const BenchResults& bench, const ResultsIndex& index) {
+  std::map<std::string, const schema::CaseResult*> baseline;  // by case id
+  for (const auto& c : index.results().cases) {
+    if (c.is_baseline())
+      baseline.emplace(schema::case_id(c.spec), &c);
+  }
+  BenchProvenance p;
+  for (const BenchRow* b : bench.of(BenchFamily::Contact)) {
+    const auto iterations = b->counter("active_set_iterations");
+    const schema::CaseSpec spec{.problem = b->model.problem,
+                                .mesh = b->model.mesh,
+                                .element = b->model.element,
+                                .algorithm = study_algorithm(b->algorithm),
+                                .contact = b->contact};
+    const auto c = baseline.find(schema::case_id(spec));
+    if (!iterations || c == baseline.end())
+      continue;
+    ++p.compared;
+    if (static_cast<int>(*iterations) == c->second->iterations)
+      continue;
+    if (++p.differing == 1)
+      p.example = fmt::format("{} {} {} {} {}: {:.0f} iterations benchmarked, {} in the results",
+                              schema::label(spec.problem), name_of(spec.mesh),
+                              name_of(spec.element), name_of(spec.contact), name_of(b->algorithm),
+                              *iterations, c->second->iterations);
+  }
+  return p;
+}
+
 std::string bench_section(const BenchResults& bench, const FigureSet& figures,
-                          const BenchTarget& target) {
+                          const BenchTarget& target, const ResultsIndex* results) {
   const auto contact = bench.of(BenchFamily::Contact);
   const auto all_options = bench.of(BenchFamily::ContactAllOptions);
   TemplateData d("n_contact", std::to_string(contact.size()));
@@ -245,6 +297,13 @@ std::string bench_section(const BenchResults& bench, const FigureSet& figures,
   d.set("machines", template_list(bench.sources, machine_data));
   d.set("below_floor", below_floor(contact));
   d.set("replaced", count_or_false(bench.n_replaced));
+  if (results != nullptr) {
+    const BenchProvenance p = bench_provenance(bench, *results);
+    TemplateData prov("compared", std::to_string(p.compared));
+    prov.set("differing", count_or_false(p.differing));
+    prov.set("example", p.example);
+    d.set("provenance", p.compared > 0 ? prov : TemplateData(false));
+  }
   d.set("target", target_data(bench, target));
   d.set("figures", figure_set_data(figures));
   d.set("has_all_options", !all_options.empty());
