@@ -5,6 +5,7 @@
 #include <numeric>
 
 #include <fmt/format.h>
+#include <gsl/gsl_statistics_double.h>
 
 #include "grading/accuracy.hpp"
 #include "reports/facts/trusted_estimate.hpp"
@@ -34,14 +35,6 @@ std::string row_label(const RowVerdict& row) {
                      schema::to_string(row.quantity), schema::to_string(row.spec.element),
                      Option{row.spec.algorithm, row.spec.contact}.label(),
                      variant.empty() ? "" : " (" + variant + ")");
-}
-
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  const std::size_t n = v.size();
-  if (n == 0)
-    return 0.0;
-  return n % 2 == 1 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 
 /// The trend of three errors, `resolution` the quantity's own on the coarsest of them.
@@ -130,8 +123,8 @@ void add_tallies(RefinementFacts& f, const ResultsIndex& index) {
   }
   f.claim = tally_vf(index, applies);
   f.mpc = tally_vf(index, mpc);
-  f.mpc_median_f = median(on_f);
-  f.mpc_median_vf = median(on_vf);
+  f.mpc_median_f = on_f.empty() ? 0.0 : gsl_stats_median(on_f.data(), 1, on_f.size());
+  f.mpc_median_vf = on_vf.empty() ? 0.0 : gsl_stats_median(on_vf.data(), 1, on_vf.size());
 }
 
 std::string percent(int part, int whole) {
@@ -248,7 +241,7 @@ RefinementFacts refinement_facts(const ResultsIndex& index) {
         add_estimate(s, gci, index, *row);
     }
     if (!gci.empty())
-      s.median_gci = median(gci);
+      s.median_gci = gsl_stats_median(gci.data(), 1, gci.size());
     if (s.rows > 0)
       f.problems.push_back(s);
   }
