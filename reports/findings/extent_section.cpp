@@ -66,9 +66,9 @@ const ParameterSeries* block_normal_of(const std::vector<ParameterSeries>& all,
   return it == all.end() ? nullptr : &*it;
 }
 
-/// The row's Richardson limit where its order is trusted (trusted_estimate).
-std::optional<double> richardson(const ResultsIndex& index, const schema::RowVerdict& r) {
-  const TrustedEstimate t = trusted_estimate(index, r);
+/// The row's Richardson limit where it can be trusted (trusted_estimate).
+std::optional<double> richardson(const schema::RowVerdict& r) {
+  const TrustedEstimate t = trusted_estimate(r);
   return t.estimate ? t.estimate->richardson : std::nullopt;
 }
 
@@ -112,7 +112,7 @@ std::string series_table(const ResultsIndex& index, const SeriesRefs& series) {
     for (const SeriesPoint& p : s->points) {
       const schema::RowVerdict& row = *p.row;
       const auto exact = index.exact_of(row);
-      const auto lim = richardson(index, row);
+      const auto lim = richardson(row);
       const auto with_error = [&](std::optional<double> v) {
         return v ? fmt::format("{} ({})", format_value(*v),
                                format_error_resolved(percent_of(v, exact)))
@@ -122,7 +122,7 @@ std::string series_table(const ResultsIndex& index, const SeriesRefs& series) {
                  std::string(schema::to_string(s->spec.element)), s->option_label(),
                  format_parameter(p.parameter), with_error(row.values[0]),
                  with_error(row.values[1]), with_error(row.values[2]),
-                 lim ? with_error(lim) : trusted_estimate(index, row).note,
+                 lim ? with_error(lim) : trusted_estimate(row).note,
                  format_error_resolved(percent_of(p.value, lim)),
                  previous ? fmt::format("{} (from {})",
                                         format_error_resolved(percent_of(p.value, previous->value)),
@@ -142,7 +142,7 @@ std::vector<ErrorSplit> error_splits(const ResultsIndex& index, const SeriesRefs
       continue;
     const SeriesPoint& widest = s->points.back();
     const auto exact = index.exact_of(*study->row);
-    const auto lim1 = richardson(index, *study->row), lim_max = richardson(index, *widest.row);
+    const auto lim1 = richardson(*study->row), lim_max = richardson(*widest.row);
     const auto f1 = study->value;
     if (!exact || !lim1 || !lim_max || !f1)
       continue;

@@ -8,9 +8,11 @@
 #include <gsl/gsl_statistics_double.h>
 
 #include "grading/accuracy.hpp"
+#include "reports/facts/row_facts.hpp"
 #include "reports/facts/trusted_estimate.hpp"
 #include "reports/findings/variant_rows.hpp"
 #include "reports/render/template_text.hpp"
+#include "reports/results/results_csv.hpp"
 #include "reports/tables/markdown_table.hpp"
 
 namespace cs::reports {
@@ -74,8 +76,13 @@ std::string claim_cell(bool applies, VfJudgement j) {
 
 void add_estimate(EstimateSummary& s, std::vector<double>& gci, const ResultsIndex& index,
                   const RowVerdict& row) {
+  const RowFacts f = facts_of_row(index, row);
+  if (!f.fine_converged || !f.credible) {
+    ++s.not_credible;  // its F value is no evidence of how the option converges
+    return;
+  }
   ++s.rows;
-  const TrustedEstimate t = trusted_estimate(index, row);
+  const TrustedEstimate t = trusted_estimate(row);
   if (!t.estimate)
     return;
   ++s.asymptotic;
@@ -134,7 +141,7 @@ std::string percent(int part, int whole) {
 std::string summary_table(const std::vector<EstimateSummary>& summaries) {
   constexpr Align r = Align::right;
   MarkdownTable t(
-      {"Problem", "Rows", "Asymptotic", "Exact value inside the GCI band", "Median GCI"},
+      {"Problem", "Rows", "With an estimate", "Exact value inside the GCI band", "Median GCI"},
       {Align::left, r, r, r, r});
   for (const auto& s : summaries)
     t.add_row({std::string(schema::label(s.problem)), std::to_string(s.rows),
@@ -186,7 +193,7 @@ std::string csv_number(const std::optional<double>& v) {
 }
 
 std::string csv_line(const ResultsIndex& index, const RowVerdict& row) {
-  const TrustedEstimate t = trusted_estimate(index, row);
+  const TrustedEstimate t = trusted_estimate(row);
   const schema::ErrorEstimate e = t.estimate ? *t.estimate : schema::ErrorEstimate{.note = t.note};
   const auto exact = index.exact_of(row);
   std::optional<double> limit_error;
@@ -194,21 +201,23 @@ std::string csv_line(const ResultsIndex& index, const RowVerdict& row) {
     limit_error = grading::error_percent(*e.richardson, *exact);
   const auto bounded = exact && t.estimate ? gci_bounds_error(row, *exact) : std::nullopt;
   std::string out = fmt::format(
-      "{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}", row.id, csv_number(row.values[0]),
+      "{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}", csv_field(row.id), csv_number(row.values[0]),
       csv_number(row.values[1]), csv_number(row.values[2]), csv_number(row.errors[2]),
-      at_round_off(row) ? 1 : 0, e.asymptotic ? 1 : 0, e.note, csv_number(e.observed_order),
-      csv_number(e.richardson), csv_number(limit_error), csv_number(e.gci_percent),
-      bounded ? (*bounded ? "1" : "0") : "", csv_number(exact), variant_of(row.spec));
+      at_round_off(row) ? 1 : 0, e.asymptotic ? 1 : 0, csv_field(e.note),
+      csv_number(e.observed_order), csv_number(e.richardson), csv_number(limit_error),
+      csv_number(e.gci_percent), bounded ? (*bounded ? "1" : "0") : "", csv_number(exact),
+      csv_field(variant_of(row.spec)));
   if (!row.refinement)
     return out + ",,,,,\n";
   const MeshState vf = index.state(row, schema::MeshLevel::VF);
   const double on_m = index.read_resolution_percent(row, schema::MeshLevel::M);
   const auto trend = trend_of(row.errors[1], row.errors[2], row.refinement->error, on_m);
   constexpr const char* kState[] = {"missing", "failed", "not_converged", "converged"};
-  return out + fmt::format(",{},{},{},{},{}\n", csv_number(row.refinement->value),
-                           csv_number(row.refinement->error), kState[static_cast<int>(vf)],
-                           trend ? schema::to_string(trend->trend) : "",
-                           claim_cell(refinement_claim_applies(row), vf_judgement(index, row)));
+  return out + fmt::format(
+                   ",{},{},{},{},{}\n", csv_number(row.refinement->value),
+                   csv_number(row.refinement->error), kState[static_cast<int>(vf)],
+                   trend ? schema::to_string(trend->trend) : "",
+                   csv_field(claim_cell(refinement_claim_applies(row), vf_judgement(index, row))));
 }
 
 }  // namespace
@@ -242,7 +251,7 @@ RefinementFacts refinement_facts(const ResultsIndex& index) {
     }
     if (!gci.empty())
       s.median_gci = gsl_stats_median(gci.data(), 1, gci.size());
-    if (s.rows > 0)
+    if (s.rows + s.not_credible > 0)
       f.problems.push_back(s);
   }
   for (const RowVerdict* row : all_rows(index)) {
@@ -271,9 +280,10 @@ std::string refinement_section(const ResultsIndex& index) {
   const RefinementFacts f = refinement_facts(index);
   if (f.problems.empty() && f.round_off == 0)
     return {};
-  int rows = 0, asymptotic = 0, bounded = 0, with_exact = 0;
+  int rows = 0, asymptotic = 0, bounded = 0, with_exact = 0, not_credible = 0;
   for (const auto& s : f.problems) {
     rows += s.rows;
+    not_credible += s.not_credible;
     asymptotic += s.asymptotic;
     bounded += s.bounded;
     with_exact += s.with_exact;
@@ -283,6 +293,7 @@ std::string refinement_section(const ResultsIndex& index) {
                [](const VfRow& v) { return v.claim_applies; });
   const auto n = [](int v) { return std::to_string(v); };
   Fields d{{"round_off", n(f.round_off)},
+           {"not_credible", n(not_credible)},
            {"rows", n(rows)},
            {"asymptotic", n(asymptotic)},
            {"bounded", n(bounded)},

@@ -27,9 +27,10 @@ bool at_round_off(const schema::RowVerdict& row);
 /// The estimates of one problem's rows (round-off rows left out).
 struct EstimateSummary {
   schema::ProblemId problem{};
-  int rows = 0;        ///< rows with C, M and F values
-  int asymptotic = 0;  ///< of them, with an estimate (differences of one sign that shrink)
-  int bounded = 0;     ///< of the asymptotic ones with an exact value, GCI band holds it
+  int rows = 0;          ///< rows with C, M and F values whose F case converged and is credible
+  int not_credible = 0;  ///< rows left out: F not converged or not credible (interface checks)
+  int asymptotic = 0;    ///< of them, with an estimate (differences of one sign that shrink)
+  int bounded = 0;       ///< of the asymptotic ones with an exact value, GCI band holds it
   int with_exact = 0;
   std::optional<double> median_gci;  ///< percent, over the asymptotic rows
 };

@@ -12,19 +12,6 @@
 namespace cs::reports {
 namespace {
 
-std::string csv_field(const std::string& text) {
-  if (text.find_first_of(",\"\n\r") == std::string::npos)
-    return text;
-  std::string out = "\"";
-  for (char c : text) {
-    if (c == '"')
-      out += "\"\"";
-    else
-      out += c;
-  }
-  return out + "\"";
-}
-
 std::string number(const std::optional<double>& v) {
   return v ? fmt::format("{:.10g}", *v) : std::string();
 }
@@ -116,6 +103,19 @@ const std::vector<std::string>& results_csv_columns() {
 }
 
 }  // namespace
+
+std::string csv_field(const std::string& text) {
+  if (text.find_first_of(",\"\n\r") == std::string::npos)
+    return text;
+  std::string out = "\"";
+  for (char c : text) {
+    if (c == '"')
+      out += "\"\"";
+    else
+      out += c;
+  }
+  return out + "\"";
+}
 
 std::string results_csv(const ResultsIndex& index, const schema::StudyReference& study) {
   const RowsByCase rows = rows_by_case(index);

@@ -14,6 +14,9 @@
 
 namespace cs::reports {
 
+/// One CSV field, quoted as RFC 4180 asks when it holds a comma, a quote or a line break.
+std::string csv_field(const std::string& text);
+
 /// The whole CSV text (RFC 4180 quoting; numbers with 10 significant digits; empty = none).
 std::string results_csv(const ResultsIndex& index, const schema::StudyReference& study);
 

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <numeric>
+#include <sstream>
 
 #include <gtest/gtest.h>
 
@@ -49,11 +50,12 @@ TEST(RefinementSection, StudyClaimCountsOnlyConvergedVfCases) {
   EXPECT_FALSE(refinement_claim_applies(row({14.0, 13.0, 12.0}, false, 3.0)));  // u on F
 }
 
-// Requirement: an estimate is used only where the order rule trusts an order of the errors: a
-// Richardson estimate from +0.35/+0.11/-0.10 % (like S(1) AL ns at extent 8: differences of one
-// sign that shrink, order 0.19: a limit at -1.6 % from values within 0.35 % of the exact one) is
-// refused with the rule's reason; 4/1/0.25 % keeps its estimate.
-TEST(RefinementSection, EstimateOnlyWhereAnOrderIsTrusted) {
+// Requirement: an estimate is used only where it can be trusted: +0.35/+0.11/-0.10 % (like S(1)
+// AL ns at extent 8: differences of one sign that shrink, but at order 0.19, so the limit lies
+// 6.4 times the last change beyond F) and +300/+150/+8 % (C and M do not resolve the quantity)
+// are refused with the reason; 4/1/0.25 % keeps its estimate, and so does a sequence converging
+// to a limit other than the exact value (a finite block's bias), whatever its errors' orders.
+TEST(RefinementSection, EstimateOnlyWhereItCanBeTrusted) {
   const auto estimated = [](std::array<double, 3> errors) {
     RowVerdict r = row(errors, false, std::nullopt);
     for (std::size_t m = 0; m < 3; ++m)
@@ -61,17 +63,21 @@ TEST(RefinementSection, EstimateOnlyWhereAnOrderIsTrusted) {
     r.estimate = grading::error_estimate(*r.values[0], *r.values[1], *r.values[2]);
     return r;
   };
-  const schema::ResultsDocument doc;
-  const ResultsIndex index(doc);
-  const RowVerdict sign = estimated({0.35, 0.11, -0.10});
-  ASSERT_TRUE(sign.estimate->asymptotic);  // by the differences alone
-  const TrustedEstimate refused = trusted_estimate(index, sign);
+  const RowVerdict slow = estimated({0.35, 0.11, -0.10});
+  ASSERT_TRUE(slow.estimate->asymptotic);  // by the differences alone
+  const TrustedEstimate refused = trusted_estimate(slow);
   EXPECT_EQ(refused.estimate, nullptr);
-  EXPECT_EQ(refused.note, "changes sign");
-  const RowVerdict clean = estimated({4.0, 1.0, 0.25});
-  const TrustedEstimate kept = trusted_estimate(index, clean);
+  EXPECT_EQ(refused.note, "order 0.19: the differences barely shrink");
+  const RowVerdict unresolved = estimated({300.0, 150.0, 8.0});
+  ASSERT_TRUE(unresolved.estimate->asymptotic);
+  EXPECT_EQ(trusted_estimate(unresolved).note, "pre-asymptotic (300 % on C or M: not resolved)");
+  const TrustedEstimate kept = trusted_estimate(estimated({4.0, 1.0, 0.25}));
   ASSERT_NE(kept.estimate, nullptr);
   EXPECT_NEAR(*kept.estimate->richardson, 10.0, 1e-9);  // order 2: the exact value
+  // Values 10.5, 10.3, 10.2 converge (order 1) to 10.1, 1 % above the exact 10: errors 5, 3, 2 %.
+  const TrustedEstimate biased = trusted_estimate(estimated({5.0, 3.0, 2.0}));
+  ASSERT_NE(biased.estimate, nullptr);
+  EXPECT_NEAR(*biased.estimate->richardson, 10.1, 1e-9);
 }
 
 // Requirement: the GCI band holds the exact value when |f_F - exact| / |f_F| <= GCI.
@@ -175,6 +181,30 @@ TEST(RefinementSection, MarksVfValuesOfCasesThatDidNotConverge) {
   EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 5);  // header and 4 rows
   EXPECT_NE(csv.find(",1.85,85,not_converged,"), std::string::npos) << csv;
   EXPECT_NE(csv.find("H_p/Q4/PM/ns/sigma_c,1,1,1,0,1,"), std::string::npos) << csv;
+}
+
+// Requirement: estimates.csv quotes a field that holds a comma (a note "pre-asymptotic (p1 =
+// 5.47, p2 = 3.88 ...)"), so every line has the header's fields.
+TEST(RefinementSection, EstimatesCsvQuotesItsFields) {
+  schema::ResultsDocument doc = vf_document();
+  doc.rows.front().estimate = schema::ErrorEstimate{false, {}, {}, {}, "one, two"};
+  const ResultsIndex index(doc);
+  const std::string csv = estimates_csv(index);
+  EXPECT_NE(csv.find(",\"one, two\","), std::string::npos) << csv;
+  std::istringstream lines(csv);
+  std::string header;
+  std::getline(lines, header);
+  const auto fields = [](const std::string& line) {  // commas outside quotes, plus one
+    bool quoted = false;
+    int n = 1;
+    for (const char c : line) {
+      quoted = c == '"' ? !quoted : quoted;
+      n += c == ',' && !quoted ? 1 : 0;
+    }
+    return n;
+  };
+  for (std::string line; std::getline(lines, line);)
+    EXPECT_EQ(fields(line), fields(header)) << line;
 }
 
 // Requirement: a results file without VF cases says so in one line; one without C, M, F rows
