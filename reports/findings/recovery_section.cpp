@@ -12,6 +12,7 @@
 #include "grading/convergence.hpp"
 #include "reports/facts/row_facts.hpp"
 #include "reports/render/template_text.hpp"
+#include "reports/tables/grade_tables.hpp"
 #include "reports/tables/markdown_table.hpp"
 
 namespace cs::reports {
@@ -92,8 +93,8 @@ std::string pairs_table(const ResultsIndex& index, const std::vector<RecoveryPai
         name,
         std::string(schema::to_string(p.spr->spec.element)),
         Option{p.spr->spec.algorithm, p.spr->spec.contact}.label(),
-        error_cell(*p.spr, p.mesh),
-        error_cell(*p.extrapolated, p.mesh),
+        error_cell(*p.spr, p.mesh) + evidence_marks(facts_of_row(index, *p.spr)),
+        error_cell(*p.extrapolated, p.mesh) + evidence_marks(facts_of_row(index, *p.extrapolated)),
         p.pressure_error ? format_percent(*p.pressure_error) : kMissing,
         converging_text(p.spr->converging) + " / " + converging_text(p.extrapolated->converging)};
   };
@@ -165,6 +166,7 @@ std::string recovery_section(const ResultsIndex& index) {
   std::erase_if(differing,
                 [](const RecoveryPair& p) { return *p.spr->grade == *p.extrapolated->grade; });
   d.set("n_differing", std::to_string(differing.size()));
+  d.set("marks_legend", evidence_marks_legend());
   d.set("has_differing", !differing.empty());
   d.set("differing", pairs_table(index, differing));
   return render_template(templates::recovery_section, d);
