@@ -483,13 +483,17 @@ ClaimEvidence divergence(const std::vector<DivergenceFacts>& singular) {
   std::map<Option, std::pair<int, int>> by_option;  // rows failing Eq. 47, rows
   std::set<Algorithm> run;
   for (const auto& d : singular) {
+    if (!d.evidence()) {  // F not converged or not credible (an MPC edge in tension)
+      ++c.n_excluded;
+      continue;
+    }
     ++c.n;
+    run.insert(d.option.algorithm);
     c.n_hold += d.eq47 ? 1 : 0;
     c.n2_hold += d.strict ? 1 : 0;
     auto& [fails, of] = by_option[d.option];
     fails += d.eq47 ? 0 : 1;
     ++of;
-    run.insert(d.option.algorithm);
   }
   for (const auto& [option, counts] : by_option) {  // every exception, by option
     if (counts.first > 0)

@@ -25,8 +25,11 @@ std::optional<double> measure_of(const schema::InterfaceChecks& c, const std::st
   return std::nullopt;
 }
 
-void add_credibility(const ResultsIndex& index, RowFacts& f) {
-  const schema::CaseResult* fine = index.case_of(*f.row, MeshLevel::F);
+/// Whether a row's F case converged and passes the interface checks, and the checks it fails:
+/// into the facts of a row, nonsingular or singular alike.
+template <typename Facts>
+void add_credibility(const ResultsIndex& index, const schema::RowVerdict& row, Facts& f) {
+  const schema::CaseResult* fine = index.case_of(row, MeshLevel::F);
   f.fine_converged = fine && fine->status == schema::CaseStatus::converged;
   if (!fine || !fine->interface)
     return;
@@ -88,8 +91,7 @@ DivergenceFacts divergence_of_row(const ResultsIndex& index, const schema::RowVe
   const schema::DivergenceVerdict strict = grading::divergence_verdict(*v[0], *v[1], *v[2]);
   d.strict = strict.diverges;
   d.exponent = strict.exponent;
-  const schema::CaseResult* fine = index.case_of(r, MeshLevel::F);
-  d.fine_converged = fine && fine->status == schema::CaseStatus::converged;
+  add_credibility(index, r, d);
   return d;
 }
 
@@ -161,7 +163,7 @@ RowFacts facts_of_row(const ResultsIndex& index, const schema::RowVerdict& r) {
   f.study_c = r.converging.value_or(false);
   f.read_resolution_on_f = index.read_resolution_percent(r, MeshLevel::F);
   add_trend(index, f);
-  add_credibility(index, f);
+  add_credibility(index, *f.row, f);
   return f;
 }
 

@@ -76,6 +76,10 @@ struct DivergenceFacts {
   bool strict = false;  ///< monotone growth with a square-root-like exponent
   std::optional<double> exponent;
   bool fine_converged = false;
+  bool credible = true;                ///< the F case passes the interface checks
+  std::vector<CheckFailure> failures;  ///< the F case's failed interface checks
+  /// May this row support or refute a statement? Converged and credible on F.
+  bool evidence() const { return fine_converged && credible; }
 };
 
 /// The rows the verdicts are made of: patch-recovered stresses of the code's displacements (for

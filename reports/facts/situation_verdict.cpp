@@ -178,6 +178,9 @@ std::vector<OptionCell> make_cells(const ResultsIndex& index,
       c.n_eq47 += d.eq47 ? 1 : 0;
       c.n_strict += d.strict ? 1 : 0;
       c.n_not_converged += d.fine_converged ? 0 : 1;
+      c.n_not_credible += d.credible ? 0 : 1;
+      for (const auto& failure : d.failures)
+        c.failed_checks.insert(failure.check);
     }
   }
   add_failed_rows(index, problems, rows, singular, cell_of);
@@ -224,9 +227,9 @@ bool fails_on_its_own(const OptionCell& c, const std::vector<std::string>& commo
 void rank(SituationVerdict& v) {
   v.common_failures = common_failures(v);
   for (const auto& c : v.cells) {
-    const bool fails = v.singular
-                           ? c.n_eq47 < static_cast<int>(c.singular_rows.size()) || c.n_failed > 0
-                           : fails_on_its_own(c, v.common_failures);
+    const bool fails = v.singular ? c.n_eq47 < static_cast<int>(c.singular_rows.size()) ||
+                                        c.n_failed > 0 || c.n_not_credible > 0
+                                  : fails_on_its_own(c, v.common_failures);
     if (fails)
       v.avoid.push_back(&c);
     if (!c.evidence || v.singular || !c.worst_grade)
@@ -238,7 +241,7 @@ void rank(SituationVerdict& v) {
   for (const auto& c : v.cells) {
     if (v.singular) {
       if (c.n_strict == static_cast<int>(c.singular_rows.size()) && c.n_not_converged == 0 &&
-          c.n_failed == 0 && c.n_missing == 0)
+          c.n_failed == 0 && c.n_missing == 0 && c.n_not_credible == 0)
         v.best.push_back(&c);
       continue;
     }

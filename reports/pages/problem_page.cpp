@@ -25,16 +25,19 @@ std::string mesh_cell(const std::optional<double>& value, const std::optional<do
                : format_value(*value);
 }
 
-std::string credible_cell(const RowFacts& f) {
+/// "yes", "F not converged" or "no: force balance 19.2 tensile pressure 167" (with "; luck of
+/// one mesh" where `luck`): a row's facts, nonsingular or singular.
+template <typename Facts>
+std::string credible_cell(const Facts& f, bool luck) {
   if (!f.fine_converged)
     return "F not converged";
   if (f.credible)
-    return f.luck ? "yes; luck of one mesh" : "yes";
+    return luck ? "yes; luck of one mesh" : "yes";
   std::string out = "no:";
   for (const auto& failure : f.failures)
     out += fmt::format(" {}{}", failure.check,
                        failure.measure ? fmt::format(" {:.3g}", *failure.measure) : "");
-  return out + (f.luck ? "; luck of one mesh" : "");
+  return out + (luck ? "; luck of one mesh" : "");
 }
 
 /// The option label of a row, "AL, PM ss" when its twin coincides (the twin is then skipped).
@@ -73,7 +76,7 @@ TemplateData row_data(const RowFacts& f, const std::string& label, bool has_vf) 
   d.set("study_c", f.study_c ? "c" : "");
   d.set("trend", trend_word(f));
   d.set("order", f.order ? fmt::format("{:.2f}", *f.order) : f.order_note);
-  d.set("credible", credible_cell(f));
+  d.set("credible", credible_cell(f, f.luck));
   return d;
 }
 
@@ -133,15 +136,16 @@ TemplateData quantity_tables(const ResultsIndex& index, const schema::ProblemRec
 
 std::string divergence_table(const std::vector<DivergenceFacts>& singular, schema::ProblemId p) {
   constexpr Align r = Align::right, c = Align::center;
-  MarkdownTable t({"Option", "C", "M", "F", "Eq. 47", "Strict", "Exponent"},
-                  {Align::left, r, r, r, c, c, c});
+  MarkdownTable t({"Option", "C", "M", "F", "Eq. 47", "Strict", "Exponent", "Credible"},
+                  {Align::left, r, r, r, c, c, c, c});
   for (const auto& d : singular) {
     if (d.problem == p)
       t.add_row({fmt::format("{} {}", schema::to_string(d.element), d.option.label()),
                  format_value(d.row->values[0]), format_value(d.row->values[1]),
                  format_value(d.row->values[2]), d.eq47 ? "holds" : "fails",
                  d.strict ? "diverges" : "no",
-                 d.exponent ? fmt::format("{:.2f}", *d.exponent) : std::string(kMissing)});
+                 d.exponent ? fmt::format("{:.2f}", *d.exponent) : std::string(kMissing),
+                 credible_cell(d, false)});
   }
   return t.render();
 }

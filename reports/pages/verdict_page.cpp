@@ -29,11 +29,12 @@ std::string format_points(double points) {
 
 std::string singular_cell(const OptionCell& c) {
   const int n = static_cast<int>(c.singular_rows.size());
+  const std::string mark = c.n_not_credible > 0 ? " ✗" : "";
   if (c.n_strict == n)
-    return "diverges";
+    return "diverges" + mark;
   if (c.n_eq47 == n)
-    return "Eq. 47 only";
-  return fmt::format("fails Eq. 47 ({} of {})", n - c.n_eq47, n);
+    return "Eq. 47 only" + mark;
+  return fmt::format("fails Eq. 47 ({} of {}){}", n - c.n_eq47, n, mark);
 }
 
 /// One matrix per element: rows family x discretization, columns the situations.
@@ -99,11 +100,15 @@ std::string failure_evidence(const std::vector<const OptionCell*>& cells,
     if (failed_reason.empty())
       failed_reason = c->failed_reason;
     rows += static_cast<int>(c->rows.size() + c->singular_rows.size()) + c->n_failed;
-    for (const RowFacts* f : c->rows) {
-      for (const auto& failure : f->failures)
+    const auto add = [&](const std::vector<CheckFailure>& failures) {
+      for (const auto& failure : failures)
         if (shown(failure.check))
           worst[failure.check] = std::max(worst[failure.check], failure.measure.value_or(0.0));
-    }
+    };
+    for (const RowFacts* f : c->rows)
+      add(f->failures);
+    for (const DivergenceFacts* d : c->singular_rows)
+      add(d->failures);
     if (c->worst_error && std::abs(*c->worst_error) > std::abs(worst_error))
       worst_error = *c->worst_error;
     eq47_failures += static_cast<int>(c->singular_rows.size()) - c->n_eq47;

@@ -206,11 +206,18 @@ TEST(ClaimsLedger, HoldsTheStudysClaimsWithVerdicts) {
 // Requirement: the divergence claim counts Eq. 47 and the strict verdict over every complete
 // flat-punch row, recomputed from the raw values.
 TEST(ClaimsLedger, DivergenceCountsEq47OverEveryFlatPunchRow) {
-  int n = 0, eq47 = 0, strict = 0;
+  int n = 0, eq47 = 0, strict = 0, excluded = 0;
   for (const auto& r : battery().doc.rows) {
     if (r.spec.problem != schema::ProblemId::F_p || !r.is_baseline() || !r.values[0] ||
         !r.values[1] || !r.values[2])
       continue;
+    // Only rows that are evidence: the F case converged and passes the interface checks.
+    const schema::CaseResult* fine = battery().index.case_of(r, schema::MeshLevel::F);
+    if (fine == nullptr || fine->status != schema::CaseStatus::converged ||
+        (fine->interface && !grading::credibility(*fine->interface).credible)) {
+      ++excluded;
+      continue;
+    }
     ++n;
     eq47 += grading::eq47_diverging(*r.values[0], *r.values[1], *r.values[2]) ? 1 : 0;
     strict += grading::divergence_verdict(*r.values[0], *r.values[1], *r.values[2]).diverges;
@@ -218,11 +225,13 @@ TEST(ClaimsLedger, DivergenceCountsEq47OverEveryFlatPunchRow) {
   const ClaimEvidence& c = claim("divergence");
   EXPECT_GT(n, 0);
   EXPECT_EQ(c.n, n);
+  EXPECT_EQ(c.n_excluded, excluded);
   EXPECT_EQ(c.n_hold, eq47);
   EXPECT_EQ(c.n2_hold, strict);
-  EXPECT_EQ(c.verdict,
-            eq47 == n ? ClaimVerdict::reproduced
-                      : (eq47 >= 0.75 * n ? ClaimVerdict::refined : ClaimVerdict::not_reproduced));
+  // "For all options": reproduced only when every algorithm has a row that is evidence.
+  EXPECT_EQ(c.verdict, eq47 < 0.75 * n                  ? ClaimVerdict::not_reproduced
+                       : eq47 == n && c.not_run.empty() ? ClaimVerdict::reproduced
+                                                        : ClaimVerdict::refined);
   const std::string md = claims_ledger({c});
   EXPECT_NE(md.find(std::to_string(eq47) + " of " + std::to_string(n) + " flat-punch rows"),
             std::string::npos);
@@ -380,23 +389,42 @@ TEST(ClaimsLedger, DivergenceNamesEveryExceptionAndTheOptionsNotRun) {
   for (const Algorithm a : {Algorithm::AL, Algorithm::PM, Algorithm::LMP}) {
     DivergenceFacts d;
     d.option = {a, schema::ContactKind::ss};
-    d.eq47 = d.strict = true;
+    d.eq47 = d.strict = d.fine_converged = true;
     singular.push_back(d);
   }
+  // An MPC row that pulls (not credible) is no evidence: MPC counts as not judged.
+  DivergenceFacts pulls;
+  pulls.option = {Algorithm::MPC, schema::ContactKind::ss};
+  pulls.eq47 = pulls.fine_converged = true;
+  pulls.credible = false;
+  singular.push_back(pulls);
   const auto claims = study_claims(battery().index, {}, singular);
   const ClaimEvidence& c = *std::find_if(claims.begin(), claims.end(),
                                          [](const auto& e) { return e.key == "divergence"; });
   EXPECT_EQ(c.n_hold, 3);
+  EXPECT_EQ(c.n_excluded, 1);
   EXPECT_EQ(c.not_run, "PLM, MPC");
   EXPECT_EQ(c.verdict, ClaimVerdict::refined);
-  // The battery's flat punch: all five run; every failing option named with its count.
+  // The battery's flat punch: every failing option named with its count; the options named
+  // not judged are those with no row that is evidence.
   const ClaimEvidence& all = claim("divergence");
-  EXPECT_TRUE(all.not_run.empty());
+  std::set<Algorithm> judged;
+  for (const auto& d : divergence_facts(battery().index)) {
+    if (d.evidence())
+      judged.insert(d.option.algorithm);
+  }
+  EXPECT_EQ(all.not_run.empty(), judged.size() == schema::values<Algorithm>().size())
+      << all.not_run;
   int named = 0;
   for (std::size_t at = all.examples.find(" rows"); at != std::string::npos;
        at = all.examples.find(" rows", at + 1))
     ++named;
-  EXPECT_GT(named, 0);
+  std::set<Option> failing;
+  for (const auto& d : divergence_facts(battery().index)) {
+    if (d.evidence() && !d.eq47)
+      failing.insert(d.option);
+  }
+  EXPECT_EQ(named, static_cast<int>(failing.size())) << all.examples;
   EXPECT_EQ(all.examples.find("AL "), std::string::npos) << all.examples;
 }
 
@@ -626,8 +654,27 @@ TEST(VerdictPage, AFlatPunchOptionWhoseFineCaseFailedIsNotJudged) {
   const auto situations = situation_verdicts(data.index, rows, singular);
   const std::string md = verdict_page(data.index, situations);
   EXPECT_NE(md.find("Not judged, an F case failed: AL ss Q4."), std::string::npos) << md;
-  EXPECT_EQ(md.find("Eq. 47 fails with AL"), std::string::npos) << md;
-  EXPECT_NE(md.find("Eq. 47 fails with MPC ss Q4"), std::string::npos) << md;
+  EXPECT_EQ(md.find("Avoid AL ss Q4: Eq. 47 fails"), std::string::npos) << md;
+  EXPECT_NE(md.find("Avoid MPC ss Q4: Eq. 47 fails"), std::string::npos) << md;
+}
+
+// Requirement: a flat-punch option whose F case pulls (tensile pressure) is no evidence even
+// where Eq. 47 holds: its cell is marked ✗, it is to be avoided, never the best, and the
+// failure line quotes the measure.
+TEST(VerdictPage, AFlatPunchOptionThatPullsIsNoEvidence) {
+  auto doc = testing::sample_json();
+  for (auto& c : doc["cases"]) {
+    if (c["id"] == "F_p/F/Q4/AL/ss")
+      c["interface"]["max_tensile_over_p"] = 5.0;
+  }
+  const testing::Loaded data(doc);
+  const std::vector<RowFacts> rows = row_facts(data.index);  // the cells point into them
+  const std::vector<DivergenceFacts> singular = divergence_facts(data.index);
+  const auto situations = situation_verdicts(data.index, rows, singular);
+  const std::string md = verdict_page(data.index, situations);
+  EXPECT_NE(md.find("Avoid AL ss Q4"), std::string::npos) << md;
+  EXPECT_NE(md.find("tensile pressure up to 5"), std::string::npos) << md;
+  EXPECT_NE(md.find(" ✗ |"), std::string::npos) << md;
 }
 
 // Requirement: a check that every option fails alike (e.g. pressure a few elements beyond the
