@@ -14,6 +14,7 @@
 #include "reports/figures/sweep_figure.hpp"
 #include "reports/findings/extent_section.hpp"
 #include "reports/render/template_text.hpp"
+#include "reports/tables/section_support.hpp"
 
 namespace cs::reports {
 namespace {
@@ -271,9 +272,20 @@ TemplateData fkn_convergence(const ResultsIndex& index, const SeriesRefs& series
   }
   if (complete.empty())
     return TemplateData(false);
+  int not_credible = 0, cases = 0;  // the F cases of the rows at the converging values
+  for (double v : converging) {
+    for (const ParameterSeries* s : complete) {
+      if (const SeriesPoint* p = s->at(v)) {
+        ++cases;
+        not_credible += credible(*p) ? 0 : 1;
+      }
+    }
+  }
   TemplateData d("n", std::to_string(complete.size()));
   d.set("window", converging.empty() ? TemplateData(false)
                                      : TemplateData(parameter_window(converging, values)));
+  d.set("not_credible", count_or_false(not_credible));
+  d.set("cases", std::to_string(cases));
   return d;
 }
 

@@ -173,6 +173,20 @@ TEST(SweepSection, FknConvergenceCountsItsRows) {
   EXPECT_NE(section(9.0).find("the 1 run on C, M and F do not all converge (c) at any swept FKN"),
             std::string::npos)
       << section(9.0);
+  // Convergence of cases that fail an interface check is said to be no evidence.
+  auto doc = document(row_at(1, 1.0), {{"fkn", {1, 100}}});
+  std::ranges::copy(row_at(100, 9.0), std::back_inserter(doc.cases));
+  for (auto& c : doc.cases) {
+    if (c.spec.overrides.at("fkn") == 1 && c.spec.mesh == MeshLevel::F)
+      c.interface.emplace().max_tensile_over_p = 5.0;
+  }
+  doc.rows = suites::make_row_verdicts(doc.cases);
+  const ResultsIndex index(doc);
+  const std::string pulls = sweep_section(index, testing::study(), {});
+  EXPECT_NE(pulls.find("all converge (c) at FKN = 1, where 1 of their 1 fine-mesh cases fail an "
+                       "interface check"),
+            std::string::npos)
+      << pulls;
 }
 
 // Requirement: a swept case that fails an interface check is marked ✗ in the table and the
