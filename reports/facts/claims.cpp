@@ -155,6 +155,7 @@ ClaimEvidence ss_equals_ns(const std::vector<RowFacts>& rows) {
   ClaimEvidence c{.key = "ss_equals_ns"};
   const auto index = by_key(rows);
   double largest_lm = 0.0, largest_mpc = 0.0;
+  std::set<Algorithm> run;  // of the first part's algorithms
   for (const auto& f : rows) {
     if (f.option.contact != ContactKind::ss ||
         family_of(f.option.algorithm) == OptionFamily::penalty)
@@ -163,6 +164,7 @@ ClaimEvidence ss_equals_ns(const std::vector<RowFacts>& rows) {
         index.find({f.problem, f.quantity, f.element, f.option.algorithm, ContactKind::ns});
     if (twin == index.end())
       continue;
+    c.part2_run = c.part2_run || f.option.algorithm == Algorithm::MPC;
     if (!f.accuracy_evidence() || !twin->second->accuracy_evidence()) {
       ++c.n_excluded;
       continue;
@@ -172,6 +174,7 @@ ClaimEvidence ss_equals_ns(const std::vector<RowFacts>& rows) {
     const std::string example =
         fmt::format("{} vs ns {}", row_name(f), format_error_resolved(e_ns));
     if (f.option.algorithm != Algorithm::MPC) {  // LMP, PLM: the first part
+      run.insert(f.option.algorithm);
       ++c.n;
       largest_lm = std::max(largest_lm, std::abs(*f.errors[2] - e_ns));
       c.n_hold += same ? 1 : 0;
@@ -187,6 +190,8 @@ ClaimEvidence ss_equals_ns(const std::vector<RowFacts>& rows) {
         add_example(c.examples2, example);
     }
   }
+  for (const Algorithm a : run)
+    c.members += (c.members.empty() ? "" : ", ") + std::string(schema::to_string(a));
   c.figure = largest_lm;
   c.figure2 = largest_mpc;
   c.verdict1 = verdict_of(c.n_hold, c.n);

@@ -53,6 +53,10 @@ struct ClaimEvidence {
   int n_order_pairs = 0, n_later_faster = 0;
   /// Claim 11 ("all options"): the study's algorithms with no row in the results.
   std::string not_run{};
+  /// Claim 3: the algorithms of its first part that were run ("LMP", "LMP, PLM"), and whether
+  /// any MPC pair (its second part) was, evidence or not.
+  std::string members{};
+  bool part2_run = false;
   double order_bias_z = 0.0;
 };
 

@@ -52,18 +52,26 @@ std::string options_table(const ResultsIndex& index, const schema::ProblemRecord
   return rendered_if_any(table);
 }
 
-/// The largest |p_mean error| on F over the LM options (LMP, PLM) with ss and mortar.
-std::optional<double> lm_mean_error(const ResultsIndex& index, schema::ProblemId id) {
+/// The largest |p_mean error| on F over the LM options (LMP, PLM) with ss and mortar, and the
+/// options that were run ("LMP ss, LMP mortar").
+std::optional<double> lm_mean_error(const ResultsIndex& index, schema::ProblemId id,
+                                    std::string& run) {
   std::optional<double> out;
-  for (const auto element : schema::values<schema::Element>()) {
-    for (const auto a : {schema::Algorithm::LMP, schema::Algorithm::PLM}) {
-      for (const auto c : {schema::ContactKind::ss, schema::ContactKind::mortar}) {
+  std::vector<std::string> labels;
+  for (const auto a : {schema::Algorithm::LMP, schema::Algorithm::PLM}) {
+    for (const auto c : {schema::ContactKind::ss, schema::ContactKind::mortar}) {
+      bool any = false;
+      for (const auto element : schema::values<schema::Element>()) {
         const auto e = fine_error(index.row(id, Quantity::p_mean, element, {a, c}));
+        any = any || e.has_value();
         if (e && (!out || std::abs(*e) > std::abs(*out)))
           out = *e;
       }
+      if (any)
+        labels.push_back(Option{a, c}.label());
     }
   }
+  run = join_words(labels, ", ");
   return out;
 }
 
@@ -85,7 +93,9 @@ std::string tied_options(const ResultsIndex& index, schema::ProblemId id, double
 bool problem_part(const ResultsIndex& index, const schema::ProblemRecord& p, TemplateData& d) {
   const std::string table = options_table(index, p);
   d.set("table", table);
-  const auto lm = lm_mean_error(index, p.id);
+  std::string lm_run;
+  const auto lm = lm_mean_error(index, p.id, lm_run);
+  d.set("lm_run", lm_run);
   d.set("lm", text_or_false(lm ? format_error_resolved(*lm) : ""));
   d.set("lm_within", lm && std::abs(*lm) < 1.0);
   if (const auto arc = arc_range(index, p.id)) {

@@ -776,3 +776,27 @@ TEST(VerdictPage, FitsOnTheFirstScreen) {
 
 }  // namespace
 }  // namespace cs::reports
+
+namespace cs::reports {
+namespace {
+
+// Requirement: claim 3 names the algorithms it ran: without PLM and MPC rows its first part is
+// "LMP" and its IMC part "not run", never "LMP, PLM" or a pair that is no evidence.
+TEST(ClaimsLedger, SsEqualsNsNamesTheAlgorithmsRun) {
+  std::vector<RowFacts> rows = battery().rows;
+  std::erase_if(rows, [](const RowFacts& f) {
+    return f.option.algorithm == Algorithm::PLM || f.option.algorithm == Algorithm::MPC;
+  });
+  const auto claims = study_claims(battery().index, rows, {});
+  const ClaimEvidence& c = *std::find_if(claims.begin(), claims.end(),
+                                         [](const auto& e) { return e.key == "ss_equals_ns"; });
+  EXPECT_EQ(c.members, "LMP");
+  EXPECT_FALSE(c.part2_run);
+  const std::string md = claims_ledger({c});
+  EXPECT_NE(md.find("LMP: "), std::string::npos) << md;
+  EXPECT_EQ(md.find("LMP, PLM: "), std::string::npos) << md;
+  EXPECT_NE(md.find("IMC: not run (this part: not testable here)"), std::string::npos) << md;
+}
+
+}  // namespace
+}  // namespace cs::reports
