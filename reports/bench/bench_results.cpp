@@ -297,6 +297,13 @@ std::string model_md(const BenchModel& m) {
                      schema::to_string(m.element));
 }
 
+std::vector<BenchRow::Measurement> BenchRow::measurements() const {
+  std::vector<Measurement> out = earlier;
+  if (ratio())
+    out.push_back({*ratio(), ratio_stddev});
+  return out;
+}
+
 BenchResults load_bench_files(const std::vector<std::filesystem::path>& files) {
   BenchResults all;
   std::set<std::size_t> remeasured;  // indices into all.rows
@@ -311,9 +318,7 @@ BenchResults load_bench_files(const std::vector<std::filesystem::path>& files) {
         continue;
       }
       remeasured.insert(static_cast<std::size_t>(same - all.rows.begin()));
-      r.earlier_ratios = std::move(same->earlier_ratios);
-      if (same->ratio())
-        r.earlier_ratios.push_back(*same->ratio());
+      r.earlier = same->measurements();
       *same = std::move(r);
     }
   }

@@ -71,8 +71,15 @@ struct BenchRow {
   std::string error;  ///< error or skip message; non-empty when the run did not finish
   /// The ratio's standard deviation over the repetitions (the stddev aggregate), if repeated.
   std::optional<double> ratio_stddev;
-  /// The ratios of the same case measured in earlier files (this row is the last file's).
-  std::vector<double> earlier_ratios;
+  /// A ratio as measured in one file: its median and its spread over repetitions, if any.
+  struct Measurement {
+    double ratio = 0.0;
+    std::optional<double> stddev;
+  };
+  /// The same case measured in earlier files (this row is the last file's).
+  std::vector<Measurement> earlier;
+  /// Every measurement of the case with a ratio: the earlier ones, then this row's.
+  std::vector<Measurement> measurements() const;
 
   /// The counter `key`; nullopt when the entry has none (or a non-finite one).
   std::optional<double> counter(std::string_view key) const;
@@ -97,7 +104,7 @@ struct BenchResults {
   std::vector<BenchSource> sources;
   std::vector<BenchRow> rows;
   /// Cases measured in more than one file: the later file's measurement is shown, the
-  /// earlier ratios kept beside it (BenchRow::earlier_ratios).
+  /// earlier ones kept beside it (BenchRow::earlier).
   int n_replaced = 0;
   /// The rows of `family` in the report's order: model, contact (kBenchContacts), algorithm.
   std::vector<const BenchRow*> of(BenchFamily family) const;

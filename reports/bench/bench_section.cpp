@@ -27,14 +27,17 @@ std::string fixed(const std::optional<double>& value, int decimals) {
   return value ? fmt::format("{:.{}f}", *value, decimals) : std::string(kMissing);
 }
 
-/// The ratio with every measurement of it: "1.27 ± 0.05 (earlier: 1.40, 1.78)", the spread
-/// over the last file's repetitions and the ratios of earlier files.
+/// The ratio with every measurement of it: "1.27 ± 0.02 (earlier: 1.40, 1.78 ± 0.41)", each
+/// with its spread over its file's repetitions.
 std::string ratio_text(const BenchRow& b) {
+  const auto one = [](const BenchRow::Measurement& m) {
+    return fmt::format("{:.2f}", m.ratio) + (m.stddev ? fmt::format(" ± {:.2f}", *m.stddev) : "");
+  };
   std::vector<std::string> earlier;
-  for (double r : b.earlier_ratios)
-    earlier.push_back(fmt::format("{:.2f}", r));
-  return fixed(b.ratio(), 2) + (b.ratio_stddev ? fmt::format(" ± {:.2f}", *b.ratio_stddev) : "") +
-         (earlier.empty() ? "" : fmt::format(" (earlier: {})", join_words(earlier, ", ")));
+  for (const auto& m : b.earlier)
+    earlier.push_back(one(m));
+  const std::string last = b.ratio() ? one({*b.ratio(), b.ratio_stddev}) : fixed(b.ratio(), 2);
+  return last + (earlier.empty() ? "" : fmt::format(" (earlier: {})", join_words(earlier, ", ")));
 }
 
 /// A benchmark's facts for the template's tables and lists.
@@ -64,12 +67,17 @@ TemplateData below_floor(const std::vector<const BenchRow*>& contact) {
                        [](const BenchRow* b) { return b->ratio() && *b->ratio() < 1; });
   if (below.empty())
     return TemplateData(false);
-  const BenchRow* lowest =
-      *std::ranges::min_element(below, {}, [](const BenchRow* b) { return *b->ratio(); });
+  const double lowest = *(*std::ranges::min_element(below, {}, [](const BenchRow* b) {
+                           return *b->ratio();
+                         }))->ratio();
+  std::vector<const BenchRow*> tied;  // the lowest, and those that print alike (two decimals)
+  std::ranges::copy_if(below, std::back_inserter(tied),
+                       [&](const BenchRow* b) { return *b->ratio() < lowest + 0.005; });
   TemplateData d("below", std::to_string(below.size()));
   d.set("with_ratio", std::to_string(std::ranges::count_if(
                           contact, [](const BenchRow* b) { return b->ratio().has_value(); })));
-  d.set("lowest", row_data(lowest));
+  d.set("lowest", template_list(tied, row_data));
+  d.set("lowest_ratio", fmt::format("{:.2f}", lowest));
   return d;
 }
 
@@ -235,15 +243,20 @@ TargetCheck check_target(const BenchResults& bench, const BenchTarget& target) {
     if (b->model.mesh != target.mesh || !contains(target.problems, b->model.problem) ||
         !contains(target.algorithms, b->algorithm))
       continue;
-    const auto under = [&](double r) { return r <= target.max_ratio; };
-    const bool measured = b->converged() && b->ratio();
-    const bool tie =
-        measured && b->ratio_stddev && std::abs(*b->ratio() - target.max_ratio) <= *b->ratio_stddev;
-    const bool all_under =
-        measured && under(*b->ratio()) && std::ranges::all_of(b->earlier_ratios, under);
-    const bool all_over =
-        !measured || (!under(*b->ratio()) && std::ranges::none_of(b->earlier_ratios, under));
-    (tie ? check.tied : all_under ? check.met : all_over ? check.missed : check.split).push_back(b);
+    // Each measurement meets the target, misses it, or ties with it (within its spread).
+    int meets = 0, misses = 0, ties = 0;
+    for (const auto& m : b->measurements()) {
+      if (m.stddev && std::abs(m.ratio - target.max_ratio) <= *m.stddev)
+        ++ties;
+      else
+        (m.ratio <= target.max_ratio ? meets : misses) += 1;
+    }
+    std::vector<const BenchRow*>& outcome = !b->converged() || !b->ratio() ? check.missed
+                                            : meets > 0 && misses > 0      ? check.split
+                                            : ties > 0                     ? check.tied
+                                            : misses > 0                   ? check.missed
+                                                                           : check.met;
+    outcome.push_back(b);
   }
   // The worst first: the largest ratio, then those without one.
   std::ranges::stable_sort(check.missed, std::greater{},
