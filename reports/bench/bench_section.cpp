@@ -76,7 +76,11 @@ TemplateData below_floor(const std::vector<const BenchRow*>& contact) {
   TemplateData d("below", std::to_string(below.size()));
   d.set("with_ratio", std::to_string(std::ranges::count_if(
                           contact, [](const BenchRow* b) { return b->ratio().has_value(); })));
-  d.set("lowest", template_list(tied, row_data));
+  std::vector<std::string> names;
+  for (const BenchRow* b : tied)
+    names.push_back(
+        fmt::format("{} {} {}", model_md(b->model), name_of(b->contact), name_of(b->algorithm)));
+  d.set("lowest", join_words(names, "; "));
   d.set("lowest_ratio", fmt::format("{:.2f}", lowest));
   return d;
 }
