@@ -80,7 +80,7 @@ TemplateData below_floor(const std::vector<const BenchRow*>& contact) {
   for (const BenchRow* b : tied)
     names.push_back(
         fmt::format("{} {} {}", model_md(b->model), name_of(b->contact), name_of(b->algorithm)));
-  d.set("lowest", join_words(names, "; "));
+  d.set("lowest", fmt::format("{}", fmt::join(names, "; ")));
   d.set("lowest_ratio", fmt::format("{:.2f}", lowest));
   return d;
 }
