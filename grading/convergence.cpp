@@ -117,7 +117,10 @@ ObservedOrder observed_order(double e_c, double e_m, double e_f, double resoluti
     return out;
   }
   if (a.trend != Trend::converging || !(*p1 > 0.0) || !(*p2 > 0.0)) {
-    out.note = "not monotone";
+    // Magnitudes that fall on both pairs but by no more than the floors (a read between nodes
+    // stepping one node per halving) are monotone: the trend, not the order, refuses them.
+    const bool falls = std::abs(e_c) > std::abs(e_m) && std::abs(e_m) > std::abs(e_f);
+    out.note = falls ? "falls within its floors: not converging by the trend" : "not monotone";
     return out;
   }
   if (std::abs(e_m - e_c) < a.pair_floors[0] || std::abs(e_f - e_m) < a.pair_floors[1]) {

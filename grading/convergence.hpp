@@ -108,7 +108,9 @@ struct ObservedOrder {
 /// (|e| < kUnresolvedErrorPercent). Otherwise `note` says why: "within half a node spacing on
 /// every mesh" (the order would be the read's, not the solution's), "at noise level" (an error
 /// at round-off, the trend settled, or one pair's change within its floor), "not monotone" (the
-/// trend is not converging, or an error grows within the floor), "changes sign" (H_a Q4 AL ss
+/// trend is not converging, or an error grows within the floor), "falls within its floors: not
+/// converging by the trend" (the magnitudes fall on both pairs, by no more than the floors: CM_p
+/// Q4 AL ss c/a +23.7/+14.9/+6.07 %, one node per halving against floors of 17.7 and 8.84), "changes sign" (H_a Q4 AL ss
 /// sigma_c +3.74 -> +1.92 -> -0.77 %: magnitudes through zero give no order), "pre-asymptotic
 /// (p1 = .., p2 = .. differ by ..)" or "pre-asymptotic (.. % on C or M: not resolved)". 4 -> 1 ->
 /// 0.25 has order 2; 445 -> 310 -> 0.68 (p1 0.52, p2 8.8) has none, nor has 427 -> 65 -> 5.0

@@ -185,6 +185,10 @@ TEST(ObservedOrder, NoOrderForNoiseOrNonMonotoneSequences) {
   EXPECT_EQ(dip.note, "not monotone");
   // Not converging, with one pair within its floor: not monotone, not noise.
   EXPECT_EQ(observed_order(-0.47, -0.61, -0.56).note, "not monotone");
+  // Falling on both pairs by exactly the floors of a read between nodes, one node per halving
+  // (as CM_p Q4 AL ss c/a, +23.7/+14.9/+6.07 %): monotone, refused by the trend, not settled.
+  EXPECT_EQ(observed_order(24.0, 16.0, 8.0, 16.0).note,
+            "falls within its floors: not converging by the trend");
 }
 
 TEST(PairOrder, MissingOrRoundOffErrorsHaveNoOrder) {
