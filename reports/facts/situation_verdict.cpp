@@ -96,6 +96,7 @@ void add_row(OptionCell& cell, const RowFacts& f) {
   cell.max_error = cell.max_error ? std::max(*cell.max_error, e) : e;
   if (f.errors[1])
     cell.largest_m_to_f_change = std::max(cell.largest_m_to_f_change, std::abs(e - *f.errors[1]));
+  cell.problems.insert(f.problem);
   cell.n_not_credible += f.credible ? 0 : 1;
   for (const auto& failure : f.failures)
     cell.failed_checks.insert(failure.check);
@@ -130,6 +131,7 @@ void add_failed_rows(
         index.state(r, schema::MeshLevel::C) == MeshState::missing)
       continue;
     OptionCell& c = cell_of(code_label(r.spec), {r.spec.algorithm, r.spec.contact}, r.spec.element);
+    c.problems.insert(p);
     if (fine_state == MeshState::missing) {
       ++c.n_missing;
       continue;
@@ -175,6 +177,7 @@ std::vector<OptionCell> make_cells(const ResultsIndex& index,
         continue;
       OptionCell& c = cell_of(d.code, d.option, d.element);
       c.singular_rows.push_back(&d);
+      c.problems.insert(d.problem);
       c.n_eq47 += d.eq47 ? 1 : 0;
       c.n_strict += d.strict ? 1 : 0;
       c.n_not_converged += d.fine_converged ? 0 : 1;
@@ -184,10 +187,15 @@ std::vector<OptionCell> make_cells(const ResultsIndex& index,
     }
   }
   add_failed_rows(index, problems, rows, singular, cell_of);
+  std::set<ProblemId> run;  // the situation's problems some option was run on
+  for (const auto& [key, c] : cells)
+    run.insert(c.problems.begin(), c.problems.end());
   std::vector<OptionCell> out;
   for (auto& [key, c] : cells) {
+    std::ranges::set_difference(run, c.problems, std::back_inserter(c.not_run_on));
     // No grade from a solve that failed, nor from part of the situation's problems.
-    const bool whole = c.n_not_converged == 0 && c.n_failed == 0 && c.n_missing == 0;
+    const bool whole =
+        c.n_not_converged == 0 && c.n_failed == 0 && c.n_missing == 0 && c.not_run_on.empty();
     if (c.worst_error && whole)
       c.worst_grade = grading::grade_of_error(*c.worst_error);
     c.evidence = c.n_not_credible == 0 && c.n_luck == 0 && whole;
@@ -241,7 +249,7 @@ void rank(SituationVerdict& v) {
   for (const auto& c : v.cells) {
     if (v.singular) {
       if (c.n_strict == static_cast<int>(c.singular_rows.size()) && c.n_not_converged == 0 &&
-          c.n_failed == 0 && c.n_missing == 0 && c.n_not_credible == 0)
+          c.n_failed == 0 && c.n_missing == 0 && c.n_not_credible == 0 && c.not_run_on.empty())
         v.best.push_back(&c);
       continue;
     }

@@ -39,6 +39,10 @@ struct OptionCell {
   int n_failed = 0;           ///< rows whose F case failed (or timed out): no F value at all
   std::string failed_reason;  ///< the first of those cases' reasons
   int n_missing = 0;          ///< rows with a C case but no F case (not run): no grade
+  std::set<schema::ProblemId> problems;  ///< the situation's problems it has rows for
+  /// The situation's problems another option was run on but this one was not (GetFEM on the
+  /// axisymmetric Hertz problem): the cell covers part of the situation, so it has no grade.
+  std::vector<schema::ProblemId> not_run_on;
   std::set<std::string> failed_checks;  ///< the interface checks its F cases fail, by name
   bool evidence = false;                ///< every row is evidence (RowFacts::evidence)
   int n_eq47 = 0, n_strict = 0;         ///< the flat punch: rows passing each divergence verdict

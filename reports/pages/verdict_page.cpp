@@ -203,6 +203,12 @@ std::string verdict_cell(const OptionCell& c) {
   if (c.n_missing > 0)
     lacking += fmt::format("{}no F on {} row{}", lacking.empty() ? "" : " · ", c.n_missing,
                            c.n_missing > 1 ? "s" : "");
+  if (!c.not_run_on.empty()) {
+    std::vector<std::string> labels;
+    for (const auto p : c.not_run_on)
+      labels.emplace_back(schema::label(p));
+    lacking += fmt::format("{}not run on {}", lacking.empty() ? "" : " · ", join_words(labels));
+  }
   if (!c.singular_rows.empty())
     return singular_cell(c) + (lacking.empty() ? "" : " · " + lacking);
   if (!c.worst_error)

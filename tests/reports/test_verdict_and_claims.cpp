@@ -800,3 +800,62 @@ TEST(ClaimsLedger, SsEqualsNsNamesTheAlgorithmsRun) {
 
 }  // namespace
 }  // namespace cs::reports
+
+namespace cs::reports {
+namespace {
+
+// Requirement: an option not run on every problem of a situation that another option was run
+// on covers part of it: its cell says which problem it lacks and has no grade, so it is never
+// among the best (LMP run on P_p and P_a, AL on P_p alone).
+TEST(VerdictPage, ACellNotRunOnEveryProblemOfItsSituationHasNoGrade) {
+  auto doc = testing::sample_json();
+  nlohmann::json p_a = doc["problems"][0];
+  ASSERT_EQ(p_a["id"], "P_p");
+  p_a["id"] = "P_a";
+  p_a["axisymmetric"] = true;
+  doc["problems"].push_back(p_a);
+  const auto renamed = [](nlohmann::json e) {
+    std::string id = e["id"];
+    e["id"] = "P_a" + id.substr(3);
+    if (e.contains("problem"))
+      e["problem"] = "P_a";
+    if (e.contains("spec"))
+      e["spec"]["problem"] = "P_a";
+    return e;
+  };
+  for (const std::string key : {"cases", "rows"}) {
+    nlohmann::json added = nlohmann::json::array();
+    for (const auto& e : doc[key]) {
+      const std::string id = e["id"];
+      if (id.starts_with("P_p/") && id.find("/LMP/") != std::string::npos)
+        added.push_back(renamed(e));
+    }
+    ASSERT_FALSE(added.empty()) << key;
+    for (auto& e : added)
+      doc[key].push_back(e);
+  }
+  const testing::Loaded data(doc);
+  const std::vector<RowFacts> rows = row_facts(data.index);  // the cells point into them
+  const auto situations = situation_verdicts(data.index, rows, divergence_facts(data.index));
+  const auto flat = std::ranges::find_if(situations, [](const SituationVerdict& s) {
+    return std::ranges::find(s.problems, schema::ProblemId::P_a) != s.problems.end();
+  });
+  ASSERT_NE(flat, situations.end());
+  int penalty = 0;
+  for (const OptionCell& c : flat->cells) {
+    if (c.family == OptionFamily::penalty) {
+      ++penalty;
+      EXPECT_EQ(c.not_run_on, std::vector<schema::ProblemId>{schema::ProblemId::P_a});
+      EXPECT_FALSE(c.worst_grade.has_value());
+      EXPECT_EQ(std::ranges::count(flat->best, &c), 0);
+      EXPECT_NE(verdict_cell(c).find("not run on P<sub>a</sub>"), std::string::npos)
+          << verdict_cell(c);
+    } else {
+      EXPECT_TRUE(c.not_run_on.empty());
+    }
+  }
+  EXPECT_GT(penalty, 0);
+}
+
+}  // namespace
+}  // namespace cs::reports
