@@ -630,6 +630,14 @@ TEST(VerdictPage, ACellWhoseFineCaseFailedSaysSo) {
   EXPECT_NE(verdict_cell(*pm_q8).find("no F on"), std::string::npos) << verdict_cell(*pm_q8);
 }
 
+/// The verdict page of a results document (its facts built as report.md builds them).
+std::string verdict_page_of(const nlohmann::json& doc) {
+  const testing::Loaded data(doc);
+  const std::vector<RowFacts> rows = row_facts(data.index);  // the cells point into them
+  const std::vector<DivergenceFacts> singular = divergence_facts(data.index);
+  return verdict_page(data.index, situation_verdicts(data.index, rows, singular));
+}
+
 // Requirement: on the flat punch, an option whose F case failed is not judged by Eq. 47: the
 // advice names it apart from the options that fail Eq. 47.
 TEST(VerdictPage, AFlatPunchOptionWhoseFineCaseFailedIsNotJudged) {
@@ -648,11 +656,7 @@ TEST(VerdictPage, AFlatPunchOptionWhoseFineCaseFailedIsNotJudged) {
       r["diverging"] = nullptr;
     }
   }
-  const testing::Loaded data(doc);
-  const std::vector<RowFacts> rows = row_facts(data.index);  // the cells point into them
-  const std::vector<DivergenceFacts> singular = divergence_facts(data.index);
-  const auto situations = situation_verdicts(data.index, rows, singular);
-  const std::string md = verdict_page(data.index, situations);
+  const std::string md = verdict_page_of(doc);
   EXPECT_NE(md.find("Not judged, an F case failed: AL ss Q4."), std::string::npos) << md;
   EXPECT_EQ(md.find("Avoid AL ss Q4: Eq. 47 fails"), std::string::npos) << md;
   EXPECT_NE(md.find("Avoid MPC ss Q4: Eq. 47 fails"), std::string::npos) << md;
@@ -667,11 +671,7 @@ TEST(VerdictPage, AFlatPunchOptionThatPullsIsNoEvidence) {
     if (c["id"] == "F_p/F/Q4/AL/ss")
       c["interface"]["max_tensile_over_p"] = 5.0;
   }
-  const testing::Loaded data(doc);
-  const std::vector<RowFacts> rows = row_facts(data.index);  // the cells point into them
-  const std::vector<DivergenceFacts> singular = divergence_facts(data.index);
-  const auto situations = situation_verdicts(data.index, rows, singular);
-  const std::string md = verdict_page(data.index, situations);
+  const std::string md = verdict_page_of(doc);
   EXPECT_NE(md.find("Avoid AL ss Q4"), std::string::npos) << md;
   EXPECT_NE(md.find("tensile pressure up to 5"), std::string::npos) << md;
   EXPECT_NE(md.find(" ✗ |"), std::string::npos) << md;
