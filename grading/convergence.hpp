@@ -110,11 +110,12 @@ struct ObservedOrder {
 /// at round-off, the trend settled, or one pair's change within its floor), "not monotone" (the
 /// trend is not converging, or an error grows within the floor), "falls within its floors: not
 /// converging by the trend" (the magnitudes fall on both pairs, by no more than the floors: CM_p
-/// Q4 AL ss c/a +23.7/+14.9/+6.07 %, one node per halving against floors of 17.7 and 8.84), "changes sign" (H_a Q4 AL ss
-/// sigma_c +3.74 -> +1.92 -> -0.77 %: magnitudes through zero give no order), "pre-asymptotic
-/// (p1 = .., p2 = .. differ by ..)" or "pre-asymptotic (.. % on C or M: not resolved)". 4 -> 1 ->
-/// 0.25 has order 2; 445 -> 310 -> 0.68 (p1 0.52, p2 8.8) has none, nor has 427 -> 65 -> 5.0
-/// (p1 2.7, p2 3.7: within one order, but from a mesh that does not resolve the quantity).
+/// Q4 AL ss c/a +23.7/+14.9/+6.07 %, one node per halving against floors of 17.7 and 8.84),
+/// "changes sign" (H_a Q4 AL ss sigma_c +3.74 -> +1.92 -> -0.77 %: magnitudes through zero give no
+/// order), "pre-asymptotic (p1 = .., p2 = .. differ by ..)" or "pre-asymptotic (.. % on C or M: not
+/// resolved)". 4 -> 1 -> 0.25 has order 2; 445 -> 310 -> 0.68 (p1 0.52, p2 8.8) has none, nor has
+/// 427 -> 65 -> 5.0 (p1 2.7, p2 3.7: within one order, but from a mesh that does not resolve the
+/// quantity).
 ObservedOrder observed_order(double e_c, double e_m, double e_f, double resolution_percent = 0.0);
 
 /// The luck of one mesh: the F error grades e or g (Eq. 46) after an error of at least
