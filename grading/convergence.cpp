@@ -131,9 +131,9 @@ ObservedOrder observed_order(double e_c, double e_m, double e_f, double resoluti
     out.note = "changes sign";  // through zero: the magnitudes' ratios are no order
     return out;
   }
-  if (const double coarse = std::max(std::abs(e_c), std::abs(e_m));
-      coarse >= kUnresolvedErrorPercent) {
-    out.note = fmt::format("pre-asymptotic ({:.0f} % on C or M: not resolved)", coarse);
+  if (unresolved(e_c, e_m)) {
+    out.note = fmt::format("pre-asymptotic ({:.0f} % on C or M: not resolved)",
+                           std::max(std::abs(e_c), std::abs(e_m)));
     return out;
   }
   const double spread = std::abs(*p1 - *p2);
@@ -146,10 +146,12 @@ ObservedOrder observed_order(double e_c, double e_m, double e_f, double resoluti
   return out;
 }
 
+bool unresolved(double e_c, double e_m) {
+  return std::max(std::abs(e_c), std::abs(e_m)) >= kUnresolvedErrorPercent;
+}
+
 bool luck_of_one_mesh(double e_c, double e_m, double e_f) {
-  const double coarse = std::max(std::abs(e_c), std::abs(e_m));
-  return coarse >= kUnresolvedErrorPercent &&
-         !schema::is_worse(grade_of_error(e_f), schema::Grade::g);
+  return unresolved(e_c, e_m) && !schema::is_worse(grade_of_error(e_f), schema::Grade::g);
 }
 
 FurtherRefinement further_refinement(double e_m, double e_f, double e_vf, double resolution_on_m) {

@@ -90,6 +90,9 @@ std::optional<double> pair_order(const std::optional<double>& e_coarse,
 /// at a contact edge.
 inline constexpr double kUnresolvedErrorPercent = 100.0;
 
+/// True when C or M does not resolve the quantity: max(|e_C|, |e_M|) >= kUnresolvedErrorPercent.
+bool unresolved(double e_c, double e_m);
+
 /// The largest spread of the two pair orders for which the sequence counts as in its
 /// asymptotic range: within one order of each other.
 inline constexpr double kAsymptoticOrderSpread = 1.0;

@@ -3,6 +3,10 @@
 #include <algorithm>
 #include <cmath>
 
+#include <fmt/format.h>
+
+#include "grading/convergence.hpp"
+
 namespace cs::grading {
 namespace {
 
@@ -37,6 +41,27 @@ schema::ErrorEstimate error_estimate(double f_c, double f_m, double f_f) {
   if (f_f != 0.0)
     out.gci_percent = kGciSafetyFactor * std::abs(d2 / f_f) / denominator * 100.0;
   return out;
+}
+
+TrustedEstimate trusted_estimate(const schema::RowVerdict& row) {
+  if (!row.estimate)
+    return {};
+  const schema::ErrorEstimate& e = *row.estimate;
+  if (!e.asymptotic || !e.observed_order)
+    return {nullptr, e.note};
+  if (std::ranges::all_of(row.errors, [](const std::optional<double>& x) {
+        return x && std::abs(*x) <= kErrorResolutionPercent;
+      }))
+    return {nullptr, "within the study's resolution on every mesh: nothing to extrapolate"};
+  if (schema::read_between_nodes(row.quantity))
+    return {nullptr, "read between two nodes: it moves by whole nodes"};
+  const double e_c = row.errors[0].value_or(0.0), e_m = row.errors[1].value_or(0.0);
+  if (unresolved(e_c, e_m))
+    return {nullptr, fmt::format("pre-asymptotic ({:.3g} % on C or M: not resolved)",
+                                 std::max(std::abs(e_c), std::abs(e_m)))};
+  if (*e.observed_order < kMinimumRichardsonOrder)
+    return {nullptr, fmt::format("order {:.2f}: the differences barely shrink", *e.observed_order)};
+  return {&e, {}};
 }
 
 }  // namespace cs::grading

@@ -543,6 +543,12 @@ json to_json(const ResultsDocument& doc) {
   return out;
 }
 
+std::optional<std::string> RunInfo::build() const {
+  const auto it = environment.find("contact_suite_version");
+  return it != environment.end() && it->is_string() ? std::optional(it->get<std::string>())
+                                                    : std::nullopt;
+}
+
 ResultsDocument results_from_json(const json& j, const std::string& source) {
   const JsonFields r(j, source);
   if (r.string("schema") != kResultsSchemaName) {

@@ -54,6 +54,9 @@ struct RunInfo {
   /// Results files `merge` combined into this one (0: one run). Then wall_seconds is summed
   /// over them (machine time) and jobs is the most any one of them ran with.
   int merged_files = 0;
+  /// The build that wrote the run (environment's contact_suite_version); nullopt when it is
+  /// absent or not a text (the environment is free-form).
+  std::optional<std::string> build() const;
 };
 
 /// A whole results file.

@@ -28,9 +28,7 @@ void order_quantities(CaseResult& c) {
 }
 
 std::string version_of(const schema::ResultsDocument& d) {
-  const auto& env = d.run.environment;
-  const auto it = env.find("contact_suite_version");
-  return it != env.end() && it->is_string() ? it->get<std::string>() : std::string("unknown");
+  return d.run.build().value_or("unknown");
 }
 
 void check_versions(const std::vector<schema::ResultsDocument>& parts) {

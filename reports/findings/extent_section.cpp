@@ -8,7 +8,7 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
-#include "reports/facts/trusted_estimate.hpp"
+#include "grading/richardson.hpp"
 #include "reports/findings/parameter_series.hpp"
 #include "reports/render/template_text.hpp"
 #include "reports/tables/grade_tables.hpp"
@@ -68,7 +68,7 @@ const ParameterSeries* block_normal_of(const std::vector<ParameterSeries>& all,
 
 /// The row's Richardson limit where it can be trusted (trusted_estimate).
 std::optional<double> richardson(const schema::RowVerdict& r) {
-  const TrustedEstimate t = trusted_estimate(r);
+  const grading::TrustedEstimate t = grading::trusted_estimate(r);
   return t.estimate ? t.estimate->richardson : std::nullopt;
 }
 
@@ -122,7 +122,7 @@ std::string series_table(const ResultsIndex& index, const SeriesRefs& series) {
                  std::string(schema::to_string(s->spec.element)), s->option_label(),
                  format_parameter(p.parameter), with_error(row.values[0]),
                  with_error(row.values[1]), with_error(row.values[2]),
-                 lim ? with_error(lim) : trusted_estimate(row).note,
+                 lim ? with_error(lim) : grading::trusted_estimate(row).note,
                  format_error_resolved(percent_of(p.value, lim)),
                  previous ? fmt::format("{} (from {})",
                                         format_error_resolved(percent_of(p.value, previous->value)),

@@ -8,8 +8,8 @@
 #include <gsl/gsl_statistics_double.h>
 
 #include "grading/accuracy.hpp"
+#include "grading/richardson.hpp"
 #include "reports/facts/row_facts.hpp"
-#include "reports/facts/trusted_estimate.hpp"
 #include "reports/findings/variant_rows.hpp"
 #include "reports/render/template_text.hpp"
 #include "reports/results/results_csv.hpp"
@@ -82,7 +82,7 @@ void add_estimate(EstimateSummary& s, std::vector<double>& gci, const ResultsInd
     return;
   }
   ++s.rows;
-  const TrustedEstimate t = trusted_estimate(row);
+  const grading::TrustedEstimate t = grading::trusted_estimate(row);
   if (!t.estimate)
     return;
   ++s.asymptotic;
@@ -193,7 +193,7 @@ std::string csv_number(const std::optional<double>& v) {
 }
 
 std::string csv_line(const ResultsIndex& index, const RowVerdict& row) {
-  const TrustedEstimate t = trusted_estimate(row);
+  const grading::TrustedEstimate t = grading::trusted_estimate(row);
   const schema::ErrorEstimate e = t.estimate ? *t.estimate : schema::ErrorEstimate{.note = t.note};
   const auto exact = index.exact_of(row);
   std::optional<double> limit_error;

@@ -109,7 +109,7 @@ std::string run_page(const schema::ResultsDocument& doc) {
           rd.set("peak", std::isfinite(r.peak_rss_mb) ? fmt::format("{:.0f}", r.peak_rss_mb)
                                                       : std::string("—"));
           rd.set("command", r.command_line);
-          rd.set("build", r.environment.value("contact_suite_version", std::string(kMissing)));
+          rd.set("build", r.build().value_or(kMissing));
           return rd;
         }));
   TemplateData env{TemplateData::type::list};

@@ -475,7 +475,7 @@ std::string cross_code_section(const ResultsIndex& index, const schema::StudyRef
   if (cost_run) {
     const schema::RunInfo& run = cost_run->results().run;
     d.set("started", run.started_utc);
-    d.set("version", run.environment.value("contact_suite_version", std::string(kMissing)));
+    d.set("version", run.build().value_or(kMissing));
     std::set<std::string> targets;  // what the run's cases solved against, from the cases
     for (const auto& c : cost_run->results().cases)
       targets.insert(std::string(schema::to_string(c.spec.target)));

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 
 #include "grading/richardson.hpp"
@@ -33,6 +34,53 @@ TEST(Richardson, NoOrderForOscillatingShrinkingLessOrRoundOffSequences) {
   EXPECT_EQ(error_estimate(1.0, 1.1, 1.05).note, "oscillatory");
   EXPECT_EQ(error_estimate(1.0, 1.1, 1.3).note, "differences do not shrink");
   EXPECT_EQ(error_estimate(1.0, 1.0 + 1e-15, 1.0).note, "differences at round-off");
+}
+
+/// A row of sigma_c with exact value 10 and the given errors (%) on C, M, F, its Richardson
+/// estimate made from the values.
+schema::RowVerdict row_with_errors(std::array<double, 3> errors,
+                                   schema::Quantity q = schema::Quantity::sigma_c) {
+  schema::RowVerdict r;
+  r.quantity = q;
+  for (std::size_t m = 0; m < 3; ++m) {
+    r.errors[m] = errors[m];
+    r.values[m] = 10.0 * (1.0 + errors[m] / 100.0);
+  }
+  r.estimate = error_estimate(*r.values[0], *r.values[1], *r.values[2]);
+  return r;
+}
+
+// Requirement: an estimate is used only where it can be trusted, each rule pinned at its
+// threshold: an order of 0.4 is refused and 0.6 kept (the minimum is 0.5; at 0.19, like S(1) AL
+// ns at extent 8, +0.35/+0.11/-0.13 %, the limit would lie 6.4 times the last change beyond F);
+// C at +100 % is unresolved and +90 % is not; a patch test within 0.01 points on every mesh and
+// a read between two nodes have none; a sequence converging to a limit other than the exact value
+// (a finite block's bias) keeps its estimate whatever its errors' own orders.
+TEST(TrustedEstimate, EachRuleAtItsThreshold) {
+  // Differences 0.1 then 0.1 * 2^-p: errors 5, 4, 4 - 2^-p %.
+  const auto of_order = [](double p) {
+    return row_with_errors({5.0, 4.0, 4.0 - std::pow(2.0, -p)});
+  };
+  const schema::RowVerdict slow = of_order(0.4);
+  ASSERT_TRUE(slow.estimate->asymptotic);  // by the differences alone
+  EXPECT_EQ(trusted_estimate(slow).estimate, nullptr);
+  EXPECT_EQ(trusted_estimate(slow).note, "order 0.40: the differences barely shrink");
+  EXPECT_NE(trusted_estimate(of_order(0.6)).estimate, nullptr);
+  const schema::RowVerdict unresolved_c = row_with_errors({100.0, 50.0, 25.0});
+  EXPECT_EQ(trusted_estimate(unresolved_c).note, "pre-asymptotic (100 % on C or M: not resolved)");
+  const schema::RowVerdict resolved_c = row_with_errors({90.0, 45.0, 22.5});
+  ASSERT_NE(trusted_estimate(resolved_c).estimate, nullptr);
+  EXPECT_NEAR(*trusted_estimate(resolved_c).estimate->richardson, 10.0, 1e-9);  // order 1
+  EXPECT_EQ(trusted_estimate(row_with_errors({0.008, 0.004, 0.002})).estimate, nullptr);
+  EXPECT_NE(trusted_estimate(row_with_errors({0.08, 0.04, 0.02})).estimate, nullptr);
+  EXPECT_EQ(trusted_estimate(row_with_errors({8.0, 4.0, 2.0}, schema::Quantity::contact_half_width))
+                .estimate,
+            nullptr);
+  // Values 10.5, 10.3, 10.2 converge (order 1) to 10.1, 1 % above the exact 10.
+  const TrustedEstimate biased = trusted_estimate(row_with_errors({5.0, 3.0, 2.0}));
+  ASSERT_NE(biased.estimate, nullptr);
+  EXPECT_NEAR(*biased.estimate->richardson, 10.1, 1e-9);
+  EXPECT_EQ(trusted_estimate(schema::RowVerdict{}).estimate, nullptr);  // no estimate at all
 }
 
 }  // namespace

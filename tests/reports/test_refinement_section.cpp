@@ -10,9 +10,7 @@
 #include <gtest/gtest.h>
 
 #include "grading/accuracy.hpp"
-#include "grading/richardson.hpp"
 #include "reports/facts/claims.hpp"
-#include "reports/facts/trusted_estimate.hpp"
 #include "reports/findings/refinement_section.hpp"
 #include "reports/pages/claims_ledger.hpp"
 
@@ -48,36 +46,6 @@ TEST(RefinementSection, StudyClaimCountsOnlyConvergedVfCases) {
   EXPECT_EQ(vf_judgement(s_row(3.0), MeshState::converged, 0.0, false), VfJudgement::not_evidence);
   EXPECT_FALSE(refinement_claim_applies(row({8.0, 7.0, 6.0}, true, 3.0)));      // already c
   EXPECT_FALSE(refinement_claim_applies(row({14.0, 13.0, 12.0}, false, 3.0)));  // u on F
-}
-
-// Requirement: an estimate is used only where it can be trusted: +0.35/+0.11/-0.10 % (like S(1)
-// AL ns at extent 8: differences of one sign that shrink, but at order 0.19, so the limit lies
-// 6.4 times the last change beyond F) and +300/+150/+8 % (C and M do not resolve the quantity)
-// are refused with the reason; 4/1/0.25 % keeps its estimate, and so does a sequence converging
-// to a limit other than the exact value (a finite block's bias), whatever its errors' orders.
-TEST(RefinementSection, EstimateOnlyWhereItCanBeTrusted) {
-  const auto estimated = [](std::array<double, 3> errors) {
-    RowVerdict r = row(errors, false, std::nullopt);
-    for (std::size_t m = 0; m < 3; ++m)
-      r.values[m] = 10.0 * (1.0 + errors[m] / 100.0);
-    r.estimate = grading::error_estimate(*r.values[0], *r.values[1], *r.values[2]);
-    return r;
-  };
-  const RowVerdict slow = estimated({0.35, 0.11, -0.10});
-  ASSERT_TRUE(slow.estimate->asymptotic);  // by the differences alone
-  const TrustedEstimate refused = trusted_estimate(slow);
-  EXPECT_EQ(refused.estimate, nullptr);
-  EXPECT_EQ(refused.note, "order 0.19: the differences barely shrink");
-  const RowVerdict unresolved = estimated({300.0, 150.0, 8.0});
-  ASSERT_TRUE(unresolved.estimate->asymptotic);
-  EXPECT_EQ(trusted_estimate(unresolved).note, "pre-asymptotic (300 % on C or M: not resolved)");
-  const TrustedEstimate kept = trusted_estimate(estimated({4.0, 1.0, 0.25}));
-  ASSERT_NE(kept.estimate, nullptr);
-  EXPECT_NEAR(*kept.estimate->richardson, 10.0, 1e-9);  // order 2: the exact value
-  // Values 10.5, 10.3, 10.2 converge (order 1) to 10.1, 1 % above the exact 10: errors 5, 3, 2 %.
-  const TrustedEstimate biased = trusted_estimate(estimated({5.0, 3.0, 2.0}));
-  ASSERT_NE(biased.estimate, nullptr);
-  EXPECT_NEAR(*biased.estimate->richardson, 10.1, 1e-9);
 }
 
 // Requirement: the GCI band holds the exact value when |f_F - exact| / |f_F| <= GCI.

@@ -347,6 +347,10 @@ TEST(RunPage, CombinedFilesOneRowEachWithTheirBuild) {
                     "out) from 2 analyses"),
             std::string::npos)
       << md;
+  // The environment is free-form: a version that is not a text reads as not recorded.
+  schema::ResultsDocument odd = document("c/results.json", "", schema::ProblemId::H_p);
+  odd.run.environment["contact_suite_version"] = 5;
+  EXPECT_NE(run_page(odd).find("| `c/results.json` | — |"), std::string::npos) << run_page(odd);
 }
 
 }  // namespace
