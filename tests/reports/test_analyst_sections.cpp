@@ -12,8 +12,10 @@
 #include "reports/facts/row_facts.hpp"
 #include "reports/findings/anomalies_section.hpp"
 #include "reports/tables/divergence_table.hpp"
+#include "reports/tables/interface_table.hpp"
 #include "reports/tables/markdown_table.hpp"
 #include "reports/tables/mesh_table.hpp"
+#include "suites/problem_catalog.hpp"
 
 namespace cs::reports {
 namespace {
@@ -139,6 +141,76 @@ TEST(DivergenceTable, CountsComeFromTheRowFacts) {
   EXPECT_EQ(t.strict, strict);
   EXPECT_EQ(t.strict_fails, complete - strict);
   EXPECT_EQ(static_cast<int>(t.table.n_rows()), complete + t.undecided);
+}
+
+}  // namespace
+}  // namespace cs::reports
+
+namespace cs::reports {
+namespace {
+
+// Requirement: the anomalies quote default-parameter cases only: the Q8 weighted-row force
+// balance and the AL penetration of a case with an override (FKN = 0.001, whose contact is soft
+// by choice) are not the default's, however large.
+TEST(Anomalies, QuoteDefaultParameterCasesOnly) {
+  schema::ResultsDocument doc;
+  doc.problems.push_back(suites::problem_descriptor(schema::ProblemId::P_a).record);
+  const auto add = [&](schema::Algorithm a, double fkn, double balance, double penetration) {
+    schema::CaseResult c;
+    c.spec = {.problem = schema::ProblemId::P_a,
+              .mesh = schema::MeshLevel::F,
+              .element = schema::Element::Q8,
+              .algorithm = a,
+              .contact = schema::ContactKind::mortar};
+    if (fkn > 0.0)
+      c.spec.overrides["fkn"] = fkn;
+    c.status = schema::CaseStatus::converged;
+    auto& checks = c.interface.emplace();
+    checks.force_balance = balance;
+    checks.max_penetration_over_h = penetration;
+    doc.cases.push_back(c);
+  };
+  add(schema::Algorithm::AL, 0.0, 9.8e-7, 0.00112);
+  add(schema::Algorithm::PM, 0.001, 0.0072, 4.04);
+  add(schema::Algorithm::AL, 0.001, 0.0072, 4.04);
+  const ResultsIndex index(doc);
+  const std::vector<RowFacts> rows = row_facts(index);
+  const AnomalyFacts a = anomaly_facts(index, rows);
+  ASSERT_TRUE(a.weighted_force_balance.has_value());
+  EXPECT_DOUBLE_EQ(a.weighted_force_balance->first, 9.8e-7);
+  EXPECT_EQ(a.weighted_force_balance->second, "P_a/F/Q8/AL/mortar");
+  ASSERT_TRUE(a.al_pm.largest_penetration.has_value());
+  EXPECT_DOUBLE_EQ(*a.al_pm.largest_penetration, 0.00112);
+}
+
+// Requirement: the interface-checks table names the problems a check is not measured on, with
+// their number of cases: force balance needs an applied normal load, which a fit has not.
+TEST(InterfaceChecks, NameTheProblemsACheckIsNotMeasuredOn) {
+  schema::ResultsDocument doc;
+  for (const auto p : {schema::ProblemId::H_p, schema::ProblemId::IF_p})
+    doc.problems.push_back(suites::problem_descriptor(p).record);
+  const auto add = [&](schema::ProblemId p, schema::ContactKind contact) {
+    schema::CaseResult c;
+    c.spec.problem = p;
+    c.spec.contact = contact;
+    auto& checks = c.interface.emplace();
+    checks.max_tensile_over_p = 0.0;
+    checks.max_outside_over_p = 0.0;
+    checks.max_penetration_over_h = 0.0;
+    if (p == schema::ProblemId::H_p)
+      checks.force_balance = 1e-5;
+    doc.cases.push_back(c);
+  };
+  add(schema::ProblemId::H_p, schema::ContactKind::ss);
+  add(schema::ProblemId::IF_p, schema::ContactKind::ss);
+  add(schema::ProblemId::IF_p, schema::ContactKind::ns);
+  const ResultsIndex index(doc);
+  const std::string md = interface_section(index);
+  EXPECT_NE(md.find("| force balance |"), std::string::npos) << md;
+  EXPECT_NE(md.find("| 1 | 0 | `H_p/C/Q4/LMP/ss`: 1e-05 | IF<sub>p</sub> (2 cases) |"),
+            std::string::npos)
+      << md;
+  EXPECT_NE(md.find("| 3 | 0 | `H_p/C/Q4/LMP/ss`: 0 | — |"), std::string::npos) << md;
 }
 
 }  // namespace

@@ -66,14 +66,20 @@ bool evidence(const schema::RowVerdict& r) {
            grading::luck_of_one_mesh(*r.errors[0], *r.errors[1], *r.errors[2]));
 }
 
-const ClaimEvidence& claim(const std::string& key) {
-  static const std::vector<ClaimEvidence> claims =
-      study_claims(battery().index, battery().rows, battery().singular);
+/// The claim `key` of `claims` (a test that asks for one not there fails).
+const ClaimEvidence& claim_in(const std::vector<ClaimEvidence>& claims, const std::string& key) {
   for (const auto& c : claims) {
     if (c.key == key)
       return c;
   }
   throw std::logic_error("no claim " + key);
+}
+
+/// The claim `key` of the battery fixture.
+const ClaimEvidence& claim(const std::string& key) {
+  static const std::vector<ClaimEvidence> claims =
+      study_claims(battery().index, battery().rows, battery().singular);
+  return claim_in(claims, key);
 }
 
 /// Fixture rows for a claim: each owns its raw row (kept alive here) and is evidence unless
@@ -399,8 +405,7 @@ TEST(ClaimsLedger, DivergenceNamesEveryExceptionAndTheOptionsNotRun) {
   pulls.credible = false;
   singular.push_back(pulls);
   const auto claims = study_claims(battery().index, {}, singular);
-  const ClaimEvidence& c = *std::find_if(claims.begin(), claims.end(),
-                                         [](const auto& e) { return e.key == "divergence"; });
+  const ClaimEvidence& c = claim_in(claims, "divergence");
   EXPECT_EQ(c.n_hold, 3);
   EXPECT_EQ(c.n_excluded, 1);
   EXPECT_EQ(c.not_run, "PLM, MPC");
@@ -494,8 +499,7 @@ TEST(ClaimsLedger, MpcFastestIsNotTestableWhenTheRunOrderBiasesTheTimes) {
   ASSERT_GE(pairs, 12);  // z = sqrt(pairs) > 3
   const ResultsIndex index(doc);
   const auto claims = study_claims(index, row_facts(index), divergence_facts(index));
-  const ClaimEvidence& c = *std::find_if(claims.begin(), claims.end(),
-                                         [](const auto& e) { return e.key == "mpc_fastest"; });
+  const ClaimEvidence& c = claim_in(claims, "mpc_fastest");
   EXPECT_EQ(c.n_later_faster, c.n_order_pairs);
   EXPECT_GT(c.order_bias_z, 3.0);
   EXPECT_EQ(c.verdict, ClaimVerdict::not_testable);
@@ -788,8 +792,7 @@ TEST(ClaimsLedger, SsEqualsNsNamesTheAlgorithmsRun) {
     return f.option.algorithm == Algorithm::PLM || f.option.algorithm == Algorithm::MPC;
   });
   const auto claims = study_claims(battery().index, rows, {});
-  const ClaimEvidence& c = *std::find_if(claims.begin(), claims.end(),
-                                         [](const auto& e) { return e.key == "ss_equals_ns"; });
+  const ClaimEvidence& c = claim_in(claims, "ss_equals_ns");
   EXPECT_EQ(c.members, "LMP");
   EXPECT_FALSE(c.part2_run);
   const std::string md = claims_ledger({c});
