@@ -6,6 +6,8 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <map>
+#include <string>
 #include <thread>
 
 #include <fmt/core.h>
@@ -36,6 +38,7 @@
 #include "suites/row_verdict.hpp"
 #include "suites/run_environment.hpp"
 #include "suites/shard.hpp"
+#include "suites/solver_support.hpp"
 #include "suites/study_meshes.hpp"
 
 namespace cs::apps {
@@ -64,7 +67,9 @@ std::vector<std::filesystem::path> solver_dirs(const RunArgs& args) {
 
 /// The cases of an external code: each model of the selection (its problems, meshes, elements,
 /// target and parameters; --algorithms and --contacts do not apply) once per option of the code
-/// (or of --solver-options) and per stress basis (--recovery, default spr = common and own).
+/// (or of --solver-options) and per stress basis (--recovery, default spr = common and own),
+/// but for those the code does not offer (suites::why_not_offered), which are left out and
+/// counted on stderr; none left is a UsageError naming why.
 std::vector<suites::CaseSpec> external_cases(const RunArgs& args, suites::CaseSelection sel) {
   if (!args.selection.algorithms.empty() || !args.selection.contacts.empty())
     throw UsageError("--algorithms and --contacts do not apply to " + args.solver +
@@ -84,10 +89,21 @@ std::vector<suites::CaseSpec> external_cases(const RunArgs& args, suites::CaseSe
   sel.contacts = {schema::ContactKind::ss};
   sel.recoveries.clear();
   std::vector<suites::CaseSpec> out;
+  std::map<std::string, int> not_offered;  // reason -> cases left out
   for (const auto& model : suites::make_case_matrix(sel))
     for (const auto* option : options)
-      for (const auto recovery : recoveries)
-        out.push_back(suites::external_case(model, code, *option, recovery));
+      for (const auto recovery : recoveries) {
+        auto spec = suites::external_case(model, code, *option, recovery);
+        if (std::string why = suites::why_not_offered(spec, code); !why.empty())
+          ++not_offered[why];
+        else
+          out.push_back(std::move(spec));
+      }
+  if (out.empty() && !not_offered.empty())
+    throw UsageError("nothing to run: " + not_offered.begin()->first);
+  for (const auto& [why, n] : not_offered)
+    std::fprintf(stderr, "contact-suite: %d case%s left out, %s\n", n, n == 1 ? "" : "s",
+                 why.c_str());
   return out;
 }
 

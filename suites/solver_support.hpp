@@ -20,8 +20,14 @@ Algorithm study_algorithm(adapters::protocol::OptionFamily family);
 /// Why `spec` cannot run on `code` on `setup`, in one line, or "" when it can: "the case is not
 /// for <code>", the manifest's message for an unknown option, "option '<label>' is <family>
 /// <discretization>: its case id must read <algorithm>/<discretization>", or "not supported by
-/// <code>: <what>" (an analysis, target, element or load path the code does not support).
+/// <code>: <what>" (an analysis, target, element or load path the code, or that option, does
+/// not support: "a meshed target with option nitsche").
 std::string why_not_runnable(const CaseSpec& spec, const ProblemSetup& setup,
                              const adapters::protocol::SolverManifest& code);
+
+/// The same from the case alone, before any model is built (the problem's analysis, the case's
+/// target and element; a load path is the model's, so only why_not_runnable sees it): what `run`
+/// asks to leave out the cases a code does not offer.
+std::string why_not_offered(const CaseSpec& spec, const adapters::protocol::SolverManifest& code);
 
 }  // namespace cs::suites

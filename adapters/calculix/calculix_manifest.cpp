@@ -48,8 +48,11 @@ protocol::SolverManifest make_manifest() {
   m.command = {"ccx"};
   m.version_command = {"ccx", "-v"};
   for (const auto& o : kOptions)
-    m.options.push_back({std::string(o.label), protocol::OptionFamily::penalty,
-                         std::string(o.discretization), std::string(o.description)});
+    m.options.push_back({std::string(o.label),
+                         protocol::OptionFamily::penalty,
+                         std::string(o.discretization),
+                         std::string(o.description),
+                         {}});
   m.supports = {protocol::Support::plane_strain, protocol::Support::axisymmetric,
                 protocol::Support::meshed_target, protocol::Support::Q4, protocol::Support::Q8};
   m.time_limit_seconds = 600.0;

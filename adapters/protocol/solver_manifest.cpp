@@ -82,6 +82,18 @@ class Fields {
     return out;
   }
 
+  /// The "supports" list, each a known capability.
+  std::vector<Support> supports() const {
+    std::vector<Support> out;
+    for (const std::string& s : strings("supports")) {
+      const auto support = find_name(kSupports, s);
+      if (!support)
+        fail("supports", fmt::format("'{}' is not a capability (known: {})", s, names(kSupports)));
+      out.push_back(*support);
+    }
+    return out;
+  }
+
   const json& array(const char* key) const {
     if (!j_.contains(key) || !j_[key].is_array() || j_[key].empty())
       fail(key, "must be a non-empty array");
@@ -117,7 +129,7 @@ bool plain_label(std::string_view s) {
 
 SolverOption parse_option(const json& j, std::size_t index, const std::filesystem::path& source) {
   const Fields f(j, fmt::format("options[{}]", index), source,
-                 {"label", "family", "discretization", "description"});
+                 {"label", "family", "discretization", "description", "supports"});
   SolverOption o;
   o.label = f.string("label");
   if (!plain_label(o.label))
@@ -132,6 +144,8 @@ SolverOption parse_option(const json& j, std::size_t index, const std::filesyste
     f.fail("discretization",
            fmt::format("'{}' is not a discretization (known: ns, ss, mortar)", o.discretization));
   o.description = f.string("description", false);
+  if (j.contains("supports"))
+    o.supports = f.supports();
   return o;
 }
 
@@ -171,9 +185,12 @@ std::string_view to_string(Support s) {
   return "";
 }
 
-bool SolverManifest::supports_all(std::initializer_list<Support> wanted) const {
-  return std::all_of(wanted.begin(), wanted.end(), [this](Support s) {
-    return std::find(supports.begin(), supports.end(), s) != supports.end();
+bool SolverManifest::supports_all(std::initializer_list<Support> wanted,
+                                  const SolverOption* option) const {
+  const std::vector<Support>& have =
+      option != nullptr && !option->supports.empty() ? option->supports : supports;
+  return std::all_of(wanted.begin(), wanted.end(), [&have](Support s) {
+    return std::find(have.begin(), have.end(), s) != have.end();
   });
 }
 
@@ -217,12 +234,12 @@ SolverManifest parse_manifest(std::string_view text, const std::filesystem::path
       if (m.options[k].label == m.options.back().label)
         f.fail("options", fmt::format("label '{}' is given twice", m.options.back().label));
   }
-  for (const std::string& s : f.strings("supports")) {
-    const auto support = find_name(kSupports, s);
-    if (!support)
-      f.fail("supports", fmt::format("'{}' is not a capability (known: {})", s, names(kSupports)));
-    m.supports.push_back(*support);
-  }
+  m.supports = f.supports();
+  for (std::size_t i = 0; i < m.options.size(); ++i)
+    for (const Support s : m.options[i].supports)
+      if (!m.supports_all({s}))
+        f.fail(fmt::format("options[{}].supports", i),
+               fmt::format("'{}' is not among the code's supports", to_string(s)));
   if (const auto limit = f.number("time_limit_seconds"))
     m.time_limit_seconds = *limit;
   return m;

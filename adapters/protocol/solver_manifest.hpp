@@ -9,6 +9,8 @@
 // every argument: {adapter_dir} (the manifest's folder), {case_dir} (the case directory, also
 // the working directory) and {option} (the option's label).
 //
+// An option may narrow the code's `supports` with its own (a subset of the code's).
+//
 // Unknown keys, an unknown family, support or discretization, a missing or mistyped field: a
 // ManifestError (a std::invalid_argument, the command line's exit 2) of one line naming the
 // file and the key.
@@ -41,6 +43,9 @@ struct SolverOption {
   OptionFamily family = OptionFamily::penalty;
   std::string discretization;  ///< "ns", "ss" or "mortar": where contact is enforced
   std::string description;  ///< one line for `list` and the report, e.g. "penalty (HARD, K = 50 E)"
+  /// What this option supports where it is less than the code (GetFEM's Nitsche: no meshed
+  /// target); empty: the code's `supports`.
+  std::vector<Support> supports;
 };
 
 struct SolverManifest {
@@ -53,7 +58,9 @@ struct SolverManifest {
   std::vector<Support> supports;
   double time_limit_seconds = 600.0;  ///< per case, unless the command line says otherwise
 
-  bool supports_all(std::initializer_list<Support> wanted) const;
+  /// Whether the code (and, given one, its `option`) supports everything `wanted`.
+  bool supports_all(std::initializer_list<Support> wanted,
+                    const SolverOption* option = nullptr) const;
   /// The option called `label`; throws ManifestError naming the code's options if none is.
   const SolverOption& option(std::string_view label) const;
 };

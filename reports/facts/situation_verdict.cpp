@@ -304,7 +304,8 @@ std::string family_label(OptionFamily family) {
   return {};
 }
 
-/// "AL, PM": the algorithms run, in the vocabulary's order; the family's label without any.
+}  // namespace
+
 std::string members_label(OptionFamily family, const std::set<schema::Algorithm>& members) {
   if (members.empty())
     return family_label(family);
@@ -313,8 +314,6 @@ std::string members_label(OptionFamily family, const std::set<schema::Algorithm>
     out += (out.empty() ? "" : ", ") + std::string(schema::to_string(a));
   return out;
 }
-
-}  // namespace
 
 std::string option_label(const OptionCell& cell) {
   return cell.code.empty()

@@ -76,6 +76,14 @@ struct SituationVerdict {
 std::vector<SituationVerdict> situation_verdicts(const ResultsIndex& index,
                                                  const std::vector<RowFacts>& rows,
                                                  const std::vector<DivergenceFacts>& singular);
+/// The cells point into `rows` and `singular`: temporaries are refused.
+std::vector<SituationVerdict> situation_verdicts(const ResultsIndex&, std::vector<RowFacts>&&,
+                                                 const std::vector<DivergenceFacts>&) = delete;
+std::vector<SituationVerdict> situation_verdicts(const ResultsIndex&, const std::vector<RowFacts>&,
+                                                 std::vector<DivergenceFacts>&&) = delete;
+
+/// "AL, PM": the algorithms run, in the vocabulary's order; the family's label without any.
+std::string members_label(OptionFamily family, const std::set<schema::Algorithm>& members);
 
 /// A cell's option as a matrix row names it: its members and discretization, "AL, PM ss" ("PM
 /// ss" for a cell of one algorithm of its family, or where only PM was run), or another code's

@@ -68,9 +68,15 @@ TemplateData matrix(const std::vector<SituationVerdict>& situations, Element ele
         if (c.element != element || row_of(c) != option)
           continue;
         texts.push_back(verdict_cell(c));
-        parts.push_back(c.algorithm
-                            ? fmt::format("{} {}", schema::to_string(*c.algorithm), texts.back())
-                            : texts.back());
+        // A cell of fewer members than its row names them ("PM e +0.55 %" in the row "AL, PM
+        // ss" where only PM was run on the situation).
+        const bool fewer = !c.algorithm && c.members != label_of.at(option).members;
+        parts.push_back(
+            c.algorithm ? fmt::format("{} {}", schema::to_string(*c.algorithm), texts.back())
+            : fewer     ? fmt::format("{} {}", members_label(c.family, c.members), texts.back())
+                        : texts.back());
+        if (fewer)
+          texts.back() = parts.back();
       }
       // Split cells that read alike to the printed digits are shown once.
       const bool alike = std::all_of(texts.begin(), texts.end(),

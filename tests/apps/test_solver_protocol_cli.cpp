@@ -281,13 +281,21 @@ TEST(SolverProtocolCli, GetfemPenaltyAndNitschePressureIsTheirLaw) {
 // GetFEM between two meshes (IF_p: the shaft in the ring, the overlap alone loads the fit): its
 // nodal brick's mean pressure, read from its displacements along the bore's normal, converges
 // to the exact one at the second order (measured: -0.159 % on C, -0.039 % on M); Nitsche, which
-// GetFEM 5.4 offers between two bodies only as a large-sliding brick, is not run, with the
-// adapter's reason in the case's.
+// GetFEM 5.4 offers between two bodies only as a large-sliding brick and the manifest declares
+// for a rigid obstacle only, is left out by `run` and counted (no failed case).
 TEST(SolverProtocolCli, GetfemInterferenceFitBetweenTwoMeshes) {
   if (!getfem_available())
     GTEST_SKIP() << "python3-getfem is not installed";
-  const auto cases = getfem_cases("nodal_al,nitsche", "IF_p", "C,M", "Q4", "discretized",
-                                  1);  // the Nitsche cases failed
+  TempDir dir;
+  const fs::path out = dir.path() / "out";
+  const auto r = run_cli(getfem_run("nodal_al,nitsche", "IF_p", "C,M", "Q4", "discretized", out));
+  ASSERT_EQ(r.exit_code, 0) << r.err << r.out;
+  EXPECT_NE(r.err.find("4 cases left out, not supported by getfem: a meshed target with option "
+                       "nitsche"),
+            std::string::npos)
+      << r.err;
+  const auto cases = cases_by_id(out / "results.json");
+  EXPECT_EQ(cases.size(), 4u);  // nodal_al on C and M, both bases
   const auto mean_error = [&](const std::string& mesh) {
     const std::string id = "IF_p/" + mesh + "/Q4/AL/ns/@getfem:nodal_al";
     EXPECT_TRUE(cases.contains(id)) << id;
@@ -300,13 +308,44 @@ TEST(SolverProtocolCli, GetfemInterferenceFitBetweenTwoMeshes) {
   const double order = std::log2(coarse / medium);  // M halves C's sides
   EXPECT_GT(order, 1.5) << coarse << " then " << medium;
   EXPECT_LT(order, 2.5) << coarse << " then " << medium;
-  const std::string nitsche = "IF_p/C/Q4/AL/ss/@getfem:nitsche";
-  ASSERT_TRUE(cases.contains(nitsche));
-  EXPECT_EQ(cases.at(nitsche).at("status"), "failed");
-  EXPECT_NE(cases.at(nitsche).at("reason").get<std::string>().find(
-                "exited with status 3: getfem adapter: not supported: Nitsche between two meshes"),
+}
+
+// Requirement: an option that supports less than its code (the manifest's per-option
+// `supports`) has the cases it does not support left out of `run`, counted on stderr with the
+// reason; a selection of only such cases is refused with exit 2 and one line; `case` still runs
+// nothing and fails the case with the reason.
+TEST(SolverProtocolCli, OptionSupportsLeaveItsOtherCasesOut) {
+  TempDir dir;
+  std::ifstream committed(fs::path(CONTACT_SUITE_SOURCE_DIR) /
+                          "tests/apps/data/patch_code/manifest.json");
+  auto manifest = nlohmann::json::parse(committed);
+  manifest["options"].push_back({{"label", "exact_q4"},
+                                 {"family", "lagrange_multiplier"},
+                                 {"discretization", "ns"},
+                                 {"supports", {"plane_strain", "rigid_target", "Q4"}}});
+  make_code_folder(dir.path() / "patch_code", manifest.dump());
+  const fs::path out = dir.path() / "out";
+  const auto r =
+      run_cli(patch_code_run(dir.path() / "patch_code", "exact,exact_q4", out, {}, "C", "Q4,Q8"));
+  ASSERT_EQ(r.exit_code, 0) << r.err << r.out;
+  EXPECT_NE(r.err.find("2 cases left out, not supported by patchcode: Q8 elements with option "
+                       "exact_q4"),
             std::string::npos)
-      << cases.at(nitsche).at("reason");
+      << r.err;
+  const auto cases = cases_by_id(out / "results.json");
+  EXPECT_EQ(cases.size(), 6u);  // exact on Q4 and Q8, exact_q4 on Q4; both bases
+  EXPECT_TRUE(cases.contains("P_p/C/Q4/LMP/ns/rigid/@patchcode:exact_q4"));
+  EXPECT_FALSE(cases.contains("P_p/C/Q8/LMP/ns/rigid/@patchcode:exact_q4"));
+
+  const auto none = run_cli(
+      patch_code_run(dir.path() / "patch_code", "exact_q4", dir.path() / "none", {}, "C", "Q8"));
+  EXPECT_EQ(none.exit_code, 2) << none.err;
+  EXPECT_EQ(std::count(none.err.begin(), none.err.end(), '\n'), 1) << none.err;
+  EXPECT_NE(none.err.find("nothing to run: not supported by patchcode: Q8 elements with option "
+                          "exact_q4"),
+            std::string::npos)
+      << none.err;
+  EXPECT_FALSE(fs::exists(dir.path() / "none" / "results.json"));
 }
 
 // Requirement: under load control (S: a total load, the depth unknown) GetFEM carries the given
@@ -355,6 +394,13 @@ TEST(SolverProtocolCli, BadManifestIsExit2AndOneLine) {
       {"unknown family", R"({"name": "x", "command": ["true"], "version_command": ["true"],
         "options": [{"label": "a", "family": "hard", "discretization": "ns"}],
         "supports": ["plane_strain"]})"},
+      {"option supports more than the code", R"({"name": "x", "command": ["true"],
+        "version_command": ["true"], "options": [{"label": "a", "family": "penalty",
+        "discretization": "ns", "supports": ["plane_strain", "Q8"]}],
+        "supports": ["plane_strain"]})"},
+      {"option supports an unknown capability", R"({"name": "x", "command": ["true"],
+        "version_command": ["true"], "options": [{"label": "a", "family": "penalty",
+        "discretization": "ns", "supports": ["3d"]}], "supports": ["plane_strain"]})"},
   };
   for (const auto& [what, manifest] : bad) {
     TempDir dir;

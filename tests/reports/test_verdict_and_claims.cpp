@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <deque>
+#include <fstream>
 #include <map>
 
 #include <gtest/gtest.h>
@@ -38,6 +39,9 @@ struct Battery {
   std::vector<RowFacts> rows;
   std::vector<DivergenceFacts> singular;
 };
+
+/// For verdicts without a flat punch.
+const std::vector<DivergenceFacts> kNoSingularRows;
 
 const Battery& battery() {
   static const Battery b;
@@ -577,8 +581,9 @@ TEST(VerdictPage, TiesCompareTheMagnitudesOfTheErrors) {
   RowFacts below = rounded_punch_row(Algorithm::AL, {});
   below.errors = {-0.9, -0.7, -0.59};
   RowFacts above = rounded_punch_row(Algorithm::LMP, {});
-  above.errors = {0.9, 0.7, 0.55};  // M -> F moves 0.15 and 0.11 points: the noise
-  const auto situations = situation_verdicts(battery().index, {below, above}, {});
+  above.errors = {0.9, 0.7, 0.55};                 // M -> F moves 0.15 and 0.11 points: the noise
+  const std::vector<RowFacts> rows{below, above};  // the cells point into them
+  const auto situations = situation_verdicts(battery().index, rows, kNoSingularRows);
   ASSERT_EQ(situations.size(), 1U);
   const SituationVerdict& s = situations[0];
   ASSERT_EQ(s.best.size(), 2U);
@@ -596,7 +601,8 @@ TEST(VerdictPage, AReadWithinItsResolutionIsNoPartOfTheCell) {
   read.read_resolution_on_f = 2.5;  // within half a node on F
   RowFacts point = rounded_punch_row(Algorithm::LMP, {});
   point.errors = {1.0, 0.6, 0.4};
-  const auto situations = situation_verdicts(battery().index, {read, point}, {});
+  const std::vector<RowFacts> rows{read, point};
+  const auto situations = situation_verdicts(battery().index, rows, kNoSingularRows);
   ASSERT_EQ(situations.size(), 1U);
   ASSERT_EQ(situations[0].cells.size(), 1U);
   EXPECT_EQ(situations[0].cells[0].rows.size(), 1U);
@@ -691,7 +697,7 @@ TEST(VerdictPage, ACheckEveryOptionFailsIsSharedNotAReasonToAvoidOne) {
       rounded_punch_row(Algorithm::LMP, {outside}),
       rounded_punch_row(Algorithm::AL, {outside, "tensile pressure"}),
       rounded_punch_row(Algorithm::MPC, {outside})};
-  const auto situations = situation_verdicts(battery().index, rows, {});
+  const auto situations = situation_verdicts(battery().index, rows, kNoSingularRows);
   ASSERT_EQ(situations.size(), 1U);
   const SituationVerdict& s = situations[0];
   EXPECT_EQ(s.common_failures, std::vector<std::string>{outside});
@@ -708,15 +714,14 @@ TEST(VerdictPage, ACheckEveryOptionFailsIsSharedNotAReasonToAvoidOne) {
   const std::vector<RowFacts> apart = {rounded_punch_row(Algorithm::LMP, {outside}),
                                        rounded_punch_row(Algorithm::AL, {"tensile pressure"}),
                                        rounded_punch_row(Algorithm::MPC, {outside})};
-  const auto s2 = situation_verdicts(battery().index, apart, {});
+  const auto s2 = situation_verdicts(battery().index, apart, kNoSingularRows);
   ASSERT_EQ(s2.size(), 1U);
   EXPECT_TRUE(s2[0].common_failures.empty());
   EXPECT_EQ(s2[0].avoid.size(), 3U);
   // One family alone cannot show that a failure is not its own.
-  const auto s3 = situation_verdicts(
-      battery().index,
-      {rounded_punch_row(Algorithm::LMP, {outside}), rounded_punch_row(Algorithm::PLM, {outside})},
-      {});
+  const std::vector<RowFacts> one_family = {rounded_punch_row(Algorithm::LMP, {outside}),
+                                            rounded_punch_row(Algorithm::PLM, {outside})};
+  const auto s3 = situation_verdicts(battery().index, one_family, kNoSingularRows);
   ASSERT_EQ(s3.size(), 1U);
   EXPECT_TRUE(s3[0].common_failures.empty());
   EXPECT_EQ(s3[0].avoid.size(), 1U);
@@ -762,8 +767,9 @@ TEST(VerdictPage, AFamilyWhoseMembersDifferIsSplitInThatSituation) {
   // The patch tests, where the two still coincide, keep one cell for both.
   for (const auto& s : situations) {
     for (const auto& c : s.cells) {
-      if (s.key != "smooth_curved")
+      if (s.key != "smooth_curved") {
         EXPECT_FALSE(c.algorithm.has_value()) << s.key << " " << option_label(c);
+      }
     }
   }
   const std::string md = verdict_page(index, situations);
@@ -839,7 +845,8 @@ TEST(VerdictPage, ACellNotRunOnEveryProblemOfItsSituationHasNoGrade) {
   }
   const testing::Loaded data(doc);
   const std::vector<RowFacts> rows = row_facts(data.index);  // the cells point into them
-  const auto situations = situation_verdicts(data.index, rows, divergence_facts(data.index));
+  const std::vector<DivergenceFacts> singular = divergence_facts(data.index);
+  const auto situations = situation_verdicts(data.index, rows, singular);
   const auto flat = std::ranges::find_if(situations, [](const SituationVerdict& s) {
     return std::ranges::find(s.problems, schema::ProblemId::P_a) != s.problems.end();
   });
@@ -858,6 +865,49 @@ TEST(VerdictPage, ACellNotRunOnEveryProblemOfItsSituationHasNoGrade) {
     }
   }
   EXPECT_GT(penalty, 0);
+}
+
+// Requirement: a row naming two algorithms ("AL, PM ss") names, in a cell, the one that alone
+// was run on that situation ("PM e …"): the battery without AL on the Steuermann punch.
+TEST(VerdictPage, ACellOfOneMemberOfItsRowNamesIt) {
+  std::ifstream in(testing::source_dir() / "tests" / "reports" / "data" / "battery_results.json");
+  auto doc = nlohmann::json::parse(in);
+  for (const std::string key : {"cases", "rows"}) {
+    auto& entries = doc[key];
+    entries.erase(std::remove_if(entries.begin(), entries.end(),
+                                 [](const nlohmann::json& e) {
+                                   const std::string id = e["id"];
+                                   return id.starts_with("S_1/") &&
+                                          id.find("/AL/") != std::string::npos;
+                                 }),
+                  entries.end());
+  }
+  const testing::Loaded data(doc);
+  const std::vector<RowFacts> rows = row_facts(data.index);  // the cells point into them
+  const std::vector<DivergenceFacts> singular = divergence_facts(data.index);
+  const auto situations = situation_verdicts(data.index, rows, singular);
+  const std::string md = verdict_page(data.index, situations);
+  const auto column = [&](const std::string& title) {
+    const auto header = md.find("| Option |");
+    const std::string line = md.substr(header, md.find('\n', header) - header);
+    int n = 0;
+    for (std::size_t at = 0; at < line.find(title); at = line.find('|', at + 1))
+      ++n;
+    return n;
+  };
+  const int steuermann = column("Punch with rounded edges"), hertz = column("Hertz");
+  const auto cell = [&](const std::string& row, int col) {
+    const auto at = md.find("| " + row + " |");
+    EXPECT_NE(at, std::string::npos) << row;
+    std::string line = md.substr(at, md.find('\n', at) - at);
+    std::size_t from = 0;
+    for (int i = 0; i < col; ++i)
+      from = line.find('|', from) + 1;
+    return line.substr(from, line.find('|', from) - from);
+  };
+  EXPECT_TRUE(cell("AL, PM ss", steuermann).starts_with(" PM ")) << cell("AL, PM ss", steuermann);
+  EXPECT_FALSE(cell("AL, PM ss", hertz).starts_with(" PM ")) << cell("AL, PM ss", hertz);
+  EXPECT_FALSE(cell("LMP, PLM ss", steuermann).starts_with(" LMP ")) << md;
 }
 
 }  // namespace
