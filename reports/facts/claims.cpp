@@ -41,14 +41,17 @@ ClaimVerdict verdict_of(int n_hold, int n, double reproduced = kReproduced) {
 /// The verdict of a claim of several parts: the worst of its parts' (reproduced, then refined,
 /// then not reproduced), so a part that holds only in a minority makes the claim not
 /// reproduced whatever the others show. A part with no data (not testable) leaves the others'
-/// verdict; a claim with no testable part is not testable.
-ClaimVerdict worst_part(std::initializer_list<ClaimVerdict> parts) {
+/// verdict, and the claim says so (part_not_testable); a claim with no testable part is not
+/// testable.
+void set_verdict_of_parts(ClaimEvidence& c, std::initializer_list<ClaimVerdict> parts) {
   ClaimVerdict worst = ClaimVerdict::not_testable;
   for (const ClaimVerdict v : parts) {
     if (v != ClaimVerdict::not_testable && (worst == ClaimVerdict::not_testable || v > worst))
       worst = v;
   }
-  return worst;
+  c.verdict = worst;
+  c.part_not_testable = worst != ClaimVerdict::not_testable &&
+                        std::ranges::find(parts, ClaimVerdict::not_testable) != parts.end();
 }
 
 /// A stated exception ("except for ...") checked on its own rows: the claim is refined when the
@@ -196,7 +199,7 @@ ClaimEvidence ss_equals_ns(const std::vector<RowFacts>& rows) {
   c.figure2 = largest_mpc;
   c.verdict1 = verdict_of(c.n_hold, c.n);
   c.verdict2 = verdict_of(c.n2_hold, c.n2);
-  c.verdict = worst_part({c.verdict1, c.verdict2});
+  set_verdict_of_parts(c, {c.verdict1, c.verdict2});
   return c;
 }
 
@@ -211,7 +214,7 @@ bool clearly_larger(double a, double b) {
 /// n2, reproduced at kRefined: "almost uniformly"; pairs exact on both to the printed digits
 /// show no difference either way and are left out, n2_exact); and the rows of the stated exception
 /// (`exception`) are below g (n_exception_holds of n_exception). The verdict is the worst of the
-/// three (worst_part); each part names the rows that break it.
+/// three (set_verdict_of_parts); each part names the rows that break it.
 template <class Select, class Twin, class Exception>
 ClaimEvidence trend_claim(const std::vector<RowFacts>& rows, const char* key, Select select,
                           Twin twin_of, const char* twin_name, Exception exception) {
@@ -253,8 +256,8 @@ ClaimEvidence trend_claim(const std::vector<RowFacts>& rows, const char* key, Se
   }
   c.verdict1 = verdict_of(c.n_hold, c.n);
   c.verdict2 = verdict_of(c.n2_hold, c.n2, kRefined);
-  c.verdict =
-      worst_part({c.verdict1, c.verdict2, exception_verdict(c.n_exception_holds, c.n_exception)});
+  set_verdict_of_parts(
+      c, {c.verdict1, c.verdict2, exception_verdict(c.n_exception_holds, c.n_exception)});
   return c;
 }
 
@@ -542,7 +545,7 @@ ClaimEvidence closing(const std::vector<RowFacts>& rows) {
   }
   c.verdict1 = verdict_of(c.n_hold, c.n, kRefined);
   c.verdict2 = verdict_of(c.n2_hold, c.n2);
-  c.verdict = worst_part({c.verdict1, c.verdict2});
+  set_verdict_of_parts(c, {c.verdict1, c.verdict2});
   return c;
 }
 

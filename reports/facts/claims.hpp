@@ -36,6 +36,8 @@ struct ClaimEvidence {
   std::string examples2{};          ///< those that break its second part, a few
   /// A claim of parts: each part's own verdict; the claim's is the worst of them.
   ClaimVerdict verdict1 = ClaimVerdict::not_testable, verdict2 = ClaimVerdict::not_testable;
+  /// A part (or a stated exception) had no evidence: the claim's verdict is the other parts'.
+  bool part_not_testable = false;
   /// A stated exception ("except for ..."): its evidence rows, those where it shows (below g),
   /// and a few where it does not.
   int n_exception = 0, n_exception_holds = 0;

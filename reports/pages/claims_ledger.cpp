@@ -11,6 +11,7 @@ TemplateData claim_data(const ClaimEvidence& c) {
   TemplateData d;
   d.set("verdict", to_string(c.verdict));
   d.set("testable", c.verdict != ClaimVerdict::not_testable);
+  d.set("part_not_testable", c.part_not_testable);
   d.set("n", std::to_string(c.n));
   d.set("n_hold", std::to_string(c.n_hold));
   d.set("n_fail", std::to_string(c.n - c.n_hold));

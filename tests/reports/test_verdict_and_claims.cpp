@@ -381,8 +381,10 @@ TEST(ClaimsLedger, SsEqualsNsJudgesImcApartFromItsPatchTests) {
   EXPECT_EQ(c.n2_exact, 1);
   EXPECT_EQ(c.verdict2, ClaimVerdict::not_testable);
   EXPECT_EQ(c.verdict, ClaimVerdict::reproduced);
+  EXPECT_TRUE(c.part_not_testable);  // and the ledger says so
   const std::string md = claims_ledger({c});
   EXPECT_NE(md.find("IMC: no pair that is evidence away from round-off"), std::string::npos) << md;
+  EXPECT_NE(md.find("| reproduced (a part not testable) |"), std::string::npos) << md;
   // An IMC pair away from round-off with other grades (e +0.5 % vs g +3 %): not reproduced.
   fx.add(ProblemId::H_p, Quantity::sigma_c, Element::Q8, Algorithm::MPC, ContactKind::ss, 0.5);
   fx.add(ProblemId::H_p, Quantity::sigma_c, Element::Q8, Algorithm::MPC, ContactKind::ns, 3.0);
@@ -390,6 +392,7 @@ TEST(ClaimsLedger, SsEqualsNsJudgesImcApartFromItsPatchTests) {
   EXPECT_EQ(c.n2, 1);
   EXPECT_EQ(c.n2_hold, 0);
   EXPECT_EQ(c.verdict, ClaimVerdict::not_reproduced);
+  EXPECT_FALSE(c.part_not_testable);
 }
 
 // Requirement: claim 11 names every exception by option, and "for all options" checked on
