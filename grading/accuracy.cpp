@@ -1,5 +1,6 @@
 #include "grading/accuracy.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace cs::grading {
@@ -15,6 +16,10 @@ schema::Grade grade_of_error(double error_percent) {
   if (e < 1.0)
     return schema::Grade::e;
   return e < 5.0 ? schema::Grade::g : schema::Grade::s;
+}
+
+bool values_coincide(double a, double b) {
+  return std::abs(a - b) <= kCoincidenceRelative * std::max(std::abs(a), std::abs(b));
 }
 
 }  // namespace cs::grading

@@ -1,6 +1,7 @@
 #pragma once
 // The accuracy of one computed value against its exact value: the signed percentage error and
-// the study's grade of it (Eq. 46). The grades themselves are vocabulary (schema/grade.hpp).
+// the study's grade of it (Eq. 46); and when two computed values are the same at the study's
+// resolution. The grades themselves are vocabulary (schema/grade.hpp).
 
 #include "schema/grade.hpp"
 
@@ -14,5 +15,13 @@ double error_percent(double value, double exact);
 ///   e (excellent) if |e| < 1, g (good) if 1 <= |e| < 5, s (satisfactory) if 5 <= |e| < 10,
 ///   u (unsatisfactory) if |e| >= 10 or e is NaN. A boundary belongs to the worse grade.
 schema::Grade grade_of_error(double error_percent);
+
+/// The resolution at which two computed values count as the same: 0.01 %, that of the study's
+/// four-decimal values (and of its convergence verdict).
+inline constexpr double kCoincidenceRelative = 1e-4;
+
+/// Whether two values coincide at the study's resolution:
+///   |a - b| <= kCoincidenceRelative max(|a|, |b|).
+bool values_coincide(double a, double b);
 
 }  // namespace cs::grading

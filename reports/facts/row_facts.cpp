@@ -205,7 +205,7 @@ std::vector<const RowFacts*> facts_of(const std::vector<RowFacts>& all, schema::
 
 bool coincide(const schema::RowVerdict& a, const schema::RowVerdict& b) {
   return std::ranges::equal(a.values, b.values, [](const auto& x, const auto& y) {
-    return x.has_value() == y.has_value() && (!x || std::abs(*x - *y) < 5e-5);
+    return x.has_value() == y.has_value() && (!x || grading::values_coincide(*x, *y));
   });
 }
 

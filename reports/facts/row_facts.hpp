@@ -115,8 +115,8 @@ std::vector<DivergenceFacts> code_divergence_facts(const ResultsIndex& index,
 /// The row facts of one problem (a view into `all`).
 std::vector<const RowFacts*> facts_of(const std::vector<RowFacts>& all, schema::ProblemId problem);
 
-/// True when two rows' values agree on every mesh to the study's printed digits (4 decimals):
-/// the pages then show them as one row ("AL, PM").
+/// True when two rows' values coincide on every mesh at the study's resolution
+/// (grading::values_coincide): the pages then show them as one row ("AL, PM").
 bool coincide(const schema::RowVerdict& a, const schema::RowVerdict& b);
 
 }  // namespace cs::reports

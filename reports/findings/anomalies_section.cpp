@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include "grading/accuracy.hpp"
 #include "reports/render/template_text.hpp"
 #include "reports/tables/markdown_table.hpp"
 
@@ -195,7 +196,8 @@ std::string anomalies_section(const ResultsIndex& index) {
     Fields p{{"rows", std::to_string(a.al_pm.rows)},
              {"coinciding", std::to_string(a.al_pm.coinciding)},
              {"cases", std::to_string(a.al_pm.cases)},
-             {"same_iterations", std::to_string(a.al_pm.same_iterations)}};
+             {"same_iterations", std::to_string(a.al_pm.same_iterations)},
+             {"resolution", fmt::format("{:g} %", grading::kCoincidenceRelative * 100)}};
     if (a.al_pm.largest_penetration)
       p["penetration"] = g("{:.3g}", *a.al_pm.largest_penetration);
     if (a.al_pm.frictional_rows > 0) {

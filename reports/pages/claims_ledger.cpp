@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include "grading/accuracy.hpp"
 #include "reports/render/template_text.hpp"
 
 namespace cs::reports {
@@ -12,6 +13,7 @@ TemplateData claim_data(const ClaimEvidence& c) {
   d.set("verdict", to_string(c.verdict));
   d.set("testable", c.verdict != ClaimVerdict::not_testable);
   d.set("part_not_testable", c.part_not_testable);
+  d.set("resolution", fmt::format("{:g} %", grading::kCoincidenceRelative * 100));
   d.set("n", std::to_string(c.n));
   d.set("n_hold", std::to_string(c.n_hold));
   d.set("n_fail", std::to_string(c.n - c.n_hold));

@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 
+#include "grading/accuracy.hpp"
 #include "reports/render/template_text.hpp"
 #include "reports/tables/markdown_table.hpp"
 
@@ -168,6 +169,7 @@ std::string problem_page(const ResultsIndex& index, const schema::ProblemRecord&
   d.set("has_study_tables", !problem.study_tables.empty());
   d.set("study_tables", problem.study_tables);
   d.set("singular", problem.singular);
+  d.set("resolution", fmt::format("{:g} %", grading::kCoincidenceRelative * 100));
   const TemplateData tables = quantity_tables(index, problem, facts_of(rows, problem.id));
   d.set("has_tables", !tables.is_empty_list());
   d.set("tables", tables);

@@ -203,11 +203,11 @@ TemplateData table_data(const GradeTableFacts& t) {
           e.set("differing", std::to_string(c.differing));
           e.set("only_one", count_or_false(c.only_one));
           e.set("states_differ", count_or_false(c.states_differ));
-          e.set("max_difference", text_or_false(c.max_relative > kCoincidenceRelative
+          e.set("max_difference", text_or_false(c.max_relative > grading::kCoincidenceRelative
                                                     ? fmt::format("{:.2g} %", c.max_relative * 100)
                                                     : ""));
           e.set("where_max", c.where_max);
-          e.set("resolution", fmt::format("{:g} %", kCoincidenceRelative * 100));
+          e.set("resolution", fmt::format("{:g} %", grading::kCoincidenceRelative * 100));
           return e;
         }));
   d.set("rows_absent", joined_or_false(t.rows_absent, ", "));

@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include "grading/accuracy.hpp"
 #include "reports/tables/markdown_table.hpp"
 
 namespace cs::reports {
@@ -53,7 +54,7 @@ OptionComparison compare_options(const ResultsIndex& index, const Option& a, con
         continue;
       const double scale = std::max(std::abs(*va), std::abs(*vb));
       const double rel = scale > 0 ? std::abs(*va - *vb) / scale : 0.0;
-      if (rel > kCoincidenceRelative)
+      if (!grading::values_coincide(*va, *vb))
         differ = true;
       if (rel > out.max_relative) {
         out.max_relative = rel;

@@ -6,8 +6,8 @@
 //
 // Two option sets coincide on a (problem, quantity, element) slot when both rows have values
 // on the same meshes, their cases ended the same way on each mesh (converged, not converged,
-// failed, missing), and every pair of values agrees within kCoincidenceRelative (0.01 %, the
-// resolution of the study's 4-decimal values, and the resolution of the convergence verdict).
+// failed, missing), and every pair of values coincides (grading::values_coincide: within 0.01 %,
+// the resolution of the study's 4-decimal values and of the convergence verdict).
 
 #include <string>
 #include <vector>
@@ -15,8 +15,6 @@
 #include "reports/results/results_index.hpp"
 
 namespace cs::reports {
-
-inline constexpr double kCoincidenceRelative = 1e-4;
 
 /// A (problem, quantity, element) on which option sets are compared.
 struct Slot {

@@ -43,4 +43,15 @@ TEST(Accuracy, StudyTable3aValueGradesAsTheStudyGradesIt) {
 }
 
 }  // namespace
+// Requirement: two values coincide at the study's resolution, 0.01 % of the larger magnitude,
+// pinned at the threshold on both sides, whatever the sign and the scale.
+TEST(Accuracy, ValuesCoincideWithinAHundredthOfAPercent) {
+  EXPECT_TRUE(values_coincide(1.0, 1.0 + 0.9e-4));
+  EXPECT_FALSE(values_coincide(1.0, 1.0 + 1.1e-4));
+  EXPECT_TRUE(values_coincide(-11.2424, -11.2424 * (1.0 + 0.9e-4)));
+  EXPECT_FALSE(values_coincide(11.2424, 11.2424 * (1.0 + 1.1e-4)));
+  EXPECT_FALSE(values_coincide(1e-3, -1e-3));
+  EXPECT_TRUE(values_coincide(0.0, 0.0));
+}
+
 }  // namespace cs::grading
