@@ -55,8 +55,9 @@ using CellKey = std::tuple<std::string, OptionFamily, std::optional<schema::Algo
                            schema::ContactKind, schema::Element>;
 
 /// Our families whose two members do not coincide (compare_options, the problem pages' rule)
-/// on some row of the situation's problems, e.g. AL and PM with friction: their cells there
-/// are split by algorithm, so that no cell shows one member's error under both names.
+/// on some row of the situation's problems, e.g. AL and PM with friction, or where one member
+/// has rows the other lacks (AL run on H_p only, PM on H_p and H_a): their cells there are
+/// split by algorithm, so that no cell shows one member's error under both names.
 std::set<OptionFamily> split_families(const ResultsIndex& index, const std::vector<RowFacts>& rows,
                                       const std::vector<DivergenceFacts>& singular,
                                       const std::vector<ProblemId>& problems) {
@@ -80,7 +81,7 @@ std::set<OptionFamily> split_families(const ResultsIndex& index, const std::vect
                              std::pair{schema::Algorithm::LMP, schema::Algorithm::PLM}}) {
     for (const auto contact : schema::values<schema::ContactKind>()) {
       const OptionComparison c = compare_options(index, {a, contact}, {b, contact}, slots);
-      if (c.compared > 0 && !c.coincide())
+      if (c.compared > 0 && (!c.coincide() || c.only_one > 0))
         out.insert(family_of(a));
     }
   }

@@ -310,6 +310,29 @@ TEST(SolverProtocolCli, GetfemInterferenceFitBetweenTwoMeshes) {
   EXPECT_LT(order, 2.5) << coarse << " then " << medium;
 }
 
+// GetFEM 5.4's integral and penalized bricks between two meshes project the target's
+// displacement onto the slave's integration points only within 5 % of the target element's
+// radius estimate; IF_p's overlap (0.001 b) exceeds that on F, where the projected FEM has no
+// DOF and the brick divided 0 by 0 (the case read "getfem killed by signal 8"). The adapter
+// checks the projection first: the case fails with why, in numbers, and GetFEM never crashes.
+TEST(SolverProtocolCli, GetfemTwoMeshOverlapBeyondItsProjectionFailsWithWhy) {
+  if (!getfem_available())
+    GTEST_SKIP() << "python3-getfem is not installed";
+  const auto cases = getfem_cases("integral_al", "IF_p", "F", "Q4", "discretized", 1);
+  for (const std::string id :
+       {"IF_p/F/Q4/AL/ss/@getfem:integral_al", "IF_p/F/Q4/AL/ss/own/@getfem:integral_al"}) {
+    ASSERT_TRUE(cases.contains(id)) << id;
+    EXPECT_EQ(cases.at(id).at("status"), "failed") << id;
+    const auto reason = cases.at(id).at("reason").get<std::string>();
+    EXPECT_NE(reason.find("getfem exited with status 1: getfem adapter: GetFEM 5.4's projected "
+                          "FEM accepts no integration point: the initial overlap (1.0e-03) "
+                          "exceeds its fixed window of 5 % of the target element size"),
+              std::string::npos)
+        << id << ": " << reason;
+    EXPECT_EQ(reason.find("signal"), std::string::npos) << id << ": " << reason;
+  }
+}
+
 // Requirement: an option that supports less than its code (the manifest's per-option
 // `supports`) has the cases it does not support left out of `run`, counted on stderr with the
 // reason; a selection of only such cases is refused with exit 2 and one line; `case` still runs

@@ -913,5 +913,64 @@ TEST(VerdictPage, ACellOfOneMemberOfItsRowNamesIt) {
   EXPECT_FALSE(cell("LMP, PLM ss", steuermann).starts_with(" LMP ")) << md;
 }
 
+// Requirement: where one member of a family was run on part of a situation (AL on H_p, PM on
+// H_p and H_a), the cell is split by algorithm: AL's half is "not run on H_a" with no grade,
+// and no cell shows PM's H_a error under AL's name.
+TEST(VerdictPage, AMemberRunOnPartOfASituationIsSplitOut) {
+  std::ifstream in(testing::source_dir() / "tests" / "reports" / "data" / "battery_results.json");
+  auto doc = nlohmann::json::parse(in);
+  for (auto record : doc["problems"]) {
+    if (record["id"] == "H_p") {
+      record["id"] = "H_a";
+      record["axisymmetric"] = true;
+      doc["problems"].push_back(record);
+      break;
+    }
+  }
+  for (const std::string key : {"cases", "rows"}) {
+    nlohmann::json added = nlohmann::json::array();
+    for (const auto& e : doc[key]) {
+      const std::string id = e["id"];
+      if (!id.starts_with("H_p/") || id.find("/PM/") == std::string::npos)
+        continue;
+      nlohmann::json copy = e;
+      copy["id"] = "H_a" + id.substr(3);
+      if (copy.contains("problem"))
+        copy["problem"] = "H_a";
+      if (copy.contains("spec"))
+        copy["spec"]["problem"] = "H_a";
+      added.push_back(copy);
+    }
+    ASSERT_FALSE(added.empty()) << key;
+    for (auto& e : added)
+      doc[key].push_back(e);
+  }
+  const testing::Loaded data(doc);
+  const std::vector<RowFacts> rows = row_facts(data.index);
+  const std::vector<DivergenceFacts> singular = divergence_facts(data.index);
+  const auto situations = situation_verdicts(data.index, rows, singular);
+  const auto hertz = std::ranges::find_if(situations, [](const SituationVerdict& s) {
+    return std::ranges::find(s.problems, schema::ProblemId::H_a) != s.problems.end();
+  });
+  ASSERT_NE(hertz, situations.end());
+  int al = 0, pm = 0;
+  for (const OptionCell& c : hertz->cells) {
+    if (c.family != OptionFamily::penalty)
+      continue;
+    ASSERT_TRUE(c.algorithm.has_value()) << option_label(c);
+    if (*c.algorithm == Algorithm::AL) {
+      ++al;
+      EXPECT_EQ(c.not_run_on, std::vector<schema::ProblemId>{schema::ProblemId::H_a});
+      EXPECT_FALSE(c.worst_grade.has_value());
+    } else {
+      ++pm;
+      EXPECT_TRUE(c.not_run_on.empty());
+      EXPECT_TRUE(c.problems.contains(schema::ProblemId::H_a));
+    }
+  }
+  EXPECT_GT(al, 0);
+  EXPECT_EQ(al, pm);
+}
+
 }  // namespace
 }  // namespace cs::reports
