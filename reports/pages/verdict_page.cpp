@@ -1,6 +1,7 @@
 #include "reports/pages/verdict_page.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <functional>
 #include <map>
@@ -175,14 +176,18 @@ TemplateData advice(const SituationVerdict& s) {
   d.set("best", cells_label(s.best));
   d.set("has_avoid", !s.avoid.empty());
   d.set("avoid", cells_label(s.avoid));
-  // The flat punch: Eq. 47 failures apart from options whose F case failed (not judged).
-  std::vector<const OptionCell*> eq47, unjudged;
-  for (const OptionCell* c : s.avoid)
-    (c->n_eq47 < static_cast<int>(c->singular_rows.size()) ? eq47 : unjudged).push_back(c);
-  d.set("has_eq47_avoid", !eq47.empty());
-  d.set("eq47_avoid", cells_label(eq47));
-  d.set("has_unjudged", !unjudged.empty());
-  d.set("unjudged", cells_label(unjudged));
+  // The flat punch, each avoided option under its reason: Eq. 47 fails on a row; else an F case
+  // fails an interface check; else an F case failed; else one did not converge.
+  std::array<std::vector<const OptionCell*>, 4> why;
+  for (const OptionCell* c : s.avoid) {
+    const bool eq47 = c->n_eq47 < static_cast<int>(c->singular_rows.size());
+    why[eq47 ? 0 : c->n_not_credible > 0 ? 1 : c->n_failed > 0 ? 2 : 3].push_back(c);
+  }
+  for (const auto& [i, key] : {std::pair{0, "eq47_avoid"}, std::pair{1, "check_avoid"},
+                               std::pair{2, "failed_avoid"}, std::pair{3, "unconverged_avoid"}}) {
+    d.set(std::string("has_") + key, !why[i].empty());
+    d.set(key, cells_label(why[i]));
+  }
   d.set("has_common", !s.common_failures.empty());
   d.set("common", join_words(s.common_failures));  // "force balance and tensile pressure"
   if (s.best_grade && s.best_min && s.best_max) {

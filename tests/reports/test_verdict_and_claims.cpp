@@ -652,7 +652,7 @@ std::string verdict_page_of(const nlohmann::json& doc) {
 }
 
 // Requirement: on the flat punch, an option whose F case failed is not judged by Eq. 47: the
-// advice names it apart from the options that fail Eq. 47.
+// advice lists it to avoid for that reason, apart from the options that fail Eq. 47.
 TEST(VerdictPage, AFlatPunchOptionWhoseFineCaseFailedIsNotJudged) {
   auto doc = testing::sample_json();
   for (auto& c : doc["cases"]) {
@@ -670,14 +670,16 @@ TEST(VerdictPage, AFlatPunchOptionWhoseFineCaseFailedIsNotJudged) {
     }
   }
   const std::string md = verdict_page_of(doc);
-  EXPECT_NE(md.find("Not judged, an F case failed: AL ss Q4."), std::string::npos) << md;
+  EXPECT_NE(md.find("Avoid AL ss Q4: an F case failed, so it gives no edge stress to judge"),
+            std::string::npos)
+      << md;
   EXPECT_EQ(md.find("Avoid AL ss Q4: Eq. 47 fails"), std::string::npos) << md;
   EXPECT_NE(md.find("Avoid MPC ss Q4: Eq. 47 fails"), std::string::npos) << md;
 }
 
 // Requirement: a flat-punch option whose F case pulls (tensile pressure) is no evidence even
-// where Eq. 47 holds: its cell is marked ✗, it is to be avoided, never the best, and the
-// failure line quotes the measure.
+// where Eq. 47 holds: its cell is marked ✗, it is to be avoided for that reason (not as an
+// Eq. 47 failure nor as a failed case), never the best, and the failure line quotes the measure.
 TEST(VerdictPage, AFlatPunchOptionThatPullsIsNoEvidence) {
   auto doc = testing::sample_json();
   for (auto& c : doc["cases"]) {
@@ -685,7 +687,10 @@ TEST(VerdictPage, AFlatPunchOptionThatPullsIsNoEvidence) {
       c["interface"]["max_tensile_over_p"] = 5.0;
   }
   const std::string md = verdict_page_of(doc);
-  EXPECT_NE(md.find("Avoid AL ss Q4"), std::string::npos) << md;
+  EXPECT_NE(md.find("Avoid AL ss Q4: an F case fails an interface check (the failures below), so "
+                    "its divergence is no evidence."),
+            std::string::npos)
+      << md;
   EXPECT_NE(md.find("tensile pressure up to 5"), std::string::npos) << md;
   EXPECT_NE(md.find(" ✗ |"), std::string::npos) << md;
 }
