@@ -15,6 +15,8 @@ for a rigid obstacle, chosen by the option label:
 Against a second meshed body (IF_p) the first three use GetFEM's bricks between non-matching
 meshes (add_nodal_/add_integral_/add_penalized_contact_between_nonmatching_meshes_brick), the
 contact surface's body the slave; Nitsche is not supported there (the case fails with why).
+An initial overlap beyond the window of the integral and penalized bricks' projection fails the
+case with why (check_projection) instead of their division by zero.
 
 The case directory is read and the results written by the Python package contact_suite
 (read_case, write_results); everything here is GetFEM. The porting notes (node order, the
@@ -52,6 +54,14 @@ Q8_TO_GETFEM = (0, 4, 1, 7, 5, 3, 6, 2)
 
 class CaseError(Exception):
     """A case this adapter cannot solve: the message is the reason."""
+
+    exit_status = 3  # the adapter's refusal: not supported, or a case it cannot read
+
+
+class GetfemFailure(CaseError):
+    """GetFEM fails on a case the adapter supports (the exit status of GetFEM's own errors)."""
+
+    exit_status = 1
 
 
 def supported_bodies(case, option):
@@ -189,11 +199,79 @@ def add_contact(md, disc, case, option, E):
         raise CaseError(f"unknown option '{option}' (known: {', '.join(OPTIONS)})")
 
 
+def check_projection(gf, disc, target, case):
+    """GetfemFailure unless the projected FEM of the target's displacement that GetFEM 5.4's
+    integral and penalized bricks between non-matching meshes build (getfem_contact_and_
+    friction_integral.cc: new_projected_fem(mf_u2, mim, rg2, rg1) on all the slave's convexes)
+    has DOFs. Its projection accepts a slave integration point only nearer to the target surface
+    than 0.05 x the target convex's radius estimate (getfem_projected_fem.cc, fixed, "FIXME");
+    with none accepted it has no DOF and the brick's assembly divides 0 by 0 (SIGFPE in
+    slice_vector_on_basic_dof_of_element). So on IF_p F: its bodies overlap by 0.001 b in the
+    reference geometry, beyond F's window (at most 8.7e-4 b) but within C's and M's."""
+    projected = gf.MeshFem(disc.mesh, 2)
+    projected.set_fem(gf.Fem("projected_fem", target.mfu, disc.mim, CONTACT, CONTACT))
+    if projected.nbdof() > 0:
+        return
+    points = disc.mim.im_nodes(disc.mesh.region(CONTACT))[:2].T
+    distance, inside = surface_distance(case, case.contact.target_surface, points)
+    window = 0.05 * float(np.max(target.mesh.convex_radius(target.mesh.region(CONTACT)[0])))
+    what = "overlap" if inside.all() else "gap" if not inside.any() else "overlap or gap"
+    d = distance.min()
+    relation = (f"the initial {what} ({d:.1e}) exceeds its fixed window of 5 % of the target "
+                f"element size (at most {window:.1e} here)" if d >= window else
+                f"the initial {what} is at least {d:.1e} and its fixed window of 5 % of the "
+                f"target element size at most {window:.1e} here")
+    raise GetfemFailure(f"GetFEM 5.4's projected FEM accepts no integration point: {relation}; "
+                        "its brick would divide by zero")
+
+
+def surface_distance(case, edge_set, points):
+    """(distance, inside): each point's (m, 2) distance to the surface `edge_set` (its sides
+    straight, or quadratic through their middle node, sampled finely) and whether it lies inside
+    the body of its nearest side (behind that side, seen from outside its element)."""
+    sides = case.edge_sets[edge_set]
+    centre = {}  # a side's end nodes -> the centre of its element's corners
+    for body in case.deformable_bodies:
+        for e in body.elements:
+            c = e[:4]
+            for k in range(4):
+                centre[frozenset((int(c[k]), int(c[(k + 1) % 4])))] = case.nodes[c].mean(axis=0)
+    s = np.linspace(0.0, 1.0, 2 if sides.shape[1] == 2 else 33)
+    shape = (np.stack([1 - s, s]) if sides.shape[1] == 2 else
+             np.stack([(1 - s) * (1 - 2 * s), s * (2 * s - 1), 4 * s * (1 - s)]))
+    rows = np.arange(len(points))
+    best = np.full(len(points), np.inf)
+    inside = np.zeros(len(points), dtype=bool)
+    for side in sides:
+        curve = shape.T @ case.nodes[side]  # (len(s), 2)
+        a, ab = curve[:-1], np.diff(curve, axis=0)
+        t = np.clip(np.einsum("pkj,kj->pk", points[:, None, :] - a, ab)
+                    / np.einsum("kj,kj->k", ab, ab), 0.0, 1.0)
+        near = a + t[..., None] * ab  # (m, segments, 2): the nearest point of each segment
+        dist = np.linalg.norm(points[:, None, :] - near, axis=2)
+        k = dist.argmin(axis=1)
+        nearest = near[rows, k]
+        closer = dist[rows, k] < best
+        best[closer] = dist[rows, k][closer]
+        outward = np.stack([ab[k, 1], -ab[k, 0]], axis=1)
+        c = centre.get(frozenset((int(side[0]), int(side[1]))))
+        if c is not None:
+            outward *= np.sign(np.einsum("pj,pj->p", outward, nearest - c))[:, None]
+            inside[closer] = (np.einsum("pj,pj->p", points - nearest, outward) < 0)[closer]
+        else:
+            inside[closer] = False
+    return best, inside
+
+
 def add_meshed_contact(md, disc, target, case, option, E):
     """The option's brick between the body's region CONTACT and the target body's (small
     sliding, non-matching meshes; the body's surface is the slave): nodal or integral augmented
-    Lagrangian, or penalty, with the parameters of the rigid-obstacle bricks."""
+    Lagrangian, or penalty, with the parameters of the rigid-obstacle bricks. The integral and
+    penalized bricks are added only if GetFEM's projection accepts the contact
+    (check_projection)."""
     h = case.side_lengths(case.contact.contact_surface).min()
+    if option in ("integral_al", "penalty"):
+        check_projection(disc.gf, disc, target, case)
     if option == "nodal_al":
         md.add_initialized_data("r", [AL_FKN * E / h])
         md.add_nodal_contact_between_nonmatching_meshes_brick(
@@ -477,7 +555,7 @@ def main(argv):
         solve_and_write(cs.read_case(argv[1]), argv[2], getfem_version())
     except (CaseError, ValueError) as e:
         print(f"getfem adapter: {e}", file=sys.stderr)
-        return 3
+        return getattr(e, "exit_status", 3)
     return 0
 
 
