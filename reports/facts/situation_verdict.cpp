@@ -266,6 +266,18 @@ void rank(SituationVerdict& v) {
     v.best_noise =
         std::max({v.best_noise, c.largest_m_to_f_change, grading::kErrorResolutionPercent});
   }
+  if (v.best.empty() || v.singular || v.best_abs_spread <= v.best_noise)
+    return;
+  const OptionCell* most = *std::ranges::min_element(
+      v.best, {}, [](const OptionCell* c) { return std::abs(*c->worst_error); });
+  const double bound = std::abs(*most->worst_error) +
+                       std::max(most->largest_m_to_f_change, grading::kErrorResolutionPercent);
+  for (const OptionCell* c : v.best) {
+    if (std::abs(*c->worst_error) <= bound) {
+      v.leaders.push_back(c);
+      v.leaders_max_abs = std::max(v.leaders_max_abs, std::abs(*c->worst_error));
+    }
+  }
 }
 
 }  // namespace

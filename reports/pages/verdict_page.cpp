@@ -28,6 +28,15 @@ std::string format_points(double points) {
   return fmt::format("{:.2g} points", p);
 }
 
+/// A signed error to three significant digits ("+0.0449 %", "−0.929 %"; below 0.01 % as
+/// format_error_resolved), where two groups of errors are told apart.
+std::string format_error_precise(double percent) {
+  if (std::abs(percent) < 0.01)
+    return format_error_resolved(percent);
+  const std::string text = fmt::format("{:+.3g} %", percent);
+  return text[0] == '-' ? "−" + text.substr(1) : text;
+}
+
 std::string singular_cell(const OptionCell& c) {
   const int n = static_cast<int>(c.singular_rows.size());
   const std::string mark = c.n_not_credible > 0 ? " ✗" : "";
@@ -198,6 +207,24 @@ TemplateData advice(const SituationVerdict& s) {
     d.set("spread", format_points(spread));
     d.set("noise", format_points(s.best_noise));
     d.set("within_noise", spread <= s.best_noise);
+    // Not tied: those with the smallest F errors apart from the others of the grade.
+    std::vector<const OptionCell*> others;
+    double lo = INFINITY, hi = -INFINITY;
+    for (const OptionCell* c : s.best) {
+      if (std::ranges::count(s.leaders, c) > 0)
+        continue;
+      others.push_back(c);
+      lo = std::min(lo, *c->worst_error), hi = std::max(hi, *c->worst_error);
+    }
+    d.set("leaders", cells_label(s.leaders));
+    std::string largest = format_error_precise(s.leaders_max_abs);  // a magnitude: no sign
+    if (largest.starts_with('+'))
+      largest.erase(0, 1);
+    d.set("leaders_max", largest);
+    d.set("others", cells_label(others));
+    d.set("others_min", others.empty() ? "" : format_error_precise(lo));
+    d.set("others_max", others.empty() ? "" : format_error_precise(hi));
+    d.set("others_range", !others.empty() && lo != hi);
     d.set("one", s.best.size() == 1);
     d.set("range", *s.best_min != *s.best_max);
   }

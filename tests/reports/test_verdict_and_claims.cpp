@@ -596,6 +596,33 @@ TEST(VerdictPage, TiesCompareTheMagnitudesOfTheErrors) {
   EXPECT_NE(md.find("tied (their worst |errors| 0.04 points apart"), std::string::npos) << md;
 }
 
+// Requirement: options of the best grade that are not tied are not offered as "any of": those
+// with the smallest F errors (within the most accurate cell's M -> F change of it) are named
+// apart from the others of the grade, whose larger errors are given.
+TEST(VerdictPage, UntiedOptionsOfAGradeAreNotAnyOf) {
+  RowFacts lmp = rounded_punch_row(Algorithm::LMP, {});
+  lmp.errors = {0.5, 0.1, 0.01};  // the most accurate; one refinement moves it 0.09 points
+  RowFacts al = rounded_punch_row(Algorithm::AL, {});
+  al.errors = {0.3, 0.1, 0.05};  // 0.04 points behind: within 0.09
+  RowFacts mpc = rounded_punch_row(Algorithm::MPC, {});
+  mpc.errors = {0.9, 0.85, 0.8};  // 0.79 points behind
+  const std::vector<RowFacts> rows{lmp, al, mpc};
+  const auto situations = situation_verdicts(battery().index, rows, kNoSingularRows);
+  ASSERT_EQ(situations.size(), 1U);
+  const SituationVerdict& s = situations[0];
+  ASSERT_EQ(s.best.size(), 3U);
+  ASSERT_EQ(s.leaders.size(), 2U);
+  EXPECT_EQ(std::ranges::count_if(
+                s.leaders, [](const OptionCell* c) { return c->family == OptionFamily::mpc; }),
+            0);
+  const std::string md = verdict_page(battery().index, situations);
+  EXPECT_EQ(md.find("any of"), std::string::npos) << md;
+  EXPECT_NE(md.find("(worst |error| at most 0.05 %); also e, with larger F errors: MPC ss Q4 "
+                    "(worst error +0.8 %). Not tied"),
+            std::string::npos)
+      << md;
+}
+
 // Requirement: a value read between two nodes within its own resolution grades the read, not
 // the option: it has no part in the option's verdict cell.
 TEST(VerdictPage, AReadWithinItsResolutionIsNoPartOfTheCell) {
