@@ -9,13 +9,34 @@ double error_percent(double value, double exact) {
   return 100.0 * (value - exact) / std::abs(exact);
 }
 
+namespace {
+
+/// Eq. 46's upper bounds (|e| in %) of e, g and s.
+constexpr double kBounds[] = {1.0, 5.0, 10.0};
+
+}  // namespace
+
 schema::Grade grade_of_error(double error_percent) {
   const double e = std::abs(error_percent);
-  if (!(e < 10.0))
+  if (!(e < kBounds[2]))
     return schema::Grade::u;  // also catches NaN
-  if (e < 1.0)
+  if (e < kBounds[0])
     return schema::Grade::e;
-  return e < 5.0 ? schema::Grade::g : schema::Grade::s;
+  return e < kBounds[1] ? schema::Grade::g : schema::Grade::s;
+}
+
+double grade_band_width(schema::Grade grade) {
+  switch (grade) {
+    case schema::Grade::e:
+      return kBounds[0];
+    case schema::Grade::g:
+      return kBounds[1] - kBounds[0];
+    case schema::Grade::s:
+      return kBounds[2] - kBounds[1];
+    case schema::Grade::u:
+      break;
+  }
+  return INFINITY;
 }
 
 bool values_coincide(double a, double b) {

@@ -16,6 +16,9 @@ double error_percent(double value, double exact);
 ///   u (unsatisfactory) if |e| >= 10 or e is NaN. A boundary belongs to the worse grade.
 schema::Grade grade_of_error(double error_percent);
 
+/// How wide a grade's band of |e| is, in points: e 1 (0 to 1 %), g 4, s 5; u unbounded (inf).
+double grade_band_width(schema::Grade grade);
+
 /// The resolution at which two computed values count as the same: 0.01 %, that of the study's
 /// four-decimal values (and of its convergence verdict).
 inline constexpr double kCoincidenceRelative = 1e-4;

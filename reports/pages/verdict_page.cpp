@@ -1,4 +1,5 @@
 #include "reports/pages/verdict_page.hpp"
+#include "grading/accuracy.hpp"
 
 #include <algorithm>
 #include <array>
@@ -25,7 +26,7 @@ std::string format_points(double points) {
   const double p = std::abs(points);
   if (p == 0.0)
     return "0 points";
-  return fmt::format("{:.2g} points", p);
+  return fmt::format("{:.2g} point{}", p, p == 1.0 ? "" : "s");
 }
 
 /// A signed error to three significant digits ("+0.0449 %", "−0.929 %"; below 0.01 % as
@@ -207,6 +208,9 @@ TemplateData advice(const SituationVerdict& s) {
     d.set("spread", format_points(spread));
     d.set("noise", format_points(s.best_noise));
     d.set("within_noise", spread <= s.best_noise);
+    const double band = grading::grade_band_width(*s.best_grade);
+    d.set("wider_than_grade", spread <= s.best_noise && s.best_noise > band);
+    d.set("band", format_points(band));
     // Not tied: those with the smallest F errors apart from the others of the grade.
     std::vector<const OptionCell*> others;
     double lo = INFINITY, hi = -INFINITY;

@@ -43,6 +43,20 @@ TEST(Accuracy, StudyTable3aValueGradesAsTheStudyGradesIt) {
 }
 
 }  // namespace
+// Requirement: a grade's band width follows Eq. 46's bounds, checked against grade_of_error at
+// both edges of each band.
+TEST(Accuracy, GradeBandWidthsFollowEq46) {
+  for (const Grade g : {Grade::e, Grade::g, Grade::s}) {
+    double low = 0.0;
+    while (grade_of_error(low) != g)
+      low += 0.5;
+    const double width = grade_band_width(g);
+    EXPECT_EQ(grade_of_error(low + width - 1e-9), g);
+    EXPECT_NE(grade_of_error(low + width), g);
+  }
+  EXPECT_TRUE(std::isinf(grade_band_width(Grade::u)));
+}
+
 // Requirement: two values coincide at the study's resolution, 0.01 % of the larger magnitude,
 // pinned at the threshold on both sides, whatever the sign and the scale.
 TEST(Accuracy, ValuesCoincideWithinAHundredthOfAPercent) {

@@ -623,6 +623,29 @@ TEST(VerdictPage, UntiedOptionsOfAGradeAreNotAnyOf) {
       << md;
 }
 
+// Requirement: a tie whose tolerance (what one refinement changes) is wider than the grade's
+// band says that the meshes resolve neither a ranking nor the grade; a narrower one does not.
+TEST(VerdictPage, ATieWiderThanItsGradeSaysSo) {
+  const auto advice_of = [](double m_error) {
+    RowFacts a = rounded_punch_row(Algorithm::AL, {});
+    a.errors = {3.0, m_error, 0.5};
+    RowFacts b = rounded_punch_row(Algorithm::LMP, {});
+    b.errors = {3.0, 0.9, 0.6};
+    const std::vector<RowFacts> rows{a, b};
+    return verdict_page(battery().index,
+                        situation_verdicts(battery().index, rows, kNoSingularRows));
+  };
+  const std::string wide = advice_of(2.5);  // M -> F: 2 points, twice e's band
+  EXPECT_NE(wide.find("within 2 points: the larger of what one refinement changes in them and "
+                      "the 0.01-point resolution of the study's values), wider than grade e's "
+                      "band (1 point)"),
+            std::string::npos)
+      << wide;
+  const std::string narrow = advice_of(0.8);  // M -> F: 0.3 points
+  EXPECT_NE(narrow.find("tied"), std::string::npos) << narrow;
+  EXPECT_EQ(narrow.find("wider than grade"), std::string::npos) << narrow;
+}
+
 // Requirement: a value read between two nodes within its own resolution grades the read, not
 // the option: it has no part in the option's verdict cell.
 TEST(VerdictPage, AReadWithinItsResolutionIsNoPartOfTheCell) {
