@@ -333,6 +333,17 @@ TEST(ClaimsLedger, MpcClaimSaysWhyRowsThatFailAChecksCount) {
                     "an interface check"),
             std::string::npos)
       << md;
+  EXPECT_EQ(md.find("outside the patch tests only"), std::string::npos) << md;
+  // An MPC patch test graded e: the claim then holds outside the patch tests only, and its
+  // verdict says so in the table.
+  fx.add(ProblemId::P_p, Quantity::sigma_z_max, Element::Q4, Algorithm::MPC, ContactKind::ss,
+         1e-11);
+  const ClaimEvidence with_patch = fx.claim("mpc_unsatisfactory");
+  EXPECT_EQ(with_patch.n2, 1);
+  EXPECT_EQ(with_patch.n2_hold, 0);
+  const std::string md2 = claims_ledger({with_patch});
+  EXPECT_NE(md2.find("| reproduced outside the patch tests |"), std::string::npos) << md2;
+  EXPECT_NE(md2.find("so it is reproduced outside the patch tests only"), std::string::npos) << md2;
 }
 
 // Requirement: a value read between two nodes whose F error is within half a node spacing (the
