@@ -520,8 +520,17 @@ ClaimEvidence divergence(const std::vector<DivergenceFacts>& singular) {
 }
 
 /// Closing: AL, PM ss good for most problems; LMP, PLM fine wherever nodes can be aligned.
+/// "LMP/PLM": the algorithms in the vocabulary's order.
+std::string slash_joined(const std::set<Algorithm>& algorithms) {
+  std::string out;
+  for (const Algorithm a : algorithms)
+    out += (out.empty() ? "" : "/") + std::string(schema::to_string(a));
+  return out;
+}
+
 ClaimEvidence closing(const std::vector<RowFacts>& rows) {
   ClaimEvidence c{.key = "closing"};
+  std::set<Algorithm> run, run2;  // the algorithms of each part with evidence rows
   for (const auto& f : rows) {
     const bool penalty_ss = family_of(f.option.algorithm) == OptionFamily::penalty &&
                             f.option.contact == ContactKind::ss;
@@ -533,6 +542,7 @@ ClaimEvidence closing(const std::vector<RowFacts>& rows) {
       ++c.n_excluded;
       continue;
     }
+    (penalty_ss ? run : run2).insert(f.option.algorithm);
     if (penalty_ss) {
       ++c.n;
       c.n_hold += good_or_better(f) ? 1 : 0;
@@ -543,6 +553,8 @@ ClaimEvidence closing(const std::vector<RowFacts>& rows) {
         add_example(c, row_name(f));
     }
   }
+  c.members = slash_joined(run);
+  c.members2 = slash_joined(run2);
   c.verdict1 = verdict_of(c.n_hold, c.n, kRefined);
   c.verdict2 = verdict_of(c.n2_hold, c.n2);
   set_verdict_of_parts(c, {c.verdict1, c.verdict2});

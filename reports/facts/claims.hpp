@@ -56,8 +56,11 @@ struct ClaimEvidence {
   /// Claim 11 ("all options"): the study's algorithms with no row in the results.
   std::string not_run{};
   /// Claim 3: the algorithms of its first part that were run ("LMP", "LMP, PLM"), and whether
-  /// any MPC pair (its second part) was, evidence or not.
+  /// any MPC pair (its second part) was, evidence or not; claim 12: its first part's ("AL/PM").
   std::string members{};
+  /// Claim 12: the algorithms of its second part with evidence rows ("LMP/PLM", "LMP"); its
+  /// first part's are in `members` ("AL/PM").
+  std::string members2{};
   bool part2_run = false;
   double order_bias_z = 0.0;
 };

@@ -33,6 +33,7 @@ TemplateData claim_data(const ClaimEvidence& c) {
   d.set("has_examples2", !c.examples2.empty());
   d.set("examples2", c.examples2);
   d.set("members", c.members);
+  d.set("members2", c.members2);
   d.set("part2_run", c.part2_run);
   d.set("verdict1", to_string(c.verdict1));
   d.set("verdict2", to_string(c.verdict2));

@@ -861,6 +861,24 @@ namespace {
 
 // Requirement: claim 3 names the algorithms it ran: without PLM and MPC rows its first part is
 // "LMP" and its IMC part "not run", never "LMP, PLM" or a pair that is no evidence.
+// Requirement: the closing remarks (claim 12) name the algorithms of each part that have rows,
+// and say what the rows are ("g or better on F"); claim 6 without any MPC row says so.
+TEST(ClaimsLedger, ClosingRemarksNameTheAlgorithmsRun) {
+  std::vector<RowFacts> rows = battery().rows;
+  std::erase_if(rows, [](const RowFacts& f) {
+    return f.option.algorithm == Algorithm::PLM || f.option.algorithm == Algorithm::MPC;
+  });
+  const auto claims = study_claims(battery().index, rows, {});
+  const ClaimEvidence& closing = claim_in(claims, "closing");
+  EXPECT_EQ(closing.members, "AL/PM");
+  EXPECT_EQ(closing.members2, "LMP");
+  const std::string md = claims_ledger({closing, claim_in(claims, "mpc_unsatisfactory")});
+  EXPECT_NE(md.find(" LMP rows with aligned nodes are g or better on F"), std::string::npos) << md;
+  EXPECT_EQ(md.find("LMP/PLM rows"), std::string::npos) << md;
+  EXPECT_NE(md.find("No MPC row is in these results."), std::string::npos) << md;
+  EXPECT_EQ(md.find("On the patch tests"), std::string::npos) << md;
+}
+
 TEST(ClaimsLedger, SsEqualsNsNamesTheAlgorithmsRun) {
   std::vector<RowFacts> rows = battery().rows;
   std::erase_if(rows, [](const RowFacts& f) {
