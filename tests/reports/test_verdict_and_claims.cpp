@@ -859,16 +859,19 @@ TEST(VerdictPage, FitsOnTheFirstScreen) {
 namespace cs::reports {
 namespace {
 
-// Requirement: claim 3 names the algorithms it ran: without PLM and MPC rows its first part is
-// "LMP" and its IMC part "not run", never "LMP, PLM" or a pair that is no evidence.
-// Requirement: the closing remarks (claim 12) name the algorithms of each part that have rows,
-// and say what the rows are ("g or better on F"); claim 6 without any MPC row says so.
-TEST(ClaimsLedger, ClosingRemarksNameTheAlgorithmsRun) {
+/// The battery's claims without its PLM and MPC rows.
+std::vector<ClaimEvidence> claims_without_plm_and_mpc() {
   std::vector<RowFacts> rows = battery().rows;
   std::erase_if(rows, [](const RowFacts& f) {
     return f.option.algorithm == Algorithm::PLM || f.option.algorithm == Algorithm::MPC;
   });
-  const auto claims = study_claims(battery().index, rows, {});
+  return study_claims(battery().index, rows, {});
+}
+
+// Requirement: the closing remarks (claim 12) name the algorithms of each part that have rows,
+// and say what the rows are ("g or better on F"); claim 6 without any MPC row says so.
+TEST(ClaimsLedger, ClosingRemarksNameTheAlgorithmsRun) {
+  const auto claims = claims_without_plm_and_mpc();
   const ClaimEvidence& closing = claim_in(claims, "closing");
   EXPECT_EQ(closing.members, "AL/PM");
   EXPECT_EQ(closing.members2, "LMP");
@@ -879,12 +882,10 @@ TEST(ClaimsLedger, ClosingRemarksNameTheAlgorithmsRun) {
   EXPECT_EQ(md.find("On the patch tests"), std::string::npos) << md;
 }
 
+// Requirement: claim 3 names the algorithms it ran: without PLM and MPC rows its first part is
+// "LMP" and its IMC part "not run", never "LMP, PLM" or a pair that is no evidence.
 TEST(ClaimsLedger, SsEqualsNsNamesTheAlgorithmsRun) {
-  std::vector<RowFacts> rows = battery().rows;
-  std::erase_if(rows, [](const RowFacts& f) {
-    return f.option.algorithm == Algorithm::PLM || f.option.algorithm == Algorithm::MPC;
-  });
-  const auto claims = study_claims(battery().index, rows, {});
+  const auto claims = claims_without_plm_and_mpc();
   const ClaimEvidence& c = claim_in(claims, "ss_equals_ns");
   EXPECT_EQ(c.members, "LMP");
   EXPECT_FALSE(c.part2_run);
