@@ -151,11 +151,16 @@ MarkdownTable problem_table(const ResultsIndex& index, const schema::StudyRefere
   return t;
 }
 
-/// Counts a case in its model's line and in the code's total.
+/// Counts a case in its model's line and in the code's total; another code's time only where
+/// the case converged (a crash, a time-out or an iteration cap is no solve to time).
 void add_case(CostLine& line, CostLine& total, const CaseResult& c, bool is_ours) {
+  const bool converged = c.status == schema::CaseStatus::converged;
   for (CostLine* l : {&line, &total}) {
     (is_ours ? l->ours_cases : l->cases) += 1;
-    (is_ours ? l->ours_seconds : l->seconds) += c.wall_seconds;
+    if (is_ours)
+      l->ours_seconds += c.wall_seconds;
+    else if (converged)
+      l->seconds += c.wall_seconds;
     double& peak = is_ours ? l->ours_peak_mb : l->peak_mb;
     peak = std::max(peak, c.peak_rss_mb);
     l->converged += !is_ours && c.status == schema::CaseStatus::converged ? 1 : 0;
@@ -173,15 +178,17 @@ std::string per_case(double seconds, int cases) {
 
 MarkdownTable cost_table(const CodeCost& cost) {
   MarkdownTable t({"Models", fmt::format("{} cases (converged)", solver_display_name(cost.code)),
-                   "s per case", "peak MB", "ours: cases", "s per case", "peak MB",
+                   "s per converged case", "peak MB", "ours: cases", "s per case", "peak MB",
                    "time per case, ratio", "memory, ratio"});
   std::vector<CostLine> lines = cost.lines;
   lines.push_back(cost.total);
   for (const CostLine& l : lines) {
-    t.add_row({l.label, fmt::format("{} ({})", l.cases, l.converged), per_case(l.seconds, l.cases),
+    t.add_row({l.label, fmt::format("{} ({})", l.cases, l.converged),
+               per_case(l.seconds, l.converged),
                fmt::format("{:.0f}", l.peak_mb), std::to_string(l.ours_cases),
                per_case(l.ours_seconds, l.ours_cases), fmt::format("{:.0f}", l.ours_peak_mb),
-               ratio(l.seconds / l.cases, l.ours_seconds / l.ours_cases),
+               ratio(l.converged > 0 ? l.seconds / l.converged : 0.0,
+                     l.ours_seconds / l.ours_cases),
                ratio(l.peak_mb, l.ours_peak_mb)});
   }
   return t;

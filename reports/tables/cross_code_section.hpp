@@ -69,6 +69,7 @@ std::vector<const OptionTally*> advised(const std::vector<OptionTally>& tallies,
 struct CostLine {
   std::string label;  ///< "H<sub>p</sub> F" or "all models"
   int cases = 0, ours_cases = 0, converged = 0;
+  /// The other code's time over its converged cases; ours over all of its cases.
   double seconds = 0.0, ours_seconds = 0.0, peak_mb = 0.0, ours_peak_mb = 0.0;
 };
 struct CodeCost {
