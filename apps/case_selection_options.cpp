@@ -30,8 +30,9 @@ void add_selection_options(CLI::App& cmd, SelectionArgs& args) {
   cmd.add_option("--contacts", args.contacts, "Discretizations ss ns mortar (default: ss ns)");
   cmd.add_option("--target", args.target, "Indenter: discretized or rigid")->capture_default_str();
   cmd.add_option("--recovery", args.recoveries,
-                 "Nodal stresses: spr (patch recovery; the default) and/or extrapolated (as "
-                 "commercial codes print)");
+                 "Nodal stresses: spr (patch recovery), extrapolated (as commercial codes "
+                 "print) and/or own (another code's own nodal stresses); default: spr, and for "
+                 "a registered code (run --solver <code>) spr and own");
   cmd.add_option("--set", args.sets, "Override a parameter of every case: name=value");
   cmd.add_option("--sweep", args.sweeps,
                  "Sweep a --set parameter: key=v1,v2,... (repeatable: the cross product of the "

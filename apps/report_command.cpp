@@ -82,8 +82,9 @@ void add_report_command(CLI::App& app) {
       "--bench, a benchmark section from bench_contact_algorithms' JSON");
   cmd->add_option("--results", args->results,
                   "results.json written by `contact-suite run` (repeatable: the files are read "
-                  "as one; the first file's run is the report's run, and a case in two files is "
-                  "an error)")
+                  "as one; the first file's run is the report's run; a case or row in two "
+                  "files is kept once if the two agree (values to a relative 1e-9, a case's "
+                  "status exactly) and is an error if they differ)")
       ->required();
   cmd->add_option("--out", args->out_dir, "output directory (created if needed)")->required();
   cmd->add_option("--baseline", args->baseline,

@@ -93,21 +93,29 @@ PairFacts pair_facts(const Option& a, const Option& b, const OptionComparison& c
           same_method, cmp};
 }
 
-/// Where the study graded against a printed exact value other than ours (the Steuermann rows),
-/// ANSYS's fine-mesh value re-graded by Eq. 46 against the physical value: " (phys. g)".
-std::string ansys_physical_regrade(const ResultsIndex& index, const schema::StudyReference& study,
-                                   const StudyRowKey& r, schema::Element element,
-                                   const Option& option, const schema::RowVerdict* row) {
+/// ANSYS's fine-mesh grade on our exact value: the study's own where it graded against the same
+/// value, else its fine-mesh value re-graded by Eq. 46 against ours (the Steuermann rows, whose
+/// printed exact values differ: `regraded`). None where the study has no such value.
+struct AnsysGrade {
+  schema::Grade grade = schema::Grade::u;
+  bool regraded = false;
+};
+std::optional<AnsysGrade> ansys_grade_on_our_exact(const ResultsIndex& index,
+                                                   const schema::StudyReference& study,
+                                                   const StudyRowKey& r, schema::Element element,
+                                                   const Option& option,
+                                                   const schema::RowVerdict* row,
+                                                   const schema::StudyGrade& printed) {
   if (row == nullptr)
-    return {};
-  const auto exact = index.exact_of(*row);
+    return AnsysGrade{printed.grade, false};
+  const std::optional<double> exact = index.exact_of(*row);
   const auto match = study.find_value(r.problem, *r.quantity, element, option.algorithm,
                                       option.contact, kFinestMesh);
   if (!exact || *exact == 0.0 || match.value == nullptr || !match.value->exact ||
-      std::abs(*match.value->exact - *exact) <= 1e-4 * std::abs(*exact))
-    return {};
-  const double error = grading::error_percent(match.value->value, *exact);
-  return fmt::format(" (phys. {})", schema::to_string(grading::grade_of_error(error)));
+      grading::values_coincide(*match.value->exact, *exact))
+    return AnsysGrade{printed.grade, false};
+  return AnsysGrade{grading::grade_of_error(grading::error_percent(match.value->value, *exact)),
+                    true};
 }
 
 /// Counts one cell graded by both; a grade of ours that is not evidence is left out.
@@ -145,28 +153,34 @@ std::string table_cell(const ResultsIndex& index, const schema::StudyReference& 
   const Option& first = cls.members.front();
   count_marks(index, row, t);
   const std::string spr = format_marked_grade_cell(index, row);
-  if (!schema::traits(first.contact).in_study)
-    return spr;
+  // Every column on the extrapolated basis where the row has a twin, mortar's too, though the
+  // study has no mortar column to compare.
   const schema::RowVerdict* twin = row ? index.extrapolated_twin(*row) : nullptr;
   std::string text = spr;
   if (twin != nullptr) {
     const bool twin_luck = facts_of_row(index, *twin).luck;
     t.luck += twin_luck ? 1 : 0;
     text = fmt::format("{}{} · spr {}", format_grade_cell(index, twin), twin_luck ? " ‡" : "", spr);
+    t.extrapolated = true;
   }
+  if (!schema::traits(first.contact).in_study)
+    return text;
   const schema::StudyGrade* g =
       study.find_grade(r.problem, r.study_row, t.element, first.algorithm, first.contact);
   text += fmt::format(" │ ANSYS {}", g != nullptr ? g->cell() : std::string(kMissing));
-  text += ansys_physical_regrade(index, study, r, t.element, first, row);
   t.in_study_any = t.in_study_any || g != nullptr;
-  if (g != nullptr && row != nullptr && row->grade) {
+  if (g == nullptr)
+    return text;
+  const auto ansys = ansys_grade_on_our_exact(index, study, r, t.element, first, row, *g);
+  if (ansys->regraded)
+    text += fmt::format(" (phys. {})", schema::to_string(ansys->grade));
+  if (row != nullptr && row->grade) {
     const std::string where = r.label_md + " " + cls.label();
     const bool evidence = facts_of_row(index, *row).evidence();
-    count(t.patch, evidence, *row->grade, g->grade, where, row->errors[2]);
+    count(t.patch, evidence, *row->grade, ansys->grade, where, row->errors[2]);
     const schema::RowVerdict* printed = twin && twin->grade ? twin : row;
-    t.extrapolated = t.extrapolated || printed == twin;
     count(t.as_printed, evidence && facts_of_row(index, *printed).evidence(), *printed->grade,
-          g->grade, where, printed->errors[2]);
+          ansys->grade, where, printed->errors[2]);
   }
   return text;
 }

@@ -53,7 +53,7 @@ struct GradeTableFacts {
   schema::Element element = schema::Element::Q4;
   std::string study_table;  ///< "2a"
   MarkdownTable table{{}};
-  bool extrapolated = false;       ///< some compared cell has an extrapolated grade
+  bool extrapolated = false;       ///< some cell has an extrapolated grade
   AnsysComparison as_printed;      ///< extrapolated grade (patch where none) against ANSYS
   AnsysComparison patch;           ///< patch-recovered grade against ANSYS
   int not_credible = 0, luck = 0;  ///< cells so marked

@@ -108,6 +108,22 @@ TEST(RunCli, UnknownRecoveryIsBadInput) {
   EXPECT_FALSE(std::filesystem::exists(tmp.path() / "run"));
 }
 
+// Requirement: `own` stresses are another code's; for our solver it is bad input (exit 2, one
+// line, nothing written), not silently an extrapolation, in `run` and in `case`.
+TEST(RunCli, OwnRecoveryOfOurSolverIsBadInput) {
+  TempDir tmp;
+  const auto r = run_cli({"run", "--problems", "P_p", "--meshes", "C", "--recovery", "own", "--out",
+                          (tmp.path() / "run").string()});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("--recovery own: our solver's own nodal stresses are the patch-recovered"),
+            std::string::npos)
+      << r.err;
+  EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(tmp.path() / "run"));
+  const auto c = run_cli({"case", "P_p", "--mesh", "C", "--recovery", "own"});
+  EXPECT_EQ(c.exit_code, 2) << c.err;
+}
+
 // Requirement (issue 14): --sweep runs each case once per value, the swept value its override
 // (in its id and record), and results.json's run info records the sweep.
 TEST(RunCli, SweepRecordsItsCasesAndAxes) {

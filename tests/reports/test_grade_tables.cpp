@@ -193,6 +193,55 @@ TEST(GradeTables, CountsAgainstTheStudyLeaveOutCellsThatAreNotEvidence) {
   EXPECT_NE(md.find("3 cell(s) graded by both are left out"), std::string::npos) << md;
 }
 
+// Requirement: the counts against ANSYS compare grades on one exact value: on S(1) Q8 the study
+// graded LMP's 9.9417 e against its printed 9.9773, but against the physical 10.1956 it is g
+// (-2.49 %), so our e counts as better, not the same (the battery: same 2, better 15).
+TEST(GradeTables, CountsAgainstAnsysUseOneExactValue) {
+  const schema::ResultsDocument doc = schema::read_results_file(
+      testing::source_dir() / "tests" / "reports" / "data" / "battery_results.json");
+  const ResultsIndex index(doc);
+  const auto table = build_grade_table(index, study(), Element::Q8);
+  ASSERT_TRUE(table.has_value());
+  const auto cell = table->table.cell("S(1)", "LMP = PLM (ss = ns)");
+  ASSERT_TRUE(cell.has_value());
+  EXPECT_NE(cell->find("ANSYS e, c (phys. g)"), std::string::npos) << *cell;
+  EXPECT_EQ(table->as_printed.compared, 17);
+  EXPECT_EQ(table->as_printed.same, 2);
+  EXPECT_EQ(table->as_printed.better, 15);
+  EXPECT_EQ(table->as_printed.worse, 0);
+}
+
+// Requirement: mortar, which the study lacks, is graded on the same basis as the columns beside
+// it: where its extrapolated twin ran, that grade comes first ("g, c · spr e, c"), as for ss.
+TEST(GradeTables, MortarIsGradedOnTheExtrapolatedBasisToo) {
+  auto doc = sample_json();
+  for (const std::string key : {"cases", "rows"}) {
+    nlohmann::json added = nlohmann::json::array();
+    for (const auto& e : doc[key]) {
+      std::string id = e["id"];
+      if (!id.starts_with("H_p/") || id.find("/LMP/ss/extrapolated") == std::string::npos)
+        continue;
+      nlohmann::json copy = e;
+      id.replace(id.find("/ss/"), 4, "/mortar/");
+      copy["id"] = id;
+      if (copy.contains("contact"))
+        copy["contact"] = "mortar";
+      if (copy.contains("spec"))
+        copy["spec"]["contact"] = "mortar";
+      added.push_back(copy);
+    }
+    ASSERT_FALSE(added.empty()) << key;
+    for (auto& e : added)
+      doc[key].push_back(e);
+  }
+  const Loaded data(doc);
+  const auto table = build_grade_table(data.index, study(), Element::Q4);
+  ASSERT_TRUE(table.has_value());
+  EXPECT_EQ(table->table.cell("H<sub>p</sub> (contact)", "LMP (mortar)"), "g, c · spr e, c");
+  EXPECT_EQ(table->table.cell("H<sub>p</sub> (contact)", "LMP = PLM (ss)"),
+            "g, c · spr e, c │ ANSYS g");
+}
+
 // Requirement: a cell whose F case fails an interface check is marked not credible.
 TEST(GradeTables, MarksCellsThatAreNotCredible) {
   const Loaded data(sample_json());
