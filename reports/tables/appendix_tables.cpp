@@ -86,7 +86,11 @@ AppendixTableFacts build_one(const ResultsIndex& index, const schema::StudyRefer
                                    element_size_cell(index, our_rows, mesh)};
     for (const auto& col : sources) {
       if (col.ours) {
-        const std::string text = our_value_cell(index, class_row(index, *col.ours, slot), mesh);
+        // On ANSYS's basis where the case ran: its extrapolated nodal stresses.
+        const RowVerdict* row = class_row(index, *col.ours, slot);
+        const RowVerdict* twin = row ? index.extrapolated_twin(*row) : nullptr;
+        t.extrapolated = t.extrapolated || twin != nullptr;
+        const std::string text = our_value_cell(index, twin ? twin : row, mesh);
         t.missing = t.missing || text == kMissing;
         t.failed = t.failed || text == kFailed;
         t.not_converged = t.not_converged || text.back() == '!';
@@ -130,6 +134,7 @@ TemplateData table_data(const AppendixTableFacts& t) {
   d.set("missing", t.missing);
   d.set("failed", t.failed);
   d.set("not_converged", t.not_converged);
+  d.set("extrapolated", t.extrapolated);
   return d;
 }
 
@@ -185,8 +190,10 @@ ExactValueFacts exact_value_facts(const ResultsIndex& index, const schema::Study
     out.exact = out.exact ? out.exact : index.exact_of(*r);
     out.convention = out.convention ? out.convention : index.study_exact_of(*r);
   }
+  // The study's printed exact value, where it differs from ours at the study's resolution.
   out.printed = parse_printed(study.printed_exact(problem, quantity));
-  if (out.printed && out.exact && *out.exact != 0.0)
+  if (out.printed && out.exact && *out.exact != 0.0 &&
+      !grading::values_coincide(*out.printed, *out.exact))
     out.printed_shift = grading::error_percent(*out.printed, *out.exact);
   else
     out.printed.reset();

@@ -25,6 +25,7 @@ struct AppendixTableFacts {
   std::set<std::string> study_tables{};  ///< the study's tables the ANSYS values come from
   bool merged = false;                   ///< a column stands for coinciding algorithms
   bool via_note = false, missing = false, failed = false, not_converged = false;
+  bool extrapolated = false;  ///< our values are those of extrapolated stresses (ANSYS's basis)
 };
 
 /// One table per (problem, quantity, element, contact) present, in the study's order.
@@ -34,8 +35,8 @@ std::vector<AppendixTableFacts> build_appendix_tables(const ResultsIndex& index,
 /// The exact value above a problem's tables: ours, and the study's printed one.
 struct ExactValueFacts {
   bool singular = false;
-  std::optional<double> exact;          ///< ours (the physically consistent value)
-  std::optional<double> printed;        ///< the study's printed value, when it is a number
+  std::optional<double> exact;    ///< ours (the physically consistent value)
+  std::optional<double> printed;  ///< the study's printed value, where a number other than ours
   std::optional<double> printed_shift;  ///< (printed - ours) / ours, percent
   std::optional<double> convention;     ///< under the study's convention (docs/conventions.md)
 };

@@ -58,6 +58,23 @@ TEST(AppendixTables, OurValueBesideTheStudysValue) {
   EXPECT_EQ(t->study_tables, (std::set<std::string>{"7a"}));
 }
 
+// Requirement: our values stand beside ANSYS's on its basis, extrapolated nodal stresses, where
+// that case ran (H_p Q4 LMP ss: +1.25 % extrapolated, against the patch-recovered value the
+// rest of the report grades), and the table says so; where it did not, the patch-recovered one.
+TEST(AppendixTables, OurValuesAreOnAnsysBasisWhereThatCaseRan) {
+  const Loaded data(sample_json());
+  const auto tables = build_appendix_tables(data.index, study());
+  const AppendixTableFacts* t =
+      find_table(tables, ProblemId::H_p, Quantity::sigma_c, Element::Q4, ContactKind::ss);
+  ASSERT_NE(t, nullptr);
+  EXPECT_TRUE(t->extrapolated);
+  EXPECT_EQ(cell(*t, F, "LMP = PLM"), "1.2892 (+1.25 %)");
+  const AppendixTableFacts* q8 =
+      find_table(tables, ProblemId::H_p, Quantity::sigma_c, Element::Q8, ContactKind::ss);
+  ASSERT_NE(q8, nullptr);
+  EXPECT_FALSE(q8->extrapolated);
+}
+
 TEST(AppendixTables, TheStudysEitherColumnsAndTheSurfaceToSurfaceTable) {
   const Loaded data(sample_json());
   const auto tables = build_appendix_tables(data.index, study());
