@@ -77,6 +77,8 @@ DivergenceTableFacts build_divergence_table(const ResultsIndex& index,
         (f.strict ? out.strict : out.strict_fails)++;
         out.eq47_only += f.eq47 && !f.strict;
         out.fine_not_converged += f.fine_converged ? 0 : 1;
+        out.not_credible += f.credible ? 0 : 1;
+        out.not_credible_eq47 += !f.credible && f.eq47 ? 1 : 0;
       } else {
         ++out.undecided;
       }
@@ -91,7 +93,12 @@ DivergenceTableFacts build_divergence_table(const ResultsIndex& index,
       if (theirs[0] && theirs[1] && theirs[2])
         study_verdict = grading::divergence_verdict(*theirs[0], *theirs[1], *theirs[2]);
       out.study_strict_fails += study_verdict && !study_verdict->diverges;
-      const auto a = sequence_cells(row->values, ours), b = sequence_cells(theirs, study_verdict);
+      auto a = sequence_cells(row->values, ours);
+      const auto b = sequence_cells(theirs, study_verdict);
+      if (const auto it = facts.find(row); it != facts.end() && !it->second.credible) {
+        a[1] += " ✗";  // an F case fails an interface check: the verdict is no evidence
+        a[3] += " ✗";
+      }
       const bool fine_ok = index.state(*row, kFinestMesh) != MeshState::not_converged;
       out.table.add_row({std::string(schema::label(s.problem)),
                          std::string(schema::to_string(s.element)), option.label(),
@@ -119,6 +126,8 @@ std::string divergence_section(const ResultsIndex& index, const schema::StudyRef
                                {"study_strict_fails", t.study_strict_fails}})
     d.set(key, std::to_string(n));
   d.set("fine_not_converged", count_or_false(t.fine_not_converged));
+  d.set("not_credible", count_or_false(t.not_credible));
+  d.set("not_credible_eq47", std::to_string(t.not_credible_eq47));
   return tidy_markdown(render_template(templates::divergence_table, d));
 }
 

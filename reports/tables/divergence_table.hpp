@@ -24,6 +24,8 @@ struct DivergenceTableFacts {
   int eq47 = 0, eq47_fails = 0, undecided = 0;  ///< ours, by Eq. 47 (undecided: not C, M, F)
   int strict = 0, strict_fails = 0, eq47_only = 0;
   int fine_not_converged = 0;  ///< rows whose F case did not converge (values: last iterate)
+  int not_credible = 0;        ///< rows whose F case fails an interface check (✗)
+  int not_credible_eq47 = 0;   ///< of them, those that pass Eq. 47 all the same
   int study_strict_fails = 0;  ///< ANSYS's values failing the strict verdict
 };
 

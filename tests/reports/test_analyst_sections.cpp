@@ -143,6 +143,25 @@ TEST(DivergenceTable, CountsComeFromTheRowFacts) {
   EXPECT_EQ(static_cast<int>(t.table.n_rows()), complete + t.undecided);
 }
 
+// Requirement: a flat-punch row whose F case fails an interface check (AL ss pulling, tensile
+// pressure 5 p) keeps its Eq. 47 verdict in the table but marked ✗, and is counted as no
+// evidence, also where it passes Eq. 47.
+TEST(DivergenceTable, ARowThatFailsAnInterfaceCheckIsMarked) {
+  auto doc = sample_json();
+  for (auto& c : doc["cases"]) {
+    if (c["id"] == "F_p/F/Q4/AL/ss")
+      c["interface"]["max_tensile_over_p"] = 5.0;
+  }
+  const Loaded data(doc);
+  const DivergenceTableFacts t = build_divergence_table(data.index, study());
+  EXPECT_EQ(t.not_credible, 1);
+  EXPECT_EQ(t.not_credible_eq47, 1);
+  const std::string md = t.table.render();
+  EXPECT_NE(md.find("| AL ss |"), std::string::npos) << md;
+  const auto row = md.substr(md.find("| AL ss |"));
+  EXPECT_NE(row.substr(0, row.find('\n')).find("diverges ✗"), std::string::npos) << row;
+}
+
 }  // namespace
 }  // namespace cs::reports
 
