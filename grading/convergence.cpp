@@ -48,6 +48,16 @@ double node_read_resolution_percent(double node_spacing, double exact) {
   return 100.0 * 0.5 * node_spacing / std::abs(exact);
 }
 
+namespace {
+
+/// A change beyond its floor by more than round-off: an order needs both; a read stepping exactly
+/// one node per halving (its changes equal to the floors) gives none.
+bool beyond(double change, double floor) {
+  return change > floor * (1.0 + 1e-9);
+}
+
+}  // namespace
+
 ConvergenceAssessment assess_convergence(double e_c, double e_m, double e_f,
                                          double resolution_percent) {
   ConvergenceAssessment out;
@@ -116,14 +126,19 @@ ObservedOrder observed_order(double e_c, double e_m, double e_f, double resoluti
     out.note = "at noise level";
     return out;
   }
-  if (a.trend != Trend::converging || !(*p1 > 0.0) || !(*p2 > 0.0)) {
+  if (a.trend == Trend::converging && (!(*p1 > 0.0) || !(*p2 > 0.0))) {
+    out.note = "at noise level";  // converging, but one pair does not fall beyond its floor
+    return out;
+  }
+  if (a.trend != Trend::converging) {
     // Magnitudes that fall on both pairs but by no more than the floors (a read between nodes
     // stepping one node per halving) are monotone: the trend, not the order, refuses them.
     const bool falls = std::abs(e_c) > std::abs(e_m) && std::abs(e_m) > std::abs(e_f);
     out.note = falls ? "falls within its floors: not converging by the trend" : "not monotone";
     return out;
   }
-  if (std::abs(e_m - e_c) < a.pair_floors[0] || std::abs(e_f - e_m) < a.pair_floors[1]) {
+  if (!beyond(std::abs(e_m - e_c), a.pair_floors[0]) ||
+      !beyond(std::abs(e_f - e_m), a.pair_floors[1])) {
     out.note = "at noise level";  // one pair's change within its floor: no order from it
     return out;
   }

@@ -179,14 +179,24 @@ TEST(ObservedOrder, NoOrderForNoiseOrNonMonotoneSequences) {
   const auto growing = observed_order(1.0, 2.0, 3.0);
   EXPECT_FALSE(growing.order.has_value());
   EXPECT_EQ(growing.note, "not monotone");
-  // 4 -> 4.05 -> 1: converging (the growth on M is within the floor of 0.1) but p1 < 0.
+  // 4 -> 4.05 -> 1: converging (the growth on M is within the floor of 0.1), so p1 < 0 comes
+  // from a change at noise level.
   const auto dip = observed_order(4.0, 4.05, 1.0);
   EXPECT_FALSE(dip.order.has_value());
-  EXPECT_EQ(dip.note, "not monotone");
+  EXPECT_EQ(dip.note, "at noise level");
+  // A read that stops at one node on M and F (CM_p Q8 AL mortar c/a, +14.9/+1.65/+1.65 %):
+  // converging, no order, and no "not monotone".
+  EXPECT_EQ(observed_order(14.9, 1.65, 1.65, 8.839).note, "at noise level");
   // Not converging, with one pair within its floor: not monotone, not noise.
   EXPECT_EQ(observed_order(-0.47, -0.61, -0.56).note, "not monotone");
-  // Falling on both pairs by exactly the floors of a read between nodes, one node per halving
-  // (as CM_p Q4 AL ss c/a, +23.7/+14.9/+6.07 %): monotone, refused by the trend, not settled.
+  // Falling on both pairs by exactly the floors of a read between nodes, one node per halving,
+  // yet converging by the trend (as CM_p Q8 AL ns c/a, +14.9/+6.07/+1.65 % with floors 8.839
+  // and 4.419 points): no change is beyond its floor, so no order (it read "converging, 1.59").
+  const auto step = observed_order(14.9, 14.9 - 8.839, 14.9 - 8.839 - 4.4195, 8.839);
+  EXPECT_FALSE(step.order.has_value());
+  EXPECT_EQ(step.note, "at noise level");
+  // Falling on both pairs by exactly the floors (as CM_p Q4 AL ss c/a, +23.7/+14.9/+6.07 %),
+  // by less than C's floor in all: monotone, refused by the trend, not settled.
   EXPECT_EQ(observed_order(24.0, 16.0, 8.0, 16.0).note,
             "falls within its floors: not converging by the trend");
 }
