@@ -1,6 +1,7 @@
 #include "reports/report_writer.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include <fmt/format.h>
 
@@ -104,25 +105,45 @@ std::string variants_section(const ResultsIndex& index) {
   const std::vector<const schema::RowVerdict*> rows = other_variant_rows(index);
   if (rows.empty())
     return {};
+  // The fourth mesh VF where a row has it (the refinement study): shown, not graded.
+  const auto vf = [&](const schema::RowVerdict* r) -> const schema::QuantityResult* {
+    const schema::CaseResult* c = index.case_of(*r, schema::MeshLevel::VF);
+    const schema::QuantityResult* q = index.quantity_of(*r, schema::MeshLevel::VF);
+    return c != nullptr && c->status == schema::CaseStatus::converged && q != nullptr &&
+                   std::isfinite(q->value)
+               ? q
+               : nullptr;
+  };
+  const bool has_vf = std::ranges::any_of(rows, [&](const auto* r) { return vf(r) != nullptr; });
   std::vector<std::string> header{"Row", "Variant"};
   for (const auto mesh : kMeshes)
     header.emplace_back(schema::to_string(mesh));
+  if (has_vf)
+    header.emplace_back("VF");
   header.emplace_back("Grade");
   const auto cells = [&](const schema::RowVerdict* r) -> std::vector<std::string> {
     const schema::CaseSpec& s = r->spec;
-    return {fmt::format("{} {} {} {} {}", schema::to_string(s.problem),
-                        schema::to_string(r->quantity), schema::to_string(s.element),
-                        schema::to_string(s.algorithm), schema::to_string(s.contact)),
-            variant_of(s),
-            format_value_and_error(r->values[0], r->errors[0]),
-            format_value_and_error(r->values[1], r->errors[1]),
-            format_value_and_error(r->values[2], r->errors[2]),
-            !r->diverging   ? format_marked_grade_cell(index, r)
-            : *r->diverging ? "diverges"
-                            : "does not diverge"};
+    std::vector<std::string> row{
+        fmt::format("{} {} {} {} {}", schema::to_string(s.problem), schema::to_string(r->quantity),
+                    schema::to_string(s.element), schema::to_string(s.algorithm),
+                    schema::to_string(s.contact)),
+        variant_of(s), format_value_and_error(r->values[0], r->errors[0]),
+        format_value_and_error(r->values[1], r->errors[1]),
+        format_value_and_error(r->values[2], r->errors[2])};
+    if (has_vf) {
+      const schema::QuantityResult* q = vf(r);
+      row.push_back(q == nullptr    ? std::string(kMissing)
+                    : q->singular() ? format_value(q->value)
+                                    : format_value_and_error(q->value, q->error_percent));
+    }
+    row.push_back(!r->diverging   ? format_marked_grade_cell(index, r)
+                  : *r->diverging ? "diverges"
+                                  : "does not diverge");
+    return row;
   };
   TemplateData d("table", table_of(header, rows, cells).render());
   d.set("marks_legend", evidence_marks_legend());
+  d.set("has_vf", has_vf);
   return render_template(templates::variants_section, d);
 }
 

@@ -42,6 +42,28 @@ TEST(RecoverySection, ExtrapolatedRowsAreTwinsNotVariants) {
   EXPECT_EQ(variants_section(data.index).find("extrapolated"), std::string::npos);
 }
 
+// Requirement: the variants appendix shows a row's fourth mesh VF where its case ran and
+// converged (S(1/3) Q4 MPC ss rigid reads +0.69 % on F and +91 % on VF), not graded, and "—"
+// where no VF case converged.
+TEST(VariantsSection, ShowsTheFourthMeshWhereItRan) {
+  auto doc = sample_json();
+  nlohmann::json vf;
+  for (const auto& c : doc["cases"]) {
+    if (c["id"] == "H_p/F/Q4/AL/ss/rigid")
+      vf = c;
+  }
+  ASSERT_FALSE(vf.is_null());
+  vf["id"] = "H_p/VF/Q4/AL/ss/rigid";
+  vf["mesh"] = "VF";
+  doc["cases"].push_back(vf);
+  testing::set_value(doc, "H_p/VF/Q4/AL/ss/rigid", "sigma_c", 1.2732395 * 1.91);
+  const Loaded data(doc);
+  const std::string md = variants_section(data.index);
+  EXPECT_NE(md.find("| VF | Grade |"), std::string::npos) << md;
+  EXPECT_NE(md.find("| 2.4319 (+91.0 %) |"), std::string::npos) << md;
+  EXPECT_EQ(variants_section(Loaded(sample_json()).index).find("| VF |"), std::string::npos);
+}
+
 // Requirement: the section counts the option sets graded both ways, and lists those whose grade
 // differs with both errors, their grades and the contact pressure's error.
 TEST(RecoverySection, ListsTheOptionSetsWhoseGradeDiffers) {
