@@ -11,6 +11,7 @@
 
 #include "adapters/protocol/solver_registry.hpp"
 #include "adapters/registered_codes.hpp"
+#include "apps/case_selection_options.hpp"
 #include "apps/usage_error.hpp"
 #include "platform/output_transaction.hpp"
 #include "schema/results_file.hpp"
@@ -64,7 +65,7 @@ suites::CaseSpec make_spec(const CaseArgs& args) {
   // Validate the parameters now: a bad --set is bad input, not a failed case.
   suites::Parameters(suites::problem_descriptor(spec.problem).parameters, spec.overrides,
                      suites::to_string(spec.problem));
-  suites::validate_case(spec);
+  validate_command_case(spec);
   return spec;
 }
 

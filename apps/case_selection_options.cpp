@@ -4,6 +4,7 @@
 
 #include "suites/problem_catalog.hpp"
 #include "suites/problem_setup.hpp"
+#include "suites/suite_error.hpp"
 
 namespace cs::apps {
 namespace {
@@ -53,9 +54,17 @@ suites::CaseSelection make_selection(const SelectionArgs& args) {
   return sel;
 }
 
+void validate_command_case(const suites::CaseSpec& spec) {
+  if (spec.recovery == schema::Recovery::own && spec.solver == schema::SolverKind::builtin)
+    throw suites::SuiteInputError(
+        "--recovery own: our solver's own nodal stresses are the patch-recovered ones (spr); own "
+        "is another code's stresses (run --solver <code>)");
+  suites::validate_case(spec);  // --set keys, values; e.g. MPC with friction is refused
+}
+
 void validate_cases(const std::vector<suites::CaseSpec>& cases) {
   for (const auto& spec : cases)
-    suites::validate_case(spec);  // --set keys, values; e.g. MPC with friction is refused
+    validate_command_case(spec);
 }
 
 }  // namespace cs::apps

@@ -27,8 +27,11 @@ void add_selection_options(CLI::App& cmd, SelectionArgs& args);
 /// name, SuiteInputError for an empty list item, a malformed --set or --sweep.
 suites::CaseSelection make_selection(const SelectionArgs& args);
 
-/// Checks every case before anything runs: its --set keys and values exist for its problem and
-/// its options combine (e.g. MPC with friction is refused). Throws SuiteInputError.
+/// Checks a case a command is asked to run before anything runs: its --set keys and values exist
+/// for its problem, its options combine (e.g. MPC with friction is refused), and our solver is
+/// not asked for `own` stresses (another code's). Throws SuiteInputError.
+void validate_command_case(const suites::CaseSpec& spec);
+/// validate_command_case for every case.
 void validate_cases(const std::vector<suites::CaseSpec>& cases);
 
 }  // namespace cs::apps

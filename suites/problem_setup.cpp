@@ -19,10 +19,6 @@ ProblemSetup build_problem(const CaseSpec& spec) {
 }
 
 void validate_case(const CaseSpec& spec) {
-  if (spec.recovery == schema::Recovery::own && spec.solver == schema::SolverKind::builtin)
-    throw SuiteInputError(
-        "--recovery own: our solver's own nodal stresses are the patch-recovered ones (spr); own "
-        "is another code's stresses (run --solver <code>)");
   const ProblemDescriptor& d = problem_descriptor(spec.problem);
   const Parameters params(d.parameters, spec.overrides, to_string(spec.problem));
   if (declares(d.parameters, "mu"))
