@@ -8,7 +8,8 @@
 //   ContactAllOptions/<problem>/<mesh>/<element>                e.g. ContactAllOptions/H_p/F/Q4
 // Google Benchmark appends "/iterations:1/manual_time" to the names it prints.
 //
-// Contact: one contact analysis.
+// Contact: one contact analysis, with the contact settings the suite gives that case (the
+// problem's FKN, FTOLN and pinball: suites::contact_settings), so that it is a case of the results.
 //   time     the contact analysis: assembly, constraint rows, condensation (one sparse
 //            factorization with the contact DOFs ordered last, then dense BLAS-3), the active-set
 //            iterations and the displacement recovery;
@@ -76,14 +77,21 @@ using Clock = std::chrono::steady_clock;
 /// The problems of the timing matrix.
 constexpr suites::ProblemId kProblems[] = {suites::ProblemId::H_p, suites::ProblemId::S_1_7,
                                            suites::ProblemId::Pprime_p};
-constexpr solver::ContactDiscretization kDiscretizations[] = {
-    solver::ContactDiscretization::NodeToSurface, solver::ContactDiscretization::SurfaceToSurface,
-    solver::ContactDiscretization::Mortar};
-constexpr solver::ContactAlgorithm kAlgorithms[] = {
-    solver::ContactAlgorithm::Penalty, solver::ContactAlgorithm::AugmentedLagrangian,
-    solver::ContactAlgorithm::LagrangeMultiplier, solver::ContactAlgorithm::MultipointConstraint};
+constexpr suites::ContactKind kDiscretizations[] = {
+    suites::ContactKind::ns, suites::ContactKind::ss, suites::ContactKind::mortar};
+constexpr suites::Algorithm kAlgorithms[] = {suites::Algorithm::PM, suites::Algorithm::AL,
+                                             suites::Algorithm::LMP, suites::Algorithm::MPC};
 constexpr int kCasesPerModel =
     static_cast<int>(std::size(kDiscretizations) * std::size(kAlgorithms));
+
+/// The contact settings of `model` with `contact` and `algorithm` as a case of the suite runs
+/// them (the problem's FKN, FTOLN and pinball), so that a timing is of a case of the results.
+solver::ContactSettings case_settings(suites::CaseSpec model, suites::ContactKind contact,
+                                      suites::Algorithm algorithm) {
+  model.contact = contact;
+  model.algorithm = algorithm;
+  return suites::contact_settings(model);
+}
 
 double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
@@ -197,12 +205,9 @@ void BM_ContactAllOptions(benchmark::State& state, const suites::CaseSpec& spec)
     solver::ContactAnalysis contact(elastic, setup.pair);
     converged = 0;
     for (const auto discretization : kDiscretizations) {
-      for (const auto algorithm : kAlgorithms) {
-        solver::ContactSettings settings;
-        settings.discretization = discretization;
-        settings.algorithm = algorithm;
-        converged += contact.solve(settings).converged() ? 1 : 0;
-      }
+      for (const auto algorithm : kAlgorithms)
+        converged +=
+            contact.solve(case_settings(spec, discretization, algorithm)).converged() ? 1 : 0;
     }
     seconds = seconds_since(start);
     state.SetIterationTime(seconds);
@@ -320,12 +325,10 @@ void register_benchmarks() {
   for (const suites::CaseSpec& spec : models()) {
     for (const auto discretization : kDiscretizations) {
       for (const auto algorithm : kAlgorithms) {
-        solver::ContactSettings settings;
-        settings.discretization = discretization;
-        settings.algorithm = algorithm;
-        const std::string name =
-            fmt::format("Contact/{}/{}/{}", model_name(spec), solver::to_string(discretization),
-                        solver::to_string(algorithm));
+        const solver::ContactSettings settings = case_settings(spec, discretization, algorithm);
+        const std::string name = fmt::format("Contact/{}/{}/{}", model_name(spec),
+                                             solver::to_string(settings.discretization),
+                                             solver::to_string(settings.algorithm));
         benchmark::RegisterBenchmark(name.c_str(), BM_Contact, spec, settings)
             ->UseManualTime()
             ->Iterations(1)
