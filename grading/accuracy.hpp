@@ -19,8 +19,9 @@ schema::Grade grade_of_error(double error_percent);
 /// How wide a grade's band of |e| is, in points: e 1 (0 to 1 %), g 4, s 5; u unbounded (inf).
 double grade_band_width(schema::Grade grade);
 
-/// The resolution at which two computed values count as the same: 0.01 %, that of the study's
-/// four-decimal values (and of its convergence verdict).
+/// The resolution at which two computed values count as the same: 0.01 %, four decimals of a
+/// value near 1 as the study prints most of its values (and the resolution of its convergence
+/// flag, in points of error).
 inline constexpr double kCoincidenceRelative = 1e-4;
 
 /// Whether two values coincide at the study's resolution:

@@ -270,8 +270,8 @@ void rank(SituationVerdict& v) {
     return;
   const OptionCell* most = *std::ranges::min_element(
       v.best, {}, [](const OptionCell* c) { return std::abs(*c->worst_error); });
-  const double bound = std::abs(*most->worst_error) +
-                       std::max(most->largest_m_to_f_change, grading::kErrorResolutionPercent);
+  v.leaders_noise = std::max(most->largest_m_to_f_change, grading::kErrorResolutionPercent);
+  const double bound = std::abs(*most->worst_error) + v.leaders_noise;
   for (const OptionCell* c : v.best) {
     if (std::abs(*c->worst_error) <= bound) {
       v.leaders.push_back(c);

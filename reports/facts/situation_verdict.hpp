@@ -75,6 +75,7 @@ struct SituationVerdict {
   /// of `best` have the grade with larger F errors.
   std::vector<const OptionCell*> leaders;
   double leaders_max_abs = 0.0;  ///< the largest worst |error| of `leaders` (%)
+  double leaders_noise = 0.0;    ///< their bound over the smallest (points)
 };
 
 /// The situations present in the results, in the report's order.

@@ -186,12 +186,13 @@ TemplateData advice(const SituationVerdict& s) {
   d.set("best", cells_label(s.best));
   d.set("has_avoid", !s.avoid.empty());
   d.set("avoid", cells_label(s.avoid));
-  // The flat punch, each avoided option under its reason: Eq. 47 fails on a row; else an F case
-  // fails an interface check; else an F case failed; else one did not converge.
+  // The flat punch, each avoided option under its reason: an F case fails an interface check
+  // (which makes any Eq. 47 verdict of it no evidence); else Eq. 47 fails on a row; else an F
+  // case failed; else one did not converge.
   std::array<std::vector<const OptionCell*>, 4> why;
   for (const OptionCell* c : s.avoid) {
     const bool eq47 = c->n_eq47 < static_cast<int>(c->singular_rows.size());
-    why[eq47 ? 0 : c->n_not_credible > 0 ? 1 : c->n_failed > 0 ? 2 : 3].push_back(c);
+    why[c->n_not_credible > 0 ? 1 : eq47 ? 0 : c->n_failed > 0 ? 2 : 3].push_back(c);
   }
   for (const auto& [i, key] : {std::pair{0, "eq47_avoid"}, std::pair{1, "check_avoid"},
                                std::pair{2, "failed_avoid"}, std::pair{3, "unconverged_avoid"}}) {
@@ -225,6 +226,7 @@ TemplateData advice(const SituationVerdict& s) {
     if (largest.starts_with('+'))
       largest.erase(0, 1);
     d.set("leaders_max", largest);
+    d.set("leaders_noise", format_points(s.leaders_noise));
     d.set("others", cells_label(others));
     d.set("others_min", others.empty() ? "" : format_error_precise(lo));
     d.set("others_max", others.empty() ? "" : format_error_precise(hi));
@@ -252,7 +254,7 @@ std::string verdict_cell(const OptionCell& c) {
     lacking += fmt::format("{}not run on {}", lacking.empty() ? "" : " · ", join_words(labels));
   }
   if (!c.singular_rows.empty())
-    return singular_cell(c) + (lacking.empty() ? "" : " · " + lacking);
+    return singular_cell(c) + (lacking.empty() ? "" : " (" + lacking + ")");
   if (!c.worst_error)
     return lacking.empty() ? std::string(kMissing) : lacking;
   // A fine case that did not converge: its last iterate's error, and no grade.
@@ -265,7 +267,8 @@ std::string verdict_cell(const OptionCell& c) {
     out += " ‡";
   if (c.n_not_converged > 0)
     out += " †";
-  return lacking.empty() ? out : out + " · " + lacking;
+  // What the cell lacks in parentheses, so that a split cell's " · " separates algorithms only.
+  return lacking.empty() ? out : out + " (" + lacking + ")";
 }
 
 std::string verdict_page(const ResultsIndex& index, const std::vector<SituationVerdict>& situations,

@@ -456,7 +456,7 @@ TEST(CrossCodeSection, TheVerdictPageGivesEachOtherCodesAdvice) {
             std::string::npos);
   EXPECT_NE(verdict.find("**Other codes.** Their options are rows of the matrices, named by code"),
             std::string::npos);
-  EXPECT_NE(verdict.find("; [Other codes beside ours](appendix-cross-code.md))"),
+  EXPECT_NE(verdict.find("; [Other codes beside ours](appendix-cross-code.md)):"),
             std::string::npos);
   EXPECT_NE(verdict.find("\n- " + lines[0] + "\n"), std::string::npos);
   EXPECT_NE(verdict.find("**Caveats.** Solver: ours and calculix. Graded with patch-recovered "

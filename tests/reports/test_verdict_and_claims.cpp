@@ -628,8 +628,12 @@ TEST(VerdictPage, UntiedOptionsOfAGradeAreNotAnyOf) {
             0);
   const std::string md = verdict_page(battery().index, situations);
   EXPECT_EQ(md.find("any of"), std::string::npos) << md;
-  EXPECT_NE(md.find("(worst |error| at most 0.05 %); also e, with larger F errors: MPC ss Q4 "
-                    "(worst error +0.8 %). Not tied"),
+  EXPECT_NE(md.find("all e, not tied: their worst |errors| lie 0.79 points apart, more than one "
+                    "refinement moves them (0.09 points)."),
+            std::string::npos)
+      << md;
+  EXPECT_NE(md.find("(worst |error| at most 0.05 %, within 0.09 points of the smallest: what one "
+                    "refinement changes in it). Larger: MPC ss Q4 (worst error +0.8 %)."),
             std::string::npos)
       << md;
 }
