@@ -1,5 +1,4 @@
 #include "reports/pages/verdict_page.hpp"
-#include "grading/accuracy.hpp"
 
 #include <algorithm>
 #include <array>
@@ -12,6 +11,7 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include "grading/accuracy.hpp"
 #include "reports/facts/solvers.hpp"
 #include "reports/render/template_text.hpp"
 #include "reports/tables/markdown_table.hpp"
