@@ -53,6 +53,13 @@ TrustedEstimate trusted_estimate(const schema::RowVerdict& row) {
         return x && std::abs(*x) <= kErrorResolutionPercent;
       }))
     return {nullptr, "within the study's resolution on every mesh: nothing to extrapolate"};
+  const auto within_resolution = [](const std::optional<double>& a,
+                                    const std::optional<double>& b) {
+    return a && b && std::abs(*a - *b) <= kErrorResolutionPercent;
+  };
+  if (within_resolution(row.errors[0], row.errors[1]) &&
+      within_resolution(row.errors[1], row.errors[2]))
+    return {nullptr, "settled within the study's resolution: nothing to extrapolate"};
   if (schema::read_between_nodes(row.quantity))
     return {nullptr, "read between two nodes: it moves by whole nodes"};
   const double e_c = row.errors[0].value_or(0.0), e_m = row.errors[1].value_or(0.0);

@@ -30,14 +30,15 @@ struct TrustedEstimate {
 };
 
 /// The row's estimate when it is asymptotic (differences of one sign that shrink), its errors
-/// are not all within the study's resolution (a patch test: nothing to extrapolate), its quantity
-/// is read at a point (one read between two nodes moves by whole nodes: no power of h describes
-/// it), C and M resolve it (errors below kUnresolvedErrorPercent: MPC's
-/// +279/+79/+8 % extrapolates to -31 %) and its order is at least kMinimumRichardsonOrder
-/// (S(1) AL ns at extent 8, +0.35/+0.11/-0.13 %, order 0.035, extrapolates to -9.8 %).
-/// The orders of the errors (observed_order) are not asked for: they assume the
-/// values converge to the exact value, and a limit that differs from it (the finite block of
-/// the extent study) is what an estimate is for. Otherwise the note of the rule that refused it.
+/// are not all within the study's resolution (a patch test: nothing to extrapolate), its errors
+/// move by more than that resolution on some pair (a settled bias: nothing to extrapolate), its
+/// quantity is read at a point (one read between two nodes moves by whole nodes: no power of h
+/// describes it), C and M resolve it (errors below kUnresolvedErrorPercent: MPC's +279/+79/+8 %
+/// extrapolates to -31 %) and its order is at least kMinimumRichardsonOrder (S(1) AL ns at extent
+/// 8, +0.35/+0.11/-0.13 %, order 0.035, extrapolates to -9.8 %). The orders of the errors
+/// (observed_order) are not asked for: they assume the values converge to the exact value, and a
+/// limit that differs from it (the finite block of the extent study) is what an estimate is for.
+/// Otherwise the note of the rule that refused it.
 TrustedEstimate trusted_estimate(const schema::RowVerdict& row);
 
 }  // namespace cs::grading

@@ -300,7 +300,7 @@ std::string model_md(const BenchModel& m) {
 std::vector<BenchRow::Measurement> BenchRow::measurements() const {
   std::vector<Measurement> out = earlier;
   if (ratio())
-    out.push_back({*ratio(), ratio_stddev});
+    out.push_back({*ratio(), ratio_stddev, reference_ms()});
   return out;
 }
 

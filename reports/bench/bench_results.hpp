@@ -75,6 +75,7 @@ struct BenchRow {
   struct Measurement {
     double ratio = 0.0;
     std::optional<double> stddev;
+    std::optional<double> reference_ms;  ///< the model's reference in that file
   };
   /// The same case measured in earlier files (this row is the last file's).
   std::vector<Measurement> earlier;

@@ -1,6 +1,7 @@
 #include "reports/bench/bench_section.hpp"
 
 #include <algorithm>
+#include <functional>
 #include <map>
 
 #include <fmt/format.h>
@@ -60,6 +61,35 @@ TemplateData row_data(const BenchRow* b) {
   return d;
 }
 
+/// The models whose reference (one assembly + factorization + solve) differs between the files
+/// that measured them by more than 10 %, the largest first: "H_p, mesh F, Q4: 15.0 to 20.6 ms".
+/// A ratio divides by its own file's reference, so across files it moves with it.
+TemplateData reference_spread(const std::vector<const BenchRow*>& contact) {
+  std::map<BenchModel, std::pair<double, double>> range;  // model -> (lowest, highest) in ms
+  for (const BenchRow* b : contact) {
+    for (const auto& m : b->measurements()) {
+      if (!m.reference_ms)
+        continue;
+      auto [it, added] = range.try_emplace(b->model, *m.reference_ms, *m.reference_ms);
+      it->second = {std::min(it->second.first, *m.reference_ms),
+                    std::max(it->second.second, *m.reference_ms)};
+    }
+  }
+  std::vector<std::pair<double, std::string>> wide;
+  for (const auto& [model, r] : range) {
+    if (r.second > 1.1 * r.first)
+      wide.emplace_back(r.second / r.first,
+                        fmt::format("{}: {:.3g} to {:.3g} ms", model_md(model), r.first, r.second));
+  }
+  if (wide.empty())
+    return TemplateData(false);
+  std::ranges::sort(wide, std::greater<>());
+  std::vector<std::string> text;
+  for (const auto& w : wide)
+    text.push_back(w.second);
+  return TemplateData(fmt::format("{}", fmt::join(text, "; ")));
+}
+
 /// The cases with a ratio below the physical floor of 1, and the lowest of them.
 TemplateData below_floor(const std::vector<const BenchRow*>& contact) {
   std::vector<const BenchRow*> below;
@@ -82,6 +112,7 @@ TemplateData below_floor(const std::vector<const BenchRow*>& contact) {
         fmt::format("{} {} {}", model_md(b->model), name_of(b->contact), name_of(b->algorithm)));
   d.set("lowest", fmt::format("{}", fmt::join(names, "; ")));
   d.set("lowest_ratio", fmt::format("{:.2f}", lowest));
+  d.set("spread", reference_spread(contact));
   return d;
 }
 

@@ -14,6 +14,7 @@
 #include "reports/render/template_text.hpp"
 #include "reports/tables/grade_tables.hpp"
 #include "reports/tables/markdown_table.hpp"
+#include "reports/tables/section_support.hpp"
 
 namespace cs::reports {
 namespace {
@@ -152,16 +153,24 @@ std::string recovery_section(const ResultsIndex& index) {
   TemplateData d;
   d.set("has_twins", index.has_extrapolated_twins());
   d.set("elements", template_list(compare_recoveries(index), comparison_data));
-  int both = 0, same = 0;  // the flat punch: Eq. 47 both ways
+  // The flat punch: Eq. 47 both ways, on rows that are evidence (a row whose F case fails an
+  // interface check or did not converge has no verdict to compare; the twins share its solve).
+  int both = 0, same = 0, left_out = 0;
   for (const RowVerdict* row : index.baseline_rows()) {
     const RowVerdict* twin = index.extrapolated_twin(*row);
     if (twin == nullptr || !row->diverging || !twin->diverging)
       continue;
+    const RowFacts f = facts_of_row(index, *row);
+    if (!f.credible || !f.fine_converged) {
+      ++left_out;
+      continue;
+    }
     ++both;
     same += *row->diverging == *twin->diverging ? 1 : 0;
   }
-  d.set("has_divergence", both > 0);
+  d.set("has_divergence", both + left_out > 0);
   d.set("divergence_same", fmt::format("{} of {}", same, both));
+  d.set("divergence_left_out", count_or_false(left_out));
   std::vector<RecoveryPair> differing = graded_pairs(index);
   std::erase_if(differing,
                 [](const RecoveryPair& p) { return *p.spr->grade == *p.extrapolated->grade; });

@@ -95,8 +95,12 @@ std::string error_table(const std::vector<ParameterSeries>& series,
       const SeriesPoint* p = s.at(v);
       row.push_back(!p || !p->error
                         ? (p ? std::string(to_string(p->status)) : kMissing)
-                        : fmt::format("{} {}{}, {} it{}", format_error_resolved(*p->error),
-                                      schema::to_string(grading::grade_of_error(*p->error)),
+                        : fmt::format("{}{}{}, {} it{}", format_error_resolved(*p->error),
+                                      // a case that did not converge is not graded
+                                      p->converged()
+                                          ? " " + std::string(schema::to_string(
+                                                      grading::grade_of_error(*p->error)))
+                                          : std::string(),
                                       credible(*p) ? "" : " ✗", p->iterations,
                                       p->converged() ? "" : " (not converged)"));
     }
@@ -272,20 +276,27 @@ TemplateData fkn_convergence(const ResultsIndex& index, const SeriesRefs& series
   }
   if (complete.empty())
     return TemplateData(false);
-  int not_credible = 0, cases = 0;  // the F cases of the rows at the converging values
+  // The F cases of the rows at the converging values (a case serves several rows: H_p's two
+  // stresses are read from one analysis).
+  std::set<std::string> cases, not_credible;
   for (double v : converging) {
     for (const ParameterSeries* s : complete) {
-      if (const SeriesPoint* p = s->at(v)) {
-        ++cases;
-        not_credible += credible(*p) ? 0 : 1;
-      }
+      const SeriesPoint* p = s->at(v);
+      if (p == nullptr || (p->result == nullptr && p->row == nullptr))
+        continue;
+      schema::CaseSpec fine = p->result != nullptr ? p->result->spec : p->row->spec;
+      fine.mesh = schema::MeshLevel::F;
+      const std::string id = schema::case_id(fine);
+      cases.insert(id);
+      if (!credible(*p))
+        not_credible.insert(id);
     }
   }
   TemplateData d("n", std::to_string(complete.size()));
   d.set("window", converging.empty() ? TemplateData(false)
                                      : TemplateData(parameter_window(converging, values)));
-  d.set("not_credible", count_or_false(not_credible));
-  d.set("cases", std::to_string(cases));
+  d.set("not_credible", count_or_false(not_credible.size()));
+  d.set("cases", std::to_string(cases.size()));
   return d;
 }
 

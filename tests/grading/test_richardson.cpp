@@ -81,6 +81,14 @@ TEST(TrustedEstimate, EachRuleAtItsThreshold) {
   ASSERT_NE(biased.estimate, nullptr);
   EXPECT_NEAR(*biased.estimate->richardson, 10.1, 1e-9);
   EXPECT_EQ(trusted_estimate(schema::RowVerdict{}).estimate, nullptr);  // no estimate at all
+  // Settled within the study's 0.01 points on both pairs (P_a Q8 AL ns, a +0.71 % bias whose
+  // changes are 6e-6 and 5e-7 points): refused, however regular its ratios look; one pair beyond
+  // 0.01 points keeps it.
+  const TrustedEstimate settled =
+      trusted_estimate(row_with_errors({0.7097934, 0.7097994, 0.7097999}));
+  EXPECT_EQ(settled.estimate, nullptr);
+  EXPECT_EQ(settled.note, "settled within the study's resolution: nothing to extrapolate");
+  EXPECT_NE(trusted_estimate(row_with_errors({0.76, 0.73, 0.72})).estimate, nullptr);
 }
 
 }  // namespace

@@ -100,6 +100,13 @@ TEST(SweepSection, FknAnswersFromTheNumbers) {
       << md;
   EXPECT_NE(md.find("−6.30 % s, 8 it"), std::string::npos) << md;
   EXPECT_NE(md.find("(not converged)"), std::string::npos);
+  // A case that did not converge is not graded: its cell reads "<error>, <n> it (not
+  // converged)", never a grade letter beside the error.
+  for (std::size_t at = md.find(" (not converged)"); at != std::string::npos;
+       at = md.find(" (not converged)", at + 1)) {
+    const std::string cell = md.substr(md.rfind('|', at) + 1, at - md.rfind('|', at) - 1);
+    EXPECT_EQ(cell.find(" % "), std::string::npos) << cell;  // "+0.23 %, 13 it"
+  }
   EXPECT_NE(md.find("Convergence (c) needs the C, M and F meshes"), std::string::npos);
   // One panel (H_a sigma_c F Q4) with three curves.
   const auto series = sweep_series(doc, "fkn");
@@ -187,6 +194,19 @@ TEST(SweepSection, FknConvergenceCountsItsRows) {
                        "interface check"),
             std::string::npos)
       << pulls;
+  // Two quantities read from one analysis are two rows but one fine-mesh case.
+  for (auto& c : doc.cases) {
+    auto second = c.quantities[0];
+    second.quantity = Quantity::sigma_h;
+    c.quantities.push_back(second);
+  }
+  doc.rows = suites::make_row_verdicts(doc.cases);
+  const ResultsIndex two(doc);
+  const std::string rows2 = sweep_section(two, testing::study(), {});
+  EXPECT_NE(rows2.find("the 2 run on C, M and F all converge (c) at FKN = 1, where 1 of their 1 "
+                       "fine-mesh cases fail an interface check"),
+            std::string::npos)
+      << rows2;
 }
 
 // Requirement: a swept case that fails an interface check is marked ✗ in the table and the
