@@ -7,6 +7,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <sstream>
 #include <string>
 
@@ -33,6 +34,40 @@ inline std::filesystem::path study_dir() {
 inline nlohmann::json sample_json() {
   std::ifstream in(sample_path());
   return nlohmann::json::parse(in);
+}
+
+/// Appends to `doc`'s cases and rows an edited copy of each whose id `select` accepts (`edit`
+/// changes its id and fields); a test that finds none to copy fails.
+inline void add_edited_copies(nlohmann::json& doc,
+                              const std::function<bool(const std::string&)>& select,
+                              const std::function<void(nlohmann::json&)>& edit) {
+  for (const std::string key : {"cases", "rows"}) {
+    nlohmann::json added = nlohmann::json::array();
+    for (const auto& e : doc[key]) {
+      if (!select(e["id"].get<std::string>()))
+        continue;
+      nlohmann::json copy = e;
+      edit(copy);
+      added.push_back(std::move(copy));
+    }
+    EXPECT_FALSE(added.empty()) << key;
+    for (auto& e : added)
+      doc[key].push_back(std::move(e));
+  }
+}
+
+/// add_edited_copies renaming `from`'s cases and rows (ids "<from>/...") to problem `to`.
+inline void copy_problem(nlohmann::json& doc, const std::string& from, const std::string& to,
+                         const std::function<bool(const std::string&)>& select) {
+  add_edited_copies(
+      doc, [&](const std::string& id) { return id.starts_with(from + "/") && select(id); },
+      [&](nlohmann::json& e) {
+        e["id"] = to + e["id"].get<std::string>().substr(from.size());
+        if (e.contains("problem"))
+          e["problem"] = to;
+        if (e.contains("spec"))
+          e["spec"]["problem"] = to;
+      });
 }
 
 inline const schema::StudyReference& study() {

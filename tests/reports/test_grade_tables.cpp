@@ -215,25 +215,19 @@ TEST(GradeTables, CountsAgainstAnsysUseOneExactValue) {
 // it: where its extrapolated twin ran, that grade comes first ("g, c · spr e, c"), as for ss.
 TEST(GradeTables, MortarIsGradedOnTheExtrapolatedBasisToo) {
   auto doc = sample_json();
-  for (const std::string key : {"cases", "rows"}) {
-    nlohmann::json added = nlohmann::json::array();
-    for (const auto& e : doc[key]) {
-      std::string id = e["id"];
-      if (!id.starts_with("H_p/") || id.find("/LMP/ss/extrapolated") == std::string::npos)
-        continue;
-      nlohmann::json copy = e;
-      id.replace(id.find("/ss/"), 4, "/mortar/");
-      copy["id"] = id;
-      if (copy.contains("contact"))
-        copy["contact"] = "mortar";
-      if (copy.contains("spec"))
-        copy["spec"]["contact"] = "mortar";
-      added.push_back(copy);
-    }
-    ASSERT_FALSE(added.empty()) << key;
-    for (auto& e : added)
-      doc[key].push_back(e);
-  }
+  testing::add_edited_copies(
+      doc,
+      [](const std::string& id) {
+        return id.starts_with("H_p/") && id.find("/LMP/ss/extrapolated") != std::string::npos;
+      },
+      [](nlohmann::json& e) {
+        std::string id = e["id"];
+        e["id"] = id.replace(id.find("/ss/"), 4, "/mortar/");
+        if (e.contains("contact"))
+          e["contact"] = "mortar";
+        if (e.contains("spec"))
+          e["spec"]["contact"] = "mortar";
+      });
   const Loaded data(doc);
   const auto table = build_grade_table(data.index, study(), Element::Q4);
   ASSERT_TRUE(table.has_value());

@@ -915,26 +915,9 @@ TEST(VerdictPage, ACellNotRunOnEveryProblemOfItsSituationHasNoGrade) {
   p_a["id"] = "P_a";
   p_a["axisymmetric"] = true;
   doc["problems"].push_back(p_a);
-  const auto renamed = [](nlohmann::json e) {
-    std::string id = e["id"];
-    e["id"] = "P_a" + id.substr(3);
-    if (e.contains("problem"))
-      e["problem"] = "P_a";
-    if (e.contains("spec"))
-      e["spec"]["problem"] = "P_a";
-    return e;
-  };
-  for (const std::string key : {"cases", "rows"}) {
-    nlohmann::json added = nlohmann::json::array();
-    for (const auto& e : doc[key]) {
-      const std::string id = e["id"];
-      if (id.starts_with("P_p/") && id.find("/LMP/") != std::string::npos)
-        added.push_back(renamed(e));
-    }
-    ASSERT_FALSE(added.empty()) << key;
-    for (auto& e : added)
-      doc[key].push_back(e);
-  }
+  testing::copy_problem(doc, "P_p", "P_a", [](const std::string& id) {
+    return id.find("/LMP/") != std::string::npos;
+  });
   const testing::Loaded data(doc);
   const std::vector<RowFacts> rows = row_facts(data.index);  // the cells point into them
   const std::vector<DivergenceFacts> singular = divergence_facts(data.index);
@@ -1016,24 +999,8 @@ TEST(VerdictPage, AMemberRunOnPartOfASituationIsSplitOut) {
       break;
     }
   }
-  for (const std::string key : {"cases", "rows"}) {
-    nlohmann::json added = nlohmann::json::array();
-    for (const auto& e : doc[key]) {
-      const std::string id = e["id"];
-      if (!id.starts_with("H_p/") || id.find("/PM/") == std::string::npos)
-        continue;
-      nlohmann::json copy = e;
-      copy["id"] = "H_a" + id.substr(3);
-      if (copy.contains("problem"))
-        copy["problem"] = "H_a";
-      if (copy.contains("spec"))
-        copy["spec"]["problem"] = "H_a";
-      added.push_back(copy);
-    }
-    ASSERT_FALSE(added.empty()) << key;
-    for (auto& e : added)
-      doc[key].push_back(e);
-  }
+  testing::copy_problem(doc, "H_p", "H_a",
+                        [](const std::string& id) { return id.find("/PM/") != std::string::npos; });
   const testing::Loaded data(doc);
   const std::vector<RowFacts> rows = row_facts(data.index);
   const std::vector<DivergenceFacts> singular = divergence_facts(data.index);
