@@ -30,11 +30,11 @@ std::vector<const RowVerdict*> all_rows(const ResultsIndex& index) {
   return rows;
 }
 
-/// "H<sub>p</sub> sigma_c Q4 LMP ss", with the variant ("rigid") when there is one.
+/// "H<sub>p</sub> σ̄<sub>c</sub> Q4 LMP ss", with the variant ("rigid") when there is one.
 std::string row_label(const RowVerdict& row) {
   const std::string variant = variant_of(row.spec);
-  return fmt::format("{} {} {} {}{}", schema::label(row.spec.problem),
-                     schema::to_string(row.quantity), schema::to_string(row.spec.element),
+  return fmt::format("{} {} {} {}{}", schema::label(row.spec.problem), schema::label(row.quantity),
+                     schema::to_string(row.spec.element),
                      Option{row.spec.algorithm, row.spec.contact}.label(),
                      variant.empty() ? "" : " (" + variant + ")");
 }

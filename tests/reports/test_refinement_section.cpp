@@ -145,6 +145,9 @@ TEST(RefinementSection, MarksVfValuesOfCasesThatDidNotConverge) {
   const std::string md = refinement_section(index);
   EXPECT_NE(md.find("| +85.0 % (not converged) |"), std::string::npos) << md;
   EXPECT_EQ(md.find("| +85.0 % |"), std::string::npos) << md;
+  // Rows are named with the quantity's label, as the prose names it, not its id.
+  EXPECT_NE(md.find("H<sub>p</sub> σ̄<sub>c</sub> Q4"), std::string::npos) << md;
+  EXPECT_EQ(md.find("H<sub>p</sub> sigma_c"), std::string::npos) << md;
   const std::string csv = estimates_csv(index);
   EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 5);  // header and 4 rows
   EXPECT_NE(csv.find(",1.85,85,not_converged,"), std::string::npos) << csv;
