@@ -3,6 +3,7 @@
 // fine mesh sigma_c is +0.45 % (e) patch-recovered and +1.25 % (g) extrapolated; sigma_h is
 // +2.10 % (g) and -0.51 % (e).
 
+#include <fstream>
 #include <string>
 
 #include <algorithm>
@@ -62,6 +63,37 @@ TEST(VariantsSection, ShowsTheFourthMeshWhereItRan) {
   EXPECT_NE(md.find("| VF | Grade |"), std::string::npos) << md;
   EXPECT_NE(md.find("| 2.4319 (+91.0 %) |"), std::string::npos) << md;
   EXPECT_EQ(variants_section(Loaded(sample_json()).index).find("| VF |"), std::string::npos);
+}
+
+// Requirement: the flat punch's Eq. 47 is compared both ways on rows that are evidence only: a
+// row whose F case fails an interface check has no verdict to compare and is counted apart.
+TEST(RecoverySection, FlatPunchComparesRowsThatAreEvidence) {
+  const auto section = [](nlohmann::json doc) {
+    const Loaded data(doc);
+    return recovery_section(data.index);
+  };
+  std::ifstream in(testing::source_dir() / "tests" / "reports" / "data" / "battery_results.json");
+  const auto battery = nlohmann::json::parse(in);
+  const std::string md = section(battery);
+  const auto at = md.find("Flat punch (Eq. 47): the divergence verdict is the same both ways on ");
+  ASSERT_NE(at, std::string::npos) << md;
+  // One more F_p case pulling: its rows (both bases share the solve) leave the comparison.
+  auto pulling = battery;
+  for (auto& c : pulling["cases"]) {
+    const std::string id = c["id"];
+    if (id == "F_p/F/Q4/AL/ss" || id == "F_p/F/Q4/AL/ss/extrapolated")
+      c["interface"]["max_tensile_over_p"] = 5.0;
+  }
+  const std::string md2 = section(pulling);
+  const auto count = [](const std::string& text, const std::string& lead) {
+    const auto i = text.find(lead) + lead.size();
+    return std::stoi(text.substr(text.find(" of ", i) + 4));
+  };
+  const std::string lead = "the same both ways on ";
+  EXPECT_EQ(count(md2, lead), count(md, lead) - 1) << md2;
+  EXPECT_NE(md2.find("rows whose F case fails an interface check or did not converge are left out"),
+            std::string::npos)
+      << md2;
 }
 
 // Requirement: the section counts the option sets graded both ways, and lists those whose grade
