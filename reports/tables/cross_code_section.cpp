@@ -183,13 +183,12 @@ MarkdownTable cost_table(const CodeCost& cost) {
   std::vector<CostLine> lines = cost.lines;
   lines.push_back(cost.total);
   for (const CostLine& l : lines) {
-    t.add_row({l.label, fmt::format("{} ({})", l.cases, l.converged),
-               per_case(l.seconds, l.converged),
-               fmt::format("{:.0f}", l.peak_mb), std::to_string(l.ours_cases),
-               per_case(l.ours_seconds, l.ours_cases), fmt::format("{:.0f}", l.ours_peak_mb),
-               ratio(l.converged > 0 ? l.seconds / l.converged : 0.0,
-                     l.ours_seconds / l.ours_cases),
-               ratio(l.peak_mb, l.ours_peak_mb)});
+    t.add_row(
+        {l.label, fmt::format("{} ({})", l.cases, l.converged), per_case(l.seconds, l.converged),
+         fmt::format("{:.0f}", l.peak_mb), std::to_string(l.ours_cases),
+         per_case(l.ours_seconds, l.ours_cases), fmt::format("{:.0f}", l.ours_peak_mb),
+         ratio(l.converged > 0 ? l.seconds / l.converged : 0.0, l.ours_seconds / l.ours_cases),
+         ratio(l.peak_mb, l.ours_peak_mb)});
   }
   return t;
 }
