@@ -192,7 +192,7 @@ std::string report_markdown(const ResultsIndex& index, const ReportContent& cont
   verdict_singular.insert(verdict_singular.begin(), singular.begin(), singular.end());
   d.set("verdict",
         verdict_page(index, situation_verdicts(index, verdict_rows, verdict_singular), others));
-  d.set("ledger", claims_ledger(study_claims(index, rows, singular)));
+  d.set("ledger", claims_ledger(study_claims(index, rows, singular, content.bench)));
   const auto links = [](const ReportPage& p) {
     TemplateData l;
     l.set("file", p.file);
@@ -255,8 +255,9 @@ ReportOutcome write_report(const schema::ResultsDocument& results, const ReportO
   const std::string cross_code_md =
       cross_code_section(index, study, cross_code_figures, options.option_mappings,
                          cost_index ? &*cost_index : nullptr);
-  const ReportContent content{figures,       mesh_figures,  baseline.has_value(), bench_md,
-                              sweep_figures, cross_code_md, options.companions};
+  const ReportContent content{
+      figures,       mesh_figures,  baseline.has_value(), bench_md,
+      sweep_figures, cross_code_md, options.companions,   bench ? &*bench : nullptr};
   const std::vector<ReportPage> problems = problem_pages(index, figures, mesh_figures);
   const std::vector<ReportPage> appendices = appendix_pages(index, study, content);
   for (const auto& page : problems)

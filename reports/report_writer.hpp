@@ -71,6 +71,8 @@ struct ReportOutcome {
 ReportOutcome write_report(const schema::ResultsDocument& results, const ReportOptions& options);
 
 /// What report.md holds besides the results document and the study's data.
+struct BenchResults;
+
 struct ReportContent {
   FigureSet figures;            ///< the figures section's (figures/figures.hpp)
   FigureSet mesh_figures;       ///< Figure 3 (empty: none)
@@ -79,6 +81,7 @@ struct ReportContent {
   FigureSet sweep_figures;      ///< the parameter-sweep section's (figures/sweep_figure.hpp)
   std::string cross_code_md;    ///< the cross-code section (tables/cross_code_section.hpp)
   std::vector<CompanionReport> companions;  ///< other reports linked under the title
+  const BenchResults* bench = nullptr;      ///< the benchmarks (claim 7), if given
 };
 
 /// One Markdown file of the report besides report.md: a problem's page or an appendix.

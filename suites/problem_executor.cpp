@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include "solver/contact/repeated_solve.hpp"
 #include "solver/io/vtu_writer.hpp"
 #include "solver/mesh/mesh_sets.hpp"
 #include "suites/friction_cases.hpp"
@@ -96,7 +97,7 @@ solver::ContactResult ProblemExecutor::solve_with_load_control(
   const RigidLoadControl& control = *setup_->load_control;
   constexpr int kMaxSteps = 30;
   constexpr double kLoadTolerance = 1e-10;  // relative; the answer is linear in delta per set
-  int iterations = 0;
+  int iterations = 0, augmentations = 0;
   // One ContactAnalysis for every step (and every case of the group): a changed advance is a
   // changed prescribed value, which it picks up with one forward solve, not a new condensation.
   solver::ContactAnalysis& contact = contact_analysis();
@@ -105,6 +106,7 @@ solver::ContactResult ProblemExecutor::solve_with_load_control(
     elastic_->update_prescribed_values();
     solver::ContactResult r = contact.solve(settings);
     iterations += r.active_set_iterations;
+    augmentations += r.augmentations;
     load = r.displacement.size() > 0 ? support_reaction(r.displacement) : std::nan("");
     return r;
   };
@@ -119,6 +121,7 @@ solver::ContactResult ProblemExecutor::solve_with_load_control(
       break;
     if (std::abs(f1 - control.target_load) <= kLoadTolerance * control.target_load) {
       r.active_set_iterations = iterations;
+      r.augmentations = augmentations;
       return r;
     }
     const double slope = (f1 - f0) / (d1 - d0);
@@ -128,6 +131,7 @@ solver::ContactResult ProblemExecutor::solve_with_load_control(
     d1 = d1 + (control.target_load - f1) / slope;
   }
   r.active_set_iterations = iterations;
+  r.augmentations = augmentations;
   if (r.status == solver::ContactStatus::Converged) {
     r.status = solver::ContactStatus::NotConverged;
     r.reason = fmt::format("rigid punch load control: load {:.6g} vs target {:.6g}", f1,
@@ -139,6 +143,7 @@ solver::ContactResult ProblemExecutor::solve_with_load_control(
 void ProblemExecutor::recover_whole_field() {
   whole_field_ = true;
   last_contact_.reset();
+  recent_.clear();  // partial fields
   if (contact_)
     contact_->recover_only_at({});
 }
@@ -184,16 +189,32 @@ const solver::ContactResult& ProblemExecutor::contact_solution(const CaseSpec& s
     return last_contact_->second;
   last_contact_.reset();
   const solver::ContactSettings settings = contact_settings(spec);
+  key_spec.algorithm = Algorithm::AL;  // the model and its parameters: what the solves share
+  const std::string model_key = case_id(key_spec);
   solver::ContactResult contact;
-  if (setup_->load_control) {
-    contact = solve_with_load_control(settings);
+  const auto earlier = std::find_if(recent_.begin(), recent_.end(), [&](const auto& r) {
+    return r.first == model_key && solver::repeats_solve(settings, r.second);
+  });
+  if (earlier != recent_.end()) {
+    contact = earlier->second;
+    contact.settings = settings;
   } else {
-    contact = setup_->load_steps.empty()
-                  ? contact_analysis().solve(settings)
-                  : solve_load_steps(contact_analysis(), settings, setup_->load_steps);
+    ++contact_solves_;
+    contact = solve(settings);
   }
+  recent_.emplace_back(model_key, contact);
+  if (recent_.size() > kRecentSolutions)
+    recent_.pop_front();
   last_contact_.emplace(key, std::move(contact));
   return last_contact_->second;
+}
+
+solver::ContactResult ProblemExecutor::solve(const solver::ContactSettings& settings) {
+  if (setup_->load_control)
+    return solve_with_load_control(settings);
+  return setup_->load_steps.empty()
+             ? contact_analysis().solve(settings)
+             : solve_load_steps(contact_analysis(), settings, setup_->load_steps);
 }
 
 CaseResult ProblemExecutor::run(const CaseSpec& spec) {

@@ -3,6 +3,8 @@
 // and each case (algorithm, contact discretization, contact settings) is a contact solve on
 // the shared ContactAnalysis, which in turn shares constraint rows and condensations.
 
+#include <cstddef>
+#include <deque>
 #include <memory>
 #include <optional>
 #include <string>
@@ -55,14 +57,21 @@ class ProblemExecutor final : public GroupExecutor {
   /// (recovered on first call: a case itself recovers only its sampled surface). Throws
   /// std::logic_error after a case run without recover_whole_field().
   const std::optional<solver::StressField>& last_stresses();
+  /// How many contact solves the cases run so far took: a case that only recovers another way,
+  /// or whose solve would repeat a recent one (contact_solution), takes none.
+  int contact_solves() const { return contact_solves_; }
   /// Writes the model with the displacement and nodal stresses of the last case run as a
   /// .vtu file (atomically). Throws std::runtime_error if the last case produced no values.
   void write_vtu(const std::string& path);
 
  private:
   /// The contact solution of `spec`: solved, or the last one when only the recovery differs
-  /// (the matrix puts a case's recoveries next to each other).
+  /// (the matrix puts a case's recoveries next to each other), or a recent one of the same
+  /// model that solving would repeat step for step (solver::repeats_solve: PLM after LMP
+  /// without friction, PM after an AL solve that needed no augmentation).
   const solver::ContactResult& contact_solution(const CaseSpec& spec);
+  /// One contact solve of the model: under load control, over the load steps, or at once.
+  solver::ContactResult solve(const solver::ContactSettings& settings);
   solver::ContactResult solve_with_load_control(const solver::ContactSettings& settings);
   double support_reaction(const Eigen::VectorXd& u) const;
   /// The contact analysis, made on first use, recovering what the cases read.
@@ -84,6 +93,12 @@ class ProblemExecutor final : public GroupExecutor {
   /// The sampled surface's elements and patches, found on the first case.
   std::optional<solver::SurfaceStressRecovery> surface_recovery_;
   std::optional<std::pair<std::string, solver::ContactResult>> last_contact_;
+  /// The matrix runs one algorithm over every contact discretization (ns, ss, mortar) before
+  /// the next, AL before PM and LMP before PLM: the last three solutions, each keyed by its
+  /// case but for the algorithm and recovery.
+  static constexpr std::size_t kRecentSolutions = 3;
+  std::deque<std::pair<std::string, solver::ContactResult>> recent_;
+  int contact_solves_ = 0;
   std::optional<double> applied_load_;
   bool whole_field_ = false;
 };

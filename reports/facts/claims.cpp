@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 
 #include "grading/convergence.hpp"
+#include "reports/bench/bench_results.hpp"
 #include "reports/facts/refinement_claim.hpp"
 #include "reports/tables/markdown_table.hpp"
 
@@ -336,38 +337,55 @@ double median_of(std::vector<double> v) {
   return v[v.size() / 2];
 }
 
-/// IMC fastest: per model (problem, F, element, discretization), is MPC's case time below the
-/// fastest other option's by more than the run's timing noise? The noise is what two options
-/// that solve the same equations (LMP and PLM, frictionless) differ by in one model: the median
-/// of |t_LMP / t_PLM - 1| over the frictionless models (figure2, in %; 0 when no model has
-/// both); when PLM, run after LMP, is the faster in too many of them (order_bias_z), the
-/// times rank the order of the run and the claim is not testable from them. n_hold:
-/// faster beyond it; n2_hold: slower beyond it; n2: within it, a tie. figure: the median of
-/// t_MPC / t_fastest other.
+/// IMC fastest, from the benchmarks, which time each option's contact analysis alone: per
+/// fine-mesh model (problem, element, discretization), is MPC's time below the fastest other
+/// option's by more than the timing noise? The noise is what two benchmarks of the same
+/// computation differ by: PM and AL where AL took no augmentation and PM's active-set
+/// iterations (AL's first pass is PM's solve), the median of |t_AL / t_PM - 1| (figure2, in %;
+/// 0 when no model has such a pair). When AL, timed after PM, is the faster in too many of them
+/// (order_bias_z), the times rank the order of the run and the claim is not testable from
+/// them. n_hold: faster beyond the noise; n2_hold: slower beyond it; n2: within it, a tie.
+/// figure: the median of t_MPC / t_fastest other.
 /// The sign test's threshold for claim 7: z > 3 leaves chance below 0.3 % (two-sided).
 constexpr double kOrderBiasZ = 3.0;
 
-ClaimEvidence mpc_fastest(const ResultsIndex& index) {
-  ClaimEvidence c{.key = "mpc_fastest"};
-  using Model = std::tuple<ProblemId, Element, ContactKind>;
-  std::map<Model, std::map<Algorithm, double>> times;
-  for (const auto& r : index.results().cases) {
-    if (r.spec.mesh != schema::MeshLevel::F || !r.is_baseline() ||
-        r.status != schema::CaseStatus::converged)
-      continue;
-    times[{r.spec.problem, r.spec.element, r.spec.contact}][r.spec.algorithm] = r.wall_seconds;
+/// The benchmarks of one fine-mesh model that finished and converged, by option.
+using BenchTimes = std::map<BenchMethod, const BenchRow*>;
+
+std::map<std::tuple<BenchModel, ContactKind>, BenchTimes> fine_mesh_times(
+    const BenchResults& bench) {
+  std::map<std::tuple<BenchModel, ContactKind>, BenchTimes> out;
+  for (const BenchRow* r : bench.of(BenchFamily::Contact)) {
+    if (r->model.mesh == schema::MeshLevel::F && r->converged() && r->time_ms > 0.0)
+      out[{r->model, r->contact}][r->algorithm] = r;
   }
+  return out;
+}
+
+/// |t_AL / t_PM - 1| where AL made PM's computation; counts the order of the pair in `c`.
+std::optional<double> same_work_spread(const BenchTimes& t, ClaimEvidence& c) {
+  const auto pm = t.find(BenchMethod::PM), al = t.find(BenchMethod::AL);
+  if (pm == t.end() || al == t.end())
+    return std::nullopt;
+  const BenchRow &p = *pm->second, &a = *al->second;
+  const auto iterations = p.counter("active_set_iterations");
+  if (!iterations || a.counter("augmentations") != 0.0 ||
+      a.counter("active_set_iterations") != iterations)
+    return std::nullopt;
+  ++c.n_order_pairs;
+  c.n_later_faster += *a.time_ms < *p.time_ms ? 1 : 0;
+  return std::abs(*a.time_ms / *p.time_ms - 1.0);
+}
+
+ClaimEvidence mpc_fastest(const BenchResults* bench) {
+  ClaimEvidence c{.key = "mpc_fastest"};
+  if (bench == nullptr)
+    return c;
+  const auto times = fine_mesh_times(*bench);
   std::vector<double> same_work;
   for (const auto& [model, t] : times) {
-    const schema::ProblemRecord* p = index.problem(std::get<0>(model));
-    if (p && p->situation == schema::Situation::frictional)
-      continue;  // with friction LMP and PLM solve other equations
-    const auto lmp = t.find(Algorithm::LMP), plm = t.find(Algorithm::PLM);
-    if (lmp != t.end() && plm != t.end() && plm->second > 0) {
-      same_work.push_back(std::abs(lmp->second / plm->second - 1.0));
-      ++c.n_order_pairs;
-      c.n_later_faster += plm->second < lmp->second ? 1 : 0;
-    }
+    if (const auto spread = same_work_spread(t, c))
+      same_work.push_back(*spread);
   }
   if (c.n_order_pairs > 0) {
     c.order_bias_z = std::abs(2.0 * c.n_later_faster - c.n_order_pairs) /
@@ -376,16 +394,15 @@ ClaimEvidence mpc_fastest(const ResultsIndex& index) {
   const double noise = median_of(same_work);
   c.figure2 = 100.0 * noise;
   std::vector<double> ratios;
-  for (const auto& [model, by_algorithm] : times) {
-    const auto mpc = by_algorithm.find(Algorithm::MPC);
-    if (mpc == by_algorithm.end() || by_algorithm.size() < 2)
+  for (const auto& [model, t] : times) {
+    const auto mpc = t.find(BenchMethod::MPC);
+    if (mpc == t.end() || t.size() < 2)
       continue;
     double fastest_other = INFINITY;
-    for (const auto& [a, t] : by_algorithm)
-      fastest_other = a == Algorithm::MPC ? fastest_other : std::min(fastest_other, t);
-    if (!(fastest_other > 0))
-      continue;
-    const double ratio = mpc->second / fastest_other;
+    for (const auto& [method, row] : t)
+      fastest_other =
+          method == BenchMethod::MPC ? fastest_other : std::min(fastest_other, *row->time_ms);
+    const double ratio = *mpc->second->time_ms / fastest_other;
     ++c.n;
     ratios.push_back(ratio);
     if (ratio * (1.0 + noise) < 1.0)
@@ -579,7 +596,8 @@ std::string to_string(ClaimVerdict v) {
 
 std::vector<ClaimEvidence> study_claims(const ResultsIndex& index,
                                         const std::vector<RowFacts>& all_rows,
-                                        const std::vector<DivergenceFacts>& singular) {
+                                        const std::vector<DivergenceFacts>& singular,
+                                        const BenchResults* bench) {
   // The study's claims are about its own battery: problems beyond it (equal moduli, friction,
   // conformal fits) neither support nor refute them.
   std::vector<RowFacts> rows;
@@ -594,7 +612,7 @@ std::vector<ClaimEvidence> study_claims(const ResultsIndex& index,
           trend_penalty(rows),
           trend_multiplier(rows),
           mpc_unsatisfactory(rows),
-          mpc_fastest(index),
+          mpc_fastest(bench),
           element_order(rows),
           refinement(index, rows),
           mpc_refinement(index, rows),

@@ -6,6 +6,8 @@
 
 #include <fmt/format.h>
 
+#include "solver/contact/penalty.hpp"
+
 namespace cs::solver {
 
 RowLaw AugmentedLagrangianRules::law(int j, bool active) const {
@@ -21,22 +23,18 @@ double AugmentedLagrangianRules::residual(int j, double lambda, double gap) cons
 }
 
 AlgorithmOutcome solve_augmented_lagrangian(const AlgorithmInput& in) {
-  const int m = in.problem.size();
-  Eigen::VectorXd lambda_hat = Eigen::VectorXd::Zero(m);
-  std::vector<char> active = in.initial_active;
-  int total_iterations = 0;
-  double penetration_ratio = 0.0;
+  // The first pass is the penalty method's solve (no multiplier estimate yet): an AL solve that
+  // stops there is PM's, step for step (solver/contact/repeated_solve.hpp).
+  AlgorithmOutcome out = solve_penalty(in);
+  int total_iterations = out.iterations;
   for (int aug = 0;; ++aug) {
-    const AugmentedLagrangianRules rules(in.penalty_kp, lambda_hat);
-    AlgorithmOutcome out = run_active_set(in.problem, rules, active, in.settings.max_iterations);
-    total_iterations += out.iterations;
     out.iterations = total_iterations;
     out.augmentations = aug;
     if (out.status != ContactStatus::Converged)
       return out;
     // Largest penetration of a closed row relative to FTOLN h.
-    penetration_ratio = 0.0;
-    for (int j = 0; j < m; ++j) {
+    double penetration_ratio = 0.0;
+    for (int j = 0; j < in.problem.size(); ++j) {
       if (out.step.lambda[j] > 0.0) {
         penetration_ratio = std::max(penetration_ratio, -out.step.gap[j] / in.depth_h[j]);
       }
@@ -52,8 +50,10 @@ AlgorithmOutcome solve_augmented_lagrangian(const AlgorithmInput& in) {
           in.settings.max_augmentations, penetration_ratio, in.settings.ftoln);
       return out;
     }
-    lambda_hat = out.step.lambda.cwiseMax(0.0);
-    active = out.active;
+    const Eigen::VectorXd lambda_hat = out.step.lambda.cwiseMax(0.0);
+    const AugmentedLagrangianRules rules(in.penalty_kp, lambda_hat);
+    out = run_active_set(in.problem, rules, out.active, in.settings.max_iterations);
+    total_iterations += out.iterations;
   }
 }
 
@@ -82,16 +82,13 @@ double frictional_violation(const FrictionalInput& in, const AlgorithmOutcome& o
 AlgorithmOutcome solve_augmented_lagrangian_frictional(const FrictionalInput& in) {
   const int m = in.n_pairs();
   const Eigen::VectorXd kt = in.settings.fkt * in.penalty_kp;
+  // The first pass is the penalty method's (normal estimate 0, tangential estimate the previous
+  // step's shear): an AL solve that stops there is PM's, step for step.
+  AlgorithmOutcome out = solve_penalty_frictional(in);
   Eigen::VectorXd lambda_hat_n = Eigen::VectorXd::Zero(m);
   Eigen::VectorXd lambda_hat_t = in.force_t_prev;
-  std::vector<char> states = in.initial_states;
-  int total_iterations = 0;
+  int total_iterations = out.iterations;
   for (int aug = 0;; ++aug) {
-    const AugmentedLagrangianRules normal(in.penalty_kp, lambda_hat_n);
-    const TangentialPenaltyRules tangential(kt, lambda_hat_t, in.slip_prev);
-    AlgorithmOutcome out = run_frictional_active_set(in.problem, normal, tangential, in.settings.mu,
-                                                     states, in.settings.max_iterations);
-    total_iterations += out.iterations;
     out.iterations = total_iterations;
     out.augmentations = aug;
     if (out.status != ContactStatus::Converged)
@@ -115,7 +112,11 @@ AlgorithmOutcome solve_augmented_lagrangian_frictional(const FrictionalInput& in
       lambda_hat_n = out.step.lambda.head(m).cwiseMax(0.0);
     if (slip_ratio > in.settings.ftolt)
       lambda_hat_t = out.step.lambda.tail(m);
-    states = out.active;
+    const AugmentedLagrangianRules normal(in.penalty_kp, lambda_hat_n);
+    const TangentialPenaltyRules tangential(kt, lambda_hat_t, in.slip_prev);
+    out = run_frictional_active_set(in.problem, normal, tangential, in.settings.mu, out.active,
+                                    in.settings.max_iterations);
+    total_iterations += out.iterations;
   }
 }
 

@@ -151,6 +151,7 @@ struct ContactSettings {
   TangentialEnforcement tangential = TangentialEnforcement::Penalty;
   /// Whether friction acts (mu > 0).
   bool frictional() const { return mu > 0.0; }
+  bool operator==(const ContactSettings&) const = default;
 };
 
 /// Throws ContactError with a one-line message if FKN, FTOLN, FKT, FTOLT or the pinball is not a

@@ -12,6 +12,7 @@
 
 #include <gtest/gtest.h>
 
+#include "solver/contact/repeated_solve.hpp"
 #include "support/tolerance.hpp"
 #include "test_contact_support.hpp"
 
@@ -123,6 +124,75 @@ TEST(ContactAugmentedLagrangian, EqualsPenaltyWhenPenetrationIsWithinFtoln) {
   ASSERT_TRUE(al.converged() && pm.converged());
   EXPECT_EQ(al.augmentations, 0);
   EXPECT_EQ((al.displacement - pm.displacement).norm(), 0.0);  // the same computation
+}
+
+/// Everything a solve gives but its settings and timings, bit for bit.
+void expect_same_solve(const ContactResult& a, const ContactResult& b) {
+  EXPECT_EQ(a.status, b.status);
+  EXPECT_EQ(a.active_set_iterations, b.active_set_iterations);
+  EXPECT_EQ(a.augmentations, b.augmentations);
+  EXPECT_EQ(a.n_candidates, b.n_candidates);
+  EXPECT_EQ(a.peak_pressure, b.peak_pressure);
+  EXPECT_EQ(a.total_normal_force, b.total_normal_force);
+  ASSERT_EQ(a.nodes.size(), b.nodes.size());
+  for (std::size_t i = 0; i < a.nodes.size(); ++i) {
+    EXPECT_EQ(a.nodes[i].pressure, b.nodes[i].pressure);
+    EXPECT_EQ(a.nodes[i].gap, b.nodes[i].gap);
+  }
+  EXPECT_EQ((a.displacement - b.displacement).norm(), 0.0);
+}
+
+// Requirement (issue 27): a model's cases share what they can; a case whose solve would repeat
+// an earlier one's step for step takes its result (solver/contact/repeated_solve.hpp). Each
+// "repeats" is checked by solving again: fails if a rule admits a pair that solves differently,
+// e.g. PM after an AL that augmented, or LMP and PLM with friction.
+TEST(ContactRepeatedSolve, RepeatsOnlyWhatSolvingAgainWouldGive) {
+  HertzSpec spec;
+  spec.n = 16;
+  const Model model = contact_test::hertz_model(spec);
+  LinearStaticAnalysis elastic(model);
+  ContactAnalysis contact(elastic, contact_test::hertz_pair(spec));
+  const auto ss = ContactDiscretization::SurfaceToSurface;
+  // PM after AL that needed no augmentation, whatever AL's FTOLN.
+  ContactSettings al_settings = contact_test::settings(ss, ContactAlgorithm::AugmentedLagrangian);
+  al_settings.ftoln = 0.2;
+  const ContactResult al = contact.solve(al_settings);
+  ASSERT_TRUE(al.converged()) << al.reason;
+  ASSERT_EQ(al.augmentations, 0);
+  ContactSettings pm_settings = contact_test::settings(ss, ContactAlgorithm::Penalty);
+  EXPECT_TRUE(repeats_solve(pm_settings, al));
+  expect_same_solve(contact.solve(pm_settings), al);
+  // Not the other way round (AL reads FTOLN), nor with another FKN or discretization.
+  EXPECT_FALSE(repeats_solve(al_settings, contact.solve(pm_settings)));
+  ContactSettings other = pm_settings;
+  other.fkn = 2.0;
+  EXPECT_FALSE(repeats_solve(other, al));
+  other = pm_settings;
+  other.discretization = ContactDiscretization::Mortar;
+  EXPECT_FALSE(repeats_solve(other, al));
+  // Not after an AL that augmented: PM stops at AL's first pass.
+  al_settings.fkn = 1e-3;
+  al_settings.ftoln = 0.01;
+  al_settings.pinball = 10.0;
+  const ContactResult augmented = contact.solve(al_settings);
+  ASSERT_TRUE(augmented.converged()) << augmented.reason;
+  ASSERT_GT(augmented.augmentations, 0);
+  pm_settings.fkn = al_settings.fkn;
+  pm_settings.pinball = al_settings.pinball;
+  EXPECT_FALSE(repeats_solve(pm_settings, augmented));
+  EXPECT_NE(contact.solve(pm_settings).active_set_iterations, augmented.active_set_iterations);
+  // PLM after LMP without friction: the tangential enforcement is not read.
+  ContactSettings lmp = contact_test::settings(ss, ContactAlgorithm::LagrangeMultiplier);
+  ContactSettings plm = lmp;
+  plm.tangential = TangentialEnforcement::LagrangeMultiplier;
+  const ContactResult lm = contact.solve(lmp);
+  EXPECT_TRUE(repeats_solve(plm, lm));
+  expect_same_solve(contact.solve(plm), lm);
+  // With friction it is: another solve.
+  ContactResult frictional = lm;
+  frictional.settings.mu = plm.mu = 0.3;
+  EXPECT_FALSE(repeats_solve(plm, frictional));
+  EXPECT_TRUE(repeats_solve(frictional.settings, frictional));
 }
 
 }  // namespace

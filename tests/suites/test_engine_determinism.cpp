@@ -3,8 +3,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <map>
 #include <memory>
 #include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
 
 #include <gtest/gtest.h>
 
@@ -99,6 +105,58 @@ TEST(EngineDeterminism, CasesRecoveringOnlyWhatTheyReadGradeAsWithTheWholeField)
     EXPECT_THROW(partial.last_stresses(), std::logic_error) << case_id(spec);
     EXPECT_TRUE(full.last_displacement().allFinite()) << case_id(spec);
     EXPECT_TRUE(full.last_stresses().has_value()) << case_id(spec);
+  }
+}
+
+/// A case's JSON but for what only its clock gives.
+nlohmann::json graded(const CaseResult& r) {
+  nlohmann::json j = schema::to_json(r);
+  j.erase("wall_seconds");
+  j.erase("peak_rss_mb");
+  return j;
+}
+
+// Requirement (issue 27): a model's cases add little to the factorization they share; a case
+// whose solve would repeat a recent one's step for step (PLM after LMP without friction, PM after
+// an AL that needed no augmentation: solver::repeats_solve) takes that result. Every case must
+// grade exactly as when solved alone, on plain, load-controlled (rigid Steuermann punch) and
+// load-stepped frictional models. Fails if a case took a result it would not have solved to, or
+// if no case is spared a solve.
+TEST(EngineDeterminism, CasesThatRepeatASolveGradeAsIfSolvedAlone) {
+  CaseSelection sel;
+  sel.problems = {ProblemId::H_p, ProblemId::Pprime_a};
+  sel.meshes = {MeshLevel::C};
+  sel.elements = {Element::Q4};
+  sel.contacts = {ContactKind::ss, ContactKind::ns, ContactKind::mortar};
+  sel.recoveries = {Recovery::spr, Recovery::extrapolated};
+  std::vector<std::vector<CaseSpec>> models{make_case_matrix(sel)};
+  sel.problems = {ProblemId::S_1};
+  sel.target = TargetKind::Rigid;
+  models.push_back(make_case_matrix(sel));
+  sel.problems = {ProblemId::FP_p};
+  sel.target = TargetKind::Discretized;
+  models.push_back(make_case_matrix(sel));
+  for (const auto& cases : models) {
+    std::map<std::string, std::vector<CaseSpec>> by_model;
+    for (const CaseSpec& spec : cases)
+      by_model[fmt::format("{} {}", to_string(spec.problem), to_string(spec.element))].push_back(
+          spec);
+    for (const auto& [name, specs] : by_model) {
+      ProblemExecutor shared(specs.front());
+      for (const CaseSpec& spec : specs) {
+        const CaseResult in_model = shared.run(spec);
+        if (spec.algorithm != Algorithm::PM && spec.algorithm != Algorithm::PLM)
+          continue;  // the ones that may repeat an earlier solve
+        ProblemExecutor alone(spec);
+        EXPECT_EQ(graded(in_model), graded(alone.run(spec))) << case_id(spec);
+      }
+      // Two recoveries of three discretizations per algorithm: without friction PLM repeats LMP
+      // and, where AL needs no augmentation (FKN = 1 on these meshes), PM repeats AL.
+      std::printf("[ info     ] %s: %zu cases, %d contact solves\n", name.c_str(), specs.size(),
+                  shared.contact_solves());
+      const bool frictional = specs.front().problem == ProblemId::FP_p;
+      EXPECT_EQ(shared.contact_solves(), frictional ? 12 : 9) << name;
+    }
   }
 }
 
