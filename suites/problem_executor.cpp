@@ -186,27 +186,22 @@ const solver::ContactResult& ProblemExecutor::contact_solution(const CaseSpec& s
   key_spec.recovery = Recovery::spr;  // post-processing: the same contact solution
   const std::string key = case_id(key_spec);
   if (last_contact_ && last_contact_->first == key)
-    return last_contact_->second;
-  last_contact_.reset();
+    return *last_contact_->second;
   const solver::ContactSettings settings = contact_settings(spec);
   key_spec.algorithm = Algorithm::AL;  // the model and its parameters: what the solves share
   const std::string model_key = case_id(key_spec);
-  solver::ContactResult contact;
-  const auto earlier = std::find_if(recent_.begin(), recent_.end(), [&](const auto& r) {
-    return r.first == model_key && solver::repeats_solve(settings, r.second);
+  auto earlier = std::find_if(recent_.begin(), recent_.end(), [&](const RecentSolution& r) {
+    return r.model_key == model_key && solver::repeats_solve(settings, r.result);
   });
-  if (earlier != recent_.end()) {
-    contact = earlier->second;
-    contact.settings = settings;
-  } else {
+  if (earlier == recent_.end()) {
     ++contact_solves_;
-    contact = solve(settings);
+    recent_.push_back({model_key, solve(settings)});
+    if (recent_.size() > kRecentSolutions)
+      recent_.pop_front();
+    earlier = std::prev(recent_.end());
   }
-  recent_.emplace_back(model_key, contact);
-  if (recent_.size() > kRecentSolutions)
-    recent_.pop_front();
-  last_contact_.emplace(key, std::move(contact));
-  return last_contact_->second;
+  last_contact_.emplace(key, &earlier->result);
+  return earlier->result;
 }
 
 solver::ContactResult ProblemExecutor::solve(const solver::ContactSettings& settings) {

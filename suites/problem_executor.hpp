@@ -68,7 +68,8 @@ class ProblemExecutor final : public GroupExecutor {
   /// The contact solution of `spec`: solved, or the last one when only the recovery differs
   /// (the matrix puts a case's recoveries next to each other), or a recent one of the same
   /// model that solving would repeat step for step (solver::repeats_solve: PLM after LMP
-  /// without friction, PM after an AL solve that needed no augmentation).
+  /// without friction, PM after an AL solve that needed no augmentation; its settings are then
+  /// that solve's).
   const solver::ContactResult& contact_solution(const CaseSpec& spec);
   /// One contact solve of the model: under load control, over the load steps, or at once.
   solver::ContactResult solve(const solver::ContactSettings& settings);
@@ -92,12 +93,18 @@ class ProblemExecutor final : public GroupExecutor {
   solver::StressRecoveryOptions last_recovery_;
   /// The sampled surface's elements and patches, found on the first case.
   std::optional<solver::SurfaceStressRecovery> surface_recovery_;
-  std::optional<std::pair<std::string, solver::ContactResult>> last_contact_;
+  /// A solve and the model it belongs to: its case's id but for the algorithm and recovery.
+  struct RecentSolution {
+    std::string model_key;
+    solver::ContactResult result;
+  };
   /// The matrix runs one algorithm over every contact discretization (ns, ss, mortar) before
-  /// the next, AL before PM and LMP before PLM: the last three solutions, each keyed by its
-  /// case but for the algorithm and recovery.
+  /// the next, AL before PM and LMP before PLM: the last three solves.
   static constexpr std::size_t kRecentSolutions = 3;
-  std::deque<std::pair<std::string, solver::ContactResult>> recent_;
+  std::deque<RecentSolution> recent_;
+  /// The last case's id (recovery spr) and its solution, one of recent_ (a deque keeps its
+  /// other elements in place when the oldest is dropped).
+  std::optional<std::pair<std::string, const solver::ContactResult*>> last_contact_;
   int contact_solves_ = 0;
   std::optional<double> applied_load_;
   bool whole_field_ = false;
