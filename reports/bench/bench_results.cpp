@@ -160,7 +160,7 @@ bool merge_into(std::vector<BenchRow>& rows, BenchRow row) {
   return false;
 }
 
-/// The ratio's standard deviation of a stddev aggregate, onto the row of its case (read before
+/// The standard deviations of a stddev aggregate, onto the row of its case (read before
 /// it: Google Benchmark writes the median first).
 void attach_stddev(std::vector<BenchRow>& rows, const json& e, std::size_t i,
                    const std::string& file) {
@@ -169,8 +169,11 @@ void attach_stddev(std::vector<BenchRow>& rows, const json& e, std::size_t i,
     return;
   const auto row = std::ranges::find_if(
       rows, [&](const BenchRow& r) { return case_of(r) == case_of(*aggregate); });
-  if (row != rows.end())
+  if (row != rows.end()) {
     row->ratio_stddev = aggregate->ratio();
+    row->time_stddev_ms = aggregate->time_ms;
+    row->counter_stddev = aggregate->counters;
+  }
 }
 
 /// Reads one parsed benchmark document: its source and its rows, one per case.

@@ -71,6 +71,10 @@ struct BenchRow {
   std::string error;  ///< error or skip message; non-empty when the run did not finish
   /// The ratio's standard deviation over the repetitions (the stddev aggregate), if repeated.
   std::optional<double> ratio_stddev;
+  /// The standard deviations over the repetitions of the time (ms) and of every counter, by
+  /// name (the stddev aggregate); none when the case was timed once.
+  std::optional<double> time_stddev_ms;
+  std::map<std::string, double> counter_stddev;
   /// A ratio as measured in one file: its median and its spread over repetitions, if any.
   struct Measurement {
     double ratio = 0.0;

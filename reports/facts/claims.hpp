@@ -48,6 +48,11 @@ struct ClaimEvidence {
   /// did not converge (see mpc_unsatisfactory).
   int n_unsound = 0;
   std::string exception_examples{};
+  /// Claim 7's contact phase: the models compared, those where MPC's is the shortest beyond the
+  /// noise, the phase's same-work noise (%), and the range of the fastest other option's phase
+  /// over MPC's.
+  int n3 = 0, n3_hold = 0;
+  std::optional<double> figure3{}, range_low{}, range_high{};
   /// Claim 7: benchmarked models where AL made PM's computation (no augmentation, PM's
   /// iterations; AL is timed after PM), those where AL is the faster, and the sign test's
   /// z = |2 n_later_faster - n_order_pairs| / sqrt(n_order_pairs); above kOrderBiasZ the times

@@ -43,9 +43,14 @@ TemplateData claim_data(const ClaimEvidence& c) {
   d.set("has_exception_examples", !c.exception_examples.empty());
   d.set("exception_examples", c.exception_examples);
   d.set("order_biased", c.n_order_pairs > 0 && c.verdict == ClaimVerdict::not_testable);
-  // claim 7: the median ratio itself within the timing noise of 1
-  const double noise = c.figure2.value_or(0.0) / 100.0;
-  d.set("median_tied", c.figure && *c.figure * (1.0 + noise) >= 1.0 && *c.figure <= 1.0 + noise);
+  // claim 7: the contact phase, and whether it alone makes the claim refined
+  d.set("n3", std::to_string(c.n3));
+  d.set("n3_hold", std::to_string(c.n3_hold));
+  d.set("figure3", c.figure3 ? fmt::format("{:.3g}", *c.figure3) : std::string());
+  d.set("range_low", c.range_low ? fmt::format("{:.2g}", *c.range_low) : std::string());
+  d.set("range_high", c.range_high ? fmt::format("{:.2g}", *c.range_high) : std::string());
+  d.set("has_phase", c.n3 > 0);
+  d.set("phase_only", c.verdict == ClaimVerdict::refined && c.verdict1 > ClaimVerdict::refined);
   d.set("n_order_pairs", std::to_string(c.n_order_pairs));
   d.set("n_later_faster", std::to_string(c.n_later_faster));
   d.set("order_bias_z", fmt::format("{:.1f}", c.order_bias_z));

@@ -294,6 +294,15 @@ TEST(BenchSection, ModelCasesTableShowsTheNumbersOfTheFile) {
   EXPECT_NE(hp, std::string::npos) << md;
   EXPECT_NE(s17, std::string::npos) << md;
   EXPECT_LT(hp, s17);  // the battery's problem order
+  // The stddev aggregate's spreads stay on the repeated case's row (claim 7 reads them).
+  for (const BenchRow* b : r.of(BenchFamily::ModelCases)) {
+    const bool repeated = b->model.problem == schema::ProblemId::S_1_7;
+    EXPECT_EQ(b->time_stddev_ms.has_value(), repeated);
+    if (repeated) {
+      EXPECT_DOUBLE_EQ(*b->time_stddev_ms, 152.8);
+      EXPECT_DOUBLE_EQ(b->counter_stddev.at("ratio"), 0.15);
+    }
+  }
   EXPECT_NE(md.find("at most 1.3 × one analysis"), std::string::npos);
   EXPECT_NE(md.find("**1 of 2 models meet it in wall time, 2 in CPU time.**"), std::string::npos);
   EXPECT_EQ(md.find("below 1, under the physical floor"), std::string::npos);
