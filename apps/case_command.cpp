@@ -13,6 +13,7 @@
 #include "adapters/registered_codes.hpp"
 #include "apps/case_selection_options.hpp"
 #include "apps/usage_error.hpp"
+#include "platform/output_directory.hpp"
 #include "platform/output_transaction.hpp"
 #include "schema/results_file.hpp"
 #include "suites/executor_factory.hpp"
@@ -75,6 +76,7 @@ void check_vtu_path(const std::string& path) {
   if (path.empty())
     throw UsageError("--vtu: empty file name");
   platform::require_printable_path(path, "--vtu");
+  platform::require_outside_sets(path, "--vtu");
   std::error_code ec;
   if (fs::is_directory(path, ec))
     throw UsageError(fmt::format("--vtu {}: is a directory, expected a file name", path));

@@ -14,6 +14,7 @@
 #include "apps/ci_summary.hpp"
 #include "apps/junit_xml.hpp"
 #include "apps/usage_error.hpp"
+#include "platform/output_directory.hpp"
 
 namespace cs::apps {
 namespace {
@@ -86,6 +87,9 @@ void add_ci_report_options(CLI::App& cmd, CiReportFiles& files) {
 }
 
 void require_writable(const CiReportFiles& files) {
+  platform::require_distinct(files.junit, "--junit", files.summary, "--summary");
+  platform::require_outside_sets(files.junit, "--junit");
+  platform::require_outside_sets(files.summary, "--summary");
   require_writable_file("--junit", files.junit);
   require_writable_file("--summary", files.summary);
 }

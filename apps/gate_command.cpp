@@ -7,6 +7,7 @@
 
 #include "apps/ci_report_files.hpp"
 #include "apps/usage_error.hpp"
+#include "platform/output_directory.hpp"
 #include "schema/baseline_file.hpp"
 #include "schema/json_file.hpp"
 #include "schema/results_file.hpp"
@@ -44,6 +45,13 @@ int run_gate(const GateArgs& args) {
   if (args.update && args.ci.any())
     throw UsageError("--junit and --summary report a check; --update checks nothing");
   require_writable(args.ci);
+  if (args.update)  // the baseline is written over: never the results it is made from
+    platform::require_distinct(args.baseline, "--baseline", args.results, "--results");
+  for (const std::string* written : {&args.ci.junit, &args.ci.summary}) {
+    const char* what = written == &args.ci.junit ? "--junit" : "--summary";
+    platform::require_distinct(*written, what, args.baseline, "--baseline");
+    platform::require_distinct(*written, what, args.results, "--results");
+  }
   const auto results = schema::read_results_file(args.results).cases;
   if (args.update)
     return update_baseline(args, results);

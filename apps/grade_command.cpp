@@ -12,6 +12,7 @@
 #include "apps/usage_error.hpp"
 #include "apps/write_run_output.hpp"
 #include "platform/interrupts.hpp"
+#include "platform/output_directory.hpp"
 #include "platform/output_transaction.hpp"
 #include "suites/import_csv.hpp"
 #include "suites/imported_results.hpp"
@@ -66,6 +67,7 @@ suites::ImportBasis import_basis(const GradeArgs& args) {
 
 int run_grade(const GradeArgs& args) {
   platform::check_output_directory(args.out);  // refused before any input is read
+  platform::require_outside_set(args.import_file, args.out, "--import");
   suites::require_imported_solver_name(args.solver_name);
   const suites::ImportBasis basis = import_basis(args);
   const auto cases = suites::parse_import_csv(read_import_file(args.import_file), args.import_file);

@@ -11,6 +11,7 @@
 #include "apps/usage_error.hpp"
 #include "apps/write_run_output.hpp"
 #include "platform/interrupts.hpp"
+#include "platform/output_directory.hpp"
 #include "platform/output_transaction.hpp"
 #include "schema/results_file.hpp"
 #include "suites/results_merge.hpp"
@@ -27,6 +28,8 @@ struct MergeArgs {
 
 int run_merge(const MergeArgs& args) {
   platform::check_output_directory(args.out);  // refused before any input is read
+  for (const auto& path : args.inputs)
+    platform::require_outside_set(path, args.out, "results file");
   std::vector<schema::ResultsDocument> parts;
   for (const auto& path : args.inputs)
     parts.push_back(schema::read_results_file(path));

@@ -8,6 +8,7 @@
 #include <fmt/core.h>
 
 #include "apps/solver_option_mappings.hpp"
+#include "platform/output_directory.hpp"
 #include "platform/output_transaction.hpp"
 #include "reports/report_writer.hpp"
 #include "schema/combined_results.hpp"
@@ -31,6 +32,12 @@ struct ReportArgs {
 
 void run_report(const ReportArgs& args) {
   platform::check_output_directory(args.out_dir);  // refused before any input is read
+  for (const auto& path : args.results)
+    platform::require_outside_set(path, args.out_dir, "--results");
+  platform::require_outside_set(args.baseline, args.out_dir, "--baseline");
+  platform::require_outside_set(args.cost_run, args.out_dir, "--cost-run");
+  for (const auto& path : args.bench)
+    platform::require_outside_set(path, args.out_dir, "--bench");
   std::vector<schema::ResultsDocument> documents;
   for (const auto& path : args.results) {
     documents.push_back(schema::read_results_file(path));

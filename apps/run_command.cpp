@@ -4,7 +4,9 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <map>
 #include <string>
@@ -24,6 +26,7 @@
 #include "platform/available_cores.hpp"
 #include "platform/available_memory.hpp"
 #include "platform/interrupts.hpp"
+#include "platform/output_directory.hpp"
 #include "platform/output_transaction.hpp"
 #include "schema/results_file.hpp"
 #include "suites/case_matrix.hpp"
@@ -43,6 +46,24 @@
 
 namespace cs::apps {
 namespace {
+
+/// A finite number in [lo, hi] (hi infinite: any finite number from lo; lo_open: above lo).
+/// CLI11's ranges let NaN through (every comparison with it is false) and print infinity as
+/// its 309 digits.
+CLI::Validator finite_number(double lo, bool lo_open, double hi = INFINITY) {
+  const std::string range = std::isfinite(hi)
+                                ? fmt::format("from {:g} to {:g}", lo, hi)
+                                : fmt::format("{} {:g}", lo_open ? "above" : "from", lo);
+  return CLI::Validator(
+      [=](const std::string& text) {
+        char* end = nullptr;
+        const double v = std::strtod(text.c_str(), &end);
+        const bool ok = end != text.c_str() && *end == '\0' && std::isfinite(v) &&
+                        (lo_open ? v > lo : v >= lo) && v <= hi;
+        return ok ? std::string() : fmt::format("'{}' is not a number {}", text, range);
+      },
+      "NUMBER");
+}
 
 struct RunArgs {
   SelectionArgs selection;
@@ -163,6 +184,8 @@ std::string model_name(const suites::CaseSpec& spec) {
 int run(const RunArgs& args) {
   platform::check_output_directory(args.out);  // refused before any input is read
   require_writable(args.ci);                   // before anything runs: a bad path costs nothing
+  platform::require_outside_set(args.ci.junit, args.out, "--junit");
+  platform::require_outside_set(args.ci.summary, args.out, "--summary");
   std::vector<schema::SweepAxis> sweep;
   const auto all_cases = selected_cases(args, sweep);
   suites::ExecutorOptions exec;
@@ -277,14 +300,14 @@ void add_run_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--time-limit", args->time_limit,
                   "Seconds one registered code's case may take before it is `timeout` "
                   "(default: its manifest's, 600 s for CalculiX)")
-      ->check(CLI::Range(0.1, 86400.0));
+      ->check(finite_number(0.1, false, 86400.0));
   cmd->add_option("--jobs", args->jobs, "Parallel workers, 1 to 256 (default: the number of cores)")
       ->check(CLI::Range(1, 256));
   cmd->add_option("--out", args->out, "Output directory")->capture_default_str();
   cmd->add_option("--max-memory", args->max_memory_gib,
                   "GiB this run may use at most (default: MemAvailable less 10 %); a model "
                   "estimated above it is refused before the run starts")
-      ->check(CLI::PositiveNumber);
+      ->check(finite_number(0.0, true));
   cmd->add_flag("--no-report", args->no_report, "Write results.json only");
   cmd->add_flag("--surface-csv", args->surface_csv,
                 "Also write surface.csv: each converged case's nodal stresses and contact "

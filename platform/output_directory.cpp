@@ -4,11 +4,14 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
 #include <fstream>
 #include <iterator>
 #include <memory>
+#include <string>
+#include <vector>
 
 #include "platform/platform_error.hpp"
 
@@ -103,6 +106,72 @@ OutputDirectory check_existing(const fs::path& path, const fs::path& shown) {
 }
 
 }  // namespace
+
+namespace {
+
+/// `p` absolute, with symbolic links of its existing part resolved and no trailing separator.
+fs::path resolved(const fs::path& p) {
+  std::error_code ec;
+  fs::path r = fs::weakly_canonical(fs::absolute(p, ec), ec);
+  if (ec)
+    r = fs::absolute(p).lexically_normal();
+  return r.has_filename() ? r : r.parent_path();
+}
+
+/// The names of the committed set of the output directory `dir` (none when it has no list).
+std::vector<std::string> set_entries(const fs::path& dir) {
+  std::vector<std::string> names;
+  std::ifstream list(dir / (std::string(kOwnershipMark) + ".set"));
+  for (std::string line; std::getline(list, line);)
+    names.push_back(line);
+  return names;
+}
+
+/// Whether the resolved `f` is directly in the resolved `d` or below a directory of its set.
+bool in_set(const fs::path& f, const fs::path& d) {
+  const auto [at_d, at_f] = std::mismatch(d.begin(), d.end(), f.begin(), f.end());
+  if (at_d != d.end() || at_f == f.end())
+    return false;  // not below d (or d itself)
+  if (std::next(at_f) == f.end())
+    return true;  // directly in d
+  const std::vector<std::string> entries = set_entries(d);
+  return std::ranges::find(entries, at_f->string()) != entries.end();
+}
+
+}  // namespace
+
+void require_outside_set(const fs::path& file, const fs::path& dir, const char* what) {
+  if (!file.empty() && !dir.empty() && in_set(resolved(file), resolved(dir))) {
+    throw PlatformError(std::string(what) + " " + quoted(file) + " is in the output directory " +
+                        quoted(dir) +
+                        ", among the set this command replaces; choose another --out or move "
+                        "the file");
+  }
+}
+
+void require_outside_sets(const fs::path& file, const char* what) {
+  if (file.empty())
+    return;
+  const fs::path f = resolved(file);
+  std::error_code ec;
+  for (fs::path dir = f.parent_path();; dir = dir.parent_path()) {
+    if (fs::is_regular_file(dir / kOwnershipMark, ec) && in_set(f, dir)) {
+      throw PlatformError(std::string(what) + " " + quoted(file) + " is in " + quoted(dir) +
+                          ", among the set of a contact-suite output directory; write it "
+                          "elsewhere");
+    }
+    if (dir == dir.root_path() || dir.empty())
+      break;
+  }
+}
+
+void require_distinct(const fs::path& a, const char* what_a, const fs::path& b,
+                      const char* what_b) {
+  if (!a.empty() && !b.empty() && resolved(a) == resolved(b)) {
+    throw PlatformError(std::string(what_a) + " and " + what_b + " name one file, " + quoted(a) +
+                        "; give two");
+  }
+}
 
 void require_printable_path(const fs::path& path, const char* what) {
   for (unsigned char c : path.string()) {

@@ -52,6 +52,22 @@ std::string ownership_mark_text();
 /// True when `name` (one path component) is the mark or the tool's bookkeeping beside it.
 bool is_bookkeeping_name(const std::string& name);
 
+/// Throws PlatformError when `file` (given as option `what`, e.g. "--results") is or may become
+/// an entry of the set of the output directory `dir`: a file directly in `dir`, or below a
+/// directory its set lists (figures/, models/). An input there may be an entry the new set
+/// removes, and a file written there would overwrite the set. Files in the user's own
+/// subdirectories (e.g. a Slurm run's shard-K/) are not the set's.
+void require_outside_set(const std::filesystem::path& file, const std::filesystem::path& dir,
+                         const char* what);
+
+/// require_outside_set for every directory holding `file` that carries the mark: for a file the
+/// command writes itself (--junit, --summary, --vtu).
+void require_outside_sets(const std::filesystem::path& file, const char* what);
+
+/// Throws PlatformError when the files `a` and `b` (options `what_a` and `what_b`) are one file.
+void require_distinct(const std::filesystem::path& a, const char* what_a,
+                      const std::filesystem::path& b, const char* what_b);
+
 /// Throws PlatformError if `path` holds a control character (newline, tab, escape, ...): such
 /// names break every line-oriented consumer (scripts, logs, plot files) and are refused.
 void require_printable_path(const std::filesystem::path& path, const char* what);

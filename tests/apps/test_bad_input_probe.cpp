@@ -186,6 +186,12 @@ std::vector<Probe> run_probes() {
     p.push_back({{"case", "P_p", "--vtu", vtu}});
   p.push_back({{"run", "--target", "soft"}});
   p.push_back({{"run", "--recovery", "spr,,extrapolated"}});
+  // CLI11's ranges let NaN through: every number option checks for it.
+  for (const char* gib : {"nan", "inf", "-1", "0", "", "1x"})
+    p.push_back({{"run", "--problems", "P_p", "--meshes", "C", "--max-memory", gib, "--out", "o"}});
+  for (const char* seconds : {"nan", "inf", "0", "1e9"})
+    p.push_back(
+        {{"run", "--problems", "P_p", "--meshes", "C", "--time-limit", seconds, "--out", "o"}});
   return p;
 }
 

@@ -210,6 +210,48 @@ TEST(OutputOwnership, BadOutValuesAreRefusedWithNothingCreated) {
   EXPECT_EQ(snapshot(t), before);
 }
 
+// Requirement: no command loses what a user has through a file it reads or writes beside --out.
+// An input among the set of the output directory (report --results out/results.json --out out
+// would remove it with the old set), a --junit, --summary or --vtu among the set of any output
+// directory of the tool (overwriting its results.json or its mark), the two CI files as one, and
+// a CI file or an updated baseline that is also the gate's input: each refused with exit 2 and
+// one line, nothing changed. Files in the user's own subdirectory of an output directory (a
+// Slurm run's shard-K/) stay usable.
+TEST(OutputOwnership, FilesAmongASetAreNeitherReadIntoNorWrittenOver) {
+  TempDir tmp;
+  const fs::path& t = tmp.path();
+  const fs::path out = t / "out";
+  ASSERT_EQ(run_into(out, {"--no-report"}).exit_code, 0);
+  fs::create_directory(out / "shard-1");
+  fs::copy_file(out / "results.json", out / "shard-1" / "results.json");
+  fs::copy_file(out / "results.json", t / "results.json");
+  const std::string o = out.string(), results = (out / "results.json").string();
+  const auto before = snapshot(t);
+  expect_one_line_refusal(run_cli({"report", "--results", results, "--out", o, "--no-figures"}),
+                          "among the set");
+  expect_one_line_refusal(run_cli({"merge", o, results}), "among the set");
+  expect_one_line_refusal(run_into(out, {"--junit", results}), "among the set");
+  expect_one_line_refusal(run_into(t / "other", {"--junit", (out / ".contact-suite").string()}),
+                          "among the set");
+  expect_one_line_refusal(run_into(t / "other", {"--junit", (t / "ci.xml").string(), "--summary",
+                                                 (t / "ci.xml").string()}),
+                          "name one file");
+  expect_one_line_refusal(run_cli({"case", "P_p", "--vtu", results}), "among the set");
+  const std::string copy = (t / "results.json").string();
+  expect_one_line_refusal(run_cli({"gate", "--baseline", copy, "--results", copy, "--update"}),
+                          "name one file");
+  expect_one_line_refusal(
+      run_cli({"gate", "--baseline", "b.json", "--results", copy, "--junit", copy}),
+      "name one file");
+  EXPECT_EQ(snapshot(t), before);
+  // The user's own subdirectory: read from (a Slurm merge) and written into.
+  const auto merged = run_cli({"merge", o, (out / "shard-1" / "results.json").string()});
+  EXPECT_EQ(merged.exit_code, 0) << merged.err;
+  const auto vtu = run_cli({"case", "P_p", "--vtu", (out / "shard-1" / "p.vtu").string()});
+  EXPECT_EQ(vtu.exit_code, 0) << vtu.err;
+  EXPECT_TRUE(fs::exists(out / "shard-1" / "p.vtu"));
+}
+
 // Requirement (issue 25, item 3): disk full. A run into a small tmpfs that fills up fails with
 // a line naming the cause, and the previous set stays whole; once space is back the next run
 // succeeds and leaves no staging behind.
