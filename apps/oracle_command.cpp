@@ -20,6 +20,7 @@
 #include <fmt/core.h>
 #include <nlohmann/json.hpp>
 
+#include "apps/finite_number.hpp"
 #include "apps/usage_error.hpp"
 #include "oracles/boussinesq.hpp"
 #include "oracles/flat_punch.hpp"
@@ -93,7 +94,7 @@ std::pair<double, double> parse_pair(const std::string& text, std::string_view o
 /// A required numeric option.
 CLI::Option* add_number(CLI::App* app, const std::string& name, double& value,
                         const std::string& help) {
-  return app->add_option(name, value, help)->required();
+  return app->add_option(name, value, help)->required()->check(finite_number());
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -252,6 +253,7 @@ void add_steuermann(CLI::App& oracle) {
       ->check(CLI::IsMember({kWithFactor, kWithoutFactor}))
       ->capture_default_str();
   sub->add_option("--at", opt->at, "a position X at which to give the contact pressure")
+      ->check(finite_number())
       ->expected(1);
   sub->callback([opt] {
     const o::SteuermannPunch punch{opt->b, opt->r_e, opt->P,

@@ -18,6 +18,7 @@
 #include "adapters/registered_codes.hpp"
 #include "apps/case_selection_options.hpp"
 #include "apps/ci_report_files.hpp"
+#include "apps/finite_number.hpp"
 #include "apps/invocation.hpp"
 #include "apps/memory_plan.hpp"
 #include "apps/model_cost.hpp"
@@ -46,24 +47,6 @@
 
 namespace cs::apps {
 namespace {
-
-/// A finite number in [lo, hi] (hi infinite: any finite number from lo; lo_open: above lo).
-/// CLI11's ranges let NaN through (every comparison with it is false) and print infinity as
-/// its 309 digits.
-CLI::Validator finite_number(double lo, bool lo_open, double hi = INFINITY) {
-  const std::string range = std::isfinite(hi)
-                                ? fmt::format("from {:g} to {:g}", lo, hi)
-                                : fmt::format("{} {:g}", lo_open ? "above" : "from", lo);
-  return CLI::Validator(
-      [=](const std::string& text) {
-        char* end = nullptr;
-        const double v = std::strtod(text.c_str(), &end);
-        const bool ok = end != text.c_str() && *end == '\0' && std::isfinite(v) &&
-                        (lo_open ? v > lo : v >= lo) && v <= hi;
-        return ok ? std::string() : fmt::format("'{}' is not a number {}", text, range);
-      },
-      "NUMBER");
-}
 
 struct RunArgs {
   SelectionArgs selection;

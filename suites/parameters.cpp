@@ -93,13 +93,13 @@ bool Parameters::overridden(std::string_view name) const {
 bool accepts(const ParameterSpec& s, double v) {
   const bool above = s.min_inclusive ? v >= s.min : v > s.min;
   const bool below = s.max_inclusive ? v <= s.max : v < s.max;
-  return std::isfinite(v) && above && below;
+  return std::isfinite(v) && above && below && (!s.whole || v == std::round(v));
 }
 
 std::string range_text(const ParameterSpec& s) {
   auto bound = [](double v) { return std::isinf(v) ? std::string("inf") : fmt::format("{:g}", v); };
-  return fmt::format("{}{}, {}{}", s.min_inclusive ? "[" : "(", bound(s.min), bound(s.max),
-                     s.max_inclusive ? "]" : ")");
+  return fmt::format("{}{}, {}{}{}", s.min_inclusive ? "[" : "(", bound(s.min), bound(s.max),
+                     s.max_inclusive ? "]" : ")", s.whole ? ", a whole number" : "");
 }
 
 }  // namespace cs::suites

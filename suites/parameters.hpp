@@ -18,6 +18,7 @@ struct ParameterSpec {
   bool min_inclusive;       ///< whether `min` itself is accepted
   bool max_inclusive;       ///< whether `max` itself is accepted
   std::string description;  ///< one line for `contact-suite list`
+  bool whole = false;       ///< a count: whole numbers only
 };
 
 /// The default FKN of the friction problems (FP_p, CM_p), which keep the FKN of before issue
@@ -50,7 +51,7 @@ class Parameters {
   std::map<std::string, bool, std::less<>> overridden_;
 };
 
-/// True when `value` is finite and within the parameter's range.
+/// True when `value` is finite and within the parameter's range (and whole, for a count).
 bool accepts(const ParameterSpec& spec, double value);
 
 /// "[0, 0.5)"-style text of a parameter's range, for listings and error messages.

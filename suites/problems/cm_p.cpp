@@ -17,7 +17,7 @@ const ProblemDescriptor& problem_descriptor<ProblemId::CM_p>() {
   parameters.push_back({"Q_over_mu_P", 0.5, 0.0, 1e3, true, true,
                         "tangential load over mu P (< 1: partial slip; >= 1 is past the oracle)"});
   parameters.push_back({"q_increments", 4, 1, 100, true, true,
-                        "load steps of the tangential load (after the normal one)"});
+                        "load steps of the tangential load (after the normal one)", true});
   static const ProblemDescriptor d{
       {ProblemId::CM_p,
        "Cattaneo-Mindlin partial slip of a cylinder (plane strain)",

@@ -189,6 +189,12 @@ std::vector<Probe> run_probes() {
   // CLI11's ranges let NaN through: every number option checks for it.
   for (const char* gib : {"nan", "inf", "-1", "0", "", "1x"})
     p.push_back({{"run", "--problems", "P_p", "--meshes", "C", "--max-memory", gib, "--out", "o"}});
+  // A count takes whole numbers; an interference below round-off is refused, not graded.
+  p.push_back({{"case", "CM_p", "--set", "q_increments=1.5"}});
+  p.push_back({{"case", "IF_a", "--set", "delta_over_b=1e-20"}});
+  // An empty number is not 0.
+  p.push_back({{"oracle", "hertz-plane", "--R", "1", "--E", "1", "--nu", "", "--load", "1"}});
+  p.push_back({{"oracle", "sadowsky", "--a", "1", "--load", "1", "--at", ""}});
   for (const char* seconds : {"nan", "inf", "0", "1e9"})
     p.push_back(
         {{"run", "--problems", "P_p", "--meshes", "C", "--time-limit", seconds, "--out", "o"}});
