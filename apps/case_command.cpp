@@ -13,6 +13,7 @@
 #include "adapters/registered_codes.hpp"
 #include "apps/case_selection_options.hpp"
 #include "apps/usage_error.hpp"
+#include "oracles/invalid_input.hpp"
 #include "platform/output_directory.hpp"
 #include "platform/output_transaction.hpp"
 #include "schema/results_file.hpp"
@@ -22,6 +23,7 @@
 #include "suites/problem_executor.hpp"
 #include "suites/problem_setup.hpp"
 #include "suites/run_environment.hpp"
+#include "suites/solver_support.hpp"
 #include "suites/suite_error.hpp"
 
 namespace cs::apps {
@@ -51,6 +53,10 @@ suites::CaseSpec make_spec(const CaseArgs& args) {
   spec.contact = schema::parse<schema::ContactKind>(args.contact);
   spec.target = schema::parse<schema::TargetKind>(args.target);
   spec.recovery = schema::parse<schema::Recovery>(args.recovery);
+  spec.overrides = suites::parse_overrides(args.sets);
+  // Validate the parameters now: a bad --set is bad input, not a failed case.
+  suites::Parameters(suites::problem_descriptor(spec.problem).parameters, spec.overrides,
+                     suites::to_string(spec.problem));
   if (args.solver != schema::to_string(schema::SolverKind::builtin)) {
     const auto colon = args.solver.find(':');
     if (colon == std::string::npos)
@@ -61,11 +67,14 @@ suites::CaseSpec make_spec(const CaseArgs& args) {
         adapters::find_code(args.solver.substr(0, colon), adapters::protocol::solver_directories());
     spec = suites::external_case(spec, code, code.option(args.solver.substr(colon + 1)),
                                  spec.recovery);
+    // As `run` leaves such cases out: an option the code does not offer here, for the case or
+    // for its model's load path (friction), is bad input.
+    std::string why = suites::why_not_offered(spec, code);
+    if (why.empty())
+      why = suites::why_not_runnable(spec, suites::build_problem(spec), code);
+    if (!why.empty())
+      throw UsageError("--solver " + args.solver + ": " + why);
   }
-  spec.overrides = suites::parse_overrides(args.sets);
-  // Validate the parameters now: a bad --set is bad input, not a failed case.
-  suites::Parameters(suites::problem_descriptor(spec.problem).parameters, spec.overrides,
-                     suites::to_string(spec.problem));
   validate_command_case(spec);
   return spec;
 }
@@ -133,6 +142,8 @@ int run_case(const CaseArgs& args) {
     result = executor->run(spec);
   } catch (const suites::SuiteInputError&) {
     throw;  // bad input: exit 2
+  } catch (const oracles::InvalidInput&) {
+    throw;  // parameters the exact solution refuses (a Steuermann load past the rounded edges)
   } catch (const std::exception& e) {
     result.spec = spec;
     result.status = suites::CaseStatus::failed;

@@ -192,6 +192,11 @@ std::vector<Probe> run_probes() {
   // A count takes whole numbers; an interference below round-off is refused, not graded.
   p.push_back({{"case", "CM_p", "--set", "q_increments=1.5"}});
   p.push_back({{"case", "IF_a", "--set", "delta_over_b=1e-20"}});
+  // `case` refuses what `run` leaves out (an option a code does not offer, for the case or its
+  // load path) and parameters the exact solution refuses: bad input, not a failed case.
+  p.push_back({{"case", "H_p", "--solver", "calculix:hard-ss", "--target", "rigid"}});
+  p.push_back({{"case", "FP_p", "--solver", "calculix:hard-ss"}});
+  p.push_back({{"case", "S_1", "--set", "re_over_b=1e-9"}});
   // An empty number is not 0.
   p.push_back({{"oracle", "hertz-plane", "--R", "1", "--E", "1", "--nu", "", "--load", "1"}});
   p.push_back({{"oracle", "sadowsky", "--a", "1", "--load", "1", "--at", ""}});
