@@ -175,9 +175,12 @@ void add_list_command(CLI::App& app) {
   auto dirs = std::make_shared<std::vector<std::string>>();
   list->add_flag("--json", *json, "Print as one JSON object");
   list->add_option("--solver-dir", *dirs,
-                   "A further folder of external codes (see `run --solver-dir`)");
+                   "A further folder of external codes (see `run --solver-dir`)")
+      ->check(CLI::ExistingDirectory);
   list->callback([json, dirs] {
-    const std::vector<std::filesystem::path> d(dirs->begin(), dirs->end());
+    std::vector<std::filesystem::path> d;
+    for (const auto& dir : *dirs)
+      d.push_back(std::filesystem::absolute(dir));
     *json ? print_json(d) : print_text(d);
   });
 }

@@ -66,7 +66,11 @@ struct RunArgs {
 };
 
 std::vector<std::filesystem::path> solver_dirs(const RunArgs& args) {
-  return {args.solver_dirs.begin(), args.solver_dirs.end()};
+  // Absolute: a code runs in its case directory, where a relative path means something else.
+  std::vector<std::filesystem::path> dirs;
+  for (const auto& d : args.solver_dirs)
+    dirs.push_back(std::filesystem::absolute(d));
+  return dirs;
 }
 
 /// The cases of an external code: each model of the selection (its problems, meshes, elements,
@@ -277,7 +281,8 @@ void add_run_command(CLI::App& app, int& exit_code) {
       ->capture_default_str();
   cmd->add_option("--solver-dir", args->solver_dirs,
                   "A folder of external codes (each a folder with manifest.json), or one code's "
-                  "folder; searched after adapters/ and CONTACT_SUITE_SOLVER_DIRS");
+                  "folder; searched after adapters/ and CONTACT_SUITE_SOLVER_DIRS")
+      ->check(CLI::ExistingDirectory);
   cmd->add_option("--solver-options", args->solver_options,
                   "An external code's options to run, by their own labels (default: all)");
   cmd->add_option("--time-limit", args->time_limit,

@@ -43,7 +43,7 @@ struct ResultFiles {
   std::optional<bool> converged;
   int iterations = 0;
   long long n_equations = 0;
-  std::string reason;
+  std::string reason;  ///< one line: control characters read as spaces
   std::string solver_version;
 };
 

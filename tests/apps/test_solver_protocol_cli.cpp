@@ -160,9 +160,10 @@ TEST(SolverProtocolCli, EveryFailureIsTheCaseStatusWithItsReason) {
   TempDir dir;
   make_code_folder(dir.path() / "patch_code");
   const fs::path out = dir.path() / "out";
-  const auto r = run_cli(patch_code_run(
-      dir.path() / "patch_code", "exit3,nan,missing_node,unparsable,outside,sleep,no_stresses", out,
-      {"--time-limit", "8"}));
+  const auto r = run_cli(
+      patch_code_run(dir.path() / "patch_code",
+                     "exit3,nan,missing_node,unparsable,outside,sleep,no_stresses,multiline", out,
+                     {"--time-limit", "8"}));
   ASSERT_EQ(r.exit_code, 1) << r.err << r.out;  // cases failed, results written
   const auto cases = cases_by_id(out / "results.json");
   const std::map<std::string, std::pair<std::string, std::string>> expected{
@@ -175,6 +176,8 @@ TEST(SolverProtocolCli, EveryFailureIsTheCaseStatusWithItsReason) {
       {"PM/ns/rigid/@patchcode:sleep", {"timeout", "timed out"}},
       {"AL/ss/rigid/own/@patchcode:no_stresses", {"failed", "no stresses.csv"}},
       {"AL/ss/rigid/@patchcode:no_stresses", {"converged", ""}},
+      // a code's reason on one line: it goes into progress lines and Markdown tables
+      {"PM/ns/rigid/@patchcode:multiline", {"not_converged", "iteration cap reached at step 3"}},
   };
   for (const auto& [tail, want] : expected) {
     const std::string id = "P_p/C/Q4/" + tail;

@@ -6,7 +6,8 @@ uniform pressure on its far face carries sigma_z = -p, sigma_x = tau_xz = 0 ever
 u_x = nu (1 + nu) p x / E and u_z = -(1 - nu^2) p z / E (plane strain; u_z = 0 on the plane).
 p is read off the case's nodal forces on block.far_z, E and nu off its block body. It writes
 every result file of the protocol. Its option label selects a failure to exercise the engine:
-exact (none), exit3, nan, missing_node, unparsable, outside, sleep, no_stresses.
+exact (none), exit3, nan, missing_node, unparsable, outside, sleep, no_stresses, multiline
+(not converged, for a reason of several lines).
 
 Usage: patch_solver.py CASE_DIR OPTION
 """
@@ -97,8 +98,10 @@ def main():
             if abs(nodes[t][1]) < 1e-12:
                 f.write(f"{t},{p!r}\n")
     with open("status.json", "w") as f:
-        json.dump({"converged": True, "iterations": 1, "n_equations": 2 * len(block_nodes),
-                   "reason": "", "solver_version": "patch-solver 1"}, f)
+        converged = option != "multiline"
+        reason = "" if converged else "iteration cap\nreached\tat step 3"
+        json.dump({"converged": converged, "iterations": 1, "n_equations": 2 * len(block_nodes),
+                   "reason": reason, "solver_version": "patch-solver 1"}, f)
 
 
 if __name__ == "__main__":
