@@ -25,6 +25,14 @@ schema::Grade grade_of_error(double error_percent) {
   return e < kBounds[1] ? schema::Grade::g : schema::Grade::s;
 }
 
+bool read_settles_grade(double error_percent, double resolution_percent) {
+  if (!(resolution_percent > 0.0))
+    return true;
+  // An edge at a node reads exactly half a node off: equality within round-off counts.
+  const double e = std::abs(error_percent), r = resolution_percent * (1.0 + 1e-9);
+  return e > r && grade_of_error(e - r) == grade_of_error(e + r);
+}
+
 double grade_band_width(schema::Grade grade) {
   switch (grade) {
     case schema::Grade::e:

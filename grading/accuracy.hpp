@@ -16,6 +16,12 @@ double error_percent(double value, double exact);
 ///   u (unsatisfactory) if |e| >= 10 or e is NaN. A boundary belongs to the worse grade.
 schema::Grade grade_of_error(double error_percent);
 
+/// Whether a value read between two nodes, with error e and resolution r > 0 (it lies anywhere
+/// in e +- r), settles its grade: |e| > r and |e| - r, |e| + r fall in one band of Eq. 46.
+/// CM_p PM ss Q4 c/a, +10.49 +- 4.42 %, may be s or u: it settles nothing. r <= 0 (a value
+/// read at a point) always settles.
+bool read_settles_grade(double error_percent, double resolution_percent);
+
 /// How wide a grade's band of |e| is, in points: e 1 (0 to 1 %), g 4, s 5; u unbounded (inf).
 double grade_band_width(schema::Grade grade);
 

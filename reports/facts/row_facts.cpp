@@ -133,8 +133,8 @@ OptionFamily family_of(schema::Algorithm algorithm) {
   return OptionFamily::mpc;
 }
 
-bool RowFacts::within_read_resolution() const {
-  return errors[2] && grading::within_resolution(*errors[2], read_resolution_on_f);
+bool RowFacts::read_leaves_grade_open() const {
+  return errors[2] && !grading::read_settles_grade(*errors[2], read_resolution_on_f);
 }
 
 bool on_common_basis(const schema::CaseSpec& spec) {

@@ -54,15 +54,16 @@ struct RowFacts {
   /// May this row support or refute a statement? Graded, converged on F, credible, not luck.
   bool evidence() const { return grade && fine_converged && credible && !luck; }
 
-  /// A value read between two nodes whose F error is within that read's resolution (H_a Q4
-  /// a_FE, +-6.25 %: the edge half a node spacing off): as close as the read can tell, so its
-  /// grade says nothing of the option's accuracy.
-  bool within_read_resolution() const;
+  /// A value read between two nodes whose F error does not settle its grade within that read's
+  /// resolution (grading::read_settles_grade): H_a Q4 a_FE, +-6.25 % (the edge half a node
+  /// spacing off), or CM_p PM ss Q4 c/a, +10.49 +- 4.42 % (s or u). Its grade says nothing of
+  /// the option's accuracy.
+  bool read_leaves_grade_open() const;
 
   /// May this row support or refute a statement about an option's accuracy (a grade, which of
-  /// two errors is larger)? evidence() and not within_read_resolution(); the verdict page
-  /// leaves the contact half-width out for the same reason.
-  bool accuracy_evidence() const { return evidence() && !within_read_resolution(); }
+  /// two errors is larger)? evidence() and not read_leaves_grade_open(); the verdict page
+  /// leaves such reads out for the same reason.
+  bool accuracy_evidence() const { return evidence() && !read_leaves_grade_open(); }
 };
 
 /// The flat punch's divergence verdicts of one baseline row.

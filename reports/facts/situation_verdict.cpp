@@ -168,9 +168,9 @@ std::vector<OptionCell> make_cells(const ResultsIndex& index,
   };
   for (const ProblemId p : problems) {
     for (const auto& f : rows) {
-      // A read within its own resolution (a stick-zone edge half a node off) grades the read,
-      // not the option: it is left out, as from the ledger's accuracy evidence.
-      if (f.problem == p && graded_in_verdict(index, p, f.quantity) && !f.within_read_resolution())
+      // A read whose resolution leaves its grade open (a stick-zone edge half a node off) grades
+      // the read, not the option: it is left out, as from the ledger's accuracy evidence.
+      if (f.problem == p && graded_in_verdict(index, p, f.quantity) && !f.read_leaves_grade_open())
         add_row(cell_of(f.code, f.option, f.element), f);
     }
     for (const auto& d : singular) {

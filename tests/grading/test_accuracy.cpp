@@ -57,6 +57,20 @@ TEST(Accuracy, GradeBandWidthsFollowEq46) {
   EXPECT_TRUE(std::isinf(grade_band_width(Grade::u)));
 }
 
+// Requirement: a value read between two nodes lies anywhere in its error +- its resolution r;
+// it settles a grade only when that whole interval falls in one band of Eq. 46, e.g. not the
+// friction read that graded an option u.
+TEST(Accuracy, AReadBetweenNodesSettlesAGradeOnlyWithinOneBand) {
+  EXPECT_FALSE(read_settles_grade(10.49, 4.42));  // CM_p PM ss Q4 c/a: 6.07 % (s) to 14.9 % (u)
+  EXPECT_FALSE(read_settles_grade(-10.49, 4.42));
+  EXPECT_TRUE(read_settles_grade(20.0, 4.42));   // u either way
+  EXPECT_FALSE(read_settles_grade(3.0, 4.42));   // within its resolution of zero
+  EXPECT_FALSE(read_settles_grade(6.25, 6.25));  // an edge at a node: exactly half a node off
+  EXPECT_TRUE(read_settles_grade(0.3, 0.2));
+  EXPECT_FALSE(read_settles_grade(0.9, 0.2));  // 0.7 % (e) to 1.1 % (g)
+  EXPECT_TRUE(read_settles_grade(12.0, 0.0));  // read at a point
+}
+
 // Requirement: two values coincide at the study's resolution, 0.01 % of the larger magnitude,
 // pinned at the threshold on both sides, whatever the sign and the scale.
 TEST(Accuracy, ValuesCoincideWithinAHundredthOfAPercent) {

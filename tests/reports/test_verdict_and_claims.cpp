@@ -717,20 +717,27 @@ TEST(VerdictPage, ATieWiderThanItsGradeSaysSo) {
   EXPECT_EQ(narrow.find("wider than grade"), std::string::npos) << narrow;
 }
 
-// Requirement: a value read between two nodes within its own resolution grades the read, not
-// the option: it has no part in the option's verdict cell.
-TEST(VerdictPage, AReadWithinItsResolutionIsNoPartOfTheCell) {
-  RowFacts read = rounded_punch_row(Algorithm::LMP, {});
-  read.errors = {8.0, 4.0, 2.0};
-  read.read_resolution_on_f = 2.5;  // within half a node on F
+// Requirement: a value read between two nodes whose resolution leaves its grade open (within
+// half a node of zero, or across a grade's bound: +10.49 +- 4.42 % may be s or u) grades the
+// read, not the option: it has no part in the option's verdict cell. One whose whole interval
+// stays in one grade counts.
+TEST(VerdictPage, AReadWhoseResolutionLeavesItsGradeOpenIsNoPartOfTheCell) {
   RowFacts point = rounded_punch_row(Algorithm::LMP, {});
   point.errors = {1.0, 0.6, 0.4};
-  const std::vector<RowFacts> rows{read, point};
-  const auto situations = situation_verdicts(battery().index, rows, kNoSingularRows);
-  ASSERT_EQ(situations.size(), 1U);
-  ASSERT_EQ(situations[0].cells.size(), 1U);
-  EXPECT_EQ(situations[0].cells[0].rows.size(), 1U);
-  EXPECT_DOUBLE_EQ(*situations[0].cells[0].worst_error, 0.4);
+  for (const auto& [f_error, resolution, counted] :
+       {std::tuple{2.0, 2.5, false}, std::tuple{10.49, 4.42, false},
+        std::tuple{20.0, 4.42, true}}) {
+    RowFacts read = rounded_punch_row(Algorithm::LMP, {});
+    read.errors = {8.0, 4.0, f_error};
+    read.read_resolution_on_f = resolution;
+    const std::vector<RowFacts> rows{read, point};
+    const auto situations = situation_verdicts(battery().index, rows, kNoSingularRows);
+    ASSERT_EQ(situations.size(), 1U);
+    ASSERT_EQ(situations[0].cells.size(), 1U);
+    EXPECT_EQ(situations[0].cells[0].rows.size(), counted ? 2U : 1U) << f_error;
+    EXPECT_DOUBLE_EQ(*situations[0].cells[0].worst_error, counted ? f_error : 0.4) << f_error;
+    EXPECT_EQ(read.accuracy_evidence(), counted && read.evidence()) << f_error;
+  }
 }
 
 // Requirement: an option whose F case failed has no F value, but its cell says so, with no
