@@ -71,8 +71,8 @@ struct SituationVerdict {
   /// rows, and at least the study's printed resolution, 0.01 points.
   double best_noise = 0.0;
   /// Where `best` are not tied: those with the smallest F errors, whose worst |error| exceeds
-  /// the smallest by no more than that cell's M -> F change (at least 0.01 points); the others
-  /// of `best` have the grade with larger F errors.
+  /// the smallest by no more than best_noise (the largest M -> F change of any of `best`, at
+  /// least 0.01 points); the others of `best` have the grade with larger F errors.
   std::vector<const OptionCell*> leaders;
   double leaders_max_abs = 0.0;  ///< the largest worst |error| of `leaders` (%)
   double leaders_noise = 0.0;    ///< their bound over the smallest (points)

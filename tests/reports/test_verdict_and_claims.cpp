@@ -664,8 +664,9 @@ TEST(VerdictPage, TiesCompareTheMagnitudesOfTheErrors) {
 }
 
 // Requirement: options of the best grade that are not tied are not offered as "any of": those
-// with the smallest F errors (within the most accurate cell's M -> F change of it) are named
-// apart from the others of the grade, whose larger errors are given.
+// with the smallest F errors (within the largest M -> F change of the grade's cells of it) are
+// named apart from the others of the grade, whose larger errors are given. A cell that moves
+// more than the smallest one is not left out on the smallest one's change alone.
 TEST(VerdictPage, UntiedOptionsOfAGradeAreNotAnyOf) {
   RowFacts lmp = rounded_punch_row(Algorithm::LMP, {});
   lmp.errors = {0.5, 0.1, 0.01};  // the most accurate; one refinement moves it 0.09 points
@@ -688,10 +689,17 @@ TEST(VerdictPage, UntiedOptionsOfAGradeAreNotAnyOf) {
                     "refinement moves them (0.09 points)."),
             std::string::npos)
       << md;
-  EXPECT_NE(md.find("(worst |error| at most 0.05 %, within 0.09 points of the smallest: what one "
-                    "refinement changes in it). Larger: MPC ss Q4 (worst error +0.8 %)."),
-            std::string::npos)
+  EXPECT_NE(
+      md.find("(worst |error| at most 0.05 %, within 0.09 points of the smallest: the largest "
+              "change one refinement makes in them). Larger: MPC ss Q4 (worst error +0.8 %)."),
+      std::string::npos)
       << md;
+  // AL 0.14 points behind, but its own refinement moves it 0.15: a leader.
+  al.errors = {0.5, 0.3, 0.15};
+  const std::vector<RowFacts> moved{lmp, al, mpc};
+  const auto again = situation_verdicts(battery().index, moved, kNoSingularRows);
+  EXPECT_EQ(again[0].leaders.size(), 2U);
+  EXPECT_NEAR(again[0].leaders_noise, 0.15, 1e-12);
 }
 
 // Requirement: a tie whose tolerance (what one refinement changes) is wider than the grade's
