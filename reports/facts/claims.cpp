@@ -553,7 +553,8 @@ VfTally refinement_tally(ClaimEvidence& c, const ResultsIndex& index,
 /// Claim 9: the baseline rows the study's claim applies to (refinement_claim_applies), by the
 /// rule of the estimates appendix: n judged, n_hold of them hold (converge over M-F-VF, or
 /// settle at the study's resolution), n_plateau settle at a larger error (a bias: fails the
-/// claim); n_excluded left open. Reproduced when most judged rows hold (kRefined).
+/// claim); n_excluded left open; n2 have no VF case, so are not judged. Reproduced when most
+/// judged rows hold (kRefined).
 ClaimEvidence refinement(const ResultsIndex& index, const std::vector<RowFacts>& rows) {
   ClaimEvidence c{.key = "refinement"};
   const VfTally t = refinement_tally(
@@ -562,6 +563,7 @@ ClaimEvidence refinement(const ResultsIndex& index, const std::vector<RowFacts>&
   c.n = t.trends() + t[VfJudgement::at_resolution];
   c.n_plateau = t[VfJudgement::plateau];
   c.n_excluded = t.open();
+  c.n2 = t[VfJudgement::no_vf];  // not judged: the claim's scope here
   c.verdict = verdict_of(c.n_hold, c.n, kRefined);
   return c;
 }

@@ -219,6 +219,8 @@ TEST(RefinementSection, LedgerAndAppendixJudgeRefinementByOneRule) {
   doc.rows.back().converging = true;
   // Converging on VF, but its F case did not converge: not evidence, judged nowhere.
   add_row(doc, A::MPC, K::mortar, {1.08, 1.07, 1.06}, 1.03);
+  // No VF case: in the claim's scope, but not judged; the ledger says so.
+  add_row(doc, A::AL, K::ns, {1.08, 1.07, 1.06});
   for (auto& c : doc.cases) {
     if (c.spec.contact == K::mortar && c.spec.mesh == schema::MeshLevel::F)
       c.status = schema::CaseStatus::not_converged;
@@ -230,7 +232,7 @@ TEST(RefinementSection, LedgerAndAppendixJudgeRefinementByOneRule) {
   EXPECT_EQ(f.claim[VfJudgement::plateau], 1);
   EXPECT_EQ(f.claim[VfJudgement::fails], 1);
   EXPECT_EQ(f.claim[VfJudgement::not_evidence], 1);
-  EXPECT_EQ(std::accumulate(f.claim.by.begin(), f.claim.by.end(), 0), 5);  // it applies to 5
+  EXPECT_EQ(std::accumulate(f.claim.by.begin(), f.claim.by.end(), 0), 5);  // 5 with a VF case
   EXPECT_EQ(f.mpc[VfJudgement::not_evidence], 1);
   EXPECT_EQ(f.mpc.trends(), 1);
   EXPECT_EQ(f.mpc[VfJudgement::converges], 1);
@@ -245,6 +247,7 @@ TEST(RefinementSection, LedgerAndAppendixJudgeRefinementByOneRule) {
   EXPECT_EQ(nine.n_hold, 2);
   EXPECT_EQ(nine.n_plateau, 1);
   EXPECT_EQ(nine.n_excluded, 1);
+  EXPECT_EQ(nine.n2, 1);                                  // no VF case
   EXPECT_EQ(nine.verdict, ClaimVerdict::not_reproduced);  // 2 of 4
   const ClaimEvidence ten = claim("mpc_refinement");
   EXPECT_EQ(ten.n, 1);
@@ -255,6 +258,9 @@ TEST(RefinementSection, LedgerAndAppendixJudgeRefinementByOneRule) {
   const std::string md = claims_ledger(claims);
   EXPECT_NE(md.find("further refinement converges in 2"), std::string::npos) << md;
   EXPECT_NE(md.find("1 settle at a larger error"), std::string::npos) << md;
+  EXPECT_NE(md.find("1 more rows the claim applies to have no VF case and are not judged"),
+            std::string::npos)
+      << md;
   // The appendix says where its plateaus are, so that one bias can be told from another.
   const std::string appendix = refinement_section(index);
   EXPECT_NE(appendix.find("(by problem, quantity and element: H<sub>p</sub> σ̄<sub>c</sub> Q4 (1))"),
