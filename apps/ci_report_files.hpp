@@ -25,8 +25,8 @@ void add_ci_report_options(CLI::App& cmd, CiReportFiles& files);
 
 /// Throws UsageError ("--junit F: ...") unless every file asked for can be written: its
 /// directory exists and a file can be created (or appended to) there; PlatformError when the
-/// two are one file or one lies among the set of an output directory of contact-suite. Called before a run
-/// starts, so that a typo in a path costs nothing. Leaves no file behind.
+/// two are one file or one lies among the set of an output directory of contact-suite. Called
+/// before a run starts, so that a typo in a path costs nothing. Leaves no file behind.
 void require_writable(const CiReportFiles& files);
 
 /// Writes the JUnit file (replacing it atomically: complete old or complete new) and appends

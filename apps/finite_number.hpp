@@ -9,7 +9,7 @@
 namespace cs::apps {
 
 /// Accepts the whole text as one finite number, above `lo` (lo_open) or from `lo`, up to `hi`;
-/// the message names the text and the range ("'nan' is not a number above 0").
+/// the message names the text and the range ("'nan' is not a finite number above 0").
 CLI::Validator finite_number(double lo = -INFINITY, bool lo_open = false, double hi = INFINITY);
 
 }  // namespace cs::apps

@@ -105,10 +105,6 @@ OutputDirectory check_existing(const fs::path& path, const fs::path& shown) {
   return {path, OutputDirectoryState::empty};
 }
 
-}  // namespace
-
-namespace {
-
 /// `p` absolute, with symbolic links of its existing part resolved and no trailing separator.
 fs::path resolved(const fs::path& p) {
   std::error_code ec;
