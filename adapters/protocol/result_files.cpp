@@ -95,8 +95,9 @@ void read_status(const std::filesystem::path& file, ResultFiles& out) {
     out.n_equations = j.value("n_equations", 0LL);
     out.reason = j.value("reason", std::string());
     // One line: the reason goes into progress lines, Markdown tables and one-line messages.
-    std::replace_if(out.reason.begin(), out.reason.end(),
-                    [](char c) { return static_cast<unsigned char>(c) < 0x20 || c == 0x7f; }, ' ');
+    std::replace_if(
+        out.reason.begin(), out.reason.end(),
+        [](char c) { return static_cast<unsigned char>(c) < 0x20 || c == 0x7f; }, ' ');
     out.solver_version = j.value("solver_version", std::string());
   } catch (const nlohmann::json::exception& e) {
     throw ReadFailure{fmt::format("status.json: a value of the wrong type ({})", e.what())};
