@@ -78,12 +78,17 @@ void append_file(const std::string& option, const std::string& path, const std::
 }  // namespace
 
 void add_ci_report_options(CLI::App& cmd, CiReportFiles& files) {
+  // An empty name would read as "not asked" and write nothing, silently. --summary keeps that
+  // reading: `--summary "$GITHUB_STEP_SUMMARY"` outside GitHub Actions asks for nothing.
+  const CLI::Validator named(
+      [](const std::string& path) { return path.empty() ? "an empty file name" : ""; }, "FILE");
   cmd.add_option("--junit", files.junit,
                  "Also write the rows as JUnit XML for a CI test report: one testsuite per "
-                 "problem, one testcase per row");
+                 "problem, one testcase per row")
+      ->check(named);
   cmd.add_option("--summary", files.summary,
                  "Also append a Markdown summary (counts, rows that did not pass or moved) to "
-                 "this file, e.g. \"$GITHUB_STEP_SUMMARY\"");
+                 "this file, e.g. \"$GITHUB_STEP_SUMMARY\" (empty: none)");
 }
 
 void require_writable(const CiReportFiles& files) {

@@ -197,6 +197,7 @@ std::vector<Probe> run_probes() {
   p.push_back({{"case", "H_p", "--solver", "calculix:hard-ss", "--target", "rigid"}});
   p.push_back({{"case", "FP_p", "--solver", "calculix:hard-ss"}});
   p.push_back({{"case", "S_1", "--set", "re_over_b=1e-9"}});
+  p.push_back({{"run", "--problems", "P_p", "--meshes", "C", "--junit", "", "--out", "o"}});
   for (const char* dir : {"/nonexistent", "", "/etc/hostname"}) {
     p.push_back({{"list", "--solver-dir", dir}});
     p.push_back({{"run", "--problems", "P_p", "--meshes", "C", "--solver-dir", dir, "--out", "o"}});
