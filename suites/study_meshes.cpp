@@ -11,6 +11,7 @@
 #include "solver/mesh/mesh_merge.hpp"
 #include "solver/mesh/mesh_sets.hpp"
 #include "solver/mesh/mesh_transform.hpp"
+#include "solver/mesh/nested_refinement.hpp"
 #include "solver/mesh/structured_block.hpp"
 #include "suites/problem_catalog.hpp"
 #include "suites/suite_error.hpp"
@@ -197,7 +198,7 @@ int levels_for(double cell, double band, int band_elements) {
   // least L >= 1 with cell / 3^L <= band / band_elements
   int levels = 1;
   double h = cell / 3.0;
-  while (h * band_elements > band * (1 + 1e-12) && levels < 12) {
+  while (h * band_elements > band * (1 + 1e-12) && levels < solver::kMaxRefinementLevels) {
     h /= 3.0;
     ++levels;
   }
@@ -239,6 +240,15 @@ SteuermannLayout plan_steuermann(const StudyMeshSpec& spec, int target) {
   if (best.n == 0) {
     throw SuiteInputError(
         fmt::format("study mesh S: no background fits b = {}, a = {}", b, spec.a));
+  }
+  // The indenter takes one level more than the block (steuermann_indenter), and the levels
+  // stop at the nested refinement's limit: a band that needs the last one is not resolved.
+  if (best.levels >= solver::kMaxRefinementLevels) {
+    throw SuiteInputError(fmt::format(
+        "study mesh S: the contact band past the flat face, a - b = {:.3g} b, is too narrow "
+        "for the mesh ({} levels of nested refinement at most); a larger load (p_over_E) "
+        "widens it",
+        band / b, solver::kMaxRefinementLevels - 1));
   }
   return best;
 }

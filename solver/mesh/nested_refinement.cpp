@@ -56,8 +56,9 @@ void check_spec(const NestedRefinementSpec& s) {
         "nested refinement: surface_strip_cells = {} with levels = {} (a strip needs a level)",
         s.surface_strip_cells, s.levels));
   }
-  if (s.levels < 0 || s.levels > 12) {
-    throw MeshError(fmt::format("nested refinement: levels = {} (must be 0..12)", s.levels));
+  if (s.levels < 0 || s.levels > kMaxRefinementLevels) {
+    throw MeshError(fmt::format("nested refinement: levels = {} (must be 0..{})", s.levels,
+                                kMaxRefinementLevels));
   }
   if (!(s.box_padding >= 0.0) || !(s.box_depth > 0.0)) {
     throw MeshError(

@@ -42,6 +42,9 @@
 
 namespace cs::solver {
 
+/// The most nested 3:1 refinements a mesh takes (its finest cells are H0 / 3^12).
+inline constexpr int kMaxRefinementLevels = 12;
+
 /// Input of make_nested_refinement (see the file comment for the construction).
 struct NestedRefinementSpec {
   Eigen::Vector2d origin{0, 0};  ///< corner (x0, z0); the refined surface is z = z0
@@ -50,7 +53,7 @@ struct NestedRefinementSpec {
   int nz = 1;                    ///< background cells along z (>= 1)
   double refine_x_min = 0.0;     ///< refined surface segment [refine_x_min, refine_x_max],
   double refine_x_max = 0.0;     ///< within [x0, x0 + nx H0]
-  int levels = 0;                ///< number of nested 3:1 refinements (>= 0)
+  int levels = 0;                ///< number of nested 3:1 refinements (0 to kMaxRefinementLevels)
   double box_padding = 3.0;      ///< box reach beyond the segment, in cells of the level refined
   double box_depth = 3.0;        ///< box depth, in cells of the level being refined (> 0)
   int surface_strip_cells = 0;   ///< > 0: level 1 refines the whole surface strip this deep
