@@ -205,11 +205,6 @@ ClaimEvidence ss_equals_ns(const std::vector<RowFacts>& rows) {
   return c;
 }
 
-/// What one refinement changes in a row's error, |e_F - e_M| (0 without an M error).
-double m_to_f_change(const RowFacts& f) {
-  return f.errors[1] && f.errors[2] ? std::abs(*f.errors[2] - *f.errors[1]) : 0.0;
-}
-
 /// Whether row a's |F error| exceeds row b's by more than the noise of the two: the study's
 /// printed resolution (0.01 points; two patch-test errors of 3.3e-12 % and 3.4e-12 % are ordered
 /// either way by round-off) or what one refinement changes in either, whichever is larger, as
@@ -217,7 +212,7 @@ double m_to_f_change(const RowFacts& f) {
 /// F, is a tie).
 bool clearly_larger(const RowFacts& a, const RowFacts& b) {
   const double noise =
-      std::max({grading::kErrorResolutionPercent, m_to_f_change(a), m_to_f_change(b)});
+      std::max({grading::kErrorResolutionPercent, a.m_to_f_change(), b.m_to_f_change()});
   return std::abs(*a.errors[2]) > std::abs(*b.errors[2]) + noise;
 }
 

@@ -133,6 +133,10 @@ OptionFamily family_of(schema::Algorithm algorithm) {
   return OptionFamily::mpc;
 }
 
+double RowFacts::m_to_f_change() const {
+  return errors[1] && errors[2] ? std::abs(*errors[2] - *errors[1]) : 0.0;
+}
+
 bool RowFacts::read_leaves_grade_open() const {
   return errors[2] && !grading::read_settles_grade(*errors[2], read_resolution_on_f);
 }

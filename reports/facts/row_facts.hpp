@@ -51,6 +51,10 @@ struct RowFacts {
   /// spacing for a value read between two nodes, 0 for one read at a point.
   double read_resolution_on_f = 0.0;
 
+  /// What one refinement changes in the error, |e_F - e_M| (points; 0 without both): the noise
+  /// a comparison of two rows' F errors must beat (the verdict page's ties, the claims' trends).
+  double m_to_f_change() const;
+
   /// May this row support or refute a statement? Graded, converged on F, credible, not luck.
   bool evidence() const { return grade && fine_converged && credible && !luck; }
 

@@ -95,8 +95,7 @@ void add_row(OptionCell& cell, const RowFacts& f) {
     cell.worst_error = e;
   cell.min_error = cell.min_error ? std::min(*cell.min_error, e) : e;
   cell.max_error = cell.max_error ? std::max(*cell.max_error, e) : e;
-  if (f.errors[1])
-    cell.largest_m_to_f_change = std::max(cell.largest_m_to_f_change, std::abs(e - *f.errors[1]));
+  cell.largest_m_to_f_change = std::max(cell.largest_m_to_f_change, f.m_to_f_change());
   cell.problems.insert(f.problem);
   cell.n_not_credible += f.credible ? 0 : 1;
   for (const auto& failure : f.failures)

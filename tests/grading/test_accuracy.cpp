@@ -69,6 +69,9 @@ TEST(Accuracy, AReadBetweenNodesSettlesAGradeOnlyWithinOneBand) {
   EXPECT_TRUE(read_settles_grade(0.3, 0.2));
   EXPECT_FALSE(read_settles_grade(0.9, 0.2));  // 0.7 % (e) to 1.1 % (g)
   EXPECT_TRUE(read_settles_grade(12.0, 0.0));  // read at a point
+  // The whole resolution on each side, not half of it nor twice it:
+  EXPECT_FALSE(read_settles_grade(7.0, 2.5));  // 4.5 % (g) to 9.5 % (s); +-1.25 would stay s
+  EXPECT_TRUE(read_settles_grade(7.5, 2.0));   // 5.5 % to 9.5 %, s; +-4 would reach g and u
 }
 
 // Requirement: two values coincide at the study's resolution, 0.01 % of the larger magnitude,
