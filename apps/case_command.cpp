@@ -16,6 +16,7 @@
 #include "oracles/invalid_input.hpp"
 #include "platform/output_directory.hpp"
 #include "platform/output_transaction.hpp"
+#include "platform/replaceable_file.hpp"
 #include "schema/results_file.hpp"
 #include "suites/executor_factory.hpp"
 #include "suites/external_executor.hpp"
@@ -89,6 +90,7 @@ void check_vtu_path(const std::string& path) {
   std::error_code ec;
   if (fs::is_directory(path, ec))
     throw UsageError(fmt::format("--vtu {}: is a directory, expected a file name", path));
+  platform::require_replaceable(path, "--vtu");
   const auto parent = fs::absolute(path).parent_path();
   if (!fs::is_directory(parent, ec))
     throw UsageError(fmt::format("--vtu {}: directory {} does not exist", path, parent.string()));
@@ -154,7 +156,7 @@ int run_case(const CaseArgs& args) {
   result.peak_rss_mb = suites::peak_rss_mb();
   auto* builtin = dynamic_cast<suites::ProblemExecutor*>(executor.get());
   if (args.vtu_given && builtin && builtin->last_displacement().size() > 0)
-    builtin->write_vtu(args.vtu);
+    builtin->write_vtu(args.vtu, platform::kWrittenMarkText);
   if (args.json) {
     fmt::print("{}\n", schema::to_json(result).dump(2));
   } else {

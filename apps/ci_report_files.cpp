@@ -15,6 +15,7 @@
 #include "apps/junit_xml.hpp"
 #include "apps/usage_error.hpp"
 #include "platform/output_directory.hpp"
+#include "platform/replaceable_file.hpp"
 
 namespace cs::apps {
 namespace {
@@ -96,6 +97,7 @@ void require_writable(const CiReportFiles& files) {
   platform::require_outside_sets(files.junit, "--junit");
   platform::require_outside_sets(files.summary, "--summary");
   require_writable_file("--junit", files.junit);
+  platform::require_replaceable(files.junit, "--junit");
   require_writable_file("--summary", files.summary);
 }
 

@@ -168,9 +168,9 @@ std::string model_name(const suites::CaseSpec& spec) {
 
 int run(const RunArgs& args) {
   platform::check_output_directory(args.out);  // refused before any input is read
-  require_writable(args.ci);                   // before anything runs: a bad path costs nothing
   platform::require_outside_set(args.ci.junit, args.out, "--junit");
   platform::require_outside_set(args.ci.summary, args.out, "--summary");
+  require_writable(args.ci);  // before anything runs: a bad path costs nothing
   std::vector<schema::SweepAxis> sweep;
   const auto all_cases = selected_cases(args, sweep);
   suites::ExecutorOptions exec;

@@ -8,7 +8,6 @@
 
 #include <fmt/format.h>
 
-#include "adapters/calculix/calculix_manifest.hpp"
 #include "schema/schema_error.hpp"
 #include "solver/mesh/mesh_sets.hpp"
 #include "solver/model.hpp"
@@ -109,7 +108,8 @@ void apply_basis(CaseSpec& spec, const ImportBasis& basis, const ImportedCase& i
 
 }  // namespace
 
-void require_imported_solver_name(std::string_view name) {
+void require_imported_solver_name(std::string_view name,
+                                  const std::vector<std::string>& registered) {
   const bool plain = std::all_of(name.begin(), name.end(), [](char c) {
     return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '.' ||
            c == '_' || c == '-';
@@ -117,13 +117,16 @@ void require_imported_solver_name(std::string_view name) {
   if (name.empty() || name.size() > 64 || !plain)
     throw SuiteInputError(printable(
         fmt::format("--solver-name '{}': expected 1 to 64 characters of [A-Za-z0-9._-]", name)));
-  for (const SolverKind kind : values<SolverKind>()) {
-    if (name == to_string(kind) || name == adapters::calculix::kCalculixName)
-      throw SuiteInputError(fmt::format(
-          "--solver-name {}: the name of a solver of this suite; name the code that produced "
-          "the results (e.g. abaqus-2024)",
-          name));
-  }
+  const auto is_name = [&](std::string_view taken) { return name == taken; };
+  const bool taken =
+      std::ranges::any_of(values<SolverKind>(),
+                          [&](SolverKind kind) { return is_name(to_string(kind)); }) ||
+      std::ranges::any_of(registered, is_name);
+  if (taken)
+    throw SuiteInputError(fmt::format(
+        "--solver-name {}: the name of a solver of this suite; name the code that produced "
+        "the results (e.g. abaqus-2024)",
+        name));
 }
 
 CaseSpec imported_case_spec(const ImportedCase& imported, std::string_view solver_name,

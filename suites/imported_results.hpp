@@ -15,7 +15,8 @@
 // peak memory) are recorded as the case's own.
 //
 // What is refused, as bad input naming the file and line (SuiteInputError): a solver name that
-// is empty, longer than 64 characters, outside [A-Za-z0-9._-] or a built-in solver's name; a
+// is empty, longer than 64 characters, outside [A-Za-z0-9._-], a built-in solver's name or a
+// registered code's (CalculiX, GetFEM, any manifest's: their results would be taken for it); a
 // case id that does not name a case of the catalogue (unknown names, a solver suffix, a bad
 // parameter, friction, IF_p and IF_a) or whose target or basis contradicts the command line; a
 // row whose x is no node of the sampled surface (within 1e-3 of the smallest node spacing), two
@@ -23,6 +24,7 @@
 // the iterations, time, equations and memory its optional columns give (0 where they give none).
 
 #include <optional>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -39,8 +41,11 @@ struct ImportBasis {
   std::optional<Recovery> recovery;
 };
 
-/// Throws SuiteInputError unless `name` can name imported results (see the file comment).
-void require_imported_solver_name(std::string_view name);
+/// Throws SuiteInputError unless `name` can name imported results (see the file comment):
+/// `registered` holds the names of the registered codes (adapters::registered_codes), which
+/// imported results must not take.
+void require_imported_solver_name(std::string_view name,
+                                  const std::vector<std::string>& registered);
 
 /// The case `imported.case_id` names, solved by `solver_name`, on `basis`; throws
 /// SuiteInputError "<source>:<line>: unknown case id '...': <why>" for an id outside the

@@ -8,6 +8,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <utility>
 
 #include <Eigen/Core>
@@ -61,8 +62,9 @@ class ProblemExecutor final : public GroupExecutor {
   /// or whose solve would repeat a recent one (contact_solution), takes none.
   int contact_solves() const { return contact_solves_; }
   /// Writes the model with the displacement and nodal stresses of the last case run as a
-  /// .vtu file (atomically). Throws std::runtime_error if the last case produced no values.
-  void write_vtu(const std::string& path);
+  /// .vtu file (atomically), with `comment` as an XML comment at its top (none when empty).
+  /// Throws std::runtime_error if the last case produced no values.
+  void write_vtu(const std::string& path, std::string_view comment = {});
 
  private:
   /// The contact solution of `spec`: solved, or the last one when only the recovery differs

@@ -181,6 +181,8 @@ void sample_quantities(const ProblemSetup& setup,
     if (std::isfinite(rule.exact)) {
       q.error_percent = grading::error_percent(q.value, rule.exact);
       q.grade = grading::grade_of_error(q.error_percent);
+    } else {
+      q.error_percent = std::nan("");  // singular: no error to give (null in results.json)
     }
     if (rule.component == StressComponent::TauXZ && solution != nullptr)
       q.contact_pressure = solution->peak_shear / p;  // the contact's own peak shear

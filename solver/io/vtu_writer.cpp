@@ -122,14 +122,19 @@ void append_field(std::string& out, const VtuField& f) {
 
 }  // namespace
 
-std::string vtu_document(const Mesh& mesh, const std::vector<VtuField>& fields) {
+std::string vtu_document(const Mesh& mesh, const std::vector<VtuField>& fields,
+                         std::string_view comment) {
   check_mesh_for_output(mesh);
   check_fields(mesh, fields);
+  if (comment.find("--") != std::string_view::npos)
+    throw VtuError("write_vtu: the comment holds \"--\", which XML does not allow in one");
   const int per = mesh.n_element_nodes();
   std::string out;
   out.reserve(64 * (mesh.nodes.size() + mesh.elements.size()) + 1024);
+  out += "<?xml version=\"1.0\"?>\n";
+  if (!comment.empty())
+    out += fmt::format("<!--{}-->\n", comment);
   out +=
-      "<?xml version=\"1.0\"?>\n"
       "<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\" "
       "header_type=\"UInt64\">\n"
       "  <UnstructuredGrid>\n";
@@ -184,11 +189,13 @@ std::string vtu_document(const Mesh& mesh, const std::vector<VtuField>& fields) 
   return out;
 }
 
-void write_vtu(const std::string& path, const Mesh& mesh, const std::vector<VtuField>& fields) {
+void write_vtu(const std::string& path, const Mesh& mesh, const std::vector<VtuField>& fields,
+               std::string_view comment) {
   if (path.empty()) {
     throw VtuError("write_vtu: empty path");
   }
-  const std::string document = vtu_document(mesh, fields);  // throws before any file exists
+  const std::string document =
+      vtu_document(mesh, fields, comment);  // throws before any file exists
   const std::filesystem::path target(path);
   const std::filesystem::path temp =
       target.parent_path() /

@@ -13,6 +13,7 @@
 
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "solver/mesh/mesh.hpp"
@@ -36,12 +37,15 @@ class VtuError : public std::runtime_error {
   explicit VtuError(const std::string& what) : std::runtime_error(what) {}
 };
 
-/// The .vtu document for `mesh` and `fields`. Throws VtuError on a field of the wrong size, a
-/// repeated or empty name, a non-finite value, or connectivity that refers to a missing node.
-std::string vtu_document(const Mesh& mesh, const std::vector<VtuField>& fields);
+/// The .vtu document for `mesh` and `fields`, with `comment` (when not empty) as an XML comment
+/// after the declaration. Throws VtuError on a field of the wrong size, a repeated or empty name,
+/// a non-finite value, connectivity that refers to a missing node, or a comment holding "--".
+std::string vtu_document(const Mesh& mesh, const std::vector<VtuField>& fields,
+                         std::string_view comment = {});
 
-/// Writes vtu_document(mesh, fields) to `path` atomically (temporary file, then rename).
-/// Throws VtuError (and leaves no file) on bad input or an I/O failure.
-void write_vtu(const std::string& path, const Mesh& mesh, const std::vector<VtuField>& fields);
+/// Writes vtu_document(mesh, fields, comment) to `path` atomically (temporary file, then
+/// rename). Throws VtuError (and leaves no file) on bad input or an I/O failure.
+void write_vtu(const std::string& path, const Mesh& mesh, const std::vector<VtuField>& fields,
+               std::string_view comment = {});
 
 }  // namespace cs::solver

@@ -253,7 +253,8 @@ std::vector<Probe> import_export_probes(const fs::path& dir) {
     std::ofstream(dir / name) << files[i];
     p.push_back({{"grade", "--import", name, "--solver-name", "x", "--out", "graded"}});
   }
-  for (const char* name : {"", "builtin", "calculix", "imported", "a b", "a/b", "new\nline"})
+  for (const char* name :
+       {"", "builtin", "calculix", "getfem", "imported", "a b", "a/b", "new\nline"})
     p.push_back({{"grade", "--import", "good/surface.csv", "--solver-name", name, "--out", "g"}});
   for (const char* file : {"missing.csv", ".", "bad\nname.csv"})
     p.push_back({{"grade", "--import", file, "--solver-name", "x", "--out", "g"}});

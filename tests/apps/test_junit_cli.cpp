@@ -207,5 +207,49 @@ TEST(JunitCli, UnwritablePathIsRefusedBeforeTheRun) {
   EXPECT_NE(r.err.find("is a directory"), std::string::npos) << r.err;
 }
 
+// Requirement: --junit replaces only a file contact-suite wrote. A file of the user's at that
+// path is refused (exit 2, one line naming it) before anything is read or run, and left as it
+// was; the gate's own file from an earlier run is replaced. Fails if the user's file is
+// overwritten, or if a rerun onto the tool's own file is refused.
+TEST(JunitCli, ReplacesOnlyAFileItWrote) {
+  TempDir tmp;
+  const fs::path baseline = tmp.path() / "baseline.json";
+  ASSERT_EQ(
+      run_cli({"gate", "--update", "--baseline", baseline.string(), "--results", kFixture.string()})
+          .exit_code,
+      0);
+  const fs::path xml = tmp.path() / "gate.xml";
+  const auto gate = [&] {
+    return run_cli({"gate", "--baseline", baseline.string(), "--results", kFixture.string(),
+                    "--junit", xml.string()});
+  };
+  { std::ofstream(xml) << "<notes>the user's</notes>\n"; }
+  auto r = gate();
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("--junit " + xml.string() + ": the file exists and contact-suite did not"),
+            std::string::npos)
+      << r.err;
+  EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << r.err;
+  EXPECT_EQ(read_text(xml), "<notes>the user's</notes>\n");
+
+  fs::remove(xml);
+  ASSERT_EQ(gate().exit_code, 0);
+  const std::string first = read_text(xml);
+  r = gate();
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(read_text(xml), first);
+
+  // A run refuses the user's file before it makes its output directory.
+  fs::remove(xml);
+  fs::create_symlink(baseline, xml);  // a link is replaced by nothing the tool wrote
+  r = run_cli({"run", "--problems", "P_p", "--meshes", "C", "--elements", "Q4", "--algorithms",
+               "AL", "--contacts", "ss", "--out", (tmp.path() / "run").string(), "--junit",
+               xml.string()});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("did not write it"), std::string::npos) << r.err;
+  EXPECT_TRUE(fs::is_symlink(xml));
+  EXPECT_FALSE(fs::exists(tmp.path() / "run"));
+}
+
 }  // namespace
 }  // namespace cs::apps

@@ -1,6 +1,9 @@
 // `contact-suite run` end to end: a case matrix with both nodal stress recoveries, the command
-// line recorded in results.json, and a bad recovery name rejected as bad input.
+// line recorded in results.json, a bad recovery name rejected as bad input, and `case --vtu`
+// writing the whole field without overwriting a file of the user's.
 
+#include <filesystem>
+#include <fstream>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -11,6 +14,7 @@
 namespace cs::apps {
 namespace {
 
+namespace fs = std::filesystem;
 using testing::read_text;
 using testing::run_cli;
 using testing::TempDir;
@@ -69,6 +73,33 @@ TEST(RunCli, CaseVtuHoldsTheWholeField) {
     EXPECT_NE(text.find(name), std::string::npos) << name;
   EXPECT_EQ(text.find("nan"), std::string::npos);
   EXPECT_EQ(text.find("inf"), std::string::npos);
+}
+
+// Requirement: `case --vtu` replaces only a .vtu contact-suite wrote. A file of the user's at that
+// path is refused (exit 2, one line) before the analysis and left as it was; the tool's own file
+// is replaced. Fails if the user's file is overwritten or a rewrite of the tool's file refused.
+TEST(RunCli, CaseVtuReplacesOnlyAFileItWrote) {
+  TempDir tmp;
+  const std::string vtu = (tmp.path() / "p.vtu").string();
+  const auto write = [&] {
+    return run_cli({"case", "P_p", "--mesh", "C", "--element", "Q4", "--vtu", vtu});
+  };
+  { std::ofstream(vtu) << "<VTKFile>the user's</VTKFile>\n"; }
+  auto r = write();
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("--vtu " + vtu + ": the file exists and contact-suite did not write it"),
+            std::string::npos)
+      << r.err;
+  EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << r.err;
+  EXPECT_EQ(r.out, "");  // refused before the analysis
+  EXPECT_EQ(read_text(vtu), "<VTKFile>the user's</VTKFile>\n");
+
+  fs::remove(vtu);
+  ASSERT_EQ(write().exit_code, 0);
+  EXPECT_EQ(read_text(vtu).rfind("<?xml version=\"1.0\"?>\n<!-- written by contact-suite -->\n", 0),
+            0u);
+  r = write();
+  EXPECT_EQ(r.exit_code, 0) << r.err;
 }
 
 // Requirement (issue 27): `case` gives a model the values its cases have in a run, to the last

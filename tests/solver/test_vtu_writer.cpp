@@ -238,6 +238,16 @@ TEST_F(VtuWriterTest, AnErrorLeavesAnExistingFileUntouched) {
   EXPECT_EQ(files_in_dir(), 1);
 }
 
+// A comment stands after the declaration, where an XML parser keeps reading; one holding "--"
+// (which XML forbids inside a comment) is refused rather than written as a broken file.
+TEST_F(VtuWriterTest, CommentAfterTheDeclarationAndNoDoubleHyphen) {
+  const Mesh mesh = two_body_mesh();
+  const std::string document = vtu_document(mesh, fields_of(mesh), " made here ");
+  EXPECT_EQ(document.rfind("<?xml version=\"1.0\"?>\n<!-- made here -->\n<VTKFile ", 0), 0u);
+  EXPECT_EQ(vtu_document(mesh, fields_of(mesh)).find("<!--"), std::string::npos);
+  EXPECT_THROW(vtu_document(mesh, fields_of(mesh), "a -- b"), VtuError);
+}
+
 TEST_F(VtuWriterTest, RejectsDuplicateAndEmptyNames) {
   const Mesh mesh = two_body_mesh();
   auto fields = fields_of(mesh);

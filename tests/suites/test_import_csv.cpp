@@ -335,12 +335,13 @@ TEST(ImportedResults, TargetBasisLabelAndCostAreRecorded) {
 }
 
 TEST(ImportedResults, SolverNamesAreChecked) {
-  for (const char* ok : {"abaqus-2024", "ANSYS_2023R2", "ccx.2.21", "a"})
-    EXPECT_NO_THROW(require_imported_solver_name(ok)) << ok;
+  const std::vector<std::string> registered{"calculix", "getfem"};
+  for (const char* ok : {"abaqus-2024", "ANSYS_2023R2", "ccx.2.21", "a", "getfem2"})
+    EXPECT_NO_THROW(require_imported_solver_name(ok, registered)) << ok;
   for (const std::string& bad :
-       std::vector<std::string>{"", "builtin", "calculix", "imported", "a b", "a/b", "a,b", "x\ny",
-                                "caf\xc3\xa9", std::string(65, 'a')})
-    EXPECT_THROW(require_imported_solver_name(bad), SuiteInputError) << bad;
+       std::vector<std::string>{"", "builtin", "calculix", "getfem", "imported", "a b", "a/b",
+                                "a,b", "x\ny", "caf\xc3\xa9", std::string(65, 'a')})
+    EXPECT_THROW(require_imported_solver_name(bad, registered), SuiteInputError) << bad;
 }
 
 TEST(ModelExport, FilesDescribeTheModelTheSolverRuns) {

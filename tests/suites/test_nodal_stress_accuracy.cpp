@@ -98,5 +98,30 @@ TEST(NodalStressAccuracy, RecoveriesOfOneCaseShareItsContactSolution) {
   EXPECT_EQ(fresh.run(spec).quantities[0].value, ext.quantities[0].value);
 }
 
+// Requirement: a singular quantity (the flat punch's edge stress, exact value infinite) has a
+// value and no error: error_percent is NaN (null in results.json) and the grade u, never a 0 %
+// error that reads as exact. Fails if the error keeps its default of 0.
+TEST(NodalStressAccuracy, ASingularQuantityHasNoError) {
+  const CaseSpec spec{.problem = ProblemId::F_p,
+                      .mesh = MeshLevel::C,
+                      .element = Element::Q4,
+                      .algorithm = Algorithm::LMP,
+                      .contact = ContactKind::ss,
+                      .overrides = {}};
+  ProblemExecutor executor(spec);
+  const CaseResult r = executor.run(spec);
+  ASSERT_EQ(r.status, CaseStatus::converged) << r.reason;
+  int singular = 0;
+  for (const QuantityResult& q : r.quantities) {
+    if (!q.singular())
+      continue;
+    ++singular;
+    EXPECT_TRUE(std::isfinite(q.value)) << to_string(q.quantity);
+    EXPECT_TRUE(std::isnan(q.error_percent)) << to_string(q.quantity) << ": " << q.error_percent;
+    EXPECT_EQ(q.grade, Grade::u);
+  }
+  EXPECT_GE(singular, 1);
+}
+
 }  // namespace
 }  // namespace cs::suites

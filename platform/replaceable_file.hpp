@@ -1,0 +1,27 @@
+#pragma once
+// Single files the tool writes where the user names them (--junit, --vtu). Such a file may
+// replace only a file the tool wrote earlier: those carry written_mark(), an XML comment, near
+// their top. Anything else at that path is the user's and is refused before any work starts,
+// so nothing the user had is lost.
+
+#include <filesystem>
+#include <string>
+#include <string_view>
+
+namespace cs::platform {
+
+/// The text of the XML comment that marks a single file as written by contact-suite.
+inline constexpr std::string_view kWrittenMarkText = " written by contact-suite ";
+
+/// The comment itself, as it stands in the file: `<!--` kWrittenMarkText `-->`.
+std::string written_mark();
+
+/// Throws PlatformError when `file` (given as option `what`) exists and the tool did not write
+/// it: it is not a regular file (a link, a directory, ...), or its first kWrittenMarkReach bytes do
+/// not hold written_mark().
+void require_replaceable(const std::filesystem::path& file, const char* what);
+
+/// How far into a file require_replaceable looks for the mark.
+inline constexpr std::size_t kWrittenMarkReach = 512;
+
+}  // namespace cs::platform
