@@ -39,6 +39,7 @@ struct CaseArgs {
   std::string target{schema::to_string(schema::TargetKind::Discretized)};
   std::string recovery{schema::to_string(schema::Recovery::spr)};
   std::string solver{schema::to_string(schema::SolverKind::builtin)};
+  std::vector<std::filesystem::path> solver_dirs;  ///< --solver-dir, searched after the others
   std::vector<std::string> sets;
   bool json = false;
   std::string vtu;
@@ -64,8 +65,8 @@ suites::CaseSpec make_spec(const CaseArgs& args) {
       throw UsageError("--solver " + args.solver +
                        ": builtin, or a registered code and its option as NAME:OPTION (e.g. "
                        "calculix:hard-ss; `contact-suite list` shows them)");
-    const auto code =
-        adapters::find_code(args.solver.substr(0, colon), adapters::protocol::solver_directories());
+    const auto code = adapters::find_code(args.solver.substr(0, colon),
+                                          adapters::protocol::solver_directories(args.solver_dirs));
     spec = suites::external_case(spec, code, code.option(args.solver.substr(colon + 1)),
                                  spec.recovery);
     // As `run` leaves such cases out: an option the code does not offer here, for the case or
@@ -129,7 +130,9 @@ int run_case(const CaseArgs& args) {
     throw UsageError("--vtu: only the built-in solver's fields can be written");
   if (args.vtu_given)
     check_vtu_path(args.vtu);
-  suites::require_solvers({spec});  // e.g. ccx missing: exit 2 before anything runs
+  suites::ExecutorOptions options;
+  options.solver_dirs = args.solver_dirs;
+  suites::require_solvers({spec}, options);  // e.g. ccx missing: exit 2 before anything runs
   // One BLAS thread, as `run` gives every model (apps/model_cost.hpp): the same values as the
   // model's cases in a run.
   suites::set_blas_threads(1);
@@ -137,7 +140,7 @@ int run_case(const CaseArgs& args) {
   suites::CaseResult result;
   std::unique_ptr<suites::GroupExecutor> executor;
   try {
-    executor = suites::make_executor_for(spec);
+    executor = suites::make_executor_for(spec, options);
     auto* builtin = dynamic_cast<suites::ProblemExecutor*>(executor.get());
     if (args.vtu_given && builtin)
       builtin->recover_whole_field();  // the .vtu holds the whole field
@@ -158,7 +161,8 @@ int run_case(const CaseArgs& args) {
   if (args.vtu_given && builtin && builtin->last_displacement().size() > 0)
     builtin->write_vtu(args.vtu, platform::kWrittenMarkText);
   if (args.json) {
-    fmt::print("{}\n", schema::to_json(result).dump(2));
+    fmt::print("{}\n", schema::to_json(result).dump(2, ' ', false,
+                                                    nlohmann::json::error_handler_t::replace));
   } else {
     print_text(result);
   }
@@ -189,6 +193,9 @@ void add_case_command(CLI::App& app, int& exit_code) {
                   "Who solves it: builtin, or a registered code's NAME:OPTION (e.g. "
                   "calculix:hard-ss; then --algorithm and --contact are the option's)")
       ->capture_default_str();
+  cmd->add_option("--solver-dir", args->solver_dirs,
+                  "A further folder of external codes (see `run --solver-dir`)")
+      ->check(CLI::ExistingDirectory);
   cmd->add_flag("--json", args->json, "Print one JSON object (the fields of results.json)");
   auto* vtu = cmd->add_option("--vtu", args->vtu,
                               "Write the mesh, displacement and stresses to a .vtu file");

@@ -24,6 +24,7 @@
 #include "apps/write_run_output.hpp"
 #include "platform/available_cores.hpp"
 #include "platform/available_memory.hpp"
+#include "platform/child_process.hpp"
 #include "platform/interrupts.hpp"
 #include "platform/output_directory.hpp"
 #include "platform/output_transaction.hpp"
@@ -64,11 +65,7 @@ struct RunArgs {
 };
 
 std::vector<std::filesystem::path> solver_dirs(const RunArgs& args) {
-  // Absolute: a code runs in its case directory, where a relative path means something else.
-  std::vector<std::filesystem::path> dirs;
-  for (const auto& d : args.solver_dirs)
-    dirs.push_back(std::filesystem::absolute(d));
-  return dirs;
+  return {args.solver_dirs.begin(), args.solver_dirs.end()};
 }
 
 /// The cases of an external code: each model of the selection (its problems, meshes, elements,
@@ -286,7 +283,7 @@ void add_run_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--time-limit", args->time_limit,
                   "Seconds one registered code's case may take before it is `timeout` "
                   "(default: its manifest's, 600 s for CalculiX)")
-      ->check(finite_number(0.1, false, 86400.0));
+      ->check(finite_number(0.1, false, platform::kMaxTimeLimitSeconds));
   cmd->add_option("--jobs", args->jobs, "Parallel workers, 1 to 256 (default: the number of cores)")
       ->check(CLI::Range(1, 256));
   cmd->add_option("--out", args->out, "Output directory")->capture_default_str();

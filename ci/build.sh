@@ -14,5 +14,8 @@ generator=()
 command -v ninja >/dev/null 2>&1 && generator=(-G Ninja)
 if [ ! -f "$build_dir/CMakeCache.txt" ]; then
   cmake -S . -B "$build_dir" "${generator[@]}" -DCMAKE_BUILD_TYPE=Release
+elif [ ! -f "$build_dir/build.ninja" ] && [ ! -f "$build_dir/Makefile" ]; then
+  # An earlier configure stopped (a dependency was missing) after writing its cache: again.
+  cmake -S . -B "$build_dir"
 fi
 cmake --build "$build_dir" --parallel "$(nproc)"

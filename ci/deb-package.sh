@@ -50,6 +50,19 @@ done
 "$usr/bin/contact-suite" gate --help | grep -q -- "--baseline" ||
   { echo "ci/deb-package.sh: gate --help does not describe --baseline" >&2; exit 1; }
 "$usr/bin/contact-suite" oracle hertz-plane --R 1 --E 1 --nu 0.25 --load 0.001
+# The unpacked program reads its own study data, not the source tree's it was built from: with
+# the packaged table spoiled, `report` fails naming the packaged file.
+study="$usr/share/contact-suite/data/study/ansys_results.csv"
+cp "$study" "$root/ansys_results.csv"
+echo "not,the,study,table" >"$study"
+if "$usr/bin/contact-suite" report --results "$src/tests/reports/data/small_results.json" \
+     --out "$root/report" --no-figures >/dev/null 2>"$root/report.err" ||
+   ! grep -q "$study" "$root/report.err"; then
+  echo "ci/deb-package.sh: report did not read the packaged study data:" >&2
+  cat "$root/report.err" >&2
+  exit 1
+fi
+cp "$root/ansys_results.csv" "$study"
 PYTHONPATH="$usr/lib/python3/dist-packages" /usr/bin/python3 - "$usr" <<'PY'
 import math, sys
 import contact_suite as cs

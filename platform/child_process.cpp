@@ -32,8 +32,9 @@ void check(const ChildOptions& options) {
     if (name.empty() || name.find('=') != std::string::npos)
       throw PlatformError("run_child: bad environment variable name '" + name + "'");
   }
-  if (!(options.time_limit_seconds >= 0.0) || !std::isfinite(options.time_limit_seconds))
-    throw PlatformError("run_child: time limit must be >= 0 and finite");
+  if (!(options.time_limit_seconds >= 0.0 && options.time_limit_seconds <= kMaxTimeLimitSeconds))
+    throw PlatformError("run_child: time limit must be in [0, " +
+                        std::to_string(static_cast<int>(kMaxTimeLimitSeconds)) + "] seconds");
   if (!(options.kill_grace_seconds >= 0.0) || !std::isfinite(options.kill_grace_seconds))
     throw PlatformError("run_child: kill grace period must be >= 0 and finite");
   const auto& dir = options.working_directory;

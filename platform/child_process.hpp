@@ -39,11 +39,15 @@ struct ChildOptions {
   /// paths are relative to OUR working directory, not the child's.
   std::filesystem::path stdout_path;
   std::filesystem::path stderr_path;
-  /// Wall-clock limit in seconds; 0: none. Must be >= 0 and finite.
+  /// Wall-clock limit in seconds; 0: none. Must be in [0, kMaxTimeLimitSeconds].
   double time_limit_seconds = 0.0;
   /// Seconds between SIGTERM and SIGKILL when the child must be stopped; >= 0.
   double kill_grace_seconds = 2.0;
 };
+
+/// The longest time limit a child may be given: one day. Longer ones are refused, since a
+/// deadline far enough out overflows the clock and would stop the child at once.
+inline constexpr double kMaxTimeLimitSeconds = 86400.0;
 
 /// How the child ended.
 struct ChildResult {

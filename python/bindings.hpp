@@ -30,8 +30,8 @@ std::array<py::object, NOut> evaluate(const std::array<py::object, NIn>& inputs,
     args[k] = np.attr("asarray")(inputs[k], "float64");
   const py::tuple broadcast = np.attr("broadcast_arrays")(*args);
   std::array<Array, NIn> in;
-  for (std::size_t k = 0; k < NIn; ++k)
-    in[k] = Array::ensure(broadcast[k]);
+  for (std::size_t k = 0; k < NIn; ++k)  // a copy too large raises MemoryError here
+    in[k] = np.attr("require")(broadcast[k], "float64", "C").template cast<Array>();
   const std::vector<py::ssize_t> shape(in[0].shape(), in[0].shape() + in[0].ndim());
   std::array<Array, NOut> out;
   for (auto& o : out)

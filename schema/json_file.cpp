@@ -43,7 +43,8 @@ void write_json_file_atomically(const std::filesystem::path& path, const nlohman
       dir / fmt::format(".{}.tmp-{}", path.filename().string(), static_cast<long>(getpid()));
   {
     std::ofstream out(tmp);
-    out << doc.dump(1) << "\n";
+    // A byte that is not UTF-8 (a path in another encoding, in a case's reason) reads U+FFFD.
+    out << doc.dump(1, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";
     out.flush();
     if (!out) {
       const std::string why = std::strerror(errno);  // e.g. "No space left on device"

@@ -346,12 +346,18 @@ StudyReference load_study_reference(const fs::path& dir) {
 }
 
 fs::path default_study_data_dir() {
+  std::error_code ec;
+  const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
+  // An installed (or unpacked) program reads its own copy, PREFIX/bin -> PREFIX/share, even
+  // where the source tree it was built from still exists.
+  const fs::path installed =
+      exe.parent_path().parent_path() / "share" / "contact-suite" / "data" / "study";
+  if (!ec && holds_study_data(installed))
+    return installed;
 #ifdef CONTACT_SUITE_STUDY_DATA_DIR
   if (holds_study_data(CONTACT_SUITE_STUDY_DATA_DIR))
     return CONTACT_SUITE_STUDY_DATA_DIR;
 #endif
-  std::error_code ec;
-  const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
   if (!ec) {
     fs::path dir = exe.parent_path();
     for (int up = 0; up < 5 && !dir.empty(); ++up) {

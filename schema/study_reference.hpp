@@ -122,7 +122,8 @@ class StudyReference {
 /// file and line of anything it cannot read (a name the vocabulary does not know included).
 StudyReference load_study_reference(const std::filesystem::path& dir);
 
-/// Where the study data is when the user does not say: the compile definition
+/// Where the study data is when the user does not say: PREFIX/share/contact-suite/data/study
+/// for a program in PREFIX/bin (an installed or unpacked package), else the compile definition
 /// CONTACT_SUITE_STUDY_DATA_DIR if that directory exists, else the first `data/study` (or
 /// `share/contact-suite/data/study`, where `cmake --install` puts it) found walking up from the
 /// running executable's directory, else `data/study` in the working directory.

@@ -15,6 +15,7 @@
 #include "adapters/protocol/code_environment.hpp"
 #include "platform/child_process.hpp"
 #include "solver/mesh/mesh_sets.hpp"
+#include "solver/model.hpp"
 #include "solver/stress_recovery.hpp"
 #include "suites/case_directory.hpp"
 #include "suites/problem_executor.hpp"
@@ -88,6 +89,33 @@ std::vector<int> deformable_nodes(const ProblemSetup& setup) {
   return {nodes.begin(), nodes.end()};
 }
 
+/// The sorted nodes of edge set `name`.
+std::vector<int> sorted_nodes_of(const solver::Mesh& mesh, const std::string& name) {
+  std::vector<int> nodes = solver::nodes_of_sides(mesh, solver::resolve_edge_set(mesh, name));
+  std::ranges::sort(nodes);
+  return nodes;
+}
+
+/// What read files lack for grading (one line, "" when nothing): on the `own` basis a stress
+/// at every node of the sampled surface; a contact pressure only at the contact surface's
+/// nodes (one on the target's side would be taken for the block's).
+std::string files_lack(const ProblemSetup& setup, const protocol::ResultFiles& files,
+                       Recovery recovery) {
+  const solver::Mesh& mesh = setup.model.mesh;
+  if (recovery == Recovery::own) {
+    for (int n : sorted_nodes_of(mesh, kSampledSurface)) {
+      if (!files.has_stress[static_cast<std::size_t>(n)])
+        return fmt::format("stresses.csv: node {} of the sampled surface is missing", n + 1);
+    }
+  }
+  const std::vector<int> contact = sorted_nodes_of(mesh, setup.pair.contact_surface);
+  for (const auto& p : files.contact_pressure) {
+    if (!std::ranges::binary_search(contact, p.node))
+      return fmt::format("contact_pressure.csv: node {} is not on the contact surface", p.node + 1);
+  }
+  return "";
+}
+
 }  // namespace
 
 CaseSpec external_case(const CaseSpec& model_case, const protocol::SolverManifest& code,
@@ -145,18 +173,24 @@ const ExternalExecutor::Run& ExternalExecutor::run_code(const CaseSpec& spec) {
     return run;
   }
   const fs::path run_dir = pattern, case_dir = run_dir / "case";
-  fs::create_directory(case_dir);
-  write_case_directory(case_dir, spec, *setup_, spec.solver_option);
-
   platform::ChildOptions child;
-  child.argv = protocol::expand_command(code.command, code.folder, case_dir, spec.solver_option);
-  child.working_directory = case_dir;
-  child.stdout_path = case_dir / "solver.out";
-  child.stderr_path = case_dir / "solver.err";
-  child.time_limit_seconds = options_.time_limit_seconds;
-  child.environment = protocol::code_environment();
-  const auto adapter_before = listing(code.folder);
-  run.child = platform::run_child(child);
+  std::map<std::string, fs::file_time_type> adapter_before;
+  try {  // as above: a full disk, say, fails this run, not the next basis's reading of it
+    fs::create_directory(case_dir);
+    write_case_directory(case_dir, spec, *setup_, spec.solver_option);
+    child.argv = protocol::expand_command(code.command, code.folder, case_dir, spec.solver_option);
+    child.working_directory = case_dir;
+    child.stdout_path = case_dir / "solver.out";
+    child.stderr_path = case_dir / "solver.err";
+    child.time_limit_seconds = options_.time_limit_seconds;
+    child.environment = protocol::code_environment();
+    adapter_before = listing(code.folder);
+    run.child = platform::run_child(child);
+  } catch (const std::exception& e) {
+    run.failure = std::string("cannot run the case: ") + e.what();
+    run.kept = run_dir;
+    return run;
+  }
 
   std::set<std::string> beside;
   for (const auto& entry : fs::directory_iterator(run_dir))
@@ -216,6 +250,11 @@ CaseResult ExternalExecutor::run(const CaseSpec& spec) {
   }
   if (spec.recovery == Recovery::own && !run.files.stresses_given) {
     result.reason = code.name + " wrote no stresses.csv: it has no `own` basis";
+    mark_missing(*setup_, result);
+    return result;
+  }
+  if (const std::string lack = files_lack(*setup_, run.files, spec.recovery); !lack.empty()) {
+    result.reason = code.name + "'s " + lack;
     mark_missing(*setup_, result);
     return result;
   }

@@ -47,9 +47,16 @@ const FrdResultBlock& required_block(const FrdFile& frd, std::string_view name,
   if (block == nullptr)
     throw CalculixOutputError(fmt::format("CalculiX results: no '{}' block in the .frd", name));
   for (std::string_view c : components) {
-    if (block->component(c) < 0)
+    const int k = block->component(c);
+    if (k < 0)
       throw CalculixOutputError(
           fmt::format("CalculiX results: block '{}' has no component '{}'", name, c));
+    for (int row = 0; row < block->n_nodes(); ++row) {
+      if (!std::isfinite(block->value(row, k)))  // a diverged solve writes NaN as a value
+        throw CalculixOutputError(
+            fmt::format("CalculiX results: block '{}' gives node {} a {} that is not finite", name,
+                        block->node_ids[row], c));
+    }
   }
   return *block;
 }

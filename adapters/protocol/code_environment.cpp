@@ -40,15 +40,25 @@ fs::path python_package_dir(const fs::path& executable) {
 }
 
 std::vector<std::pair<std::string, std::string>> code_environment() {
-  std::vector<std::pair<std::string, std::string>> out = {{"OMP_NUM_THREADS", "1"},
-                                                          {"PYTHONDONTWRITEBYTECODE", "1"}};
   std::error_code ec;
   const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
-  const fs::path package = ec ? fs::path() : python_package_dir(exe);
+  const char* inherited = std::getenv("PYTHONPATH");
+  return code_environment_of(ec ? fs::path() : exe, inherited ? inherited : "");
+}
+
+std::vector<std::pair<std::string, std::string>> code_environment_of(const fs::path& exe,
+                                                                     const std::string& inherited) {
+  std::vector<std::pair<std::string, std::string>> out = {{"OMP_NUM_THREADS", "1"},
+                                                          {"PYTHONDONTWRITEBYTECODE", "1"}};
+  const fs::path package = exe.empty() ? fs::path() : python_package_dir(exe);
   if (!package.empty()) {
+    // A build tree's python/ holds our package alone and leads; an installed dist-packages
+    // holds every Debian package too, so it follows the caller's own PYTHONPATH (a code's venv
+    // or newer NumPy keeps its place), where python3 would look for it anyway.
+    const bool build_tree = package == exe.parent_path() / "python";
     std::string path = package.string();
-    if (const char* inherited = std::getenv("PYTHONPATH"); inherited && *inherited)
-      path += std::string(":") + inherited;
+    if (!inherited.empty())
+      path = build_tree ? path + ":" + inherited : inherited + ":" + path;
     out.emplace_back("PYTHONPATH", path);
   }
   return out;

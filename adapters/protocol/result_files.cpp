@@ -4,6 +4,7 @@
 #include <charconv>
 #include <cmath>
 #include <fstream>
+#include <limits>
 #include <sstream>
 
 #include <fmt/format.h>
@@ -48,11 +49,12 @@ double parse_number(const std::string& text, const std::string& where) {
   return v;
 }
 
-/// Reads a CSV with the exact header `header`; calls row(values, where) per data line, the
-/// first value the node index (id - 1, checked against n_nodes).
+/// Reads a CSV with the exact header `header`; calls row(node, values) per data line,
+/// `node` the index (id - 1, checked against n_nodes; a node given twice is a failure). Returns
+/// which nodes the file gave.
 template <class Row>
-void read_node_csv(const std::filesystem::path& file, const std::string& header, int n_nodes,
-                   Row row) {
+std::vector<bool> read_node_csv(const std::filesystem::path& file, const std::string& header,
+                                int n_nodes, Row row) {
   std::ifstream in(file);
   if (!in)
     throw ReadFailure{fmt::format("{} is missing", file.filename().string())};
@@ -61,6 +63,7 @@ void read_node_csv(const std::filesystem::path& file, const std::string& header,
   if (!std::getline(in, line) || trimmed(line) != header)
     throw ReadFailure{fmt::format("{}: the header is not '{}'", name, header)};
   const std::size_t n_columns = split_csv_line(header).size();
+  std::vector<bool> seen(static_cast<std::size_t>(n_nodes), false);
   for (int number = 2; std::getline(in, line); ++number) {
     if (trimmed(line).empty())
       continue;
@@ -71,11 +74,28 @@ void read_node_csv(const std::filesystem::path& file, const std::string& header,
     const double id = parse_number(fields[0], where);
     if (id != std::floor(id) || id < 1 || id > n_nodes)
       throw ReadFailure{fmt::format("{}: node id {} is not in 1..{}", where, fields[0], n_nodes)};
+    const auto node = static_cast<std::size_t>(id) - 1;
+    if (seen[node])
+      throw ReadFailure{fmt::format("{}: node {} is given twice", where, fields[0])};
+    seen[node] = true;
     std::vector<double> values;
     for (std::size_t k = 1; k < fields.size(); ++k)
       values.push_back(parse_number(fields[k], where));
-    row(static_cast<int>(id) - 1, values, where);
+    row(static_cast<int>(node), values);
   }
+  return seen;
+}
+
+/// status.json's count `key` (0 when absent): a whole number in [0, most], else a ReadFailure.
+long long count(const nlohmann::json& j, const char* key, long long most) {
+  if (!j.contains(key))
+    return 0;
+  const nlohmann::json& v = j.at(key);
+  const double d = v.is_number() ? v.get<double>() : -1.0;  // NaN and inf cannot be JSON
+  if (!(d >= 0.0 && d <= static_cast<double>(most) && d == std::floor(d)))
+    throw ReadFailure{
+        fmt::format("status.json: {} is {}, not a count from 0 to {}", key, v.dump(), most)};
+  return static_cast<long long>(d);
 }
 
 void read_status(const std::filesystem::path& file, ResultFiles& out) {
@@ -91,8 +111,8 @@ void read_status(const std::filesystem::path& file, ResultFiles& out) {
   try {
     if (j.contains("converged"))
       out.converged = j.at("converged").get<bool>();
-    out.iterations = j.value("iterations", 0);
-    out.n_equations = j.value("n_equations", 0LL);
+    out.iterations = static_cast<int>(count(j, "iterations", std::numeric_limits<int>::max()));
+    out.n_equations = count(j, "n_equations", std::numeric_limits<long long>::max() / 2);
     out.reason = j.value("reason", std::string());
     // One line: the reason goes into progress lines, Markdown tables and one-line messages.
     std::replace_if(
@@ -108,32 +128,27 @@ void read_all(const std::filesystem::path& dir, int n_nodes, const std::vector<i
               ResultFiles& out) {
   read_status(dir / "status.json", out);
   out.displacement = Eigen::VectorXd::Zero(2 * n_nodes);
-  std::vector<bool> seen(static_cast<std::size_t>(n_nodes), false);
-  read_node_csv(dir / "displacements.csv", "node_id,ux,uz", n_nodes,
-                [&](int n, const std::vector<double>& v, const std::string& where) {
-                  if (seen[n])
-                    throw ReadFailure{fmt::format("{}: node {} is given twice", where, n + 1)};
-                  seen[n] = true;
-                  out.displacement[2 * n] = v[0];
-                  out.displacement[2 * n + 1] = v[1];
-                });
+  const std::vector<bool> seen = read_node_csv(dir / "displacements.csv", "node_id,ux,uz", n_nodes,
+                                               [&](int n, const std::vector<double>& v) {
+                                                 out.displacement[2 * n] = v[0];
+                                                 out.displacement[2 * n + 1] = v[1];
+                                               });
   for (int n : required)
     if (!seen[n])
       throw ReadFailure{fmt::format("displacements.csv: node {} is missing", n + 1)};
   if (std::filesystem::exists(dir / "stresses.csv")) {
     out.stresses_given = true;
     out.stress.assign(n_nodes, Eigen::Vector4d::Zero());
-    out.has_stress.assign(n_nodes, false);
-    read_node_csv(dir / "stresses.csv", "node_id,sigma_x,sigma_z,tau_xz,sigma_out_of_plane",
-                  n_nodes, [&](int n, const std::vector<double>& v, const std::string&) {
-                    out.stress[n] = {v[0], v[1], v[2], v[3]};
-                    out.has_stress[n] = true;
-                  });
+    out.has_stress =
+        read_node_csv(dir / "stresses.csv", "node_id,sigma_x,sigma_z,tau_xz,sigma_out_of_plane",
+                      n_nodes, [&](int n, const std::vector<double>& v) {
+                        out.stress[n] = {v[0], v[1], v[2], v[3]};
+                      });
   }
   if (std::filesystem::exists(dir / "contact_pressure.csv")) {
     out.contact_pressure_given = true;
     read_node_csv(dir / "contact_pressure.csv", "node_id,pressure", n_nodes,
-                  [&](int n, const std::vector<double>& v, const std::string&) {
+                  [&](int n, const std::vector<double>& v) {
                     out.contact_pressure.push_back({n, v[0]});
                   });
   }

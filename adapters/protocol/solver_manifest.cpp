@@ -11,6 +11,8 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "platform/child_process.hpp"
+
 namespace cs::adapters::protocol {
 namespace {
 
@@ -208,7 +210,7 @@ SolverManifest parse_manifest(std::string_view text, const std::filesystem::path
   json j;
   try {
     j = json::parse(text);
-  } catch (const json::parse_error& e) {
+  } catch (const json::exception& e) {  // a syntax error, or a number out of range (1e999)
     throw ManifestError(fmt::format("{}: not valid JSON ({})", source.string(), e.what()));
   }
   const Fields f(j, "", source,
@@ -240,8 +242,12 @@ SolverManifest parse_manifest(std::string_view text, const std::filesystem::path
       if (!m.supports_all({s}))
         f.fail(fmt::format("options[{}].supports", i),
                fmt::format("'{}' is not among the code's supports", to_string(s)));
-  if (const auto limit = f.number("time_limit_seconds"))
+  if (const auto limit = f.number("time_limit_seconds")) {
+    if (*limit > platform::kMaxTimeLimitSeconds)
+      throw ManifestError(fmt::format("{}: time_limit_seconds {} is above the limit of {} s",
+                                      source.string(), *limit, platform::kMaxTimeLimitSeconds));
     m.time_limit_seconds = *limit;
+  }
   return m;
 }
 

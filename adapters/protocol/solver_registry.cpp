@@ -54,12 +54,13 @@ std::vector<fs::path> solver_directories(const std::vector<fs::path>& extra) {
     std::string list = env;
     for (std::size_t start = 0; start <= list.size();) {
       const auto colon = std::min(list.find(':', start), list.size());
-      if (colon > start)
-        out.emplace_back(list.substr(start, colon - start));
+      if (colon > start)  // absolute: a code runs inside its case directory, not here
+        out.push_back(fs::absolute(list.substr(start, colon - start)));
       start = colon + 1;
     }
   }
-  out.insert(out.end(), extra.begin(), extra.end());
+  for (const auto& dir : extra)
+    out.push_back(fs::absolute(dir));
   return out;
 }
 

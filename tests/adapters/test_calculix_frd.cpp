@@ -261,6 +261,19 @@ TEST(ResultMapping, WrongModelIsLoud) {
       map_results(parse_frd(nan_node), {}, test::patch_model(data_spec(solver::ElementType::Q4)),
                   test::patch_pair(), result),
       CalculixOutputError);
+  // ... a NaN displacement (a diverged solve writes one as a value) ...
+  std::string nan_value = data("patch_q4_ns.frd");
+  const std::size_t row = nan_value.find("\n -1", nan_value.find(" -4  DISP")) + 1;
+  nan_value.replace(row + 13, 12, "         NaN");  // " -1", a 10-wide node id, then D1
+  try {
+    map_results(parse_frd(nan_value), parse_expansion(data("patch_q4_ns.12d")),
+                test::patch_model(data_spec(solver::ElementType::Q4)), test::patch_pair(), result);
+    ADD_FAILURE() << "a NaN displacement was mapped";
+  } catch (const CalculixOutputError& e) {
+    EXPECT_NE(std::string(e.what()).find("block 'DISP' gives node 1 a D1 that is not finite"),
+              std::string::npos)
+        << e.what();
+  }
   // ... and against a model with fewer nodes.
   test::PatchSpec smaller = data_spec(solver::ElementType::Q4);
   smaller.nx = 1;

@@ -7,10 +7,12 @@
 //  - a new code is one folder: `list` shows it with its options, `run` runs it and grades both
 //    stress bases (common: our patch recovery of its displacements; own: its stresses) to
 //    machine precision, the case ids carrying its own option labels;
-//  - a non-zero exit, a time-out, NaN, a missing node, an unparsable value and a file written
-//    outside the case directory each make that case failed (timeout) with the reason, and the
-//    run still writes results.json;
-//  - a manifest with an unknown key or family is refused with exit 2 and one line.
+//  - a non-zero exit, a time-out, NaN, a missing node, an unparsable value, a file written
+//    outside the case directory, a node given twice, an own-basis stress missing on the sampled
+//    surface and a pressure off the contact surface each make that case failed (timeout) with
+//    the reason, and the run still writes results.json;
+//  - a manifest with an unknown key or family, a number out of range or a time limit beyond a
+//    day is refused with exit 2 and one line.
 
 #include <algorithm>
 #include <cmath>
@@ -138,6 +140,25 @@ TEST(SolverProtocolCli, RunDirectoryIsRemovedUnlessACaseKeepsItsFiles) {
   EXPECT_EQ(reason.find(kept.string()), std::string::npos) << reason;
 }
 
+// Requirement: a path that is not UTF-8 (a temporary directory named in Latin-1) in a failed
+// case's kept_files still gives a results file: the byte reads U+FFFD. Fails if writing
+// results.json throws on it (an internal error, exit 3, the whole run lost).
+TEST(SolverProtocolCli, APathThatIsNotUtf8StillGivesResults) {
+  TempDir dir;
+  make_code_folder(dir.path() / "patch_code");
+  const fs::path scratch = dir.path() / "caf\xe9";
+  fs::create_directories(scratch);
+  const auto r =
+      run_cli(patch_code_run(dir.path() / "patch_code", "exit3", dir.path() / "out"), scratch);
+  ASSERT_EQ(r.exit_code, 1) << r.err;
+  const auto cases = cases_by_id(dir.path() / "out" / "results.json");
+  ASSERT_FALSE(cases.empty());
+  for (const auto& [id, c] : cases) {
+    const std::string kept = c.at("kept_files");
+    EXPECT_NE(kept.find("caf\xef\xbf\xbd"), std::string::npos) << id << ": " << kept;
+  }
+}
+
 // Requirement: a temporary directory that does not exist is bad input: exit 2 and one line
 // naming TMPDIR before any case runs, and no output directory.
 TEST(SolverProtocolCli, UnusableTemporaryDirectoryIsExit2) {
@@ -162,8 +183,9 @@ TEST(SolverProtocolCli, EveryFailureIsTheCaseStatusWithItsReason) {
   const fs::path out = dir.path() / "out";
   const auto r = run_cli(
       patch_code_run(dir.path() / "patch_code",
-                     "exit3,nan,missing_node,unparsable,outside,sleep,no_stresses,multiline", out,
-                     {"--time-limit", "8"}));
+                     "exit3,nan,missing_node,unparsable,outside,sleep,no_stresses,multiline,"
+                     "surface_stress_missing,pressure_twice,pressure_off_surface,bad_count",
+                     out, {"--time-limit", "8"}));
   ASSERT_EQ(r.exit_code, 1) << r.err << r.out;  // cases failed, results written
   const auto cases = cases_by_id(out / "results.json");
   const std::map<std::string, std::pair<std::string, std::string>> expected{
@@ -178,6 +200,13 @@ TEST(SolverProtocolCli, EveryFailureIsTheCaseStatusWithItsReason) {
       {"AL/ss/rigid/@patchcode:no_stresses", {"converged", ""}},
       // a code's reason on one line: it goes into progress lines and Markdown tables
       {"PM/ns/rigid/@patchcode:multiline", {"not_converged", "iteration cap reached at step 3"}},
+      // the own basis needs the code's stress at every node of the sampled surface
+      {"AL/ss/rigid/own/@patchcode:surface_stress_missing",
+       {"failed", "stresses.csv: node 1 of the sampled surface is missing"}},
+      {"AL/ss/rigid/@patchcode:surface_stress_missing", {"converged", ""}},
+      {"PM/ns/rigid/@patchcode:pressure_twice", {"failed", "is given twice"}},
+      {"PM/ns/rigid/@patchcode:pressure_off_surface", {"failed", "is not on the contact surface"}},
+      {"PM/ns/rigid/@patchcode:bad_count", {"failed", "iterations is 1e+20, not a count"}},
   };
   for (const auto& [tail, want] : expected) {
     const std::string id = "P_p/C/Q4/" + tail;
@@ -409,6 +438,31 @@ TEST(SolverProtocolCli, GetfemLoadControlCarriesTheTotalLoad) {
   EXPECT_NEAR(theirs / ours, 1.0, 1e-4) << theirs << " against " << ours;
 }
 
+// Requirement: `case` finds a code by --solver-dir as `run` does, and a relative folder in
+// CONTACT_SUITE_SOLVER_DIRS means a folder of the caller's working directory, not of the case
+// directory the code runs in. Fails if `case` lacks --solver-dir, or if the relative folder is
+// handed on as written (the code's script is then not found and the case fails).
+TEST(SolverProtocolCli, CaseTakesASolverDirAndRelativeFoldersAreTheCallers) {
+  TempDir dir;
+  make_code_folder(dir.path() / "codes" / "patch_code");
+  const std::vector<std::string> one_case{"case",     "P_p",   "--mesh",   "C",
+                                          "--target", "rigid", "--solver", "patchcode:exact"};
+  auto with_dir = one_case;
+  with_dir.insert(with_dir.end(), {"--solver-dir", (dir.path() / "codes").string()});
+  auto r = run_cli(with_dir);
+  EXPECT_EQ(r.exit_code, 0) << r.err << r.out;
+  EXPECT_NE(r.out.find("@patchcode:exact  converged"), std::string::npos) << r.out;
+
+  const fs::path here = fs::current_path();
+  fs::current_path(dir.path());
+  ::setenv("CONTACT_SUITE_SOLVER_DIRS", "codes", 1);
+  r = run_cli(one_case);
+  ::unsetenv("CONTACT_SUITE_SOLVER_DIRS");
+  fs::current_path(here);
+  EXPECT_EQ(r.exit_code, 0) << r.err << r.out;
+  EXPECT_NE(r.out.find("@patchcode:exact  converged"), std::string::npos) << r.out;
+}
+
 TEST(SolverProtocolCli, BadManifestIsExit2AndOneLine) {
   const std::string good = R"({"name": "x", "command": ["true"], "version_command": ["true"],
     "options": [{"label": "a", "family": "penalty", "discretization": "ns"}],
@@ -427,6 +481,12 @@ TEST(SolverProtocolCli, BadManifestIsExit2AndOneLine) {
       {"option supports an unknown capability", R"({"name": "x", "command": ["true"],
         "version_command": ["true"], "options": [{"label": "a", "family": "penalty",
         "discretization": "ns", "supports": ["3d"]}], "supports": ["plane_strain"]})"},
+      {"a number out of range", R"({"name": "x", "command": ["true"], "version_command": ["true"],
+        "time_limit_seconds": 1e999, "options": [{"label": "a", "family": "penalty",
+        "discretization": "ns"}], "supports": ["plane_strain"]})"},
+      {"a time limit that would overflow the clock", R"({"name": "x", "command": ["true"],
+        "version_command": ["true"], "time_limit_seconds": 1e10, "options": [{"label": "a",
+        "family": "penalty", "discretization": "ns"}], "supports": ["plane_strain"]})"},
   };
   for (const auto& [what, manifest] : bad) {
     TempDir dir;

@@ -136,6 +136,7 @@ def test_results_reader_values_are_the_files_bit_for_bit():
     doc = cs.read_results(str(FIXTURE))
     raw = json.loads(FIXTURE.read_text())
     assert [c.id for c in doc.cases] == [c["id"] for c in raw["cases"]]
+    assert [r.id for r in doc.rows] == [r["id"] for r in raw["rows"]]
     for case, rec in zip(doc.cases, raw["cases"]):
         assert case.status == rec["status"]
         assert case.wall_seconds == rec["wall_seconds"]
@@ -181,6 +182,32 @@ def test_grading_functions():
     assert est.asymptotic and est.observed_order == pytest.approx(2.0, rel=1e-14)
     assert est.richardson == pytest.approx(1.0, rel=1e-14)
     assert cs.pair_orders(error_c=4.0, error_m=2.0, error_f=None) == [pytest.approx(1.0), None]
+
+
+def test_grading_refuses_values_that_are_not_finite():
+    """Requirement: a NaN or infinite error or value is a ValueError naming the argument, never a
+    NaN verdict or a false 'asymptotic'; an exact value of 0 gives no percentage error."""
+    for call in (lambda: cs.error_estimate(value_c=math.nan, value_m=1.0, value_f=0.5),
+                 lambda: cs.is_converging(error_c=1.0, error_m=math.inf, error_f=0.5),
+                 lambda: cs.divergence_verdict(value_c=1.0, value_m=2.0, value_f=math.nan),
+                 lambda: cs.pair_orders(error_c=math.nan, error_m=2.0, error_f=1.0),
+                 lambda: cs.trend(error_c=1.0, error_m=0.5, error_f=math.nan),
+                 lambda: cs.observed_order(error_c=4.0, error_m=2.0, error_f=1.0,
+                                           resolution_percent=math.nan)):
+        with pytest.raises(ValueError, match="must be a finite number"):
+            call()
+    with pytest.raises(ValueError, match="value_c"):
+        cs.error_estimate(value_c=math.nan, value_m=1.0, value_f=0.5)
+    with pytest.raises(ValueError, match="non-zero exact"):
+        cs.error_percent(value=1.0, exact=0.0)
+    assert math.isnan(cs.error_percent(value=math.nan, exact=1.0))  # a value not available
+
+
+def test_an_evaluation_too_large_raises_memory_error():
+    """Requirement: a grid whose broadcast cannot be allocated (a row and a column of 200,000
+    points: 298 GiB) raises MemoryError; it never crashes the interpreter."""
+    with pytest.raises(MemoryError):
+        cs.mcewen_stress(a=1.0, p=1.0, x=np.zeros(200000), z=np.zeros((200000, 1)))
 
 
 def test_trend_and_order_of_a_value_read_between_nodes():

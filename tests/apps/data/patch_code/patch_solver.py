@@ -6,7 +6,8 @@ uniform pressure on its far face carries sigma_z = -p, sigma_x = tau_xz = 0 ever
 u_x = nu (1 + nu) p x / E and u_z = -(1 - nu^2) p z / E (plane strain; u_z = 0 on the plane).
 p is read off the case's nodal forces on block.far_z, E and nu off its block body. It writes
 every result file of the protocol. Its option label selects a failure to exercise the engine:
-exact (none), exit3, nan, missing_node, unparsable, outside, sleep, no_stresses, multiline
+exact (none), exit3, nan, missing_node, unparsable, outside, sleep, no_stresses, multiline,
+surface_stress_missing, pressure_twice, pressure_off_surface, bad_count
 (not converged, for a reason of several lines).
 
 Usage: patch_solver.py CASE_DIR OPTION
@@ -64,6 +65,7 @@ def main():
     p = -sum(f[2] for f in on_far) / width
     names = [b["name"] for b in case["bodies"]]
     block_nodes = body_nodes(lines, names.index("block") + 1)
+    surface = [t for t in block_nodes if abs(nodes[t][1]) < 1e-12]  # the contact face z = 0
 
     if option == "exit3":
         print("patch solver: progress line", file=sys.stderr)
@@ -91,16 +93,23 @@ def main():
         with open("stresses.csv", "w") as f:
             f.write("node_id,sigma_x,sigma_z,tau_xz,sigma_out_of_plane\n")
             for t in block_nodes:
+                if option == "surface_stress_missing" and t == surface[0]:
+                    continue
                 f.write(f"{t},0,{-p!r},0,{-nu * p!r}\n")
     with open("contact_pressure.csv", "w") as f:
         f.write("node_id,pressure\n")
-        for t in block_nodes:
-            if abs(nodes[t][1]) < 1e-12:
-                f.write(f"{t},{p!r}\n")
+        for t in surface:
+            f.write(f"{t},{p!r}\n")
+        if option == "pressure_twice":
+            f.write(f"{surface[0]},{p!r}\n")
+        if option == "pressure_off_surface":
+            f.write(f"{next(t for t in block_nodes if t not in surface)},{p!r}\n")
     with open("status.json", "w") as f:
         converged = option != "multiline"
         reason = "" if converged else "iteration cap\nreached\tat step 3"
-        json.dump({"converged": converged, "iterations": 1, "n_equations": 2 * len(block_nodes),
+        iterations = 1e20 if option == "bad_count" else 1
+        json.dump({"converged": converged, "iterations": iterations,
+                   "n_equations": 2 * len(block_nodes),
                    "reason": reason, "solver_version": "patch-solver 1"}, f)
 
 
