@@ -22,6 +22,7 @@
 #include "platform/interrupts.hpp"
 #include "platform/platform_error.hpp"
 #include "schema/schema_error.hpp"
+#include "suites/blas_kernels.hpp"
 #include "suites/run_environment.hpp"
 
 namespace {
@@ -39,6 +40,7 @@ std::string one_line(std::string text) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  cs::suites::use_the_cpus_blas_kernels(argv);  // may execute the program again, once
   cs::suites::run_openmp_regions_serially();
   CLI::App app{
       "contact-suite: frictionless contact problems with exact solutions, solved by finite "

@@ -21,7 +21,12 @@ std::string source_name(const ResultsDocument& doc) {
 /// the C, M and F cases of the main job): well above round-off, far below any error of interest.
 constexpr double kSameAnalysis = 1e-9;
 
+/// Whether two values (absent or NaN: no value, as a failed case's) are the same.
 bool same_value(std::optional<double> a, std::optional<double> b) {
+  if (a && std::isnan(*a))
+    a.reset();
+  if (b && std::isnan(*b))
+    b.reset();
   if (!a || !b)
     return a.has_value() == b.has_value();
   return std::abs(*a - *b) <= kSameAnalysis * std::max({std::abs(*a), std::abs(*b), 1e-300});

@@ -5,7 +5,10 @@
 #include <cerrno>
 #include <cstring>
 #include <fstream>
+#include <set>
 #include <sstream>
+#include <string>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -13,13 +16,44 @@
 
 namespace cs::schema {
 
+namespace {
+
+/// How deep a file may nest. Ours nest 6 levels; a document far deeper (a hand-made file)
+/// would exhaust the stack when it is copied or written, since both recurse.
+constexpr int kMaxJsonDepth = 64;
+
+/// Why a well-formed text is still refused: too deep, or a key given twice in one object (the
+/// parser would keep the last, so a merge-conflict leftover would pass unnoticed).
+struct Refused {
+  std::string why;
+};
+
+}  // namespace
+
 nlohmann::json parse_json_text(std::string_view text, const std::string& what,
                                const std::string& source) {
+  using nlohmann::json;
+  std::vector<std::set<std::string>> keys;  // of each object being read
+  const json::parser_callback_t check = [&](int depth, json::parse_event_t event, json& parsed) {
+    if (depth > kMaxJsonDepth)
+      throw Refused{fmt::format("it nests deeper than {} levels", kMaxJsonDepth)};
+    if (event == json::parse_event_t::object_start)
+      keys.emplace_back();
+    else if (event == json::parse_event_t::object_end)
+      keys.pop_back();
+    else if (event == json::parse_event_t::key &&
+             !keys.back().insert(parsed.get<std::string>()).second)
+      throw Refused{
+          fmt::format("the key '{}' is given twice in one object", parsed.get<std::string>())};
+    return true;
+  };
   try {
-    return nlohmann::json::parse(text);
-  } catch (const nlohmann::json::exception& e) {
+    return json::parse(text, check);
+  } catch (const json::exception& e) {
     throw SchemaError(
         fmt::format("{} file '{}' is not valid JSON (truncated?): {}", what, source, e.what()));
+  } catch (const Refused& r) {
+    throw SchemaError(fmt::format("{} file '{}' is refused: {}", what, source, r.why));
   }
 }
 

@@ -10,7 +10,8 @@
 namespace cs::schema {
 
 /// Parses JSON text read from `source` (a path, for messages); throws SchemaError naming
-/// `what`, the source and the cause (not JSON, truncated, a number out of range).
+/// `what`, the source and the cause (not JSON, truncated, a number out of range, nested deeper
+/// than 64 levels, a key given twice in one object).
 nlohmann::json parse_json_text(std::string_view text, const std::string& what,
                                const std::string& source);
 

@@ -1,5 +1,6 @@
 #include "schema/results_file.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <set>
@@ -215,12 +216,24 @@ std::vector<SweepAxis> sweep_from_json(const JsonFields& r) {
   return axes;
 }
 
+/// The longest time (s) and the largest count a file may state: far beyond any run, so that
+/// sums over merged files cannot overflow.
+constexpr double kMaxSeconds = 1e9;
+
+/// A measure (time, memory, length) at `key`: null reads NaN; otherwise in [0, most].
+double measure(const JsonFields& r, const char* key, double most = 1e300) {
+  const double v = r.number(key, true);
+  if (std::isfinite(v) && (v < 0.0 || v > most))
+    r.fail_field(key, v < 0.0 ? "is negative" : fmt::format("is above {:g}", most));
+  return v;
+}
+
 RunInfo run_from_json(const JsonFields& r) {
   RunInfo run;
   run.started_utc = r.string("started_utc");
-  run.wall_seconds = r.number("wall_seconds", true);
+  run.wall_seconds = measure(r, "wall_seconds", kMaxSeconds);
   run.jobs = static_cast<int>(r.integer("jobs", 1, kIntMax));
-  run.peak_rss_mb = r.number("peak_rss_mb", true);
+  run.peak_rss_mb = measure(r, "peak_rss_mb");
   run.command_line = r.string("command_line");
   run.environment = r.has("environment") ? r.at("environment") : json::object();
   if (!run.environment.is_object())
@@ -237,7 +250,7 @@ RunInfo run_from_json(const JsonFields& r) {
   if (r.has("sweep"))
     run.sweep = sweep_from_json(r);
   if (r.has("merged_files"))
-    run.merged_files = static_cast<int>(r.integer("merged_files", 0, kIntMax));
+    run.merged_files = static_cast<int>(r.integer("merged_files", 0, kMaxMergedFiles));
   return run;
 }
 
@@ -327,11 +340,11 @@ CaseResult case_from_json(const json& j, const std::string& path) {
   c.kept_files = r.optional_string("kept_files");
   split_kept_files(c);
   c.iterations = static_cast<int>(r.optional_integer("iterations", 0, 0, kIntMax));
-  c.wall_seconds = r.number("wall_seconds", true);
-  c.peak_rss_mb = r.number("peak_rss_mb", true);
+  c.wall_seconds = measure(r, "wall_seconds", kMaxSeconds);
+  c.peak_rss_mb = measure(r, "peak_rss_mb");
   c.n_elements = static_cast<int>(r.optional_integer("n_elements", 0, 0, kIntMax));
   c.n_equations = static_cast<int>(r.optional_integer("n_equations", 0, 0, kIntMax));
-  c.element_size_h = r.number("element_size_h", true);
+  c.element_size_h = measure(r, "element_size_h");
   const JsonFields qs = r.object("quantities");
   for (const auto& [name, value] : r.at("quantities").items()) {
     const auto quantity = try_parse<Quantity>(name);
@@ -474,6 +487,8 @@ RowVerdict row_from_json(const json& j, const std::string& path) {
   }
   row.grade = r.optional_name<Grade>("grade");
   row.graded_mesh = r.optional_name<MeshLevel>("graded_mesh");
+  if (row.graded_mesh && std::ranges::find(kStudyMeshes, *row.graded_mesh) == kStudyMeshes.end())
+    r.fail_field("graded_mesh", "is not one of the study's meshes C, M, F");
   row.converging = r.optional_boolean("converging");
   row.diverging = r.optional_boolean("diverging");
   if (r.has("observed_order")) {

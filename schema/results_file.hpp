@@ -41,6 +41,10 @@ struct SweepAxis {
   friend bool operator==(const SweepAxis&, const SweepAxis&) = default;
 };
 
+/// The most results files one file may say it merges: far beyond any run, so that a merge's
+/// sum of them cannot overflow.
+inline constexpr int kMaxMergedFiles = 1'000'000;
+
 /// What is known about the run as a whole (machine, versions, settings, timing).
 struct RunInfo {
   std::string started_utc;                                ///< ISO 8601

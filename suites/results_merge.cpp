@@ -147,13 +147,13 @@ schema::ResultsDocument merge_results(const std::vector<schema::ResultsDocument>
   out.run.command_line = command_line;
   out.run.wall_seconds = 0.0;
   out.run.jobs = 1;
-  out.run.merged_files = 0;
+  long long merged_files = 0;  // each at most kMaxMergedFiles (the reader's bound): no overflow
   std::set<std::string> ids;
   for (const auto& p : parts) {
     out.run.started_utc = std::min(out.run.started_utc, p.run.started_utc);
     out.run.wall_seconds += p.run.wall_seconds;  // summed over the parts: machine time
     out.run.jobs = std::max(out.run.jobs, p.run.jobs);
-    out.run.merged_files += std::max(p.run.merged_files, 1);
+    merged_files += std::max(p.run.merged_files, 1);
     out.run.peak_rss_mb = std::max(out.run.peak_rss_mb, p.run.peak_rss_mb);
     for (const auto& c : p.cases) {
       if (!ids.insert(schema::case_id(c.spec)).second) {
@@ -163,6 +163,11 @@ schema::ResultsDocument merge_results(const std::vector<schema::ResultsDocument>
       out.cases.push_back(c);
     }
   }
+  if (merged_files > schema::kMaxMergedFiles)
+    throw SuiteInputError(
+        fmt::format("merge: the files merge {} results files in all, more than {}", merged_files,
+                    schema::kMaxMergedFiles));
+  out.run.merged_files = static_cast<int>(merged_files);
   const auto& shard = parts.front().run.shard;
   if (shard && static_cast<long long>(out.cases.size()) != shard->total_cases) {
     throw SuiteInputError(fmt::format("merge: the slices hold {} cases but the run had {}",

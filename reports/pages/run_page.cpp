@@ -103,7 +103,9 @@ std::string run_page(const schema::ResultsDocument& doc) {
           TemplateData rd;
           rd.set("source", source_run.first.empty() ? std::string("(this run)") : source_run.first);
           rd.set("started", r.started_utc.empty() ? std::string("not recorded") : r.started_utc);
-          rd.set("minutes", fmt::format("{:.1f}", r.wall_seconds / 60.0));
+          rd.set("minutes", std::isfinite(r.wall_seconds)
+                                ? fmt::format("{:.1f}", r.wall_seconds / 60.0)
+                                : std::string("—"));
           rd.set("parts", std::to_string(std::max(1, r.merged_files)));
           rd.set("jobs", std::to_string(r.jobs));
           rd.set("peak", std::isfinite(r.peak_rss_mb) ? fmt::format("{:.0f}", r.peak_rss_mb)

@@ -75,6 +75,30 @@ TEST(RunCli, CaseVtuHoldsTheWholeField) {
   EXPECT_EQ(text.find("inf"), std::string::npos);
 }
 
+// Requirement: on a CPU with AVX2 and FMA the program never runs OpenBLAS's Prescott (SSE3)
+// kernels, the library's fall-back for a CPU model it does not know: results.json's environment
+// names the kernels used. Fails on such a CPU if the program keeps the fall-back (Debian 12's
+// OpenBLAS on Emerald Rapids, family 6 model 207), or if it overrides a user's OPENBLAS_CORETYPE.
+TEST(RunCli, UsesTheCpusBlasKernels) {
+  const std::string flags = read_text("/proc/cpuinfo");
+  if (flags.find(" avx2") == std::string::npos || flags.find(" fma") == std::string::npos)
+    GTEST_SKIP() << "no AVX2 and FMA: the library's own kernels are the best";
+  TempDir tmp;
+  const auto blas = [&](const std::string& out) {
+    const auto r = run_cli({"run", "--problems", "P_p", "--meshes", "C", "--elements", "Q4",
+                            "--algorithms", "AL", "--contacts", "ss", "--no-report", "--out", out});
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    const auto doc = nlohmann::json::parse(read_text(fs::path(out) / "results.json"));
+    return doc["run"]["environment"]["blas"].get<std::string>();
+  };
+  const std::string chosen = blas((tmp.path() / "a").string());
+  EXPECT_EQ(chosen.find("Prescott"), std::string::npos) << chosen;
+  ::setenv("OPENBLAS_CORETYPE", "Prescott", 1);  // the user's choice is kept
+  const std::string kept = blas((tmp.path() / "b").string());
+  ::unsetenv("OPENBLAS_CORETYPE");
+  EXPECT_NE(kept.find("Prescott"), std::string::npos) << kept;
+}
+
 // Requirement: `case --vtu` replaces only a .vtu contact-suite wrote. A file of the user's at that
 // path is refused (exit 2, one line) before the analysis and left as it was; the tool's own file
 // is replaced. Fails if the user's file is overwritten or a rewrite of the tool's file refused.

@@ -5,9 +5,10 @@
 // with one line naming it and both files; with the same values it is kept once, and the row takes
 // the refinement record (M-F-VF) of the file that has one. One file given twice is refused.
 
-#include <gtest/gtest.h>
-
+#include <cmath>
 #include <string>
+
+#include <gtest/gtest.h>
 
 #include "schema/combined_results.hpp"
 #include "schema/schema_error.hpp"
@@ -88,6 +89,23 @@ TEST(CombinedResults, ACaseInTwoFilesWithOtherValuesIsRefusedByName) {
   EXPECT_THROW(combine_results({one_case("a.json", ProblemId::H_p, MeshLevel::C, 1),
                                 one_case("a.json", ProblemId::P_p, MeshLevel::C, 1)}),
                SchemaError);
+}
+
+// Requirement: a failed case (no value: NaN) in both files is the same analysis run twice, as a
+// refinement run repeats the main job's cases, not "two values". Fails if NaN != NaN refuses it.
+TEST(CombinedResults, AFailedCaseInTwoFilesIsOneCase) {
+  const auto failed = [](const std::string& source) {
+    ResultsDocument d = one_case(source, ProblemId::H_p, MeshLevel::C, 1);
+    d.cases[0].status = CaseStatus::failed;
+    d.cases[0].quantities[0].value = std::nan("");
+    d.rows[0].values = {std::nullopt, std::nullopt, std::nullopt};
+    return d;
+  };
+  const ResultsDocument both = combine_results({failed("a.json"), failed("b.json")});
+  EXPECT_EQ(both.cases.size(), 1u);
+  ResultsDocument valued = one_case("c.json", ProblemId::H_p, MeshLevel::C, 1);
+  valued.rows[0].values = {std::nullopt, std::nullopt, std::nullopt};
+  EXPECT_THROW(combine_results({failed("a.json"), valued}), SchemaError);  // NaN against 1.25
 }
 
 TEST(CombinedResults, TheSameAnalysesTwiceAreKeptOnceWithTheRefinementRecord) {

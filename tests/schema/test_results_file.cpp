@@ -136,6 +136,18 @@ TEST(SchemaResultsFile, RejectsWrongTypesWithTheFieldPath) {
                   "R.cases[0].interface.max_tensile_over_p: is negative");
   expect_rejected([](json& j) { j["run"]["jobs"] = 2.5; },
                   "R.run.jobs: is a number, expected an integer");
+  // Measures cannot be negative, and a time or a count cannot be so large that a merge's sum
+  // of them overflows (the report printed the sum, inf, as nan).
+  expect_rejected([](json& j) { j["cases"][0]["wall_seconds"] = -1.0; },
+                  "R.cases[0].wall_seconds: is negative");
+  expect_rejected([](json& j) { j["cases"][0]["element_size_h"] = -0.125; },
+                  "R.cases[0].element_size_h: is negative");
+  expect_rejected([](json& j) { j["run"]["wall_seconds"] = 1e308; },
+                  "R.run.wall_seconds: is above");
+  expect_rejected([](json& j) { j["run"]["merged_files"] = 2147483647; }, "out of range");
+  // A grade is of one of the study's meshes: a VF graded mesh read past the C, M, F errors.
+  expect_rejected([](json& j) { j["rows"][0]["graded_mesh"] = "VF"; },
+                  "R.rows[0].graded_mesh: is not one of the study's meshes");
 }
 
 TEST(SchemaResultsFile, RejectsUnknownNamesAndDuplicates) {
@@ -211,6 +223,28 @@ TEST(SchemaResultsFile, FileErrorsAreSchemaErrors) {
   const auto truncated = dir.path() / "truncated.json";
   std::ofstream(truncated) << to_json(small_document()).dump().substr(0, 40);
   EXPECT_THROW(read_results_file(truncated), SchemaError);
+  // A document nested far deeper than ours (copying or writing it would exhaust the stack),
+  // and a key given twice (the parser would keep the last silently).
+  const auto deep = dir.path() / "deep.json";
+  std::string text = to_json(small_document()).dump();
+  text.insert(text.rfind('}'), R"(, "x": )" + std::string(100000, '[') + std::string(100000, ']'));
+  std::ofstream(deep) << text;
+  try {
+    read_results_file(deep);
+    ADD_FAILURE() << "a document nested 100,000 deep was read";
+  } catch (const SchemaError& e) {
+    EXPECT_NE(std::string(e.what()).find("nests deeper than 64 levels"), std::string::npos)
+        << e.what();
+  }
+  const auto twice = dir.path() / "twice.json";
+  std::ofstream(twice) << R"({"schema": "contact-suite/results", "schema": "x"})";
+  try {
+    read_results_file(twice);
+    ADD_FAILURE() << "a key given twice was read";
+  } catch (const SchemaError& e) {
+    EXPECT_NE(std::string(e.what()).find("the key 'schema' is given twice"), std::string::npos)
+        << e.what();
+  }
   const auto good = dir.path() / "good.json";
   write_results_file(good, small_document());
   EXPECT_EQ(to_json(read_results_file(good)), to_json(small_document()));

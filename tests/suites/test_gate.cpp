@@ -85,6 +85,28 @@ TEST(Gate, WorsenedGradeAndLostConvergenceFail) {
   EXPECT_TRUE(has_failure(report, "H_p/Q4/AL/ss/sigma_c", "converging"));
 }
 
+// Requirement: a grade that changes while its value moves by round-off (the F error from
+// 0.99999995 % to 1.00000005 %, e to g, a drift of 1e-9) is no regression; the same grade drop
+// with a drift beyond round-off fails even where the quantity's tolerance is loose.
+TEST(Gate, AGradeOnABandsEdgeMovedByRoundOffPasses) {
+  const double exact = 4.0 / M_PI;
+  auto edge = good_results();
+  edge[2] = hertz_case(MeshLevel::F, exact * (1.0 + 0.99999995e-2));
+  const Baseline baseline =
+      schema::baseline_from_json(schema::to_json(make_baseline(edge, {})), "B");
+  ASSERT_EQ(baseline.rows.at(0).grade, Grade::e);
+  auto moved = edge;
+  moved[2] = hertz_case(MeshLevel::F, exact * (1.0 + 1.00000005e-2));
+  ASSERT_EQ(moved[2].quantities[0].grade, Grade::g);
+  const auto report = run_gate(baseline, moved);
+  EXPECT_TRUE(report.passed()) << format_gate_failures(report);
+
+  Baseline loose = baseline;
+  loose.tolerances.per_quantity[Quantity::sigma_c] = 1e-2;
+  moved[2] = hertz_case(MeshLevel::F, exact * 1.012);  // g by 0.2 points: no round-off
+  EXPECT_TRUE(has_failure(run_gate(loose, moved), "H_p/Q4/AL/ss/sigma_c", "grade"));
+}
+
 TEST(Gate, CaseThatStoppedConvergingFails) {
   auto results = good_results();
   results[0].status = CaseStatus::not_converged;
