@@ -17,6 +17,14 @@ std::vector<protocol::SolverManifest> registered_codes(
   return out;
 }
 
+std::vector<std::string> registered_code_names(
+    const std::vector<std::filesystem::path>& directories) {
+  std::vector<std::string> out = protocol::readable_solver_names(directories);
+  out.emplace_back(calculix::kCalculixName);
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
 protocol::SolverManifest find_code(std::string_view name,
                                    const std::vector<std::filesystem::path>& directories) {
   const auto all = registered_codes(directories);

@@ -5,6 +5,7 @@
 // report's option mapping read this one list; none of them names a code.
 
 #include <filesystem>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -16,6 +17,11 @@ namespace cs::adapters {
 /// included, sorted by name. Throws protocol::ManifestError for a bad manifest or two codes of
 /// one name.
 std::vector<protocol::SolverManifest> registered_codes(
+    const std::vector<std::filesystem::path>& directories);
+
+/// The names of the registered codes under `directories`, CalculiX's included, sorted; a
+/// manifest that cannot be read is passed over (protocol::readable_solver_names).
+std::vector<std::string> registered_code_names(
     const std::vector<std::filesystem::path>& directories);
 
 /// The registered code called `name`; throws protocol::ManifestError naming the registered

@@ -37,14 +37,6 @@ struct GradeArgs {
   bool no_report = false;
 };
 
-/// The names of the registered codes (CalculiX and every manifest in the solver directories).
-std::vector<std::string> registered_code_names() {
-  std::vector<std::string> names;
-  for (const auto& code : adapters::registered_codes(adapters::protocol::solver_directories()))
-    names.push_back(code.name);
-  return names;
-}
-
 /// The whole import file; UsageError if it is not a readable regular file.
 std::string read_import_file(const std::string& path) {
   platform::require_printable_path(path, "--import");
@@ -80,7 +72,8 @@ suites::ImportBasis import_basis(const GradeArgs& args) {
 int run_grade(const GradeArgs& args) {
   platform::check_output_directory(args.out);  // refused before any input is read
   platform::require_outside_set(args.import_file, args.out, "--import");
-  suites::require_imported_solver_name(args.solver_name, registered_code_names());
+  suites::require_imported_solver_name(
+      args.solver_name, adapters::registered_code_names(adapters::protocol::solver_directories()));
   const suites::ImportBasis basis = import_basis(args);
   const auto cases = suites::parse_import_csv(read_import_file(args.import_file), args.import_file);
   // Taken before grading: an unwritable or busy directory fails now; bad input found while

@@ -64,6 +64,7 @@
 
 #include "solver/contact/contact_analysis.hpp"
 #include "solver/linear_static.hpp"
+#include "suites/blas_kernels.hpp"
 #include "suites/case_matrix.hpp"
 #include "suites/problem_executor.hpp"
 #include "suites/problem_setup.hpp"
@@ -354,9 +355,11 @@ void register_benchmarks() {
 
 }  // namespace
 
-/// BENCHMARK_MAIN with the benchmarks registered by name first, and the OpenMP regions run as
-/// `contact-suite` runs them (suites::run_openmp_regions_serially), so that the timings are its.
+/// BENCHMARK_MAIN with the benchmarks registered by name first, and OpenBLAS's kernels and the
+/// OpenMP regions as `contact-suite` has them (suites::use_the_cpus_blas_kernels,
+/// suites::run_openmp_regions_serially), so that the timings are its.
 int main(int argc, char** argv) {
+  cs::suites::use_the_cpus_blas_kernels(argv);
   cs::suites::run_openmp_regions_serially();
   register_benchmarks();
   benchmark::Initialize(&argc, argv);

@@ -31,6 +31,7 @@
 #include "solver/load_vector.hpp"
 #include "solver/mesh/structured_block.hpp"
 #include "solver/stress_recovery.hpp"
+#include "suites/blas_kernels.hpp"
 
 namespace {
 
@@ -259,4 +260,13 @@ BENCHMARK(BM_StressRecovery)
     ->ArgNames({"method", "element", "n"})
     ->Unit(benchmark::kMillisecond);
 
-BENCHMARK_MAIN();
+/// BENCHMARK_MAIN with OpenBLAS's kernels as `contact-suite` has them (a factorization is timed).
+int main(int argc, char** argv) {
+  cs::suites::use_the_cpus_blas_kernels(argv);
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv))
+    return 1;
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}

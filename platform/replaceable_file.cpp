@@ -27,13 +27,14 @@ std::string written_mark() {
   return "<!--" + std::string(kWrittenMarkText) + "-->";
 }
 
-void require_replaceable(const fs::path& file, const char* what) {
+void require_replaceable(const fs::path& file, const char* what, std::string_view older_mark) {
   std::error_code ec;
   const fs::file_status status = fs::symlink_status(file, ec);
   if (ec || !fs::exists(status))
     return;
-  const bool ours =
-      fs::is_regular_file(status) && head_of(file).find(written_mark()) != std::string::npos;
+  const std::string head = fs::is_regular_file(status) ? head_of(file) : std::string();
+  const bool ours = head.find(written_mark()) != std::string::npos ||
+                    (!older_mark.empty() && head.find(older_mark) != std::string::npos);
   if (!ours) {
     throw PlatformError(std::string(what) + " " + file.string() +
                         ": the file exists and contact-suite did not write it; remove it or "

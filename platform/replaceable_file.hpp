@@ -17,9 +17,11 @@ inline constexpr std::string_view kWrittenMarkText = " written by contact-suite 
 std::string written_mark();
 
 /// Throws PlatformError when `file` (given as option `what`) exists and the tool did not write
-/// it: it is not a regular file (a link, a directory, ...), or its first kWrittenMarkReach bytes do
-/// not hold written_mark().
-void require_replaceable(const std::filesystem::path& file, const char* what);
+/// it: it is not a regular file (a link, a directory, a FIFO, ...), or its first
+/// kWrittenMarkReach bytes hold neither written_mark() nor `older_mark` (when not empty: how
+/// files of the kind began before they carried the mark).
+void require_replaceable(const std::filesystem::path& file, const char* what,
+                         std::string_view older_mark = {});
 
 /// How far into a file require_replaceable looks for the mark.
 inline constexpr std::size_t kWrittenMarkReach = 512;

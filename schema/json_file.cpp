@@ -35,7 +35,7 @@ nlohmann::json parse_json_text(std::string_view text, const std::string& what,
   using nlohmann::json;
   std::vector<std::set<std::string>> keys;  // of each object being read
   const json::parser_callback_t check = [&](int depth, json::parse_event_t event, json& parsed) {
-    if (depth > kMaxJsonDepth)
+    if (depth >= kMaxJsonDepth)  // the root is at depth 0
       throw Refused{fmt::format("it nests deeper than {} levels", kMaxJsonDepth)};
     if (event == json::parse_event_t::object_start)
       keys.emplace_back();

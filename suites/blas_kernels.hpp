@@ -5,7 +5,9 @@
 // large factorization about 1.4 times the CPU time of the AVX-512 ones (S(1/7) F Q8 LMP ss:
 // 47.2 s against 34.0 s, medians of two pairs). The library reads OPENBLAS_CORETYPE only when it
 // is loaded, so the program sets it and executes itself again before anything else runs.
-// A user's own OPENBLAS_CORETYPE is kept; a library that is not OpenBLAS is left alone.
+// A user's own OPENBLAS_CORETYPE is kept; a library that is not OpenBLAS is left alone. The
+// variable stays set for the programs the tool starts (ccx, a Python adapter's NumPy), which load
+// the same library; CONTACT_SUITE_BLAS_REEXEC marks the second start, so that it never repeats.
 
 #include <set>
 #include <string>
@@ -19,8 +21,9 @@ namespace cs::suites {
 std::string_view blas_kernels_for(const std::set<std::string>& flags);
 
 /// When OpenBLAS fell back to Prescott on a CPU that blas_kernels_for() gives a better set,
-/// and OPENBLAS_CORETYPE is not set: sets it and executes /proc/self/exe with `argv` again.
-/// Returns (doing nothing) otherwise, or when the execution fails.
+/// and OPENBLAS_CORETYPE is not set: sets it and executes this program (/proc/self/exe) with
+/// `argv` again. Returns (doing nothing) otherwise: on the second start, when the program was
+/// started through the dynamic loader, or when the execution fails.
 void use_the_cpus_blas_kernels(char** argv);
 
 }  // namespace cs::suites

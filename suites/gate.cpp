@@ -19,6 +19,11 @@ std::string optional_bool_text(const std::optional<bool>& v) {
   return v ? (*v ? "yes" : "no") : "n/a";
 }
 
+/// |b - a| / |a|: how far a value moved from its baseline `a`.
+double relative_drift(double a, double b) {
+  return std::abs(b - a) / std::max(std::abs(a), 1e-300);
+}
+
 /// Every row a case belongs to (one per quantity).
 std::vector<std::string> row_ids(const CaseResult& c) {
   std::vector<std::string> ids;
@@ -55,8 +60,7 @@ void check_case(const Baseline& baseline, const CaseResult& old_case, const Case
       continue;
     }
     const double tol = baseline.tolerances.of(q_old.quantity);
-    const double drift =
-        std::abs(q_new->value - q_old.value) / std::max(std::abs(q_old.value), 1e-300);
+    const double drift = relative_drift(q_old.value, q_new->value);
     if (!(drift <= tol)) {
       report.failures.push_back(
           {qid,
@@ -76,7 +80,7 @@ bool graded_value_within(const RowVerdict& old_row, const RowVerdict& new_row, d
     return false;
   const auto i = static_cast<std::size_t>(*old_row.graded_mesh);
   const auto &a = old_row.values[i], &b = new_row.values[i];
-  return a && b && std::abs(*b - *a) <= tol * std::max(std::abs(*a), 1e-300);
+  return a && b && relative_drift(*a, *b) <= tol;
 }
 
 void check_row(const Baseline& baseline, const RowVerdict& old_row, const RowVerdict& new_row,

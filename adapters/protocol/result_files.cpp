@@ -4,11 +4,16 @@
 #include <charconv>
 #include <cmath>
 #include <fstream>
+#include <iterator>
 #include <limits>
 #include <sstream>
+#include <string>
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
+
+#include "schema/json_file.hpp"
+#include "schema/schema_error.hpp"
 
 namespace cs::adapters::protocol {
 namespace {
@@ -102,11 +107,12 @@ void read_status(const std::filesystem::path& file, ResultFiles& out) {
   std::ifstream in(file);
   if (!in)
     return;
+  const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
   nlohmann::json j;
-  try {
-    j = nlohmann::json::parse(in);
-  } catch (const nlohmann::json::exception& e) {
-    throw ReadFailure{fmt::format("status.json is not valid JSON ({})", e.what())};
+  try {  // as results files are read: nesting bounded, no key twice
+    j = schema::parse_json_text(text, "status", "status.json");
+  } catch (const schema::SchemaError& e) {
+    throw ReadFailure{e.what()};
   }
   try {
     if (j.contains("converged"))

@@ -12,6 +12,8 @@
 #include <nlohmann/json.hpp>
 
 #include "platform/child_process.hpp"
+#include "schema/json_file.hpp"
+#include "schema/schema_error.hpp"
 
 namespace cs::adapters::protocol {
 namespace {
@@ -208,10 +210,10 @@ const SolverOption& SolverManifest::option(std::string_view label) const {
 
 SolverManifest parse_manifest(std::string_view text, const std::filesystem::path& source) {
   json j;
-  try {
-    j = json::parse(text);
-  } catch (const json::exception& e) {  // a syntax error, or a number out of range (1e999)
-    throw ManifestError(fmt::format("{}: not valid JSON ({})", source.string(), e.what()));
+  try {  // a syntax error, a number out of range (1e999), deep nesting, a key given twice
+    j = schema::parse_json_text(text, "manifest", source.string());
+  } catch (const schema::SchemaError& e) {
+    throw ManifestError(e.what());
   }
   const Fields f(j, "", source,
                  {"name", "description", "command", "version_command", "options", "supports",

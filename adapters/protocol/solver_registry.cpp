@@ -85,6 +85,21 @@ std::vector<SolverManifest> discover_solvers(const std::vector<fs::path>& direct
   return out;
 }
 
+std::vector<std::string> readable_solver_names(const std::vector<fs::path>& directories) {
+  std::vector<std::string> out;
+  for (const auto& dir : directories) {
+    for (const auto& folder : manifest_folders(dir)) {
+      try {
+        out.push_back(read_manifest(folder).name);
+      } catch (const ManifestError&) {  // passed over: the caller only checks a name
+      }
+    }
+  }
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+  return out;
+}
+
 SolverManifest find_solver(std::string_view name, const std::vector<fs::path>& directories) {
   const auto all = discover_solvers(directories);
   for (const auto& m : all)

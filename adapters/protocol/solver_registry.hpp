@@ -10,6 +10,7 @@
 // code is therefore one folder: nothing in apps/, suites/ or reports/ names it.
 
 #include <filesystem>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -24,6 +25,11 @@ std::vector<std::filesystem::path> solver_directories(
 /// Every manifest under `directories`, sorted by name. Throws ManifestError for a bad manifest
 /// or two codes of one name.
 std::vector<SolverManifest> discover_solvers(const std::vector<std::filesystem::path>& directories);
+
+/// The names of the codes whose manifests under `directories` can be read, sorted; a manifest
+/// that cannot be read is passed over (for a check of a name, which must not fail on it).
+std::vector<std::string> readable_solver_names(
+    const std::vector<std::filesystem::path>& directories);
 
 /// The manifest of the code called `name`; throws ManifestError naming the registered codes
 /// when there is none.

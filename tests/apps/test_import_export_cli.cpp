@@ -5,6 +5,7 @@
 
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -172,10 +173,22 @@ TEST(GradeCli, BadImportLeavesTheOutputDirectoryAsItWas) {
   ASSERT_NE(surface.find("P_p/C/Q4/PM/ns,"), std::string::npos) << surface;
   const std::string before = read_text(out / "results.json");
 
-  // A good file first: the builtin's own values graded under another name.
+  // A good file first: the builtin's own values graded under another name. An unreadable
+  // manifest among the solver directories does not stop it (grade runs no code), and a
+  // registered code's name is still refused.
+  const fs::path codes = tmp.path() / "codes";
+  fs::create_directories(codes / "broken");
+  std::ofstream(codes / "broken" / "manifest.json") << "{not json";
+  ::setenv("CONTACT_SUITE_SOLVER_DIRS", codes.c_str(), 1);
   r = run_cli({"grade", "--import", (out / "surface.csv").string(), "--solver-name", "self",
                "--out", (tmp.path() / "self").string(), "--no-report"});
+  const auto taken = run_cli({"grade", "--import", (out / "surface.csv").string(), "--solver-name",
+                              "getfem", "--out", (tmp.path() / "g").string()});
+  ::unsetenv("CONTACT_SUITE_SOLVER_DIRS");
+  fs::remove_all(codes);
   ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(taken.exit_code, 2) << taken.err;
+  EXPECT_NE(taken.err.find("the name of a solver of this suite"), std::string::npos) << taken.err;
 
   // The last row dropped: a surface node without a row, found only while grading.
   const auto cut = tmp.path() / "cut.csv";

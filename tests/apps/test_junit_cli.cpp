@@ -238,6 +238,13 @@ TEST(JunitCli, ReplacesOnlyAFileItWrote) {
   r = gate();
   EXPECT_EQ(r.exit_code, 0) << r.err;
   EXPECT_EQ(read_text(xml), first);
+  // A file an earlier version wrote (its root element, no mark) is the tool's too.
+  std::string older = first;
+  older.erase(older.find("<!--"), older.find("-->") + 4 - older.find("<!--"));
+  std::ofstream(xml) << older;
+  r = gate();
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(read_text(xml), first);
 
   // A run refuses the user's file before it makes its output directory.
   fs::remove(xml);
@@ -249,6 +256,14 @@ TEST(JunitCli, ReplacesOnlyAFileItWrote) {
   EXPECT_NE(r.err.find("did not write it"), std::string::npos) << r.err;
   EXPECT_TRUE(fs::is_symlink(xml));
   EXPECT_FALSE(fs::exists(tmp.path() / "run"));
+
+  // A dangling link is the user's too: neither it nor its target is touched.
+  fs::remove(xml);
+  fs::create_symlink(tmp.path() / "nowhere.xml", xml);
+  r = gate();
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_TRUE(fs::is_symlink(xml));
+  EXPECT_FALSE(fs::exists(tmp.path() / "nowhere.xml"));
 }
 
 }  // namespace

@@ -92,6 +92,9 @@ TEST(RunCli, UsesTheCpusBlasKernels) {
     return doc["run"]["environment"]["blas"].get<std::string>();
   };
   const std::string chosen = blas((tmp.path() / "a").string());
+  if (chosen.find("OpenBLAS") == std::string::npos ||
+      chosen.find("DYNAMIC_ARCH") == std::string::npos)
+    GTEST_SKIP() << "not an OpenBLAS that chooses its kernels at load time: " << chosen;
   EXPECT_EQ(chosen.find("Prescott"), std::string::npos) << chosen;
   ::setenv("OPENBLAS_CORETYPE", "Prescott", 1);  // the user's choice is kept
   const std::string kept = blas((tmp.path() / "b").string());

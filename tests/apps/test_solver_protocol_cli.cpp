@@ -181,11 +181,11 @@ TEST(SolverProtocolCli, EveryFailureIsTheCaseStatusWithItsReason) {
   TempDir dir;
   make_code_folder(dir.path() / "patch_code");
   const fs::path out = dir.path() / "out";
-  const auto r = run_cli(
-      patch_code_run(dir.path() / "patch_code",
-                     "exit3,nan,missing_node,unparsable,outside,sleep,no_stresses,multiline,"
-                     "surface_stress_missing,pressure_twice,pressure_off_surface,bad_count",
-                     out, {"--time-limit", "8"}));
+  const auto r = run_cli(patch_code_run(
+      dir.path() / "patch_code",
+      "exit3,nan,missing_node,unparsable,outside,sleep,no_stresses,multiline,"
+      "surface_stress_missing,pressure_twice,pressure_off_surface,bad_count,deep_status",
+      out, {"--time-limit", "8"}));
   ASSERT_EQ(r.exit_code, 1) << r.err << r.out;  // cases failed, results written
   const auto cases = cases_by_id(out / "results.json");
   const std::map<std::string, std::pair<std::string, std::string>> expected{
@@ -207,6 +207,7 @@ TEST(SolverProtocolCli, EveryFailureIsTheCaseStatusWithItsReason) {
       {"PM/ns/rigid/@patchcode:pressure_twice", {"failed", "is given twice"}},
       {"PM/ns/rigid/@patchcode:pressure_off_surface", {"failed", "is not on the contact surface"}},
       {"PM/ns/rigid/@patchcode:bad_count", {"failed", "iterations is 1e+20, not a count"}},
+      {"PM/ns/rigid/@patchcode:deep_status", {"failed", "nests deeper than 64 levels"}},
   };
   for (const auto& [tail, want] : expected) {
     const std::string id = "P_p/C/Q4/" + tail;
@@ -484,6 +485,10 @@ TEST(SolverProtocolCli, BadManifestIsExit2AndOneLine) {
       {"a number out of range", R"({"name": "x", "command": ["true"], "version_command": ["true"],
         "time_limit_seconds": 1e999, "options": [{"label": "a", "family": "penalty",
         "discretization": "ns"}], "supports": ["plane_strain"]})"},
+      {"nested 100,000 deep", R"({"name": "x", "command": ["true"], "version_command": ["true"],
+        "options": [{"label": "a", "family": "penalty", "discretization": "ns"}],
+        "supports": ["plane_strain"], "description": )" +
+                                  std::string(100000, '[') + std::string(100000, ']') + "}"},
       {"a time limit that would overflow the clock", R"({"name": "x", "command": ["true"],
         "version_command": ["true"], "time_limit_seconds": 1e10, "options": [{"label": "a",
         "family": "penalty", "discretization": "ns"}], "supports": ["plane_strain"]})"},

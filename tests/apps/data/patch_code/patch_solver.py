@@ -7,7 +7,7 @@ u_x = nu (1 + nu) p x / E and u_z = -(1 - nu^2) p z / E (plane strain; u_z = 0 o
 p is read off the case's nodal forces on block.far_z, E and nu off its block body. It writes
 every result file of the protocol. Its option label selects a failure to exercise the engine:
 exact (none), exit3, nan, missing_node, unparsable, outside, sleep, no_stresses, multiline,
-surface_stress_missing, pressure_twice, pressure_off_surface, bad_count
+surface_stress_missing, pressure_twice, pressure_off_surface, bad_count, deep_status
 (not converged, for a reason of several lines).
 
 Usage: patch_solver.py CASE_DIR OPTION
@@ -104,6 +104,10 @@ def main():
             f.write(f"{surface[0]},{p!r}\n")
         if option == "pressure_off_surface":
             f.write(f"{next(t for t in block_nodes if t not in surface)},{p!r}\n")
+    if option == "deep_status":
+        with open("status.json", "w") as f:
+            f.write('{"iterations": ' + "[" * 100000 + "]" * 100000 + "}")
+        return
     with open("status.json", "w") as f:
         converged = option != "multiline"
         reason = "" if converged else "iteration cap\nreached\tat step 3"
