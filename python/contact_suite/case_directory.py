@@ -377,7 +377,17 @@ def _contact(j):
     raise _Missing(f"contact_pair.target.kind '{kind}' is not rigid or meshed")
 
 
-def _constraint(j, node_sets, edge_sets):
+def _node_ids(ids, n_nodes, where):
+    """0-based node indices of case.json's node ids (1..n_nodes), or _Missing naming `where`:
+    an id of 0 or below would index from the end of a NumPy array."""
+    ids = np.asarray(ids, dtype=int)
+    bad = ids[(ids < 1) | (ids > n_nodes)]
+    if bad.size:
+        raise _Missing(f"{where}: node id {bad[0]} is not in 1..{n_nodes}")
+    return ids - 1
+
+
+def _constraint(j, node_sets, edge_sets, n_nodes):
     name, kind = j["set"], j["set_kind"]
     if kind == "edge_set":
         nodes = np.unique(edge_sets[name])
@@ -391,7 +401,7 @@ def _constraint(j, node_sets, edge_sets):
         return Constraint(name, kind, j["component"], nodes, None, True)
     if "values" in j:
         pairs = j["values"]
-        nodes = np.array([n for n, _ in pairs], dtype=int) - 1
+        nodes = _node_ids([n for n, _ in pairs], n_nodes, "boundary_conditions: values")
         values = np.array([v for _, v in pairs], dtype=float)
     else:
         values = np.full(len(nodes), float(j["value"]))
@@ -417,7 +427,7 @@ def _float(v):
 def _nodal_forces(j, n_nodes):
     out = np.zeros((n_nodes, 2))
     for n, fx, fz in j["nodal_forces"]:
-        out[n - 1] += (fx, fz)
+        out[_node_ids([n], n_nodes, "loads.nodal_forces")[0]] += (fx, fz)
     return out
 
 
@@ -484,7 +494,8 @@ def _case(path, j, nodes, quads, edge_sets, node_sets):
     bodies = _bodies(j["bodies"], quads)
     if j["mesh"]["n_nodes"] != len(nodes):
         raise _Missing(f"mesh.n_nodes {j['mesh']['n_nodes']} but mesh.msh has {len(nodes)} nodes")
-    constraints = [_constraint(c, node_sets, edge_sets) for c in j["boundary_conditions"]]
+    constraints = [_constraint(c, node_sets, edge_sets, len(nodes))
+                   for c in j["boundary_conditions"]]
     surface, quantities = _sampled(j["sampled"])
     scales = j["scales"]
     return Case(

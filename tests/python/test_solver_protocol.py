@@ -11,6 +11,7 @@ import csv
 import json
 import math
 import os
+import shutil
 import subprocess
 import sys
 from pathlib import Path
@@ -250,6 +251,21 @@ def test_read_case_refuses_an_unknown_version(tmp_path):
     (tmp_path / "case.json").write_text('{"format": "contact-suite case", "format_version": 2}')
     with pytest.raises(ValueError, match="case.json: .*version 2"):
         cs.read_case(tmp_path)
+
+
+def test_read_case_refuses_a_node_id_out_of_range(code_dir, tmp_path):
+    """Requirement: a node id of 0 (or beyond the mesh) in case.json raises ValueError naming
+    the field; it never reads another node's entry from the end of an array."""
+    doc = run(code_dir, tmp_path / "out", "keep", "--problems", "P_p", "--meshes", "C",
+              "--elements", "Q4", "--target", "rigid")
+    case_dir = tmp_path / "case"
+    shutil.copytree(kept_case_directory(doc.cases[0]), case_dir)
+    j = json.loads((case_dir / "case.json").read_text())
+    assert j["loads"]["nodal_forces"]
+    j["loads"]["nodal_forces"][0][0] = 0
+    (case_dir / "case.json").write_text(json.dumps(j))
+    with pytest.raises(ValueError, match="loads.nodal_forces: node id 0 is not in 1.."):
+        cs.read_case(case_dir)
 
 
 def test_signed_distances():
