@@ -62,6 +62,8 @@
 #include <benchmark/benchmark.h>
 #include <fmt/format.h>
 
+#include "bench/benchmark_main.hpp"
+
 #include "solver/contact/contact_analysis.hpp"
 #include "solver/linear_static.hpp"
 #include "suites/blas_kernels.hpp"
@@ -362,10 +364,5 @@ int main(int argc, char** argv) {
   cs::suites::use_the_cpus_blas_kernels(argv);
   cs::suites::run_openmp_regions_serially();
   register_benchmarks();
-  benchmark::Initialize(&argc, argv);
-  if (benchmark::ReportUnrecognizedArguments(argc, argv))
-    return 1;
-  benchmark::RunSpecifiedBenchmarks();
-  benchmark::Shutdown();
-  return 0;
+  return cs::bench::run_benchmarks(argc, argv);
 }

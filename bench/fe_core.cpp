@@ -26,6 +26,8 @@
 
 #include <benchmark/benchmark.h>
 
+#include "bench/benchmark_main.hpp"
+
 #include "solver/elements/element_stiffness.hpp"
 #include "solver/linear_static.hpp"
 #include "solver/load_vector.hpp"
@@ -263,10 +265,5 @@ BENCHMARK(BM_StressRecovery)
 /// BENCHMARK_MAIN with OpenBLAS's kernels as `contact-suite` has them (a factorization is timed).
 int main(int argc, char** argv) {
   cs::suites::use_the_cpus_blas_kernels(argv);
-  benchmark::Initialize(&argc, argv);
-  if (benchmark::ReportUnrecognizedArguments(argc, argv))
-    return 1;
-  benchmark::RunSpecifiedBenchmarks();
-  benchmark::Shutdown();
-  return 0;
+  return cs::bench::run_benchmarks(argc, argv);
 }

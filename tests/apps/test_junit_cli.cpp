@@ -32,6 +32,15 @@ const fs::path kFixture = kSource / "tests/reports/data/small_results.json";
 const fs::path kSchema = kSource / "tests/ci/junit.xsd";
 const fs::path kGold = kSource / "tests/ci/gold";
 
+/// The fixture's own baseline, written by `gate --update` into `dir`.
+fs::path fixture_baseline(const fs::path& dir) {
+  const fs::path baseline = dir / "baseline.json";
+  const auto r = run_cli(
+      {"gate", "--update", "--baseline", baseline.string(), "--results", kFixture.string()});
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  return baseline;
+}
+
 /// xmllint's verdict on `xml` against the JUnit schema (true: valid); its messages in `log`.
 bool validates(const fs::path& xml, std::string& log) {
   const fs::path out = xml.string() + ".xmllint";
@@ -136,11 +145,7 @@ TEST(JunitCli, DriftedBaselineFailsExactlyItsRow) {
 // failed and unconverged cases failed in the baseline too), and the XML validates.
 TEST(JunitCli, UnchangedResultsPass) {
   TempDir tmp;
-  const fs::path baseline = tmp.path() / "baseline.json";
-  ASSERT_EQ(
-      run_cli({"gate", "--update", "--baseline", baseline.string(), "--results", kFixture.string()})
-          .exit_code,
-      0);
+  const fs::path baseline = fixture_baseline(tmp.path());
   const fs::path xml = tmp.path() / "gate.xml";
   const auto r = run_cli({"gate", "--baseline", baseline.string(), "--results", kFixture.string(),
                           "--junit", xml.string()});
@@ -213,11 +218,7 @@ TEST(JunitCli, UnwritablePathIsRefusedBeforeTheRun) {
 // overwritten, or if a rerun onto the tool's own file is refused.
 TEST(JunitCli, ReplacesOnlyAFileItWrote) {
   TempDir tmp;
-  const fs::path baseline = tmp.path() / "baseline.json";
-  ASSERT_EQ(
-      run_cli({"gate", "--update", "--baseline", baseline.string(), "--results", kFixture.string()})
-          .exit_code,
-      0);
+  const fs::path baseline = fixture_baseline(tmp.path());
   const fs::path xml = tmp.path() / "gate.xml";
   const auto gate = [&] {
     return run_cli({"gate", "--baseline", baseline.string(), "--results", kFixture.string(),
