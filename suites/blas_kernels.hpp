@@ -7,7 +7,8 @@
 // is loaded, so the program sets it and executes itself again before anything else runs.
 // A user's own OPENBLAS_CORETYPE is kept; a library that is not OpenBLAS is left alone. The
 // variable stays set for the programs the tool starts (ccx, a Python adapter's NumPy), which load
-// the same library; CONTACT_SUITE_BLAS_REEXEC marks the second start, so that it never repeats.
+// the same library; CONTACT_SUITE_BLAS_REEXEC marks the second start, so that it never repeats
+// (set by hand, it keeps the library's own choice).
 
 #include <set>
 #include <string>
