@@ -1,9 +1,9 @@
 #pragma once
 // OpenBLAS's kernels for a CPU newer than the library. Debian 12's OpenBLAS (0.3.21, built with
 // DYNAMIC_ARCH) picks its kernels at load time by the CPU's family and model; a model it does not
-// know (Emerald Rapids, family 6 model 207) falls back to Prescott's SSE3 kernels, which take a
-// large factorization about 1.4 times the CPU time of the AVX-512 ones (S(1/7) F Q8 LMP ss:
-// 47.2 s against 34.0 s, medians of two pairs). The library reads OPENBLAS_CORETYPE only when it
+// know (Emerald Rapids, family 6 model 207) falls back to Prescott's SSE3 kernels, which take
+// the main job 1.37 times the CPU time of the AVX-512 ones (196 s against 144 s; wall 103 s
+// against 76 s, one pair on a quiet machine). The library reads OPENBLAS_CORETYPE only when it
 // is loaded, so the program sets it and executes itself again before anything else runs.
 // A user's own OPENBLAS_CORETYPE is kept; a library that is not OpenBLAS is left alone. The
 // variable stays set for the programs the tool starts (ccx, a Python adapter's NumPy), which load

@@ -236,6 +236,12 @@ TEST(SchemaResultsFile, FileErrorsAreSchemaErrors) {
     EXPECT_NE(std::string(e.what()).find("nests deeper than 64 levels"), std::string::npos)
         << e.what();
   }
+  // The bound itself: 64 levels are read, 65 are not (a root object holding nested arrays).
+  const auto nested = [](int arrays) {
+    return R"({"a": )" + std::string(arrays, '[') + std::string(arrays, ']') + "}";
+  };
+  EXPECT_NO_THROW(parse_json_text(nested(63), "results", "64 levels"));
+  EXPECT_THROW(parse_json_text(nested(64), "results", "65 levels"), SchemaError);
   const auto twice = dir.path() / "twice.json";
   std::ofstream(twice) << R"({"schema": "contact-suite/results", "schema": "x"})";
   try {
