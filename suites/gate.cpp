@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include "grading/grade_change.hpp"
 #include "suites/suite_error.hpp"
 
 namespace cs::suites {
@@ -17,11 +18,6 @@ std::string number_text(double v) {
 
 std::string optional_bool_text(const std::optional<bool>& v) {
   return v ? (*v ? "yes" : "no") : "n/a";
-}
-
-/// |b - a| / |a|: how far a value moved from its baseline `a`.
-double relative_drift(double a, double b) {
-  return std::abs(b - a) / std::max(std::abs(a), 1e-300);
 }
 
 /// Every row a case belongs to (one per quantity).
@@ -60,7 +56,7 @@ void check_case(const Baseline& baseline, const CaseResult& old_case, const Case
       continue;
     }
     const double tol = baseline.tolerances.of(q_old.quantity);
-    const double drift = relative_drift(q_old.value, q_new->value);
+    const double drift = grading::relative_drift(q_old.value, q_new->value);
     if (!(drift <= tol)) {
       report.failures.push_back(
           {qid,
@@ -73,16 +69,6 @@ void check_case(const Baseline& baseline, const CaseResult& old_case, const Case
   }
 }
 
-/// Whether the value a row's grade is of moved by round-off alone (no more than `tol`): a grade
-/// that changes with it sat on a band's edge (Eq. 46), and the change is not a regression.
-bool graded_value_within(const RowVerdict& old_row, const RowVerdict& new_row, double tol) {
-  if (!old_row.graded_mesh || old_row.graded_mesh != new_row.graded_mesh)
-    return false;
-  const auto i = static_cast<std::size_t>(*old_row.graded_mesh);
-  const auto &a = old_row.values[i], &b = new_row.values[i];
-  return a && b && relative_drift(*a, *b) <= tol;
-}
-
 void check_row(const Baseline& baseline, const RowVerdict& old_row, const RowVerdict& new_row,
                GateReport& report) {
   if (old_row.grade) {
@@ -90,7 +76,7 @@ void check_row(const Baseline& baseline, const RowVerdict& old_row, const RowVer
     // tolerance loosened for a quantity does not excuse a grade that really dropped).
     const double round_off_tol =
         std::min(baseline.tolerances.of(old_row.quantity), schema::kDefaultGateTolerance);
-    const bool round_off = graded_value_within(old_row, new_row, round_off_tol);
+    const bool round_off = grading::grade_change_is_round_off(old_row, new_row, round_off_tol);
     if (!new_row.grade || (is_worse(*new_row.grade, *old_row.grade) && !round_off)) {
       report.failures.push_back({old_row.id,
                                  "grade",

@@ -296,14 +296,15 @@ ClaimEvidence trend_multiplier(const std::vector<RowFacts>& rows) {
       "Q8", [&](const RowFacts& f) { return lmp_q4(f) && mismatched(f); });
 }
 
-/// Trend 3: MPC is uniformly unsatisfactory. Outside the patch tests, of n MPC rows, n_hold are
+/// Trend 3: MPC is uniformly unsatisfactory, judged in two parts by the rule for parts
+/// (set_verdict_of_parts). Outside the patch tests (verdict1), of n MPC rows, n_hold are
 /// unsatisfactory: an evidence row graded s or u on F, or (n_unsound of them) a row whose F
 /// case fails an interface check or did not converge. Here, and only here, such a row counts:
 /// a solution that violates the contact conditions, or that the solver did not finish, is
 /// unsatisfactory whatever its error. A row whose grade is the luck of one mesh, or a read
 /// within its resolution, says nothing of MPC's accuracy and is left out (n_excluded). On the
-/// patch tests (where a uniform pressure is exact for any tie), n2 accuracy-evidence rows,
-/// n2_hold of them below g.
+/// patch tests (verdict2; a uniform pressure is exact for any tie), n2 accuracy-evidence rows,
+/// n2_hold of them below g. "Uniformly" is over the whole battery: the patch tests count.
 ClaimEvidence mpc_unsatisfactory(const std::vector<RowFacts>& rows) {
   ClaimEvidence c{.key = "mpc_unsatisfactory"};
   for (const auto& f : rows) {
@@ -331,7 +332,9 @@ ClaimEvidence mpc_unsatisfactory(const std::vector<RowFacts>& rows) {
       add_example(c, row_name(f));
     }
   }
-  c.verdict = verdict_of(c.n_hold, c.n);
+  c.verdict1 = verdict_of(c.n_hold, c.n);
+  c.verdict2 = verdict_of(c.n2_hold, c.n2);
+  set_verdict_of_parts(c, {c.verdict1, c.verdict2});
   return c;
 }
 

@@ -6,9 +6,11 @@
 
 #include <fmt/format.h>
 
+#include "grading/grade_change.hpp"
 #include "reports/render/template_text.hpp"
 #include "reports/results/results_index.hpp"
 #include "reports/tables/markdown_table.hpp"
+#include "schema/baseline_file.hpp"
 
 namespace cs::reports {
 namespace {
@@ -76,9 +78,14 @@ std::string grade_change(const QuantityDrift& q) {
              : fmt::format("{} → {}", name_of(q.old_grade), name_of(q.new_grade));
 }
 
-/// The grade change marked "**worse**" or "better", and any status change.
+/// The mark of a grade change: "**worse** ", "better ", "at a band's edge " or none.
+std::string change_mark(bool worse, bool better, bool at_edge) {
+  return worse ? "**worse** " : better ? "better " : at_edge ? "at a band's edge " : "";
+}
+
+/// The grade change marked (change_mark), and any status change.
 std::string marked_change(const QuantityDrift& q) {
-  const std::string mark = q.grade_worse() ? "**worse** " : q.grade_better() ? "better " : "";
+  const std::string mark = change_mark(q.grade_worse(), q.grade_better(), q.grade_at_edge());
   if (q.old_status == q.new_status)
     return mark + grade_change(q);
   return fmt::format("{}{} (status {} → {})", mark, grade_change(q), name_of(q.old_status),
@@ -87,15 +94,19 @@ std::string marked_change(const QuantityDrift& q) {
 
 }  // namespace
 
+bool QuantityDrift::grade_at_edge() const {
+  return old_grade != new_grade &&
+         grading::grade_change_is_round_off(old_value, new_value, schema::kDefaultGateTolerance);
+}
 bool QuantityDrift::grade_worse() const {
-  return new_grade > old_grade;  // schema::Grade is ordered best first
+  return new_grade > old_grade && !grade_at_edge();  // schema::Grade is ordered best first
 }
 bool QuantityDrift::grade_better() const {
-  return new_grade < old_grade;
+  return new_grade < old_grade && !grade_at_edge();
 }
 
 bool RowVerdictChange::worse() const {
-  if (old_grade && new_grade && *new_grade > *old_grade)
+  if (old_grade && new_grade && *new_grade > *old_grade && !grade_at_edge)
     return true;
   if (old_grade && !new_grade)
     return true;
@@ -138,6 +149,8 @@ Regression compare_results(const schema::ResultsDocument& baseline,
         ++out.grades_worse;
       if (d.grade_better())
         ++out.grades_better;
+      if (d.grade_at_edge())
+        ++out.grades_at_edge;
       out.quantities.push_back(d);
     }
     for (const auto& oq : o.quantities) {
@@ -163,7 +176,9 @@ Regression compare_results(const schema::ResultsDocument& baseline,
     if (o.grade == r.grade && o.converging == r.converging && o.diverging == r.diverging)
       continue;
     out.row_changes.push_back(
-        {r.id, o.grade, r.grade, o.converging, r.converging, o.diverging, r.diverging});
+        {r.id, o.grade, r.grade, o.converging, r.converging, o.diverging, r.diverging,
+         o.grade != r.grade &&
+             grading::grade_change_is_round_off(o, r, schema::kDefaultGateTolerance)});
   }
   return out;
 }
@@ -188,15 +203,18 @@ std::string regression_markdown(const Regression& r) {
       },
       {l, l, l, right, right, right});
   const auto arrow = [](const std::string& a, const std::string& b) { return a + " → " + b; };
-  const MarkdownTable rows =
-      table_of({"Row", "Grade", "Converging", "Diverging (Eq. 47)"}, r.row_changes,
-               [&](const RowVerdictChange& c) -> std::vector<std::string> {
-                 return {fmt::format("{}`{}`", c.worse() ? "**worse** " : "", c.row_id),
-                         arrow(grade_text(c.old_grade), grade_text(c.new_grade)),
-                         arrow(flag(c.old_converging, "c"), flag(c.new_converging, "c")),
-                         arrow(flag(c.old_diverging, "yes"), flag(c.new_diverging, "yes"))};
-               },
-               {l, l, l, l});
+  const MarkdownTable rows = table_of(
+      {"Row", "Grade", "Converging", "Diverging (Eq. 47)"}, r.row_changes,
+      [&](const RowVerdictChange& c) -> std::vector<std::string> {
+        const bool grade_better =
+            c.old_grade && c.new_grade && *c.new_grade < *c.old_grade && !c.grade_at_edge;
+        return {
+            fmt::format("{}`{}`", change_mark(c.worse(), grade_better, c.grade_at_edge), c.row_id),
+            arrow(grade_text(c.old_grade), grade_text(c.new_grade)),
+            arrow(flag(c.old_converging, "c"), flag(c.new_converging, "c")),
+            arrow(flag(c.old_diverging, "yes"), flag(c.new_diverging, "yes"))};
+      },
+      {l, l, l, l});
   const MarkdownTable drifts = table_of(
       {"Case", "Quantity", "Baseline", "Current", "Drift (relative)", "Grade"}, drifted,
       [&](const QuantityDrift* q) -> std::vector<std::string> {
@@ -219,6 +237,8 @@ std::string regression_markdown(const Regression& r) {
            {"identical", fmt::format("{:g}", kIdenticalRelative)},
            {"grades_worse", n(r.grades_worse)},
            {"grades_better", n(r.grades_better)},
+           {"grades_at_edge", n(r.grades_at_edge)},
+           {"edge_tolerance", fmt::format("{:g}", schema::kDefaultGateTolerance)},
            {"status_changes", n(r.status_changes)},
            {"row_changes", n(r.row_changes.size())},
            {"rows_worse", n(std::count_if(r.row_changes.begin(), r.row_changes.end(),

@@ -23,8 +23,11 @@ struct QuantityDrift {
   schema::Grade old_grade = schema::Grade::u, new_grade = schema::Grade::u;
   schema::CaseStatus old_status = schema::CaseStatus::failed;
   schema::CaseStatus new_status = schema::CaseStatus::failed;
-  bool grade_worse() const;
-  bool grade_better() const;
+  /// The grade changed while the value moved by round-off (grading::grade_change_is_round_off
+  /// within schema::kDefaultGateTolerance): on a band's edge, neither worse nor better.
+  bool grade_at_edge() const;
+  bool grade_worse() const;   ///< a worse grade, not at a band's edge
+  bool grade_better() const;  ///< a better grade, not at a band's edge
 };
 
 /// One row present in both files whose verdicts changed.
@@ -33,7 +36,8 @@ struct RowVerdictChange {
   std::optional<schema::Grade> old_grade, new_grade;
   std::optional<bool> old_converging, new_converging;
   std::optional<bool> old_diverging, new_diverging;
-  bool worse() const;  ///< grade worse, or converging/diverging lost
+  bool grade_at_edge = false;  ///< the grade changed by round-off (see QuantityDrift)
+  bool worse() const;          ///< grade worse (not at a band's edge), or converging/diverging lost
 };
 
 /// The comparison of two results files.
@@ -43,7 +47,7 @@ struct Regression {
   std::vector<RowVerdictChange> row_changes;  ///< only rows whose verdicts changed
   std::vector<std::string> only_in_new, only_in_old;  ///< case ids
   std::vector<std::string> quantities_only_in_one;    ///< "case: quantity (old|new only)"
-  int grades_worse = 0, grades_better = 0, status_changes = 0;
+  int grades_worse = 0, grades_better = 0, grades_at_edge = 0, status_changes = 0;
 };
 
 /// Compares `current` against `baseline`.

@@ -13,10 +13,10 @@ TemplateData claim_data(const ClaimEvidence& c) {
   d.set("verdict", to_string(c.verdict));
   d.set("testable", c.verdict != ClaimVerdict::not_testable);
   d.set("part_not_testable", c.part_not_testable);
-  d.set("patch_differs", c.n2_hold < c.n2);  // claim 6: not every patch-test row holds
   d.set("resolution", fmt::format("{:g} %", grading::kCoincidenceRelative * 100));
   d.set("n", std::to_string(c.n));
   d.set("n_hold", std::to_string(c.n_hold));
+  d.set("has_n", c.n > 0);
   d.set("n_fail", std::to_string(c.n - c.n_hold));
   d.set("n_excluded", std::to_string(c.n_excluded));
   d.set("has_excluded", c.n_excluded > 0);

@@ -91,6 +91,43 @@ TEST(RegressionReport, MarkdownListsTheChanges) {
   EXPECT_NE(md.find("Case grades: 1 worse, 0 better"), std::string::npos);
 }
 
+// Requirement: a grade that flips while its value moves by round-off (an F error from
+// 0.99999995 % to 1.00000005 %, e to g, a drift of 1e-9) is at a band's edge, neither worse nor
+// better, as the accuracy gate judges it; the same flip with a real drift is worse.
+TEST(RegressionReport, AGradeFlipByRoundOffIsAtABandsEdge) {
+  auto old_doc = sample_json();
+  const double exact = [&] {
+    for (const auto& c : old_doc["cases"]) {
+      if (c["id"] == "H_p/F/Q4/AL/ss")
+        return c["quantities"]["sigma_c"]["exact"].get<double>();
+    }
+    return 0.0;
+  }();
+  ASSERT_GT(exact, 0.0);
+  testing::set_value(old_doc, "H_p/F/Q4/AL/ss", "sigma_c", exact * (1 + 0.99999995e-2));
+  auto edge_doc = old_doc, real_doc = old_doc;
+  testing::set_value(edge_doc, "H_p/F/Q4/AL/ss", "sigma_c", exact * (1 + 1.00000005e-2));
+  testing::set_value(real_doc, "H_p/F/Q4/AL/ss", "sigma_c", exact * 1.012);
+  const auto old_file = schema::results_from_json(old_doc, "old.json");
+  const Regression edge =
+      compare_results(old_file, schema::results_from_json(edge_doc, "edge.json"));
+  EXPECT_EQ(edge.grades_worse, 0);
+  EXPECT_EQ(edge.grades_better, 0);
+  EXPECT_EQ(edge.grades_at_edge, 1);
+  ASSERT_EQ(edge.row_changes.size(), 1u);
+  EXPECT_TRUE(edge.row_changes[0].grade_at_edge);
+  EXPECT_FALSE(edge.row_changes[0].worse());
+  const std::string md = regression_markdown(edge);
+  EXPECT_NE(md.find("| at a band's edge e → g |"), std::string::npos) << md;
+  EXPECT_NE(md.find("Case grades: 0 worse, 0 better, 1 at a band's edge"), std::string::npos) << md;
+  const Regression real =
+      compare_results(old_file, schema::results_from_json(real_doc, "real.json"));
+  EXPECT_EQ(real.grades_worse, 1);
+  EXPECT_EQ(real.grades_at_edge, 0);
+  ASSERT_EQ(real.row_changes.size(), 1u);
+  EXPECT_TRUE(real.row_changes[0].worse());
+}
+
 TEST(RegressionReport, IdenticalFilesHaveNoChanges) {
   const auto doc = sample_json();
   const Regression r =

@@ -340,17 +340,28 @@ TEST(ClaimsLedger, MpcClaimSaysWhyRowsThatFailAChecksCount) {
                     "an interface check"),
             std::string::npos)
       << md;
-  EXPECT_EQ(md.find("outside the patch tests only"), std::string::npos) << md;
-  // An MPC patch test graded e: the claim then holds outside the patch tests only, and its
-  // verdict says so in the table.
+  // Without a patch test the claim holds on the rows it has, and says which part it lacks.
+  EXPECT_EQ(c.verdict, ClaimVerdict::reproduced);
+  EXPECT_TRUE(c.part_not_testable);
+  EXPECT_NE(md.find("No MPC patch-test row is evidence"), std::string::npos) << md;
+  // An MPC patch test graded e: "uniformly" speaks of the whole set of experiments, so the
+  // patch-test part (0 of 1) makes the claim not reproduced, by the rule for parts.
   fx.add(ProblemId::P_p, Quantity::sigma_z_max, Element::Q4, Algorithm::MPC, ContactKind::ss,
          1e-11);
   const ClaimEvidence with_patch = fx.claim("mpc_unsatisfactory");
   EXPECT_EQ(with_patch.n2, 1);
   EXPECT_EQ(with_patch.n2_hold, 0);
+  EXPECT_EQ(with_patch.verdict1, ClaimVerdict::reproduced);
+  EXPECT_EQ(with_patch.verdict2, ClaimVerdict::not_reproduced);
+  EXPECT_EQ(with_patch.verdict, ClaimVerdict::not_reproduced);
   const std::string md2 = claims_ledger({with_patch});
-  EXPECT_NE(md2.find("| reproduced outside the patch tests |"), std::string::npos) << md2;
-  EXPECT_NE(md2.find("so it is reproduced outside the patch tests only"), std::string::npos) << md2;
+  EXPECT_NE(md2.find("| IMC uniformly unsatisfactory (Results, third trend; Abstract) | not "
+                     "reproduced |"),
+            std::string::npos)
+      << md2;
+  EXPECT_NE(md2.find("0 of 1 evidence rows are s or u (this part: not reproduced)"),
+            std::string::npos)
+      << md2;
 }
 
 // Requirement: a value read between two nodes whose F error is within half a node spacing (the
