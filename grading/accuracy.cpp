@@ -33,6 +33,12 @@ bool read_settles_grade(double error_percent, double resolution_percent) {
   return e > r && grade_of_error(e - r) == grade_of_error(e + r);
 }
 
+schema::Grade best_reading_grade(double error_percent, double resolution_percent) {
+  const double r = resolution_percent > 0.0 ? resolution_percent * (1.0 + 1e-9) : 0.0;
+  return grade_of_error(std::isnan(error_percent) ? error_percent
+                                                  : std::max(std::abs(error_percent) - r, 0.0));
+}
+
 double grade_band_width(schema::Grade grade) {
   switch (grade) {
     case schema::Grade::e:

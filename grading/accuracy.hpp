@@ -22,6 +22,11 @@ schema::Grade grade_of_error(double error_percent);
 /// read at a point) always settles.
 bool read_settles_grade(double error_percent, double resolution_percent);
 
+/// The grade of a read's best reading: Eq. 46 of max(|e| - r, 0), the best the read's
+/// resolution r allows. CM_p AL ss Q8 c/a, +8.28 +- 2.21 %, is at best 6.07 %: s, whatever the
+/// other quantities of its option. r <= 0: the grade of e.
+schema::Grade best_reading_grade(double error_percent, double resolution_percent);
+
 /// How wide a grade's band of |e| is, in points: e 1 (0 to 1 %), g 4, s 5; u unbounded (inf).
 double grade_band_width(schema::Grade grade);
 

@@ -98,15 +98,17 @@ std::string refinement_example(const RowFacts& f) {
                      format_error_resolved(*f.row->refinement->error));
 }
 
-/// Appends `text` to a list of examples, a few at most.
-void add_example(std::string& examples, const std::string& text) {
-  if (std::count(examples.begin(), examples.end(), ';') >= 3)
+/// Appends `text` to a list of examples, four at most; counts the others in `more`.
+void add_example(std::string& examples, int& more, const std::string& text) {
+  if (std::count(examples.begin(), examples.end(), ';') >= 3) {
+    ++more;
     return;
+  }
   examples += (examples.empty() ? "" : "; ") + text;
 }
 
 void add_example(ClaimEvidence& c, const std::string& text) {
-  add_example(c.examples, text);
+  add_example(c.examples, c.examples_more, text);
 }
 
 using TwinKey = std::tuple<ProblemId, schema::Quantity, Element, Algorithm, ContactKind>;
@@ -192,7 +194,7 @@ ClaimEvidence ss_equals_ns(const std::vector<RowFacts>& rows) {
       largest_mpc = std::max(largest_mpc, std::abs(*f.errors[2] - e_ns));
       c.n2_hold += same ? 1 : 0;
       if (!same)
-        add_example(c.examples2, example);
+        add_example(c.examples2, c.examples2_more, example);
     }
   }
   for (const Algorithm a : run)
@@ -231,7 +233,7 @@ ClaimEvidence trend_claim(const std::vector<RowFacts>& rows, const char* key, Se
     if (exception(f) && f.accuracy_evidence()) {
       ++c.n_exception;
       if (good_or_better(f))
-        add_example(c.exception_examples, row_name(f));
+        add_example(c.exception_examples, c.exception_examples_more, row_name(f));
       else
         ++c.n_exception_holds;
     }
@@ -258,8 +260,9 @@ ClaimEvidence trend_claim(const std::vector<RowFacts>& rows, const char* key, Se
     if (clearly_larger(*twin->second, f))
       ++c.n2_hold;
     else
-      add_example(c.examples2, fmt::format("{} vs {} {}", row_name(f), twin_name,
-                                           format_error_resolved(e_twin)));
+      add_example(
+          c.examples2, c.examples2_more,
+          fmt::format("{} vs {} {}", row_name(f), twin_name, format_error_resolved(e_twin)));
   }
   c.verdict1 = verdict_of(c.n_hold, c.n);
   c.verdict2 = verdict_of(c.n2_hold, c.n2, kRefined);
@@ -352,7 +355,8 @@ double median_of(std::vector<double> v) {
 /// values differ beyond the noise when their gap exceeds both the measure's same-work spread
 /// (figure2, figure3, in %: the median of |m_AL / m_PM - 1| over the models where AL took no
 /// augmentation and PM's iterations, i.e. made PM's computation) times the larger value, and
-/// the sum of their standard deviations over their repetitions. In a model MPC holds when it is
+/// the sum of their standard deviations over their repetitions (for a value measured once, the
+/// same-work spread times it). In a model MPC holds when it is
 /// below every other option beyond the noise, is slower when another option is below it beyond
 /// the noise, and ties otherwise: n_hold, n2_hold and n2 for the whole analysis (figure: the
 /// median of t_MPC / t_fastest other), n3_hold of n3 for the contact phase (range_low ..
@@ -383,12 +387,12 @@ struct BenchMeasure {
   std::optional<double> value(const BenchRow& r) const {
     return counter.empty() ? r.time_ms : r.counter(counter);
   }
-  /// The standard deviation over the repetitions; 0 for a case timed once.
-  double spread(const BenchRow& r) const {
+  /// The standard deviation over the repetitions; none for a case timed once.
+  std::optional<double> spread(const BenchRow& r) const {
     if (counter.empty())
-      return r.time_stddev_ms.value_or(0.0);
+      return r.time_stddev_ms;
     const auto it = r.counter_stddev.find(counter);
-    return it == r.counter_stddev.end() ? 0.0 : it->second;
+    return it == r.counter_stddev.end() ? std::nullopt : std::optional(it->second);
   }
 };
 
@@ -439,7 +443,9 @@ Race mpc_race(const BenchTimes& t, const BenchMeasure& m, double noise) {
     if (method == BenchMethod::MPC || !b)
       continue;
     const double gap = *b - a;
-    const double tolerance = std::max(noise * std::max(a, *b), m.spread(mpc) + m.spread(*row));
+    // A time measured once has an unknown spread, not none: the same-work noise stands for it.
+    const double spreads = m.spread(mpc).value_or(noise * a) + m.spread(*row).value_or(noise * *b);
+    const double tolerance = std::max(noise * std::max(a, *b), spreads);
     below_all = below_all && gap > tolerance;
     above_one = above_one || -gap > tolerance;
   }

@@ -34,6 +34,8 @@ struct ClaimEvidence {
   int n2_exact = 0;                 ///< second-part pairs exact on both: left out
   std::string examples{};           ///< the rows or models that break the claim, a few
   std::string examples2{};          ///< those that break its second part, a few
+  /// How many more break it than `examples`, `examples2`, `exception_examples` name.
+  int examples_more = 0, examples2_more = 0, exception_examples_more = 0;
   /// A claim of parts: each part's own verdict; the claim's is the worst of them.
   ClaimVerdict verdict1 = ClaimVerdict::not_testable, verdict2 = ClaimVerdict::not_testable;
   /// A part (or a stated exception) had no evidence: the claim's verdict is the other parts'.

@@ -104,6 +104,23 @@ void add_row(OptionCell& cell, const RowFacts& f) {
   cell.n_not_converged += f.fine_converged ? 0 : 1;
 }
 
+/// A read that leaves its grade open still bounds the cell's grade: at its best reading it is
+/// no better than grading::best_reading_grade, so a cell never shows a grade better than every
+/// reading of one of its rows (CM_p c/a +8.28 +- 2.21 % beside stresses of g: the cell is s).
+void cap_by_open_reads(OptionCell& c) {
+  for (const RowFacts* f : c.open_reads) {
+    const double e = *f->errors[2];
+    const schema::Grade best = grading::best_reading_grade(e, f->read_resolution_on_f);
+    if (!schema::is_worse(best, *c.worst_grade))
+      continue;
+    c.worst_grade = best;
+    c.worst_error = e;
+    c.worst_resolution = f->read_resolution_on_f;
+    c.min_error = std::min(*c.min_error, e);
+    c.max_error = std::max(*c.max_error, e);
+  }
+}
+
 /// Rows of the same solvers and targets as `rows` and `singular`, on the common basis, with C
 /// and M cases but no F value: an F case that failed or timed out (n_failed), or none at all
 /// (n_missing, e.g. a battery part not run). They have no row facts, but their option's cell
@@ -167,10 +184,14 @@ std::vector<OptionCell> make_cells(const ResultsIndex& index,
   };
   for (const ProblemId p : problems) {
     for (const auto& f : rows) {
-      // A read whose resolution leaves its grade open (a stick-zone edge half a node off) grades
-      // the read, not the option: it is left out, as from the ledger's accuracy evidence.
-      if (f.problem == p && graded_in_verdict(index, p, f.quantity) && !f.read_leaves_grade_open())
+      if (f.problem != p || !graded_in_verdict(index, p, f.quantity))
+        continue;
+      // A read whose resolution leaves its grade open (a stick-zone edge half a node off) is not
+      // graded as it reads; it counts only at its best reading (cap_by_open_reads).
+      if (!f.read_leaves_grade_open())
         add_row(cell_of(f.code, f.option, f.element), f);
+      else if (f.evidence())
+        cell_of(f.code, f.option, f.element).open_reads.push_back(&f);
     }
     for (const auto& d : singular) {
       if (d.problem != p)
@@ -196,8 +217,10 @@ std::vector<OptionCell> make_cells(const ResultsIndex& index,
     // No grade from a solve that failed, nor from part of the situation's problems.
     const bool whole =
         c.n_not_converged == 0 && c.n_failed == 0 && c.n_missing == 0 && c.not_run_on.empty();
-    if (c.worst_error && whole)
+    if (c.worst_error && whole) {
       c.worst_grade = grading::grade_of_error(*c.worst_error);
+      cap_by_open_reads(c);
+    }
     c.evidence = c.n_not_credible == 0 && c.n_luck == 0 && whole;
     out.push_back(std::move(c));
   }
@@ -269,10 +292,10 @@ void rank(SituationVerdict& v) {
     return;
   const OptionCell* most = *std::ranges::min_element(
       v.best, {}, [](const OptionCell* c) { return std::abs(*c->worst_error); });
-  // The tie's own tolerance: what one refinement changes in any of the options weighed (a leader
-  // is not picked on the smallest one's change alone: LMP ns Q8, +0.0443 %, moves by 0.013
-  // points, beside ss at +0.0392 %).
-  v.leaders_noise = v.best_noise;
+  // The most accurate cell's own resolution: what one refinement changes in it (at least 0.01
+  // points). Not the tie's tolerance: an option exact on every mesh would otherwise share the
+  // lead with options 0.3 points off that move by 0.44 (bodies of one modulus).
+  v.leaders_noise = std::max(most->largest_m_to_f_change, grading::kErrorResolutionPercent);
   const double bound = std::abs(*most->worst_error) + v.leaders_noise;
   for (const OptionCell* c : v.best) {
     if (std::abs(*c->worst_error) <= bound) {

@@ -33,8 +33,14 @@ struct OptionCell {
   std::vector<const DivergenceFacts*> singular_rows;  ///< the flat punch
   std::optional<double> worst_error;                  ///< signed, the largest |F error|
   std::optional<schema::Grade> worst_grade;           ///< of worst_error; none if not converged
-  std::optional<double> min_error, max_error;         ///< signed range of the F errors
-  double largest_m_to_f_change = 0.0;                 ///< max |e_F - e_M| over its rows (points)
+  /// Reads between nodes whose resolution leaves their grade open (RowFacts::
+  /// read_leaves_grade_open), evidence otherwise: not graded as they read, but a read whose best
+  /// reading (grading::best_reading_grade) is worse than the cell's grade sets it, and its error
+  /// becomes worst_error, printed with its resolution (worst_resolution, points; 0: a point).
+  std::vector<const RowFacts*> open_reads;
+  double worst_resolution = 0.0;
+  std::optional<double> min_error, max_error;  ///< signed range of the F errors
+  double largest_m_to_f_change = 0.0;          ///< max |e_F - e_M| over its rows (points)
   int n_not_credible = 0, n_luck = 0, n_not_converged = 0;
   int n_failed = 0;           ///< rows whose F case failed (or timed out): no F value at all
   std::string failed_reason;  ///< the first of those cases' reasons
@@ -71,8 +77,8 @@ struct SituationVerdict {
   /// rows, and at least the study's printed resolution, 0.01 points.
   double best_noise = 0.0;
   /// Where `best` are not tied: those with the smallest F errors, whose worst |error| exceeds
-  /// the smallest by no more than best_noise (the largest M -> F change of any of `best`, at
-  /// least 0.01 points); the others of `best` have the grade with larger F errors.
+  /// the smallest by no more than the smallest one's M -> F change (at least 0.01 points); the
+  /// others of `best` have the grade with larger F errors.
   std::vector<const OptionCell*> leaders;
   double leaders_max_abs = 0.0;  ///< the largest worst |error| of `leaders` (%)
   double leaders_noise = 0.0;    ///< their bound over the smallest (points)

@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include "grading/accuracy.hpp"
 #include "grading/richardson.hpp"
 #include "reports/findings/parameter_series.hpp"
 #include "reports/render/template_text.hpp"
@@ -75,7 +76,7 @@ std::optional<double> richardson(const schema::RowVerdict& r) {
 std::optional<double> percent_of(std::optional<double> value, std::optional<double> exact) {
   if (!value || !exact || *exact == 0.0)
     return std::nullopt;
-  return 100.0 * (*value / *exact - 1.0);
+  return grading::error_percent(*value, *exact);
 }
 
 /// Per extent k, the largest relative change (percent) of a fine-mesh value from k to the next
@@ -144,12 +145,13 @@ std::vector<ErrorSplit> error_splits(const ResultsIndex& index, const SeriesRefs
     const auto exact = index.exact_of(*study->row);
     const auto lim1 = richardson(*study->row), lim_max = richardson(*widest.row);
     const auto f1 = study->value;
-    if (!exact || !lim1 || !lim_max || !f1)
+    if (!exact || *exact == 0.0 || !lim1 || !lim_max || !f1)
       continue;
     out.push_back({fmt::format("{} {} {}", schema::label(s->quantity),
                                schema::to_string(s->spec.element), s->option_label()),
-                   *percent_of(f1, exact), 100.0 * (*lim1 - *lim_max) / *exact,
-                   100.0 * (*f1 - *lim1) / *exact, *percent_of(lim_max, exact), widest.parameter});
+                   *percent_of(f1, exact), 100.0 * (*lim1 - *lim_max) / std::abs(*exact),
+                   100.0 * (*f1 - *lim1) / std::abs(*exact), *percent_of(lim_max, exact),
+                   widest.parameter});
   }
   return out;
 }

@@ -8,6 +8,11 @@
 namespace cs::reports {
 namespace {
 
+/// A list of examples, and how many it leaves unnamed: "A; B; C; D; and 3 more".
+std::string listed(const std::string& examples, int more) {
+  return more > 0 ? fmt::format("{}; and {} more", examples, more) : examples;
+}
+
 TemplateData claim_data(const ClaimEvidence& c) {
   TemplateData d;
   d.set("verdict", to_string(c.verdict));
@@ -29,9 +34,9 @@ TemplateData claim_data(const ClaimEvidence& c) {
   d.set("figure", c.figure ? fmt::format("{:.3g}", *c.figure) : std::string());
   d.set("figure2", c.figure2 ? fmt::format("{:.3g}", *c.figure2) : std::string());
   d.set("has_examples", !c.examples.empty());
-  d.set("examples", c.examples);
+  d.set("examples", listed(c.examples, c.examples_more));
   d.set("has_examples2", !c.examples2.empty());
-  d.set("examples2", c.examples2);
+  d.set("examples2", listed(c.examples2, c.examples2_more));
   d.set("members", c.members);
   d.set("members2", c.members2);
   d.set("part2_run", c.part2_run);
@@ -41,7 +46,7 @@ TemplateData claim_data(const ClaimEvidence& c) {
   d.set("n_exception", std::to_string(c.n_exception));
   d.set("n_exception_holds", std::to_string(c.n_exception_holds));
   d.set("has_exception_examples", !c.exception_examples.empty());
-  d.set("exception_examples", c.exception_examples);
+  d.set("exception_examples", listed(c.exception_examples, c.exception_examples_more));
   d.set("order_biased", c.n_order_pairs > 0 && c.verdict == ClaimVerdict::not_testable);
   // claim 7: the contact phase, and whether it alone makes the claim refined
   d.set("n3", std::to_string(c.n3));

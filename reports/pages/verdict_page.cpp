@@ -261,6 +261,8 @@ std::string verdict_cell(const OptionCell& c) {
   std::string out = c.worst_grade ? fmt::format("{} {}", schema::to_string(*c.worst_grade),
                                                 format_error_resolved(*c.worst_error))
                                   : format_error_resolved(*c.worst_error);
+  if (c.worst_resolution > 0.0)
+    out += fmt::format(" ± {:.3g}", c.worst_resolution);
   if (c.n_not_credible > 0)
     out += " ✗";
   if (c.n_luck > 0)

@@ -8,6 +8,7 @@
 
 #include <fmt/format.h>
 
+#include "grading/accuracy.hpp"
 #include "reports/facts/row_facts.hpp"
 #include "reports/facts/situation_verdict.hpp"
 #include "reports/facts/solvers.hpp"
@@ -131,7 +132,7 @@ std::string ansys_cell(const ResultsIndex& index, const schema::StudyReference& 
   const auto exact = index.exact_of(row);
   return exact && *exact != 0.0
              ? fmt::format("{} ({})", value->printed,
-                           format_percent(100.0 * (value->value - *exact) / *exact))
+                           format_percent(grading::error_percent(value->value, *exact)))
              : value->printed;
 }
 

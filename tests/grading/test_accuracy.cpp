@@ -74,6 +74,21 @@ TEST(Accuracy, AReadBetweenNodesSettlesAGradeOnlyWithinOneBand) {
   EXPECT_TRUE(read_settles_grade(7.5, 2.0));   // 5.5 % to 9.5 %, s; +-4 would reach g and u
 }
 
+// Requirement: a read's best reading is its |error| less its whole resolution, never below 0,
+// graded by Eq. 46: the friction read +8.28 +- 2.21 % is at best s, +10.49 +- 4.42 % too; a read
+// within its resolution of zero (an edge exactly half a node off) is at best e; a point is
+// graded as it reads; NaN stays u.
+TEST(Accuracy, AReadsBestReadingIsItsErrorLessItsResolution) {
+  EXPECT_EQ(best_reading_grade(8.28, 2.21), Grade::s);
+  EXPECT_EQ(best_reading_grade(-10.49, 4.42), Grade::s);
+  EXPECT_EQ(best_reading_grade(15.0, 4.99), Grade::u);  // at best 10.01 %: still u
+  EXPECT_EQ(best_reading_grade(15.0, 5.01), Grade::s);  // at best 9.99 %: s
+  EXPECT_EQ(best_reading_grade(6.25, 6.25), Grade::e);
+  EXPECT_EQ(best_reading_grade(3.0, 4.42), Grade::e);
+  EXPECT_EQ(best_reading_grade(12.0, 0.0), Grade::u);
+  EXPECT_EQ(best_reading_grade(NAN, 1.0), Grade::u);
+}
+
 // Requirement: two values coincide at the study's resolution, 0.01 % of the larger magnitude,
 // pinned at the threshold on both sides, whatever the sign and the scale.
 TEST(Accuracy, ValuesCoincideWithinAHundredthOfAPercent) {

@@ -707,16 +707,19 @@ TEST(VerdictPage, UntiedOptionsOfAGradeAreNotAnyOf) {
             std::string::npos)
       << md;
   EXPECT_NE(
-      md.find("(worst |error| at most 0.05 %, within 0.09 points of the smallest: the largest "
-              "change one refinement makes in them). Larger: MPC ss Q4 (worst error +0.8 %)."),
+      md.find("(worst |error| at most 0.05 %, within 0.09 points of the smallest: what one "
+              "refinement changes in it, at least the study's 0.01-point resolution). Larger: MPC "
+              "ss Q4 (worst error +0.8 %)."),
       std::string::npos)
       << md;
-  // AL 0.14 points behind, but its own refinement moves it 0.15: a leader.
+  // AL 0.14 points behind, moving 0.15 itself: the bound is the most accurate cell's own
+  // change (0.09), not AL's, so an option settled near exact is not joined by one that moves.
   al.errors = {0.5, 0.3, 0.15};
   const std::vector<RowFacts> moved{lmp, al, mpc};
   const auto again = situation_verdicts(battery().index, moved, kNoSingularRows);
-  EXPECT_EQ(again[0].leaders.size(), 2U);
-  EXPECT_NEAR(again[0].leaders_noise, 0.15, 1e-12);
+  ASSERT_EQ(again[0].leaders.size(), 1U);
+  EXPECT_EQ(again[0].leaders[0]->family, OptionFamily::multiplier);
+  EXPECT_NEAR(again[0].leaders_noise, 0.09, 1e-12);
 }
 
 // Requirement: a tie whose tolerance (what one refinement changes) is wider than the grade's
@@ -742,26 +745,40 @@ TEST(VerdictPage, ATieWiderThanItsGradeSaysSo) {
   EXPECT_EQ(narrow.find("wider than grade"), std::string::npos) << narrow;
 }
 
-// Requirement: a value read between two nodes whose resolution leaves its grade open (within
-// half a node of zero, or across a grade's bound: +10.49 +- 4.42 % may be s or u) grades the
-// read, not the option: it has no part in the option's verdict cell. One whose whole interval
-// stays in one grade counts.
-TEST(VerdictPage, AReadWhoseResolutionLeavesItsGradeOpenIsNoPartOfTheCell) {
+// Requirement: a read between nodes whose F error, give or take its resolution, may lie in more
+// than one grade (within half a node of zero, or across a grade's bound: +10.49 +- 4.42 % may
+// be s or u) is not graded as it reads; but the cell's grade is never better than the read's
+// best reading (|e| - r): +10.49 +- 4.42 % makes a cell of e stresses s, printed with its
+// resolution, while a read within half a node of zero leaves the cell alone. One whose whole
+// interval stays in one grade counts as a row.
+TEST(VerdictPage, AReadWhoseResolutionLeavesItsGradeOpenCountsAtItsBestReading) {
   RowFacts point = rounded_punch_row(Algorithm::LMP, {});
   point.errors = {1.0, 0.6, 0.4};
-  for (const auto& [f_error, resolution, counted] :
-       {std::tuple{2.0, 2.5, false}, std::tuple{10.49, 4.42, false},
-        std::tuple{20.0, 4.42, true}}) {
+  struct Case {
+    double f_error, resolution;
+    std::size_t rows;
+    double worst;
+    schema::Grade grade;
+    double printed_resolution;
+  };
+  for (const Case& k : {Case{2.0, 2.5, 1, 0.4, schema::Grade::e, 0.0},
+                        Case{10.49, 4.42, 1, 10.49, schema::Grade::s, 4.42},
+                        Case{20.0, 4.42, 2, 20.0, schema::Grade::u, 0.0}}) {
     RowFacts read = rounded_punch_row(Algorithm::LMP, {});
-    read.errors = {8.0, 4.0, f_error};
-    read.read_resolution_on_f = resolution;
+    read.errors = {8.0, 4.0, k.f_error};
+    read.read_resolution_on_f = k.resolution;
     const std::vector<RowFacts> rows{read, point};
     const auto situations = situation_verdicts(battery().index, rows, kNoSingularRows);
     ASSERT_EQ(situations.size(), 1U);
     ASSERT_EQ(situations[0].cells.size(), 1U);
-    EXPECT_EQ(situations[0].cells[0].rows.size(), counted ? 2U : 1U) << f_error;
-    EXPECT_DOUBLE_EQ(*situations[0].cells[0].worst_error, counted ? f_error : 0.4) << f_error;
-    EXPECT_EQ(read.accuracy_evidence(), counted && read.evidence()) << f_error;
+    const OptionCell& c = situations[0].cells[0];
+    EXPECT_EQ(c.rows.size(), k.rows) << k.f_error;
+    EXPECT_DOUBLE_EQ(*c.worst_error, k.worst) << k.f_error;
+    EXPECT_EQ(c.worst_grade, k.grade) << k.f_error;
+    EXPECT_DOUBLE_EQ(c.worst_resolution, k.printed_resolution) << k.f_error;
+    EXPECT_EQ(verdict_cell(c).find(" ± ") != std::string::npos, k.printed_resolution > 0)
+        << verdict_cell(c);
+    EXPECT_EQ(read.accuracy_evidence(), k.rows == 2 && read.evidence()) << k.f_error;
   }
 }
 
