@@ -14,6 +14,7 @@
 #include "schema/combined_results.hpp"
 #include "schema/results_file.hpp"
 #include "suites/problem_catalog.hpp"
+#include "suites/run_environment.hpp"
 
 namespace cs::apps {
 namespace {
@@ -63,6 +64,7 @@ void run_report(const ReportArgs& args) {
   options.figures = !args.no_figures;
   options.option_mappings = solver_option_mappings();
   options.companions = std::move(companions);
+  options.writer_version = suites::contact_suite_version();
   const auto outcome = reports::write_report(results, options);
   output.commit();
   std::printf("%s\n", fmt::format("contact-suite report: {} cases -> {}/report.md ({} files, {} "

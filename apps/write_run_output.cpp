@@ -10,6 +10,7 @@
 #include "platform/interrupts.hpp"
 #include "reports/report_writer.hpp"
 #include "schema/json_file.hpp"
+#include "suites/run_environment.hpp"
 
 namespace cs::apps {
 
@@ -21,6 +22,7 @@ std::optional<int> write_run_output(const schema::ResultsDocument& doc,
     reports::ReportOptions report;
     report.out_dir = out.staging_dir();
     report.option_mappings = solver_option_mappings();
+    report.writer_version = suites::contact_suite_version();
     schema::ResultsDocument named = doc;  // the report names the file it describes
     std::error_code ec;
     const auto shown = std::filesystem::relative(out.directory(), ec);

@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include "reports/render/template_text.hpp"
 #include "reports/report_error.hpp"
 
 namespace cs::reports {
@@ -13,6 +14,21 @@ namespace {
 
 constexpr std::string_view kTitlePrefix = "# ";
 constexpr std::string_view kProjectPrefix = "contact-suite report: ";
+/// report.mustache's last line: "*Written by contact-suite 0.1.0+cc88371.*".
+constexpr std::string_view kWriterPrefix = "*Written by contact-suite ";
+constexpr std::string_view kWriterSuffix = ".*";
+
+/// The build named by a report's "Written by" line, or empty.
+std::string writer_of(std::istream& in) {
+  std::string line, writer;
+  while (std::getline(in, line)) {
+    if (line.rfind(kWriterPrefix, 0) == 0 && line.size() > kWriterPrefix.size() + 2 &&
+        line.ends_with(kWriterSuffix))
+      writer = line.substr(kWriterPrefix.size(),
+                           line.size() - kWriterPrefix.size() - kWriterSuffix.size());
+  }
+  return writer;
+}
 
 bool safe_link_path(const std::string& p) {
   const bool chars = std::all_of(p.begin(), p.end(), [](unsigned char c) {
@@ -50,14 +66,21 @@ CompanionReport read_companion_report(const std::filesystem::path& report_dir,
   std::string title = first.substr(kTitlePrefix.size());
   if (title.rfind(kProjectPrefix, 0) == 0)
     title = title.substr(kProjectPrefix.size());
-  return {relative, title};
+  return {relative, title, writer_of(in)};
 }
 
-std::string companions_markdown(const std::vector<CompanionReport>& companions) {
-  std::string out;
-  for (const auto& c : companions)
-    out += fmt::format("Also: [{}]({}).\n\n", c.title, c.path);
-  return out;
+std::string companions_markdown(const std::vector<CompanionReport>& companions,
+                                const std::string& writer) {
+  if (companions.empty())
+    return {};
+  TemplateData d("companions", template_list(companions, [&](const CompanionReport& c) {
+                   TemplateData e("title", c.title);
+                   e.set("path", c.path);
+                   e.set("other_build", !writer.empty() && c.writer != writer);
+                   e.set("writer", text_or_false(c.writer));
+                   return e;
+                 }));
+  return render_template(templates::companion_links, d);
 }
 
 }  // namespace cs::reports

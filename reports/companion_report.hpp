@@ -11,8 +11,9 @@
 namespace cs::reports {
 
 struct CompanionReport {
-  std::string path;   ///< relative to the linking report's directory: "cross-code/report.md"
-  std::string title;  ///< its title less "contact-suite report: "
+  std::string path;    ///< relative to the linking report's directory: "cross-code/report.md"
+  std::string title;   ///< its title less "contact-suite report: "
+  std::string writer;  ///< the build that wrote it, from its "Written by" line; empty: unrecorded
 };
 
 /// Reads the companion `relative` (to `report_dir`). Throws ReportError, naming the cause, for a
@@ -22,7 +23,10 @@ struct CompanionReport {
 CompanionReport read_companion_report(const std::filesystem::path& report_dir,
                                       const std::string& relative);
 
-/// "Also: [title](path)." lines, one per companion, and a blank line; empty for none.
-std::string companions_markdown(const std::vector<CompanionReport>& companions);
+/// "Also: [title](path)." lines, one per companion, and a blank line; empty for none. A companion
+/// not written by `writer` (this report's build; empty: unknown, no note) says whose rules its
+/// verdicts follow (templates/companion_links.mustache).
+std::string companions_markdown(const std::vector<CompanionReport>& companions,
+                                const std::string& writer);
 
 }  // namespace cs::reports

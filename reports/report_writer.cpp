@@ -212,7 +212,8 @@ std::string report_markdown(const ResultsIndex& index, const ReportContent& cont
   d.set("omitted",
         template_list(omitted, [](const std::string& r) { return TemplateData("reason", r); }));
   d.set("has_omitted", !omitted.empty());
-  d.set("companions", companions_markdown(content.companions));
+  d.set("companions", companions_markdown(content.companions, content.writer_version));
+  d.set("writer", text_or_false(content.writer_version));
   d.set("has_regression", content.has_regression);
   return tidy_markdown(render_template(templates::report, d));
 }
@@ -255,9 +256,15 @@ ReportOutcome write_report(const schema::ResultsDocument& results, const ReportO
   const std::string cross_code_md =
       cross_code_section(index, study, cross_code_figures, options.option_mappings,
                          cost_index ? &*cost_index : nullptr);
-  const ReportContent content{
-      figures,       mesh_figures,  baseline.has_value(), bench_md,
-      sweep_figures, cross_code_md, options.companions,   bench ? &*bench : nullptr};
+  const ReportContent content{figures,
+                              mesh_figures,
+                              baseline.has_value(),
+                              bench_md,
+                              sweep_figures,
+                              cross_code_md,
+                              options.companions,
+                              bench ? &*bench : nullptr,
+                              options.writer_version};
   const std::vector<ReportPage> problems = problem_pages(index, figures, mesh_figures);
   const std::vector<ReportPage> appendices = appendix_pages(index, study, content);
   for (const auto& page : problems)

@@ -55,6 +55,9 @@ struct ReportOptions {
   std::vector<SolverOptionMapping> option_mappings;
   /// Other reports linked under the title (read by the caller with read_companion_report).
   std::vector<CompanionReport> companions;
+  /// The build that writes the report (e.g. "0.1.0+cc88371"): named at report.md's end, and a
+  /// companion written by another build says so. Empty: neither.
+  std::string writer_version;
 };
 
 /// What write_report produced.
@@ -82,6 +85,7 @@ struct ReportContent {
   std::string cross_code_md;    ///< the cross-code section (tables/cross_code_section.hpp)
   std::vector<CompanionReport> companions;  ///< other reports linked under the title
   const BenchResults* bench = nullptr;      ///< the benchmarks (claim 7), if given
+  std::string writer_version;               ///< ReportOptions::writer_version
 };
 
 /// One Markdown file of the report besides report.md: a problem's page or an appendix.

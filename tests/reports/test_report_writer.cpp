@@ -18,6 +18,7 @@
 #include "reports/report_writer.hpp"
 #include "schema/combined_results.hpp"
 #include "schema/schema_error.hpp"
+#include "suites/run_environment.hpp"
 
 namespace cs::reports {
 namespace {
@@ -276,8 +277,34 @@ TEST(ReportCommand, CompanionReportIsLinkedByItsTitle) {
   EXPECT_EQ(run_command({"--results", sample_path().string(), "--out", out.string(), "--study-data",
                          study, "--no-figures", "--companion", "other/report.md"}),
             "ok");
-  EXPECT_NE(read_text(out / "report.md").find("\nAlso: [ours and X beside Y](other/report.md).\n"),
-            std::string::npos);
+  // Written by a build that did not name itself: the link says whose rules it follows.
+  const std::string link = "\nAlso: [ours and X beside Y](other/report.md).";
+  EXPECT_NE(read_text(out / "report.md")
+                .find(link + " It was written by an earlier build, which did not name itself, "
+                             "not by this report's build"),
+            std::string::npos)
+      << read_text(out / "report.md");
+  // This report names its build at its end; a companion written by the same build is linked
+  // without a note, one written by another build names it.
+  const std::string version = suites::contact_suite_version();
+  const std::string written = "*Written by contact-suite " + version + ".*";
+  EXPECT_NE(read_text(out / "report.md").find("\n" + written + "\n"), std::string::npos);
+  for (const auto& [writer, note] :
+       {std::pair{version, std::string(".\n")},
+        std::pair{std::string("0.0.9+abc1234"),
+                  std::string(". It was written by contact-suite 0.0.9+abc1234, not by")}}) {
+    write_text(out / "other" / "report.md",
+               "# contact-suite report: ours and X beside Y\n\nz\n\n*Written by contact-suite " +
+                   writer + ".*\n");
+    EXPECT_EQ(
+        run_command({"--results", sample_path().string(), "--out", out.string(), "--study-data",
+                     study, "--no-figures", "--companion", "other/report.md"}),
+        "ok");
+    EXPECT_NE(
+        read_text(out / "report.md").find("\nAlso: [ours and X beside Y](other/report.md)" + note),
+        std::string::npos)
+        << read_text(out / "report.md");
+  }
   const std::string before = read_text(out / "report.md");
   for (const std::string bad : {"../report.md", "/etc/report.md", "other/missing.md",
                                 "other/report.txt", "other/r(1).md", "other/notes.md"}) {
