@@ -557,7 +557,8 @@ VfTally refinement_tally(ClaimEvidence& c, const ResultsIndex& index,
 /// Claim 9: the baseline rows the study's claim applies to (refinement_claim_applies), by the
 /// rule of the estimates appendix: n judged, n_hold of them hold (converge over M-F-VF, or
 /// settle at the study's resolution), n_plateau settle at a larger error (a bias: fails the
-/// claim); n_excluded left open; n2 have no VF case, so are not judged. Reproduced when most
+/// claim); n_excluded left open (not evidence on F, with or without a VF case, or VF not
+/// converged); n2, evidence on F, have no VF case, so are not judged. Reproduced when most
 /// judged rows hold (kRefined).
 ClaimEvidence refinement(const ResultsIndex& index, const std::vector<RowFacts>& rows) {
   ClaimEvidence c{.key = "refinement"};
@@ -566,8 +567,14 @@ ClaimEvidence refinement(const ResultsIndex& index, const std::vector<RowFacts>&
   c.n_hold = t[VfJudgement::converges] + t[VfJudgement::at_resolution];
   c.n = t.trends() + t[VfJudgement::at_resolution];
   c.n_plateau = t[VfJudgement::plateau];
-  c.n_excluded = t.open();
-  c.n2 = t[VfJudgement::no_vf];  // not judged: the claim's scope here
+  // Rows without a VF case are not judged (the claim's scope here); those that are not evidence
+  // on F would be left out with a VF case too, and are counted there.
+  const auto no_vf_not_evidence = std::ranges::count_if(rows, [&](const RowFacts& f) {
+    return refinement_claim_applies(*f.row) && !f.evidence() &&
+           vf_judgement(index, *f.row) == VfJudgement::no_vf;
+  });
+  c.n_excluded = t.open() + static_cast<int>(no_vf_not_evidence);
+  c.n2 = t[VfJudgement::no_vf] - static_cast<int>(no_vf_not_evidence);
   c.verdict = verdict_of(c.n_hold, c.n, kRefined);
   return c;
 }

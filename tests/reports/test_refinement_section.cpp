@@ -221,6 +221,9 @@ TEST(RefinementSection, LedgerAndAppendixJudgeRefinementByOneRule) {
   add_row(doc, A::MPC, K::mortar, {1.08, 1.07, 1.06}, 1.03);
   // No VF case: in the claim's scope, but not judged; the ledger says so.
   add_row(doc, A::AL, K::ns, {1.08, 1.07, 1.06});
+  // No VF case and not evidence on F (its F case did not converge): left out, not counted
+  // among the rows a VF case would judge.
+  add_row(doc, A::PLM, K::mortar, {1.08, 1.07, 1.06});
   for (auto& c : doc.cases) {
     if (c.spec.contact == K::mortar && c.spec.mesh == schema::MeshLevel::F)
       c.status = schema::CaseStatus::not_converged;
@@ -246,8 +249,8 @@ TEST(RefinementSection, LedgerAndAppendixJudgeRefinementByOneRule) {
   EXPECT_EQ(nine.n, 4);
   EXPECT_EQ(nine.n_hold, 2);
   EXPECT_EQ(nine.n_plateau, 1);
-  EXPECT_EQ(nine.n_excluded, 1);
-  EXPECT_EQ(nine.n2, 1);                                  // no VF case
+  EXPECT_EQ(nine.n_excluded, 2);                          // MPC and PLM mortar: F not converged
+  EXPECT_EQ(nine.n2, 1);                                  // no VF case, evidence on F
   EXPECT_EQ(nine.verdict, ClaimVerdict::not_reproduced);  // 2 of 4
   const ClaimEvidence ten = claim("mpc_refinement");
   EXPECT_EQ(ten.n, 1);
@@ -258,7 +261,8 @@ TEST(RefinementSection, LedgerAndAppendixJudgeRefinementByOneRule) {
   const std::string md = claims_ledger(claims);
   EXPECT_NE(md.find("further refinement converges in 2"), std::string::npos) << md;
   EXPECT_NE(md.find("1 settle at a larger error"), std::string::npos) << md;
-  EXPECT_NE(md.find("1 more rows the claim applies to have no VF case and are not judged"),
+  EXPECT_NE(md.find("1 more rows the claim applies to, evidence on F, have no VF case and are not "
+                    "judged"),
             std::string::npos)
       << md;
   // The appendix says where its plateaus are, so that one bias can be told from another.
