@@ -3,14 +3,47 @@
 #include <algorithm>
 #include <cmath>
 
+#include "grading/accuracy.hpp"
+#include "schema/baseline_file.hpp"
+
 namespace cs::grading {
+namespace {
+
+/// The bound of Eq. 46 between grade g and the next worse one (%): e 1, g 5, s 10.
+double upper_bound_of(schema::Grade g) {
+  double bound = 0.0;
+  for (const schema::Grade band : {schema::Grade::e, schema::Grade::g, schema::Grade::s}) {
+    bound += grade_band_width(band);
+    if (band == g)
+      break;
+  }
+  return bound;
+}
+
+}  // namespace
 
 double relative_drift(double a, double b) {
   return std::abs(b - a) / std::max(std::abs(a), 1e-300);
 }
 
-bool grade_change_is_round_off(std::optional<double> a, std::optional<double> b, double tolerance) {
-  return a && b && relative_drift(*a, *b) <= tolerance;
+double round_off_tolerance(double quantity_tolerance) {
+  return std::min(quantity_tolerance, schema::kDefaultGateTolerance);
+}
+
+bool grade_change_is_round_off(const GradedValue& before, const GradedValue& after,
+                               double tolerance) {
+  if (!before.value || !after.value || !before.error || !after.error ||
+      !(relative_drift(*before.value, *after.value) <= tolerance))
+    return false;
+  const schema::Grade a = grade_of_error(*before.error), b = grade_of_error(*after.error);
+  const schema::Grade better = std::min(a, b), worse = std::max(a, b);  // ordered best first
+  if (better == worse || better == schema::Grade::u ||
+      static_cast<int>(worse) - static_cast<int>(better) != 1)
+    return false;
+  const double bound = upper_bound_of(better);
+  const double edge = 100.0 * tolerance * (1.0 + bound / 100.0) * (1.0 + 1e-9);
+  return std::abs(std::abs(*before.error) - bound) <= edge &&
+         std::abs(std::abs(*after.error) - bound) <= edge;
 }
 
 bool grade_change_is_round_off(const schema::RowVerdict& before, const schema::RowVerdict& after,
@@ -18,7 +51,8 @@ bool grade_change_is_round_off(const schema::RowVerdict& before, const schema::R
   if (!before.graded_mesh || before.graded_mesh != after.graded_mesh)
     return false;
   const auto i = static_cast<std::size_t>(*before.graded_mesh);
-  return grade_change_is_round_off(before.values[i], after.values[i], tolerance);
+  return grade_change_is_round_off({before.values[i], before.errors[i]},
+                                   {after.values[i], after.errors[i]}, tolerance);
 }
 
 }  // namespace cs::grading

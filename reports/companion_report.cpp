@@ -18,16 +18,20 @@ constexpr std::string_view kProjectPrefix = "contact-suite report: ";
 constexpr std::string_view kWriterPrefix = "*Written by contact-suite ";
 constexpr std::string_view kWriterSuffix = ".*";
 
-/// The build named by a report's "Written by" line, or empty.
+/// The build named by a report's last non-empty line, its "Written by" line, or empty.
 std::string writer_of(std::istream& in) {
-  std::string line, writer;
+  std::string line, last;
   while (std::getline(in, line)) {
-    if (line.rfind(kWriterPrefix, 0) == 0 && line.size() > kWriterPrefix.size() + 2 &&
-        line.ends_with(kWriterSuffix))
-      writer = line.substr(kWriterPrefix.size(),
-                           line.size() - kWriterPrefix.size() - kWriterSuffix.size());
+    while (!line.empty() && std::isspace(static_cast<unsigned char>(line.back())))
+      line.pop_back();  // a "\r" of a file saved with CRLF, or trailing blanks
+    if (!line.empty())
+      last = std::move(line);
   }
-  return writer;
+  if (last.size() <= kWriterPrefix.size() + kWriterSuffix.size() ||
+      !last.starts_with(kWriterPrefix) || !last.ends_with(kWriterSuffix))
+    return {};
+  return last.substr(kWriterPrefix.size(),
+                     last.size() - kWriterPrefix.size() - kWriterSuffix.size());
 }
 
 bool safe_link_path(const std::string& p) {

@@ -72,10 +72,8 @@ void check_case(const Baseline& baseline, const CaseResult& old_case, const Case
 void check_row(const Baseline& baseline, const RowVerdict& old_row, const RowVerdict& new_row,
                GateReport& report) {
   if (old_row.grade) {
-    // Round-off: within the quantity's tolerance and the default one, whichever is tighter (a
-    // tolerance loosened for a quantity does not excuse a grade that really dropped).
     const double round_off_tol =
-        std::min(baseline.tolerances.of(old_row.quantity), schema::kDefaultGateTolerance);
+        grading::round_off_tolerance(baseline.tolerances.of(old_row.quantity));
     const bool round_off = grading::grade_change_is_round_off(old_row, new_row, round_off_tol);
     if (!new_row.grade || (is_worse(*new_row.grade, *old_row.grade) && !round_off)) {
       report.failures.push_back({old_row.id,

@@ -306,34 +306,29 @@ ClaimEvidence trend_multiplier(const std::vector<RowFacts>& rows) {
 /// a solution that violates the contact conditions, or that the solver did not finish, is
 /// unsatisfactory whatever its error. A row whose grade is the luck of one mesh, or a read
 /// within its resolution, says nothing of MPC's accuracy and is left out (n_excluded). On the
-/// patch tests (verdict2; a uniform pressure is exact for any tie), n2 accuracy-evidence rows,
-/// n2_hold of them below g. "Uniformly" is over the whole battery: the patch tests count.
+/// patch tests (verdict2; a uniform pressure is exact for any tie), n2 rows by the same rule,
+/// n2_hold of them unsatisfactory. "Uniformly" is over the whole battery: the patch tests count.
 ClaimEvidence mpc_unsatisfactory(const std::vector<RowFacts>& rows) {
   ClaimEvidence c{.key = "mpc_unsatisfactory"};
   for (const auto& f : rows) {
     if (f.option.algorithm != Algorithm::MPC)
       continue;
-    if (patch_test(f)) {
-      if (!f.accuracy_evidence())
-        continue;
-      ++c.n2;
-      c.n2_hold += good_or_better(f) ? 0 : 1;
-      continue;
-    }
     const bool unsound = !f.fine_converged || !f.credible;
     if (!unsound && !f.accuracy_evidence()) {
       ++c.n_excluded;
       continue;
     }
-    ++c.n;
-    if (unsound) {
-      ++c.n_unsound;
-      ++c.n_hold;
-    } else if (f.grade == Grade::u || f.grade == Grade::s) {
-      ++c.n_hold;
-    } else {
-      add_example(c, row_name(f));
+    const bool unsatisfactory = unsound || f.grade == Grade::u || f.grade == Grade::s;
+    if (patch_test(f)) {  // the second part, by the same rule
+      ++c.n2;
+      c.n2_hold += unsatisfactory ? 1 : 0;
+      continue;
     }
+    ++c.n;
+    c.n_unsound += unsound ? 1 : 0;
+    c.n_hold += unsatisfactory ? 1 : 0;
+    if (!unsatisfactory)
+      add_example(c, row_name(f));
   }
   c.verdict1 = verdict_of(c.n_hold, c.n);
   c.verdict2 = verdict_of(c.n2_hold, c.n2);
@@ -504,6 +499,8 @@ ClaimEvidence mpc_fastest(const BenchResults* bench) {
     c.verdict = c.verdict1;
   if (c.order_bias_z > kOrderBiasZ)
     c.verdict = ClaimVerdict::not_testable;  // the times rank the run's order
+  if (c.n_order_pairs == 0)
+    c.verdict = ClaimVerdict::not_testable;  // no same-work pair: the noise is unknown
   return c;
 }
 
@@ -539,19 +536,26 @@ ClaimEvidence element_order(const std::vector<RowFacts>& rows) {
   return c;
 }
 
-/// The rows `keep` accepts, tallied by vf_judgement, with the failing ones as examples.
+/// The rows `keep` accepts, tallied by vf_judgement, with the failing ones as examples. A row
+/// that is not evidence on F counts as such (left out) whether or not it has a VF case, so that
+/// no_vf holds only rows a VF case would judge.
 template <typename Keep>
 VfTally refinement_tally(ClaimEvidence& c, const ResultsIndex& index,
                          const std::vector<RowFacts>& rows, Keep&& keep) {
-  std::vector<const schema::RowVerdict*> kept;
+  VfTally t;
   for (const auto& f : rows) {
     if (!keep(f))
       continue;
-    kept.push_back(f.row);
-    if (vf_judgement(index, *f.row) == VfJudgement::fails)
+    VfJudgement j =
+        vf_judgement(*f.row, index.state(*f.row, schema::MeshLevel::VF),
+                     index.read_resolution_percent(*f.row, schema::MeshLevel::M), f.evidence());
+    if (j == VfJudgement::no_vf && !f.evidence())
+      j = VfJudgement::not_evidence;
+    if (j == VfJudgement::fails)
       add_example(c, refinement_example(f));  // plateaus are a class the text describes
+    ++t.by[static_cast<std::size_t>(j)];
   }
-  return tally_vf(index, kept);
+  return t;
 }
 
 /// Claim 9: the baseline rows the study's claim applies to (refinement_claim_applies), by the
@@ -567,14 +571,8 @@ ClaimEvidence refinement(const ResultsIndex& index, const std::vector<RowFacts>&
   c.n_hold = t[VfJudgement::converges] + t[VfJudgement::at_resolution];
   c.n = t.trends() + t[VfJudgement::at_resolution];
   c.n_plateau = t[VfJudgement::plateau];
-  // Rows without a VF case are not judged (the claim's scope here); those that are not evidence
-  // on F would be left out with a VF case too, and are counted there.
-  const auto no_vf_not_evidence = std::ranges::count_if(rows, [&](const RowFacts& f) {
-    return refinement_claim_applies(*f.row) && !f.evidence() &&
-           vf_judgement(index, *f.row) == VfJudgement::no_vf;
-  });
-  c.n_excluded = t.open() + static_cast<int>(no_vf_not_evidence);
-  c.n2 = t[VfJudgement::no_vf] - static_cast<int>(no_vf_not_evidence);
+  c.n_excluded = t.open();
+  c.n2 = t[VfJudgement::no_vf];  // evidence on F, not judged: the claim's scope here
   c.verdict = verdict_of(c.n_hold, c.n, kRefined);
   return c;
 }

@@ -65,8 +65,9 @@ struct RowFacts {
   bool read_leaves_grade_open() const;
 
   /// May this row support or refute a statement about an option's accuracy (a grade, which of
-  /// two errors is larger)? evidence() and not read_leaves_grade_open(); the verdict page
-  /// leaves such reads out for the same reason.
+  /// two errors is larger)? evidence() and not read_leaves_grade_open(). The claims leave such
+  /// reads out; the verdict page lets one bound its cell's grade at its best reading
+  /// (grading::best_reading_grade), which no reading of it beats.
   bool accuracy_evidence() const { return evidence() && !read_leaves_grade_open(); }
 };
 

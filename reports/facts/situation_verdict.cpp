@@ -118,6 +118,7 @@ void cap_by_open_reads(OptionCell& c) {
     c.worst_resolution = f->read_resolution_on_f;
     c.min_error = std::min(*c.min_error, e);
     c.max_error = std::max(*c.max_error, e);
+    c.largest_m_to_f_change = std::max(c.largest_m_to_f_change, f->m_to_f_change());
   }
 }
 
@@ -190,8 +191,11 @@ std::vector<OptionCell> make_cells(const ResultsIndex& index,
       // graded as it reads; it counts only at its best reading (cap_by_open_reads).
       if (!f.read_leaves_grade_open())
         add_row(cell_of(f.code, f.option, f.element), f);
-      else if (f.evidence())
-        cell_of(f.code, f.option, f.element).open_reads.push_back(&f);
+      else if (f.evidence()) {
+        OptionCell& c = cell_of(f.code, f.option, f.element);
+        c.open_reads.push_back(&f);
+        c.problems.insert(f.problem);  // run on it, graded or not
+      }
     }
     for (const auto& d : singular) {
       if (d.problem != p)
@@ -213,6 +217,8 @@ std::vector<OptionCell> make_cells(const ResultsIndex& index,
     run.insert(c.problems.begin(), c.problems.end());
   std::vector<OptionCell> out;
   for (auto& [key, c] : cells) {
+    if (c.rows.empty() && c.singular_rows.empty() && c.n_failed == 0 && c.n_missing == 0)
+      continue;  // open reads alone: nothing graded, no cell
     std::ranges::set_difference(run, c.problems, std::back_inserter(c.not_run_on));
     // No grade from a solve that failed, nor from part of the situation's problems.
     const bool whole =
@@ -295,14 +301,27 @@ void rank(SituationVerdict& v) {
   // The most accurate cell's own resolution: what one refinement changes in it (at least 0.01
   // points). Not the tie's tolerance: an option exact on every mesh would otherwise share the
   // lead with options 0.3 points off that move by 0.44 (bodies of one modulus).
+  // No cut falls within the study's resolution: a cell within 0.01 points of a leader leads too
+  // (ss Q8 +0.0392 % and ns Q8 +0.0443 % print alike), so the bound is extended over such steps.
   v.leaders_noise = std::max(most->largest_m_to_f_change, grading::kErrorResolutionPercent);
-  const double bound = std::abs(*most->worst_error) + v.leaders_noise;
-  for (const OptionCell* c : v.best) {
-    if (std::abs(*c->worst_error) <= bound) {
-      v.leaders.push_back(c);
-      v.leaders_max_abs = std::max(v.leaders_max_abs, std::abs(*c->worst_error));
-    }
+  std::vector<const OptionCell*> by_error = v.best;
+  std::ranges::stable_sort(by_error, {},
+                           [](const OptionCell* c) { return std::abs(*c->worst_error); });
+  const double first_bound = std::abs(*most->worst_error) + v.leaders_noise;
+  double bound = first_bound;
+  for (const OptionCell* c : by_error) {
+    const double a = std::abs(*c->worst_error);
+    if (a > bound)
+      break;
+    v.leaders.push_back(c);
+    v.leaders_max_abs = a;
+    v.leaders_extended = v.leaders_extended || a > first_bound;
+    bound = std::max(bound, a + grading::kErrorResolutionPercent);
   }
+  // `best`'s order, as the advice lists options.
+  std::ranges::sort(v.leaders, {}, [&](const OptionCell* c) {
+    return std::ranges::find(v.best, c) - v.best.begin();
+  });
 }
 
 }  // namespace

@@ -77,11 +77,13 @@ struct SituationVerdict {
   /// rows, and at least the study's printed resolution, 0.01 points.
   double best_noise = 0.0;
   /// Where `best` are not tied: those with the smallest F errors, whose worst |error| exceeds
-  /// the smallest by no more than the smallest one's M -> F change (at least 0.01 points); the
-  /// others of `best` have the grade with larger F errors.
+  /// the smallest by no more than the smallest one's M -> F change (at least 0.01 points), and
+  /// those within 0.01 points of one of them (leaders_extended: no cut within the study's
+  /// resolution); the others of `best` have the grade with larger F errors.
   std::vector<const OptionCell*> leaders;
-  double leaders_max_abs = 0.0;  ///< the largest worst |error| of `leaders` (%)
-  double leaders_noise = 0.0;    ///< their bound over the smallest (points)
+  double leaders_max_abs = 0.0;   ///< the largest worst |error| of `leaders` (%)
+  double leaders_noise = 0.0;     ///< their bound over the smallest (points)
+  bool leaders_extended = false;  ///< a leader lies beyond that bound, within 0.01 of another
 };
 
 /// The situations present in the results, in the report's order.

@@ -30,6 +30,12 @@ std::string grade_text(const std::optional<schema::Grade>& g) {
   return g ? std::string(schema::to_string(*g)) : std::string(kMissing);
 }
 
+/// The round-off a grade change is judged with here: the gate's, for its default tolerance
+/// (a results file carries no per-quantity tolerances).
+double edge_tolerance() {
+  return grading::round_off_tolerance(schema::kDefaultGateTolerance);
+}
+
 /// One quantity of a case present in both files.
 QuantityDrift drift_of(const schema::CaseResult& o, const schema::CaseResult& c,
                        const schema::QuantityResult& oq, const schema::QuantityResult& q) {
@@ -37,6 +43,8 @@ QuantityDrift drift_of(const schema::CaseResult& o, const schema::CaseResult& c,
                   q.quantity,
                   finite(oq.value),
                   finite(q.value),
+                  finite(oq.error_percent),
+                  finite(q.error_percent),
                   {},
                   {},
                   oq.grade,
@@ -96,13 +104,18 @@ std::string marked_change(const QuantityDrift& q) {
 
 bool QuantityDrift::grade_at_edge() const {
   return old_grade != new_grade &&
-         grading::grade_change_is_round_off(old_value, new_value, schema::kDefaultGateTolerance);
+         grading::grade_change_is_round_off({old_value, old_error}, {new_value, new_error},
+                                            edge_tolerance());
 }
 bool QuantityDrift::grade_worse() const {
   return new_grade > old_grade && !grade_at_edge();  // schema::Grade is ordered best first
 }
 bool QuantityDrift::grade_better() const {
   return new_grade < old_grade && !grade_at_edge();
+}
+
+bool RowVerdictChange::better() const {
+  return old_grade && new_grade && *new_grade < *old_grade && !grade_at_edge;
 }
 
 bool RowVerdictChange::worse() const {
@@ -177,8 +190,7 @@ Regression compare_results(const schema::ResultsDocument& baseline,
       continue;
     out.row_changes.push_back(
         {r.id, o.grade, r.grade, o.converging, r.converging, o.diverging, r.diverging,
-         o.grade != r.grade &&
-             grading::grade_change_is_round_off(o, r, schema::kDefaultGateTolerance)});
+         o.grade != r.grade && grading::grade_change_is_round_off(o, r, edge_tolerance())});
   }
   return out;
 }
@@ -206,10 +218,8 @@ std::string regression_markdown(const Regression& r) {
   const MarkdownTable rows = table_of(
       {"Row", "Grade", "Converging", "Diverging (Eq. 47)"}, r.row_changes,
       [&](const RowVerdictChange& c) -> std::vector<std::string> {
-        const bool grade_better =
-            c.old_grade && c.new_grade && *c.new_grade < *c.old_grade && !c.grade_at_edge;
         return {
-            fmt::format("{}`{}`", change_mark(c.worse(), grade_better, c.grade_at_edge), c.row_id),
+            fmt::format("{}`{}`", change_mark(c.worse(), c.better(), c.grade_at_edge), c.row_id),
             arrow(grade_text(c.old_grade), grade_text(c.new_grade)),
             arrow(flag(c.old_converging, "c"), flag(c.new_converging, "c")),
             arrow(flag(c.old_diverging, "yes"), flag(c.new_diverging, "yes"))};
@@ -238,7 +248,7 @@ std::string regression_markdown(const Regression& r) {
            {"grades_worse", n(r.grades_worse)},
            {"grades_better", n(r.grades_better)},
            {"grades_at_edge", n(r.grades_at_edge)},
-           {"edge_tolerance", fmt::format("{:g}", schema::kDefaultGateTolerance)},
+           {"edge_tolerance", fmt::format("{:g}", edge_tolerance())},
            {"status_changes", n(r.status_changes)},
            {"row_changes", n(r.row_changes.size())},
            {"rows_worse", n(std::count_if(r.row_changes.begin(), r.row_changes.end(),

@@ -17,14 +17,16 @@ struct QuantityDrift {
   std::string case_id;
   schema::Quantity quantity = schema::Quantity::sigma_c;
   std::optional<double> old_value, new_value;
+  std::optional<double> old_error, new_error;  ///< percent, when graded
   /// (new - old) / |old|; nullopt when a value is missing or old is 0 (see absolute).
   std::optional<double> relative;
   std::optional<double> absolute;  ///< new - old, when both present
   schema::Grade old_grade = schema::Grade::u, new_grade = schema::Grade::u;
   schema::CaseStatus old_status = schema::CaseStatus::failed;
   schema::CaseStatus new_status = schema::CaseStatus::failed;
-  /// The grade changed while the value moved by round-off (grading::grade_change_is_round_off
-  /// within schema::kDefaultGateTolerance): on a band's edge, neither worse nor better.
+  /// The grade changed while the value moved by round-off across a band's bound
+  /// (grading::grade_change_is_round_off, with the gate's default tolerance): neither worse nor
+  /// better.
   bool grade_at_edge() const;
   bool grade_worse() const;   ///< a worse grade, not at a band's edge
   bool grade_better() const;  ///< a better grade, not at a band's edge
@@ -38,6 +40,7 @@ struct RowVerdictChange {
   std::optional<bool> old_diverging, new_diverging;
   bool grade_at_edge = false;  ///< the grade changed by round-off (see QuantityDrift)
   bool worse() const;          ///< grade worse (not at a band's edge), or converging/diverging lost
+  bool better() const;         ///< grade better, not at a band's edge
 };
 
 /// The comparison of two results files.

@@ -4,14 +4,10 @@
 
 #include "grading/accuracy.hpp"
 #include "reports/render/template_text.hpp"
+#include "reports/tables/section_support.hpp"
 
 namespace cs::reports {
 namespace {
-
-/// A list of examples, and how many it leaves unnamed: "A; B; C; D; and 3 more".
-std::string listed(const std::string& examples, int more) {
-  return more > 0 ? fmt::format("{}; and {} more", examples, more) : examples;
-}
 
 TemplateData claim_data(const ClaimEvidence& c) {
   TemplateData d;
@@ -34,9 +30,11 @@ TemplateData claim_data(const ClaimEvidence& c) {
   d.set("figure", c.figure ? fmt::format("{:.3g}", *c.figure) : std::string());
   d.set("figure2", c.figure2 ? fmt::format("{:.3g}", *c.figure2) : std::string());
   d.set("has_examples", !c.examples.empty());
-  d.set("examples", listed(c.examples, c.examples_more));
+  d.set("examples", c.examples);
+  d.set("examples_more", count_or_false(c.examples_more));
   d.set("has_examples2", !c.examples2.empty());
-  d.set("examples2", listed(c.examples2, c.examples2_more));
+  d.set("examples2", c.examples2);
+  d.set("examples2_more", count_or_false(c.examples2_more));
   d.set("members", c.members);
   d.set("members2", c.members2);
   d.set("part2_run", c.part2_run);
@@ -46,8 +44,10 @@ TemplateData claim_data(const ClaimEvidence& c) {
   d.set("n_exception", std::to_string(c.n_exception));
   d.set("n_exception_holds", std::to_string(c.n_exception_holds));
   d.set("has_exception_examples", !c.exception_examples.empty());
-  d.set("exception_examples", listed(c.exception_examples, c.exception_examples_more));
+  d.set("exception_examples", c.exception_examples);
+  d.set("exception_examples_more", count_or_false(c.exception_examples_more));
   d.set("order_biased", c.n_order_pairs > 0 && c.verdict == ClaimVerdict::not_testable);
+  d.set("noise_unknown", c.n > 0 && c.n_order_pairs == 0);
   // claim 7: the contact phase, and whether it alone makes the claim refined
   d.set("n3", std::to_string(c.n3));
   d.set("n3_hold", std::to_string(c.n3_hold));

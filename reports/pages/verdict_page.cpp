@@ -227,6 +227,7 @@ TemplateData advice(const SituationVerdict& s) {
       largest.erase(0, 1);
     d.set("leaders_max", largest);
     d.set("leaders_noise", format_points(s.leaders_noise));
+    d.set("leaders_extended", s.leaders_extended);
     d.set("others", cells_label(others));
     d.set("others_min", others.empty() ? "" : format_error_precise(lo));
     d.set("others_max", others.empty() ? "" : format_error_precise(hi));

@@ -5,6 +5,7 @@
 
 #include "report_test_support.hpp"
 #include "reports/findings/regression_report.hpp"
+#include "suites/gate.hpp"
 #include "support/tolerance.hpp"
 
 namespace cs::reports {
@@ -120,12 +121,21 @@ TEST(RegressionReport, AGradeFlipByRoundOffIsAtABandsEdge) {
   const std::string md = regression_markdown(edge);
   EXPECT_NE(md.find("| at a band's edge e → g |"), std::string::npos) << md;
   EXPECT_NE(md.find("Case grades: 0 worse, 0 better, 1 at a band's edge"), std::string::npos) << md;
-  const Regression real =
-      compare_results(old_file, schema::results_from_json(real_doc, "real.json"));
+  const auto real_file = schema::results_from_json(real_doc, "real.json");
+  const Regression real = compare_results(old_file, real_file);
   EXPECT_EQ(real.grades_worse, 1);
   EXPECT_EQ(real.grades_at_edge, 0);
   ASSERT_EQ(real.row_changes.size(), 1u);
   EXPECT_TRUE(real.row_changes[0].worse());
+  // The accuracy gate, with its default tolerances, judges the same pairs alike.
+  const suites::Baseline baseline = suites::make_baseline(old_file.cases, {});
+  const auto edge_gate =
+      suites::run_gate(baseline, schema::results_from_json(edge_doc, "edge.json").cases);
+  EXPECT_TRUE(edge_gate.passed());
+  const auto real_gate = suites::run_gate(baseline, real_file.cases);
+  EXPECT_TRUE(std::ranges::any_of(real_gate.failures, [](const auto& f) {
+    return f.check == "grade";
+  })) << suites::format_gate_failures(real_gate);
 }
 
 TEST(RegressionReport, IdenticalFilesHaveNoChanges) {

@@ -305,6 +305,15 @@ TEST(ReportCommand, CompanionReportIsLinkedByItsTitle) {
         std::string::npos)
         << read_text(out / "report.md");
   }
+  // A file saved with CRLF line ends names its build all the same; a "Written by" line that is
+  // not the last names none.
+  write_text(out / "other" / "report.md",
+             "# contact-suite report: ours and X beside Y\r\n\r\n*Written by contact-suite " +
+                 version + ".*\r\n\r\n");
+  EXPECT_EQ(reports::read_companion_report(out, "other/report.md").writer, version);
+  write_text(out / "other" / "report.md",
+             "# contact-suite report: ours and X beside Y\n\n" + written + "\n\nmore text\n");
+  EXPECT_EQ(reports::read_companion_report(out, "other/report.md").writer, "");
   const std::string before = read_text(out / "report.md");
   for (const std::string bad : {"../report.md", "/etc/report.md", "other/missing.md",
                                 "other/report.txt", "other/r(1).md", "other/notes.md"}) {

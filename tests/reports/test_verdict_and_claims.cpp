@@ -359,9 +359,17 @@ TEST(ClaimsLedger, MpcClaimSaysWhyRowsThatFailAChecksCount) {
                      "reproduced |"),
             std::string::npos)
       << md2;
-  EXPECT_NE(md2.find("0 of 1 evidence rows are s or u (this part: not reproduced)"),
+  EXPECT_NE(md2.find("0 of 1 MPC rows are unsatisfactory by the same rule (this part: not "
+                     "reproduced)"),
             std::string::npos)
       << md2;
+  // A patch test that fails an interface check counts against MPC there too, as outside.
+  fx.add(ProblemId::P_p, Quantity::sigma_z_max, Element::Q4, Algorithm::MPC, ContactKind::ns, 1e-11)
+      .credible = false;
+  const ClaimEvidence unsound_patch = fx.claim("mpc_unsatisfactory");
+  EXPECT_EQ(unsound_patch.n2, 2);
+  EXPECT_EQ(unsound_patch.n2_hold, 1);
+  EXPECT_EQ(unsound_patch.n_excluded, 1);
 }
 
 // Requirement: a value read between two nodes whose F error is within half a node spacing (the
@@ -530,6 +538,25 @@ TEST(ClaimsLedger, MpcFastestIsRefinedWhenOnlyItsContactPhaseIsFaster) {
   bench.rows[0].time_stddev_ms = 0.1;
   const auto repeated = study_claims(battery().index, battery().rows, battery().singular, &bench);
   EXPECT_EQ(claim_in(repeated, "mpc_fastest").n_hold, 1);
+}
+
+// Requirement: without a model where AL makes PM's computation, the timing noise is unknown, so
+// "IMC fastest" is not testable from the times, and the ledger says why (it had judged single
+// runs against a noise of zero).
+TEST(ClaimsLedger, MpcFastestIsNotTestableWithoutTheTimingNoise) {
+  using enum BenchMethod;
+  BenchResults bench;
+  bench.rows.push_back(
+      bench_row(ProblemId::H_p, MeshLevel::F, Element::Q4, ContactKind::ss, PM, 100.0, 5));
+  bench.rows.push_back(
+      bench_row(ProblemId::H_p, MeshLevel::F, Element::Q4, ContactKind::ss, MPC, 90.0, 1));
+  const auto claims = study_claims(battery().index, battery().rows, battery().singular, &bench);
+  const ClaimEvidence& c = claim_in(claims, "mpc_fastest");
+  EXPECT_EQ(c.n, 1);
+  EXPECT_EQ(c.verdict, ClaimVerdict::not_testable);
+  EXPECT_NE(claims_ledger(claims).find("so the timing noise that two times must differ by is "
+                                       "unknown"),
+            std::string::npos);
 }
 
 // Requirement: "IMC fastest" is measured on the benchmarks, which time each option alone: per
@@ -735,6 +762,39 @@ TEST(VerdictPage, UntiedOptionsOfAGradeAreNotAnyOf) {
   EXPECT_NEAR(again[0].leaders_noise, 0.09, 1e-12);
 }
 
+// Requirement: no cut between the leaders and the others falls within the study's 0.01-point
+// resolution (the interference fit: ss Q8 +0.0392 % leads by the most accurate cell's change,
+// 0.0217 + 0.0179; ns Q8 +0.0443 %, 0.005 points from it and printed alike, leads too); a cell
+// beyond that, -0.111 %, does not.
+TEST(VerdictPage, NoLeaderIsCutWithinTheStudysResolution) {
+  const auto cell = [](Algorithm a, schema::ContactKind k, double m, double f) {
+    RowFacts r = rounded_punch_row(a, {});
+    r.option.contact = k;
+    r.errors = {m, m, f};
+    return r;
+  };
+  using K = schema::ContactKind;
+  const std::vector<RowFacts> rows{
+      cell(Algorithm::AL, K::ss, 0.0396, 0.0217), cell(Algorithm::LMP, K::ss, 0.0416, 0.0392),
+      cell(Algorithm::LMP, K::ns, 0.0568, 0.0443), cell(Algorithm::AL, K::ns, -0.138, -0.111)};
+  const auto situations = situation_verdicts(battery().index, rows, kNoSingularRows);
+  ASSERT_EQ(situations.size(), 1U);
+  const SituationVerdict& s = situations[0];
+  ASSERT_EQ(s.best.size(), 4U);
+  EXPECT_NEAR(s.leaders_noise, 0.0179, 1e-12);
+  ASSERT_EQ(s.leaders.size(), 3U);
+  EXPECT_TRUE(s.leaders_extended);
+  EXPECT_NEAR(s.leaders_max_abs, 0.0443, 1e-12);
+  EXPECT_EQ(std::ranges::count_if(s.leaders,
+                                  [](const OptionCell* c) {
+                                    return c->contact == K::ns &&
+                                           c->family == OptionFamily::penalty;
+                                  }),
+            0);
+  EXPECT_NE(verdict_page(battery().index, situations).find("or within 0.01 points of another"),
+            std::string::npos);
+}
+
 // Requirement: a tie whose tolerance (what one refinement changes) is wider than the grade's
 // band says that the meshes resolve neither a ranking nor the grade; a narrower one does not.
 TEST(VerdictPage, ATieWiderThanItsGradeSaysSo) {
@@ -793,6 +853,12 @@ TEST(VerdictPage, AReadWhoseResolutionLeavesItsGradeOpenCountsAtItsBestReading) 
         << verdict_cell(c);
     EXPECT_EQ(read.accuracy_evidence(), k.rows == 2 && read.evidence()) << k.f_error;
   }
+  // An option whose only row is an open read has nothing graded: no cell, no situation.
+  RowFacts alone = rounded_punch_row(Algorithm::LMP, {});
+  alone.errors = {8.0, 4.0, 10.49};
+  alone.read_resolution_on_f = 4.42;
+  const std::vector<RowFacts> only{alone};
+  EXPECT_TRUE(situation_verdicts(battery().index, only, kNoSingularRows).empty());
 }
 
 // Requirement: an option whose F case failed has no F value, but its cell says so, with no
