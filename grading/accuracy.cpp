@@ -39,6 +39,16 @@ schema::Grade best_reading_grade(double error_percent, double resolution_percent
                                                   : std::max(std::abs(error_percent) - r, 0.0));
 }
 
+std::optional<bool> read_at_least(double error_percent, double resolution_percent,
+                                  schema::Grade grade) {
+  const double r = resolution_percent > 0.0 ? resolution_percent * (1.0 + 1e-9) : 0.0;
+  if (!schema::is_worse(grade_of_error(std::abs(error_percent) + r), grade))
+    return true;
+  if (schema::is_worse(best_reading_grade(error_percent, resolution_percent), grade))
+    return false;
+  return std::nullopt;
+}
+
 double grade_band_width(schema::Grade grade) {
   switch (grade) {
     case schema::Grade::e:

@@ -3,6 +3,8 @@
 // the study's grade of it (Eq. 46); and when two computed values are the same at the study's
 // resolution. The grades themselves are vocabulary (schema/grade.hpp).
 
+#include <optional>
+
 #include "schema/grade.hpp"
 
 namespace cs::grading {
@@ -26,6 +28,13 @@ bool read_settles_grade(double error_percent, double resolution_percent);
 /// resolution r allows. CM_p AL ss Q8 c/a, +8.28 +- 2.21 %, is at best 6.07 %: s, whatever the
 /// other quantities of its option. r <= 0: the grade of e.
 schema::Grade best_reading_grade(double error_percent, double resolution_percent);
+
+/// Whether a read with error e and resolution r is graded `grade` or better at every reading
+/// in e +- r (true), at none (false: its best reading, best_reading_grade, is worse), or
+/// depends on where it lies (nullopt). r <= 0, a value read at a point: whether e is.
+/// H_a Q4 a_FE at +6.25 +- 6.25 % is e at best and s at worst: open for g.
+std::optional<bool> read_at_least(double error_percent, double resolution_percent,
+                                  schema::Grade grade);
 
 /// How wide a grade's band of |e| is, in points: e 1 (0 to 1 %), g 4, s 5; u unbounded (inf).
 double grade_band_width(schema::Grade grade);

@@ -230,26 +230,27 @@ ClaimEvidence trend_claim(const std::vector<RowFacts>& rows, const char* key, Se
   ClaimEvidence c{.key = key};
   const auto index = by_key(rows);
   for (const auto& f : rows) {
-    if (exception(f) && f.accuracy_evidence()) {
+    const std::optional<bool> good = f.at_least(Grade::g);
+    if (exception(f) && good) {
       ++c.n_exception;
-      if (good_or_better(f))
+      if (*good)
         add_example(c.exception_examples, c.exception_examples_more, row_name(f));
       else
         ++c.n_exception_holds;
     }
     if (!select(f))
       continue;
-    if (!f.accuracy_evidence()) {
+    if (!good) {
       ++c.n_excluded;
       continue;
     }
     ++c.n;
-    if (good_or_better(f))
+    if (*good)
       ++c.n_hold;
     else
       add_example(c, row_name(f));
     const auto twin = index.find(twin_of(f));
-    if (twin == index.end() || !twin->second->accuracy_evidence())
+    if (!f.accuracy_evidence() || twin == index.end() || !twin->second->accuracy_evidence())
       continue;
     const double e_twin = *twin->second->errors[2];
     if (at_resolution(*f.errors[2]) && at_resolution(e_twin)) {
@@ -314,11 +315,12 @@ ClaimEvidence mpc_unsatisfactory(const std::vector<RowFacts>& rows) {
     if (f.option.algorithm != Algorithm::MPC)
       continue;
     const bool unsound = !f.fine_converged || !f.credible;
-    if (!unsound && !f.accuracy_evidence()) {
+    const std::optional<bool> good = f.at_least(Grade::g);
+    if (!unsound && !good) {
       ++c.n_excluded;
       continue;
     }
-    const bool unsatisfactory = unsound || f.grade == Grade::u || f.grade == Grade::s;
+    const bool unsatisfactory = unsound || !*good;
     if (patch_test(f)) {  // the second part, by the same rule
       ++c.n2;
       c.n2_hold += unsatisfactory ? 1 : 0;
@@ -647,18 +649,19 @@ ClaimEvidence closing(const std::vector<RowFacts>& rows) {
         family_of(f.option.algorithm) == OptionFamily::multiplier && !mismatched(f);
     if (!penalty_ss && !multiplier_aligned)
       continue;
-    if (!f.accuracy_evidence()) {
+    const std::optional<bool> good = f.at_least(Grade::g);
+    if (!good) {
       ++c.n_excluded;
       continue;
     }
     (penalty_ss ? run : run2).insert(f.option.algorithm);
     if (penalty_ss) {
       ++c.n;
-      c.n_hold += good_or_better(f) ? 1 : 0;
+      c.n_hold += *good ? 1 : 0;
     } else {
       ++c.n2;
-      c.n2_hold += good_or_better(f) ? 1 : 0;
-      if (!good_or_better(f))
+      c.n2_hold += *good ? 1 : 0;
+      if (!*good)
         add_example(c, row_name(f));
     }
   }

@@ -141,6 +141,12 @@ bool RowFacts::read_leaves_grade_open() const {
   return errors[2] && !grading::read_settles_grade(*errors[2], read_resolution_on_f);
 }
 
+std::optional<bool> RowFacts::at_least(schema::Grade grade) const {
+  if (!evidence() || !errors[2])
+    return std::nullopt;
+  return grading::read_at_least(*errors[2], read_resolution_on_f, grade);
+}
+
 bool on_common_basis(const schema::CaseSpec& spec) {
   return spec.recovery == schema::Recovery::spr && spec.overrides.empty();
 }

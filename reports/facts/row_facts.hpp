@@ -69,6 +69,12 @@ struct RowFacts {
   /// reads out; the verdict page lets one bound its cell's grade at its best reading
   /// (grading::best_reading_grade), which no reading of it beats.
   bool accuracy_evidence() const { return evidence() && !read_leaves_grade_open(); }
+
+  /// For a claim of a grade or better ("g or better"): evidence() and its F error is `grade` or
+  /// better at every reading (true), at none (false), within its resolution
+  /// (grading::read_at_least); nullopt when not evidence, or the read leaves it open. One rule
+  /// with the verdict page: a read counts where every reading of it says the same.
+  std::optional<bool> at_least(schema::Grade grade) const;
 };
 
 /// The flat punch's divergence verdicts of one baseline row.

@@ -89,6 +89,18 @@ TEST(Accuracy, AReadsBestReadingIsItsErrorLessItsResolution) {
   EXPECT_EQ(best_reading_grade(NAN, 1.0), Grade::u);
 }
 
+// Requirement: a read is at least a grade when its worst reading is, not at all when its best
+// reading is worse, and open otherwise; a point read is graded as it reads.
+TEST(Accuracy, AReadIsAtLeastAGradeOnlyWhereEveryReadingAgrees) {
+  EXPECT_EQ(read_at_least(2.0, 1.0, Grade::g), true);     // 1 % to 3 %
+  EXPECT_EQ(read_at_least(-12.0, 4.0, Grade::g), false);  // 8 % at best: s
+  EXPECT_EQ(read_at_least(6.25, 6.25, Grade::g), std::nullopt);
+  EXPECT_EQ(read_at_least(4.5, 0.4, Grade::g), true);          // 4.9 % at worst
+  EXPECT_EQ(read_at_least(4.5, 0.6, Grade::g), std::nullopt);  // 5.1 % at worst
+  EXPECT_EQ(read_at_least(0.5, 0.0, Grade::e), true);
+  EXPECT_EQ(read_at_least(1.5, 0.0, Grade::e), false);
+}
+
 // Requirement: two values coincide at the study's resolution, 0.01 % of the larger magnitude,
 // pinned at the threshold on both sides, whatever the sign and the scale.
 TEST(Accuracy, ValuesCoincideWithinAHundredthOfAPercent) {

@@ -397,6 +397,31 @@ TEST(ClaimsLedger, AReadWithinItsResolutionIsNotEvidenceOfInaccuracy) {
   EXPECT_LT(*ss_ns.figure, 0.01);  // not 12.5 points from -6.25 vs +6.25
 }
 
+// Requirement: a claim of "g or better" counts a read between nodes where every reading of it
+// says the same (one rule with the verdict page): +12 +- 4 % is below g at its best reading and
+// refutes the claim; +2 +- 1 % is g at every reading and supports it; +6.25 +- 6.25 % may be e
+// or s and is left out. Claim 6 counts the first as unsatisfactory.
+TEST(ClaimsLedger, AReadCountsForAGradeWhereEveryReadingAgrees) {
+  FixtureRows fx;
+  const auto read = [&](ContactKind k, Algorithm a, double e, double resolution) {
+    fx.add(ProblemId::H_p, Quantity::contact_half_width, Element::Q4, a, k, e)
+        .read_resolution_on_f = resolution;
+  };
+  read(ContactKind::ss, Algorithm::LMP, 12.0, 4.0);
+  read(ContactKind::ns, Algorithm::LMP, 2.0, 1.0);
+  read(ContactKind::mortar, Algorithm::LMP, 6.25, 6.25);
+  read(ContactKind::ss, Algorithm::MPC, 12.0, 4.0);
+  read(ContactKind::ns, Algorithm::MPC, 6.25, 6.25);
+  const ClaimEvidence trend = fx.claim("trend_multiplier");
+  EXPECT_EQ(trend.n, 2);
+  EXPECT_EQ(trend.n_hold, 1);
+  EXPECT_EQ(trend.n_excluded, 1);
+  const ClaimEvidence mpc = fx.claim("mpc_unsatisfactory");
+  EXPECT_EQ(mpc.n, 1);
+  EXPECT_EQ(mpc.n_hold, 1);
+  EXPECT_EQ(mpc.n_excluded, 1);
+}
+
 // Requirement: claim 3 judges LMP/PLM and IMC apart, the verdict the worse part's; IMC pairs
 // exact on both (a patch test, where any tie is exact) show nothing and are left out, so IMC
 // is not testable from them, and an IMC pair that differs in grade makes the claim fail.
