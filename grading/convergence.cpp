@@ -56,6 +56,11 @@ bool beyond(double change, double floor) {
   return change > floor * (1.0 + 1e-9);
 }
 
+/// A change below its floor by more than round-off.
+bool below(double change, double floor) {
+  return change < floor * (1.0 - 1e-9);
+}
+
 }  // namespace
 
 ConvergenceAssessment assess_convergence(double e_c, double e_m, double e_f,
@@ -92,13 +97,16 @@ ConvergenceAssessment assess_convergence(double e_c, double e_m, double e_f,
   }
   if (!all_finite(e_c, e_m, e_f))
     return out;  // not_converging
+  // A change equal to its floor up to round-off (a read stepping exactly one node per halving)
+  // is neither below it nor beyond it: such a row neither settles nor converges, whichever way
+  // the last digits fall.
   const auto [f1, f2] = out.pair_floors;
-  if (std::abs(e_m - e_c) < f1 && std::abs(e_f - e_m) < f2) {
+  if (below(std::abs(e_m - e_c), f1) && below(std::abs(e_f - e_m), f2)) {
     out.trend = Trend::settled;
     return out;
   }
   const double c = std::abs(e_c), m = std::abs(e_m), f = std::abs(e_f);
-  if (m <= c + f1 && f <= m + f2 && f < c - f1)
+  if (m <= c + f1 && f <= m + f2 && beyond(c - f, f1))
     out.trend = Trend::converging;
   return out;
 }

@@ -57,7 +57,7 @@ std::vector<RecoveryPair> graded_pairs(const ResultsIndex& index) {
 std::string error_cell(const RowVerdict& row, schema::MeshLevel mesh) {
   const std::string where =
       mesh == kFinestMesh ? std::string() : fmt::format(", on {}", schema::to_string(mesh));
-  return fmt::format("{} ({}{})", format_percent(*row.errors[mesh_index(mesh)]),
+  return fmt::format("{} ({}{})", format_error_resolved(*row.errors[mesh_index(mesh)]),
                      schema::to_string(*row.grade), where);
 }
 
@@ -96,7 +96,7 @@ std::string pairs_table(const ResultsIndex& index, const std::vector<RecoveryPai
         Option{p.spr->spec.algorithm, p.spr->spec.contact}.label(),
         error_cell(*p.spr, p.mesh) + evidence_marks(facts_of_row(index, *p.spr)),
         error_cell(*p.extrapolated, p.mesh) + evidence_marks(facts_of_row(index, *p.extrapolated)),
-        p.pressure_error ? format_percent(*p.pressure_error) : kMissing,
+        p.pressure_error ? format_error_resolved(*p.pressure_error) : kMissing,
         converging_text(p.spr->converging) + " / " + converging_text(p.extrapolated->converging)};
   };
   constexpr Align l = Align::left, c = Align::center, r = Align::right;

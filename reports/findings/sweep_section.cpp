@@ -240,12 +240,12 @@ void set_study_al(TemplateData& d, const std::vector<ParameterSeries>& series,
   d.set("printed", match.value->printed);
   d.set("exact", format_value(*exact));
   d.set("study_exact", match.value->exact_printed);
-  d.set("target", format_percent(target));
+  d.set("target", format_error_resolved(target));
   d.set("study_al", template_list(ours, [&](const ParameterSeries* s) {
           TemplateData r("crossings",
                          text_or_false(fmt::format("{}", fmt::join(crossings(*s, target), ", "))));
-          r.set("lo", format_percent(s->error_range()->first));
-          r.set("hi", format_percent(s->error_range()->second));
+          r.set("lo", format_error_resolved(s->error_range()->first));
+          r.set("hi", format_error_resolved(s->error_range()->second));
           return r;
         }));
 }
@@ -389,8 +389,8 @@ TemplateData pinball(const std::vector<ParameterSeries>& series) {
     std::vector<std::string> cells;
     for (const auto& p : s->points) {
       if (p.converged() && p.error)
-        cells.push_back(fmt::format("{}{} at {}", format_percent(*p.error), credible(p) ? "" : " ✗",
-                                    format_parameter(p.parameter)));
+        cells.push_back(fmt::format("{}{} at {}", format_error_resolved(*p.error),
+                                    credible(p) ? "" : " ✗", format_parameter(p.parameter)));
       else
         failed.push_back(p.parameter);
     }

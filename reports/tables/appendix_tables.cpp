@@ -8,6 +8,8 @@
 #include <fmt/ranges.h>
 
 #include "grading/accuracy.hpp"
+#include "reports/facts/row_facts.hpp"
+#include "reports/tables/grade_tables.hpp"
 #include "reports/tables/section_support.hpp"
 
 namespace cs::reports {
@@ -20,7 +22,8 @@ using schema::RowVerdict;
 const std::string kFailed(schema::to_string(schema::CaseStatus::failed));
 
 /// Our value on one mesh: "1.2741 (+0.07 %)", "2.1318" (singular), "failed", "—"; + "!" when
-/// the contact iterations did not converge.
+/// the contact iterations did not converge; on F, the row's evidence marks (✗ an interface check
+/// failed, ‡ the luck of one mesh).
 std::string our_value_cell(const ResultsIndex& index, const RowVerdict* row,
                            schema::MeshLevel mesh) {
   if (row == nullptr)
@@ -29,7 +32,9 @@ std::string our_value_cell(const ResultsIndex& index, const RowVerdict* row,
   const std::size_t m = mesh_index(mesh);
   if (state == MeshState::failed)
     return kFailed;
-  const std::string text = format_value_and_error(row->values[m], row->errors[m]);
+  std::string text = format_value_and_error(row->values[m], row->errors[m]);
+  if (mesh == schema::MeshLevel::F && row->errors[m])
+    text += evidence_marks(facts_of_row(index, *row));
   return state == MeshState::not_converged && row->values[m] ? text + "!" : text;
 }
 
@@ -153,7 +158,7 @@ TemplateData group_data(const ResultsIndex& index, const schema::StudyReference&
   d.set("singular", e.singular);
   d.set("exact", e.exact ? format_value(*e.exact) : std::string(kMissing));
   d.set("printed", text_or_false(e.printed ? study.printed_exact(t.problem, t.quantity) : ""));
-  d.set("shift", e.printed_shift ? format_percent(*e.printed_shift) : "");
+  d.set("shift", e.printed_shift ? format_error_resolved(*e.printed_shift) : "");
   d.set("convention", text_or_false(e.convention ? format_value(*e.convention) : ""));
   d.set("convention_differs",
         e.printed && e.convention &&
@@ -214,7 +219,9 @@ std::string appendix_section(const ResultsIndex& index, const schema::StudyRefer
     group.set("tables", list);
     groups.push_back(group);
   }
-  return tidy_markdown(render_template(templates::appendix_tables, TemplateData("groups", groups)));
+  TemplateData d("groups", groups);
+  d.set("marks_legend", evidence_marks_legend());
+  return tidy_markdown(render_template(templates::appendix_tables, d));
 }
 
 }  // namespace cs::reports

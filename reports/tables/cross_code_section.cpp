@@ -132,7 +132,7 @@ std::string ansys_cell(const ResultsIndex& index, const schema::StudyReference& 
   const auto exact = index.exact_of(row);
   return exact && *exact != 0.0
              ? fmt::format("{} ({})", value->printed,
-                           format_percent(grading::error_percent(value->value, *exact)))
+                           format_error_resolved(grading::error_percent(value->value, *exact)))
              : value->printed;
 }
 

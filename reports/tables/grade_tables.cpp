@@ -131,8 +131,8 @@ void count(AnsysComparison& c, bool evidence, schema::Grade ours, schema::Grade 
   c.better += ours < theirs ? 1 : 0;
   if (ours > theirs) {
     ++c.worse;
-    c.worse_cells.push_back(
-        fmt::format("{}: {}", where, error ? format_percent(*error) : std::string(kMissing)));
+    c.worse_cells.push_back(fmt::format(
+        "{}: {}", where, error ? format_error_resolved(*error) : std::string(kMissing)));
   }
 }
 

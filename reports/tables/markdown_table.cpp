@@ -5,6 +5,18 @@
 #include <fmt/format.h>
 
 namespace cs::reports {
+namespace {
+
+/// A signed percentage: "+0.07 %", "−12.3 %" (2 significant decimals below 10 %, 1 above).
+std::string format_percent(double percent) {
+  const double magnitude = std::abs(percent);
+  const std::string sign = percent < 0 ? "−" : "+";
+  if (magnitude >= 10)
+    return fmt::format("{}{:.1f} %", sign, magnitude);
+  return fmt::format("{}{:.2f} %", sign, magnitude);
+}
+
+}  // namespace
 
 std::string escape_cell(const std::string& text) {
   std::string out;
@@ -107,19 +119,11 @@ std::string format_value_and_error(const std::optional<double>& value,
   if (!value)
     return kMissing;
   const std::string text = format_value(*value);
-  return error_percent ? fmt::format("{} ({})", text, format_percent(*error_percent)) : text;
+  return error_percent ? fmt::format("{} ({})", text, format_error_resolved(*error_percent)) : text;
 }
 
 std::string join_meshes(const std::array<std::string, 3>& cells) {
   return fmt::format("{} / {} / {}", cells[0], cells[1], cells[2]);
-}
-
-std::string format_percent(double percent) {
-  const double magnitude = std::abs(percent);
-  const std::string sign = percent < 0 ? "−" : "+";
-  if (magnitude >= 10)
-    return fmt::format("{}{:.1f} %", sign, magnitude);
-  return fmt::format("{}{:.2f} %", sign, magnitude);
 }
 
 std::string format_error_resolved(double percent) {

@@ -54,13 +54,12 @@ std::string tidy_markdown(const std::string& markdown);
 
 /// A normalized stress as the study prints it: 4 decimals ("1.2732").
 std::string format_value(double v);
-/// A signed percentage: "+0.07 %", "−12.3 %" (2 significant decimals below 10 %, 1 above).
-std::string format_percent(double percent);
 /// A time in milliseconds to about three significant digits, without exponent: "1234", "56.7",
 /// "8.90", "0.123".
 std::string format_milliseconds(double ms);
-/// format_percent, but below 0.01 % in magnitude "4.1e-13 %", so that an exact result and a
-/// small error are told apart.
+/// A signed percentage: "+0.07 %", "−12.3 %" (2 significant decimals below 10 %, 1 above);
+/// below 0.01 % in magnitude "4.1e-13 %", so that an exact result and a small error are told
+/// apart (never "−0.00 %").
 std::string format_error_resolved(double percent);
 
 /// format_value, or the em dash for nullopt.

@@ -44,7 +44,7 @@ std::string count_cell(const schema::CaseResult* ours, std::optional<int> study,
   ++differing.count;
   const double percent = 100.0 * (ours->n_elements - *study) / *study;
   differing.largest_percent = std::max(differing.largest_percent, std::abs(percent));
-  return fmt::format("{} ({})", text, format_percent(percent));
+  return fmt::format("{} ({})", text, format_error_resolved(percent));
 }
 
 }  // namespace

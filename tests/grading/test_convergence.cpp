@@ -97,6 +97,18 @@ TEST(AssessConvergence, AValueReadBetweenNodesSettlesWithinHalfANodeSpacing) {
   EXPECT_TRUE(Near(*mpc.order, 0.5 * std::log2(2.16 / 0.25), {1e-12, 0}));  // machine precision
 }
 
+// Requirement: a read that steps exactly one node per halving (its fall equal to its floor, up
+// to round-off) gets one verdict whichever way the last digits fall: it neither settles nor
+// converges (CM_p AL ss c/a printed "not converging", a like row "converging", on 3e-9).
+TEST(AssessConvergence, AFallEqualToItsFloorIsDecidedByNoRoundOff) {
+  const double r = node_read_resolution_percent(0.125, 0.7071);  // 17.68 points on C
+  for (const double last_digits : {-1e-12, 0.0, 1e-12}) {
+    const double e_f = 30.0 - r * (1.0 + last_digits);
+    EXPECT_EQ(assess_convergence(30.0, 30.0 - r / 2, e_f, r).trend, Trend::not_converging)
+        << last_digits;
+  }
+}
+
 TEST(NodeReadResolution, IsZeroWithoutAPositiveFiniteSpacingAndExactValue) {
   EXPECT_TRUE(Near(node_read_resolution_percent(0.5, -2.0), 12.5, {1e-15, 0}));  // |exact|
   EXPECT_EQ(node_read_resolution_percent(0.0, 1.0), 0.0);
