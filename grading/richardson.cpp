@@ -66,9 +66,26 @@ TrustedEstimate trusted_estimate(const schema::RowVerdict& row) {
   if (unresolved(e_c, e_m))
     return {nullptr, fmt::format("pre-asymptotic ({:.3g} % on C or M: not resolved)",
                                  std::max(std::abs(e_c), std::abs(e_m)))};
+  if (!row.errors[1] || !row.errors[2] ||
+      !(std::abs(*row.errors[2] - *row.errors[1]) > kErrorResolutionPercent))
+    return {nullptr, "M to F within the study's resolution: the order would be noise"};
   if (*e.observed_order < kMinimumRichardsonOrder)
     return {nullptr, fmt::format("order {:.2f}: the differences barely shrink", *e.observed_order)};
+  if (const double most = maximum_richardson_order(row.spec.element); *e.observed_order > most)
+    return {nullptr, fmt::format("order {:.2f}: above {:g}, more than the element's recovered "
+                                 "stresses reach: not the asymptotic range",
+                                 *e.observed_order, most)};
   return {&e, {}};
+}
+
+double maximum_richardson_order(schema::Element element) {
+  switch (element) {
+    case schema::Element::Q4:
+      return 3.0;
+    case schema::Element::Q8:
+      return 4.0;
+  }
+  return 3.0;
 }
 
 }  // namespace cs::grading

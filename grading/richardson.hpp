@@ -23,6 +23,12 @@ schema::ErrorEstimate error_estimate(double f_c, double f_m, double f_f);
 /// limit lies (f_F - f_M) / (2^p - 1) beyond F, more than 2.4 times the last change below 1/2.
 inline constexpr double kMinimumRichardsonOrder = 0.5;
 
+/// The largest observed order an extrapolation is made from, per element: patch-recovered
+/// stresses converge at most one order above the shape functions' degree (O(h^2) on Q4, O(h^3)
+/// on Q8), so an order more than one beyond that (CM_p Q8 LMP ns, 7.0) is a coincidence of the
+/// differences, not the asymptotic range.
+double maximum_richardson_order(schema::Element element);
+
 /// A row's estimate, or why there is none to use.
 struct TrustedEstimate {
   const schema::ErrorEstimate* estimate = nullptr;  ///< nullptr: none to use
@@ -31,11 +37,13 @@ struct TrustedEstimate {
 
 /// The row's estimate when it is asymptotic (differences of one sign that shrink), its errors
 /// are not all within the study's resolution (a patch test: nothing to extrapolate), its errors
-/// move by more than that resolution on some pair (a settled bias: nothing to extrapolate), its
+/// move by more than that resolution on some pair (a settled bias: nothing to extrapolate) and
+/// from M to F (a last change at the resolution makes the order noise), its
 /// quantity is read at a point (one read between two nodes moves by whole nodes: no power of h
 /// describes it), C and M resolve it (errors below kUnresolvedErrorPercent: MPC's +279/+79/+8 %
 /// extrapolates to -31 %) and its order is at least kMinimumRichardsonOrder (S(1) AL ns at extent
-/// 8, +0.35/+0.11/-0.13 %, order 0.035, extrapolates to -9.8 %). The orders of the errors
+/// 8, +0.35/+0.11/-0.13 %, order 0.035, extrapolates to -9.8 %) and at most
+/// maximum_richardson_order. The orders of the errors
 /// (observed_order) are not asked for: they assume the values converge to the exact value, and a
 /// limit that differs from it (the finite block of the extent study) is what an estimate is for.
 /// Otherwise the note of the rule that refused it.

@@ -88,7 +88,21 @@ TEST(TrustedEstimate, EachRuleAtItsThreshold) {
       trusted_estimate(row_with_errors({0.7097934, 0.7097994, 0.7097999}));
   EXPECT_EQ(settled.estimate, nullptr);
   EXPECT_EQ(settled.note, "settled within the study's resolution: nothing to extrapolate");
-  EXPECT_NE(trusted_estimate(row_with_errors({0.76, 0.73, 0.72})).estimate, nullptr);
+  EXPECT_NE(trusted_estimate(row_with_errors({0.76, 0.73, 0.71})).estimate, nullptr);
+  // A last change within the resolution (0.005 points) makes the order noise: refused, even
+  // though C -> M moves 0.03 points.
+  const TrustedEstimate last_at_noise = trusted_estimate(row_with_errors({0.76, 0.73, 0.725}));
+  EXPECT_EQ(last_at_noise.estimate, nullptr);
+  EXPECT_EQ(last_at_noise.note, "M to F within the study's resolution: the order would be noise");
+  // An order beyond the recovered stresses' reach plus one: 3.5 is refused on Q4 (at most 3),
+  // kept on Q8 (at most 4).
+  schema::RowVerdict steep = of_order(3.5);
+  EXPECT_EQ(trusted_estimate(steep).estimate, nullptr);
+  EXPECT_EQ(trusted_estimate(steep).note.rfind("order 3.50: above 3,", 0), 0u)
+      << trusted_estimate(steep).note;
+  steep.spec.element = schema::Element::Q8;
+  EXPECT_NE(trusted_estimate(steep).estimate, nullptr);
+  EXPECT_NE(trusted_estimate(of_order(2.9)).estimate, nullptr);
 }
 
 }  // namespace
