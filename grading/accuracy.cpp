@@ -39,10 +39,14 @@ schema::Grade best_reading_grade(double error_percent, double resolution_percent
                                                   : std::max(std::abs(error_percent) - r, 0.0));
 }
 
+schema::Grade worst_reading_grade(double error_percent, double resolution_percent) {
+  const double r = resolution_percent > 0.0 ? resolution_percent * (1.0 + 1e-9) : 0.0;
+  return grade_of_error(std::abs(error_percent) + r);
+}
+
 std::optional<bool> read_at_least(double error_percent, double resolution_percent,
                                   schema::Grade grade) {
-  const double r = resolution_percent > 0.0 ? resolution_percent * (1.0 + 1e-9) : 0.0;
-  if (!schema::is_worse(grade_of_error(std::abs(error_percent) + r), grade))
+  if (!schema::is_worse(worst_reading_grade(error_percent, resolution_percent), grade))
     return true;
   if (schema::is_worse(best_reading_grade(error_percent, resolution_percent), grade))
     return false;

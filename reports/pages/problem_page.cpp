@@ -6,6 +6,7 @@
 
 #include "grading/accuracy.hpp"
 #include "reports/render/template_text.hpp"
+#include "reports/tables/grade_tables.hpp"
 #include "reports/tables/markdown_table.hpp"
 
 namespace cs::reports {
@@ -64,6 +65,12 @@ std::string option_label(const RowFacts& f, const std::vector<const RowFacts*>& 
   return f.option.label();
 }
 
+/// The grade on F, with the grades an open read may have (open_read_grades).
+std::string grade_cell(const RowFacts& f) {
+  return f.grade ? std::string(schema::to_string(*f.grade)) + open_read_grades(f)
+                 : std::string(kMissing);
+}
+
 TemplateData row_data(const RowFacts& f, const std::string& label, bool has_vf) {
   TemplateData d;
   d.set("option", label);
@@ -73,7 +80,7 @@ TemplateData row_data(const RowFacts& f, const std::string& label, bool has_vf) 
   d.set("has_vf", has_vf);
   d.set("vf", f.row->refinement ? mesh_cell(f.row->refinement->value, f.row->refinement->error)
                                 : std::string(kMissing));
-  d.set("grade", f.grade ? std::string(schema::to_string(*f.grade)) : std::string(kMissing));
+  d.set("grade", grade_cell(f));
   d.set("study_c", f.study_c ? "c" : "");
   d.set("trend", trend_word(f));
   d.set("order", f.order ? fmt::format("{:.2f}", *f.order) : f.order_note);

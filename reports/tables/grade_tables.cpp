@@ -280,9 +280,20 @@ std::string evidence_marks(const RowFacts& f) {
   return std::string(f.credible ? "" : " ✗") + (f.luck ? " ‡" : "");
 }
 
+std::string open_read_grades(const RowFacts& f) {
+  if (!f.read_leaves_grade_open())
+    return {};
+  const double e = *f.errors[2], r = f.read_resolution_on_f;
+  return fmt::format(" ({}–{})", schema::to_string(grading::best_reading_grade(e, r)),
+                     schema::to_string(grading::worst_reading_grade(e, r)));
+}
+
 std::string format_marked_grade_cell(const ResultsIndex& index, const schema::RowVerdict* row) {
   const std::string text = format_grade_cell(index, row);
-  return row != nullptr && row->errors[2] ? text + evidence_marks(facts_of_row(index, *row)) : text;
+  if (row == nullptr || !row->errors[2])
+    return text;
+  const RowFacts f = facts_of_row(index, *row);
+  return text + open_read_grades(f) + evidence_marks(f);
 }
 
 std::string evidence_marks_legend() {

@@ -72,11 +72,15 @@ std::optional<GradeTableFacts> build_grade_table(const ResultsIndex& index,
 /// ! some mesh did not converge (values are the last iterate).
 std::string format_grade_cell(const ResultsIndex& index, const schema::RowVerdict* row);
 
+/// " (e–u)": the grades of the best and worst readings of a value read between two nodes whose
+/// resolution leaves its grade open (RowFacts::read_leaves_grade_open); "" otherwise.
+std::string open_read_grades(const RowFacts& f);
+
 /// The marks of a row that is not evidence, wherever its grade is printed: " ✗" when its F case
 /// fails an interface check (not credible), " ‡" when its grade is the luck of one mesh.
 std::string evidence_marks(const RowFacts& f);
 
-/// format_grade_cell with the row's evidence_marks.
+/// format_grade_cell with the row's open_read_grades and evidence_marks.
 std::string format_marked_grade_cell(const ResultsIndex& index, const schema::RowVerdict* row);
 
 /// The sentence that explains evidence_marks (templates/evidence_marks.mustache), for the
