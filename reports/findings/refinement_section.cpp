@@ -207,17 +207,21 @@ std::string csv_line(const ResultsIndex& index, const RowVerdict& row) {
       csv_number(e.observed_order), csv_number(e.richardson), csv_number(limit_error),
       csv_number(e.gci_percent), bounded ? (*bounded ? "1" : "0") : "", csv_number(exact),
       csv_field(variant_of(row.spec)));
+  // Whether the row is evidence on F (converged, credible, not the luck of one mesh): an
+  // estimate of a row that is not says nothing of the option (the appendix leaves it out).
+  const std::string evidence = facts_of_row(index, row).evidence() ? "1" : "0";
   if (!row.refinement)
-    return out + ",,,,,\n";
+    return out + ",,,,,," + evidence + "\n";
   const MeshState vf = index.state(row, schema::MeshLevel::VF);
   const double on_m = index.read_resolution_percent(row, schema::MeshLevel::M);
   const auto trend = trend_of(row.errors[1], row.errors[2], row.refinement->error, on_m);
   constexpr const char* kState[] = {"missing", "failed", "not_converged", "converged"};
-  return out + fmt::format(
-                   ",{},{},{},{},{}\n", csv_number(row.refinement->value),
-                   csv_number(row.refinement->error), kState[static_cast<int>(vf)],
-                   trend ? schema::to_string(trend->trend) : "",
-                   csv_field(claim_cell(refinement_claim_applies(row), vf_judgement(index, row))));
+  return out +
+         fmt::format(",{},{},{},{},{},{}\n", csv_number(row.refinement->value),
+                     csv_number(row.refinement->error), kState[static_cast<int>(vf)],
+                     trend ? schema::to_string(trend->trend) : "",
+                     csv_field(claim_cell(refinement_claim_applies(row), vf_judgement(index, row))),
+                     evidence);
 }
 
 }  // namespace
@@ -266,7 +270,7 @@ std::string estimates_csv(const ResultsIndex& index) {
   std::string out =
       "row_id,value_C,value_M,value_F,error_F_percent,round_off,asymptotic,note,order,"
       "richardson,richardson_error_percent,gci_percent,exact_in_gci_band,exact,variant,"
-      "value_VF,error_VF_percent,status_VF,trend_MFVF,further_refinement_claim\n";
+      "value_VF,error_VF_percent,status_VF,trend_MFVF,further_refinement_claim,evidence_F\n";
   bool any = false;
   for (const RowVerdict* row : all_rows(index)) {
     if (row->estimate)

@@ -276,6 +276,16 @@ TEST(RefinementSection, LedgerAndAppendixJudgeRefinementByOneRule) {
   // Each example shows the window judged, M, F and VF.
   EXPECT_NE(nine.examples.find(": M +7.00 % → F +6.00 % → VF +9.00 %"), std::string::npos)
       << nine.examples;
+  // estimates.csv flags each row as evidence on F or not (its last field): the mortar rows,
+  // whose F case did not converge, are not; AL ss is.
+  const std::string csv = estimates_csv(index);
+  const auto last_field = [&](const std::string& id) {
+    const auto at = csv.find("\n" + id + ",");
+    return at == std::string::npos ? std::string("none")
+                                   : csv.substr(csv.find('\n', at + 1) - 2, 2);
+  };
+  EXPECT_EQ(last_field("H_p/Q4/MPC/mortar/sigma_c"), ",0") << csv;
+  EXPECT_EQ(last_field("H_p/Q4/AL/ss/sigma_c"), ",1") << csv;
 }
 
 // Requirement: with no MPC row left to judge (here one at round-off), the appendix draws no
