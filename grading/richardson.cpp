@@ -78,6 +78,13 @@ TrustedEstimate trusted_estimate(const schema::RowVerdict& row) {
   return {&e, {}};
 }
 
+std::optional<bool> gci_bounds_error(const schema::RowVerdict& row, double exact) {
+  if (!row.estimate || !row.estimate->gci_percent || !row.values[2] || *row.values[2] == 0.0)
+    return std::nullopt;
+  const double error = std::abs(*row.values[2] - exact) / std::abs(*row.values[2]) * 100.0;
+  return error <= *row.estimate->gci_percent;
+}
+
 double maximum_richardson_order(schema::Element element) {
   switch (element) {
     case schema::Element::Q4:

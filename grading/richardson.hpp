@@ -4,6 +4,7 @@
 // trusted (the estimates and extent appendices use no other). The record is
 // schema::ErrorEstimate.
 
+#include <optional>
 #include <string>
 
 #include "schema/row_verdict.hpp"
@@ -28,6 +29,10 @@ inline constexpr double kMinimumRichardsonOrder = 0.5;
 /// on Q8), so an order more than one beyond that (CM_p Q8 LMP ns, 7.0) is a coincidence of the
 /// differences, not the asymptotic range.
 double maximum_richardson_order(schema::Element element);
+
+/// Whether the exact value lies within the GCI band of the row's F value:
+///   |f_F - x| / |f_F| <= GCI (percent); nullopt without a GCI or an F value (or f_F = 0).
+std::optional<bool> gci_bounds_error(const schema::RowVerdict& row, double exact);
 
 /// A row's estimate, or why there is none to use.
 struct TrustedEstimate {

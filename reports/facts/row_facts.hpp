@@ -20,6 +20,12 @@ namespace cs::reports {
 enum class OptionFamily { penalty, multiplier, mpc };
 OptionFamily family_of(schema::Algorithm algorithm);
 
+/// A limit of a row's values other than the exact value: its error (%) and the values' order.
+struct BiasedLimit {
+  double error_percent = 0.0;
+  double order = 0.0;
+};
+
 /// A failed interface check and its measure (e.g. force balance 19.2: the relative residual).
 struct CheckFailure {
   std::string check;
@@ -41,7 +47,12 @@ struct RowFacts {
   bool study_c = false;                                 ///< the study's convergence flag
   std::optional<grading::ConvergenceAssessment> trend;  ///< all three meshes present
   std::optional<double> order;                          ///< guarded observed order
-  std::string order_note;                               ///< why there is no order
+  /// Where the values converge, by their trusted estimate, to a limit other than the exact value
+  /// (the exact value outside the GCI band, the limit's error beyond 0.01 points and beyond its
+  /// step from the F error): that error (%)
+  /// and the values' order; `order` is then empty, an order of the errors being meaningless.
+  std::optional<BiasedLimit> biased_limit;
+  std::string order_note;              ///< why there is no order
   bool fine_converged = false;         ///< the F case's contact iterations converged
   bool credible = true;                ///< the F case passes the interface checks
   std::vector<CheckFailure> failures;  ///< the F case's failed interface checks

@@ -27,6 +27,8 @@ std::string order_legend(const schema::RowVerdict* row, const std::vector<RowFac
       continue;
     if (f.order)
       return fmt::format("order {:.2f}", *f.order);
+    if (f.biased_limit)
+      return fmt::format("to a limit of {}", format_error_resolved(f.biased_limit->error_percent));
     return "no order: " + f.order_note.substr(0, f.order_note.find(" ("));
   }
   return "no order: no F value";

@@ -89,7 +89,7 @@ void add_estimate(EstimateSummary& s, std::vector<double>& gci, const ResultsInd
   if (t.estimate->gci_percent)
     gci.push_back(*t.estimate->gci_percent);
   const auto exact = index.exact_of(row);
-  if (const auto b = exact ? gci_bounds_error(row, *exact) : std::nullopt) {
+  if (const auto b = exact ? grading::gci_bounds_error(row, *exact) : std::nullopt) {
     ++s.with_exact;
     s.bounded += *b ? 1 : 0;
   }
@@ -199,7 +199,7 @@ std::string csv_line(const ResultsIndex& index, const RowVerdict& row) {
   std::optional<double> limit_error;
   if (exact && e.richardson && *exact != 0.0)
     limit_error = grading::error_percent(*e.richardson, *exact);
-  const auto bounded = exact && t.estimate ? gci_bounds_error(row, *exact) : std::nullopt;
+  const auto bounded = exact && t.estimate ? grading::gci_bounds_error(row, *exact) : std::nullopt;
   std::string out = fmt::format(
       "{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}", csv_field(row.id), csv_number(row.values[0]),
       csv_number(row.values[1]), csv_number(row.values[2]), csv_number(row.errors[2]),
@@ -225,13 +225,6 @@ std::string csv_line(const ResultsIndex& index, const RowVerdict& row) {
 }
 
 }  // namespace
-
-std::optional<bool> gci_bounds_error(const RowVerdict& row, double exact) {
-  if (!row.estimate || !row.estimate->gci_percent || !row.values[2] || *row.values[2] == 0.0)
-    return std::nullopt;
-  const double error = std::abs(*row.values[2] - exact) / std::abs(*row.values[2]) * 100.0;
-  return error <= *row.estimate->gci_percent;
-}
 
 bool at_round_off(const RowVerdict& row) {
   return std::all_of(row.errors.begin(), row.errors.end(), [](const std::optional<double>& e) {

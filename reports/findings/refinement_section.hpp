@@ -16,10 +16,6 @@
 
 namespace cs::reports {
 
-/// Whether the GCI band of the F value contains the exact value:
-/// |f_F - exact| / |f_F| * 100 <= GCI. Empty without an estimate or an exact value.
-std::optional<bool> gci_bounds_error(const schema::RowVerdict& row, double exact);
-
 /// True when every error of the row on C, M and F is below schema::kErrorNoiseFloorPercent: the
 /// row is exact to round-off and has no estimate worth showing.
 bool at_round_off(const schema::RowVerdict& row);

@@ -84,6 +84,11 @@ TemplateData row_data(const RowFacts& f, const std::string& label, bool has_vf) 
   d.set("study_c", f.study_c ? "c" : "");
   d.set("trend", trend_word(f));
   d.set("order", f.order ? fmt::format("{:.2f}", *f.order) : f.order_note);
+  if (f.biased_limit) {
+    TemplateData b("limit", format_error_resolved(f.biased_limit->error_percent));
+    b.set("values_order", fmt::format("{:.2f}", f.biased_limit->order));
+    d.set("biased", b);
+  }
   d.set("credible", credible_cell(f, f.luck));
   return d;
 }

@@ -105,5 +105,16 @@ TEST(TrustedEstimate, EachRuleAtItsThreshold) {
   EXPECT_NE(trusted_estimate(of_order(2.9)).estimate, nullptr);
 }
 
+// Requirement: the GCI band holds the exact value when |f_F - exact| / |f_F| <= GCI.
+TEST(Richardson, GciBandTest) {
+  schema::RowVerdict r;
+  r.values = {1.3, 1.28, 1.275};
+  r.estimate = schema::ErrorEstimate{true, 2.0, 1.2733, 0.2, ""};
+  EXPECT_TRUE(*gci_bounds_error(r, 1.2732));   // 0.14 % <= 0.2 %
+  EXPECT_FALSE(*gci_bounds_error(r, 1.2700));  // 0.39 % > 0.2 %
+  r.estimate.reset();
+  EXPECT_FALSE(gci_bounds_error(r, 1.2732).has_value());
+}
+
 }  // namespace
 }  // namespace cs::grading

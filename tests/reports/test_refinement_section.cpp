@@ -10,7 +10,9 @@
 #include <gtest/gtest.h>
 
 #include "grading/accuracy.hpp"
+#include "grading/richardson.hpp"
 #include "reports/facts/claims.hpp"
+#include "reports/facts/row_facts.hpp"
 #include "reports/findings/refinement_section.hpp"
 #include "reports/pages/claims_ledger.hpp"
 
@@ -46,17 +48,6 @@ TEST(RefinementSection, StudyClaimCountsOnlyConvergedVfCases) {
   EXPECT_EQ(vf_judgement(s_row(3.0), MeshState::converged, 0.0, false), VfJudgement::not_evidence);
   EXPECT_FALSE(refinement_claim_applies(row({8.0, 7.0, 6.0}, true, 3.0)));      // already c
   EXPECT_FALSE(refinement_claim_applies(row({14.0, 13.0, 12.0}, false, 3.0)));  // u on F
-}
-
-// Requirement: the GCI band holds the exact value when |f_F - exact| / |f_F| <= GCI.
-TEST(RefinementSection, GciBandTest) {
-  RowVerdict r;
-  r.values = {1.3, 1.28, 1.275};
-  r.estimate = schema::ErrorEstimate{true, 2.0, 1.2733, 0.2, ""};
-  EXPECT_TRUE(*gci_bounds_error(r, 1.2732));   // 0.14 % <= 0.2 %
-  EXPECT_FALSE(*gci_bounds_error(r, 1.2700));  // 0.39 % > 0.2 %
-  r.estimate.reset();
-  EXPECT_FALSE(gci_bounds_error(r, 1.2732).has_value());
 }
 
 constexpr double kExact = 1.0;
@@ -198,6 +189,32 @@ TEST(RefinementSection, OneLineWithoutVfAndNothingWithoutRows) {
 
 namespace cs::reports {
 namespace {
+
+// Requirement: an order of the errors is printed only where the values converge to the exact
+// value. Values 1.04, 1.02, 1.015 converge at order 2 to 1.0133: 1.33 % above the exact 1, the
+// exact value outside their GCI band and further from the limit than F is: the row keeps that
+// limit and no order. Values 1.04, 1.01, 1.0025 converge to the exact value: order 2.
+TEST(RefinementSection, AnOrderOfTheErrorsOnlyWhereTheValuesConvergeToTheExactValue) {
+  schema::ResultsDocument doc = vf_document();
+  doc.rows.clear();
+  doc.cases.clear();
+  using A = schema::Algorithm;
+  using K = schema::ContactKind;
+  add_row(doc, A::AL, K::ss, {1.04, 1.02, 1.015});
+  doc.rows.back().estimate = grading::error_estimate(1.04, 1.02, 1.015);
+  add_row(doc, A::LMP, K::ss, {1.04, 1.01, 1.0025});
+  doc.rows.back().estimate = grading::error_estimate(1.04, 1.01, 1.0025);
+  const ResultsIndex index(doc);
+  const RowFacts biased = facts_of_row(index, doc.rows[0]);
+  EXPECT_FALSE(biased.order.has_value());
+  ASSERT_TRUE(biased.biased_limit.has_value());
+  EXPECT_NEAR(biased.biased_limit->error_percent, 100.0 * (1.015 - 0.005 / 3 - 1.0), 1e-9);
+  EXPECT_NEAR(biased.biased_limit->order, 2.0, 1e-9);
+  const RowFacts exact = facts_of_row(index, doc.rows[1]);
+  EXPECT_FALSE(exact.biased_limit.has_value());
+  ASSERT_TRUE(exact.order.has_value()) << exact.order_note;
+  EXPECT_NEAR(*exact.order, 2.0, 1e-9);
+}
 
 // Requirement: the claims ledger (claims 9 and 10) and the estimates appendix judge "further
 // refinement would converge" by one rule, the trend over M-F-VF: a row whose error is the same
