@@ -28,6 +28,10 @@ bool within_read_resolution(double e_c, double e_m, double e_f, double r) {
 
 }  // namespace
 
+double pair_noise_points(double m_to_f_change_a, double m_to_f_change_b) {
+  return std::max({kErrorResolutionPercent, m_to_f_change_a, m_to_f_change_b});
+}
+
 bool study_converging(double e_c, double e_m, double e_f) {
   const double c = std::abs(e_c), m = std::abs(e_m), f = std::abs(e_f);
   if (!all_finite(c, m, f))

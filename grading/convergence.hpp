@@ -18,6 +18,12 @@ using schema::Trend;
 /// percentage points): differences below it count as equal.
 inline constexpr double kErrorResolutionPercent = 0.01;
 
+/// The noise of two rows' F errors (points): what one refinement changes in either (their
+/// |e_F - e_M|), or the study's resolution kErrorResolutionPercent, whichever is larger. Two F
+/// errors, or their magnitudes, differ only by more than this (H_a sigma_c -0.789 % vs -0.775 %,
+/// moving 2.7 points from M to F, do not).
+double pair_noise_points(double m_to_f_change_a, double m_to_f_change_b);
+
 /// The study's 'c' (Table 2): with |e| the error magnitudes and r = kErrorResolutionPercent,
 ///   |e_M| <= |e_C| + r  and  |e_F| <= |e_M| + r  (never grows)
 ///   and (|e_F| < |e_C| - r  or  |e_C| <= r)      (improves, or exact on every mesh).

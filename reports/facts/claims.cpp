@@ -213,9 +213,8 @@ ClaimEvidence ss_equals_ns(const std::vector<RowFacts>& rows) {
 /// the verdict page ties options (H_a sigma_c -0.789 % vs -0.775 %, moving 2.7 points from M to
 /// F, is a tie).
 bool clearly_larger(const RowFacts& a, const RowFacts& b) {
-  const double noise =
-      std::max({grading::kErrorResolutionPercent, a.m_to_f_change(), b.m_to_f_change()});
-  return std::abs(*a.errors[2]) > std::abs(*b.errors[2]) + noise;
+  return std::abs(*a.errors[2]) >
+         std::abs(*b.errors[2]) + grading::pair_noise_points(a.m_to_f_change(), b.m_to_f_change());
 }
 
 /// A Table 2 trend of three parts: the selected evidence rows are g or better on F (n_hold of

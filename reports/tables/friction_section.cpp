@@ -102,7 +102,19 @@ bool problem_part(const ResultsIndex& index, const schema::ProblemRecord& p, Tem
   d.set("n_equal", std::to_string(diff.n_equal));
   d.set("points", fmt::format("{:.2f}", diff.points));
   d.set("where", join_words(diff.largest_at, "; "));
+  d.set("largest_within_noise", diff.points <= diff.largest_noise);
+  d.set("largest_noise", fmt::format("{:.2f}", diff.largest_noise));
+  d.set("n_beyond_noise", std::to_string(diff.n_beyond_noise));
   return !grades.empty();
+}
+
+}  // namespace
+
+namespace {
+
+/// |e_F - e_M| of a row (0 without both).
+double m_to_f_change(const schema::RowVerdict& row) {
+  return row.errors[1] && row.errors[kF] ? std::abs(*row.errors[kF] - *row.errors[1]) : 0.0;
 }
 
 }  // namespace
@@ -116,10 +128,17 @@ LmpPlmDifference lmp_plm_difference(const ResultsIndex& index, schema::ProblemId
     if (!lmp->errors[kF] || !plm->errors[kF])
       continue;
     const double points = std::abs(*lmp->errors[kF] - *plm->errors[kF]);
+    const double noise = grading::pair_noise_points(m_to_f_change(*lmp), m_to_f_change(*plm));
     ++out.n_pairs;
     out.n_equal += points < 0.01 ? 1 : 0;
-    if (points > out.points)
-      out = {points, quantity, element, contact, out.n_pairs, out.n_equal, {}};
+    out.n_beyond_noise += points > noise ? 1 : 0;
+    if (points > out.points) {
+      out.points = points;
+      out.quantity = quantity;
+      out.element = element;
+      out.contact = contact;
+      out.largest_noise = noise;
+    }
   }
   for (const auto& [quantity, element, contact, lmp, plm] :
        lmp_plm_pairs(index, *index.problem(problem))) {

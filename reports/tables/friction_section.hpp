@@ -23,6 +23,10 @@ struct LmpPlmDifference {
   /// Every pair within the study's resolution of the largest difference ("τ̄max, Q4 ss"): a tie
   /// is named whole.
   std::vector<std::string> largest_at;
+  /// The largest pair's noise (grading::pair_noise_points), and the pairs that differ by more
+  /// than their own noise: a smaller difference is not resolved by these meshes.
+  double largest_noise = 0.0;
+  int n_beyond_noise = 0;
 };
 
 /// The LMP-PLM comparison of `problem` over every element, contact and quantity (empty

@@ -115,6 +115,26 @@ TEST(FrictionSection, ComparesLmpWithPlm) {
   EXPECT_NE(md.find(" Q4 ss; "), std::string::npos) << md;
   EXPECT_NE(md.find(" Q4 ns)"), std::string::npos) << md;
   EXPECT_EQ(conformal_section(index), "");
+  // LMP ns moves 7.506 points from M (+4 %) to F (-3.506 %): the 5.506-point gap to PLM is
+  // within that noise, and the section says these meshes do not resolve it; no pair differs
+  // beyond its own noise.
+  EXPECT_NEAR(d.largest_noise, 7.506, 1e-12);
+  EXPECT_EQ(d.n_beyond_noise, 0);
+  EXPECT_NE(md.find("within what one refinement changes in either row (7.51 points), so these "
+                    "meshes do not resolve it; 0 of 3 pairs differ by more than their own noise"),
+            std::string::npos)
+      << md;
+  // With LMP at -3 % on M, it moves 0.5 points: the gap is beyond the pair's noise (2 points, PLM's
+  // move), and the section does not call it unresolved.
+  for (auto& r : doc.rows) {
+    if (r.spec.algorithm == Algorithm::LMP && r.spec.contact != ContactKind::mortar)
+      r.errors[1] = -3.0;
+  }
+  const ResultsIndex moved(doc);
+  const LmpPlmDifference resolved = lmp_plm_difference(moved, ProblemId::CM_p);
+  EXPECT_NEAR(resolved.largest_noise, 2.0, 1e-12);
+  EXPECT_EQ(resolved.n_beyond_noise, 2);
+  EXPECT_EQ(friction_section(moved).find("do not resolve it"), std::string::npos);
 }
 
 // Requirement: a fine-mesh value without an error (an exact value of zero) stands alone in the
