@@ -29,13 +29,14 @@ bool read_settles_grade(double error_percent, double resolution_percent);
 /// other quantities of its option. r <= 0: the grade of e.
 schema::Grade best_reading_grade(double error_percent, double resolution_percent);
 
-/// The grade of a read's worst reading: Eq. 46 of |e| + r (H_a Q4 a_FE, +6.25 +- 6.25 %: s).
+/// The grade of a read's worst reading: Eq. 46 of |e| + r (H_a Q4 a_FE, +6.25 +- 6.25 %: 12.5 %,
+/// u).
 schema::Grade worst_reading_grade(double error_percent, double resolution_percent);
 
 /// Whether a read with error e and resolution r is graded `grade` or better at every reading
 /// in e +- r (true), at none (false: its best reading, best_reading_grade, is worse), or
 /// depends on where it lies (nullopt). r <= 0, a value read at a point: whether e is.
-/// H_a Q4 a_FE at +6.25 +- 6.25 % is e at best and s at worst: open for g.
+/// H_a Q4 a_FE at +6.25 +- 6.25 % is e at best and u at worst: open for g.
 std::optional<bool> read_at_least(double error_percent, double resolution_percent,
                                   schema::Grade grade);
 

@@ -28,8 +28,10 @@ bool within_read_resolution(double e_c, double e_m, double e_f, double r) {
 
 }  // namespace
 
-double pair_noise_points(double m_to_f_change_a, double m_to_f_change_b) {
-  return std::max({kErrorResolutionPercent, m_to_f_change_a, m_to_f_change_b});
+double pair_noise_points(double m_to_f_change_a, double m_to_f_change_b, double resolution_a,
+                         double resolution_b) {
+  return std::max({kErrorResolutionPercent, m_to_f_change_a, m_to_f_change_b,
+                   std::max(resolution_a, 0.0) + std::max(resolution_b, 0.0)});
 }
 
 bool study_converging(double e_c, double e_m, double e_f) {

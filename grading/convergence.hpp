@@ -19,10 +19,12 @@ using schema::Trend;
 inline constexpr double kErrorResolutionPercent = 0.01;
 
 /// The noise of two rows' F errors (points): what one refinement changes in either (their
-/// |e_F - e_M|), or the study's resolution kErrorResolutionPercent, whichever is larger. Two F
-/// errors, or their magnitudes, differ only by more than this (H_a sigma_c -0.789 % vs -0.775 %,
-/// moving 2.7 points from M to F, do not).
-double pair_noise_points(double m_to_f_change_a, double m_to_f_change_b);
+/// |e_F - e_M|), the two reads' resolutions together where they are read between nodes (r_a +
+/// r_b: CM_p Q8 c/a one F node apart, 4.42 points), or the study's resolution
+/// kErrorResolutionPercent, whichever is largest. Two F errors, or their magnitudes, differ only
+/// by more than this (H_a sigma_c -0.789 % vs -0.775 %, moving 2.7 points from M to F, do not).
+double pair_noise_points(double m_to_f_change_a, double m_to_f_change_b, double resolution_a = 0.0,
+                         double resolution_b = 0.0);
 
 /// The study's 'c' (Table 2): with |e| the error magnitudes and r = kErrorResolutionPercent,
 ///   |e_M| <= |e_C| + r  and  |e_F| <= |e_M| + r  (never grows)

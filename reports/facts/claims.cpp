@@ -214,7 +214,9 @@ ClaimEvidence ss_equals_ns(const std::vector<RowFacts>& rows) {
 /// F, is a tie).
 bool clearly_larger(const RowFacts& a, const RowFacts& b) {
   return std::abs(*a.errors[2]) >
-         std::abs(*b.errors[2]) + grading::pair_noise_points(a.m_to_f_change(), b.m_to_f_change());
+         std::abs(*b.errors[2]) + grading::pair_noise_points(a.m_to_f_change(), b.m_to_f_change(),
+                                                             a.read_resolution_on_f,
+                                                             b.read_resolution_on_f);
 }
 
 /// A Table 2 trend of three parts: the selected evidence rows are g or better on F (n_hold of

@@ -44,8 +44,11 @@ void add_credibility(const ResultsIndex& index, const schema::RowVerdict& row, F
 /// trusted estimate converges elsewhere (the exact value outside its GCI band, the limit's error
 /// beyond the study's resolution and beyond the extrapolation's own step from F), the row
 /// converges to a bias: no order of the errors, and the
-/// limit is kept (H_p Q4 sigma_x: -0.34 %, where VF reads -0.33 %).
+/// limit is kept (H_p Q8 sigma_x AL ss: -0.35 %, where VF reads -0.35 %). A row whose F case did
+/// not converge or fails an interface check says nothing of how the option converges.
 void note_biased_limit(const ResultsIndex& index, RowFacts& f) {
+  if (!f.fine_converged || !f.credible)
+    return;
   const grading::TrustedEstimate t = grading::trusted_estimate(*f.row);
   const auto exact = index.exact_of(*f.row);
   if (!t.estimate || !t.estimate->richardson || !exact || *exact == 0.0 ||
@@ -195,8 +198,8 @@ RowFacts facts_of_row(const ResultsIndex& index, const schema::RowVerdict& r) {
     f.grade = grading::grade_of_error(*r.errors[2]);
   f.study_c = r.converging.value_or(false);
   f.read_resolution_on_f = index.read_resolution_percent(r, MeshLevel::F);
-  add_trend(index, f);
   add_credibility(index, *f.row, f);
+  add_trend(index, f);  // after the credibility, which a biased limit needs
   return f;
 }
 

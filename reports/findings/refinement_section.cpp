@@ -207,8 +207,8 @@ std::string csv_line(const ResultsIndex& index, const RowVerdict& row) {
       csv_number(e.observed_order), csv_number(e.richardson), csv_number(limit_error),
       csv_number(e.gci_percent), bounded ? (*bounded ? "1" : "0") : "", csv_number(exact),
       csv_field(variant_of(row.spec)));
-  // Whether the row is evidence on F (converged, credible, not the luck of one mesh): an
-  // estimate of a row that is not says nothing of the option (the appendix leaves it out).
+  // Whether the row is evidence on F (RowFacts::evidence: converged, credible, not the luck of
+  // one mesh): an estimate of a row that is not says nothing of the option.
   const std::string evidence = facts_of_row(index, row).evidence() ? "1" : "0";
   if (!row.refinement)
     return out + ",,,,,," + evidence + "\n";

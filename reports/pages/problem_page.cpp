@@ -83,6 +83,7 @@ TemplateData row_data(const RowFacts& f, const std::string& label, bool has_vf) 
   d.set("grade", grade_cell(f));
   d.set("study_c", f.study_c ? "c" : "");
   d.set("trend", trend_word(f));
+  d.set("to_bias", f.biased_limit.has_value());
   d.set("order", f.order ? fmt::format("{:.2f}", *f.order) : f.order_note);
   if (f.biased_limit) {
     TemplateData b("limit", format_error_resolved(f.biased_limit->error_percent));

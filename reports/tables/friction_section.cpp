@@ -128,7 +128,9 @@ LmpPlmDifference lmp_plm_difference(const ResultsIndex& index, schema::ProblemId
     if (!lmp->errors[kF] || !plm->errors[kF])
       continue;
     const double points = std::abs(*lmp->errors[kF] - *plm->errors[kF]);
-    const double noise = grading::pair_noise_points(m_to_f_change(*lmp), m_to_f_change(*plm));
+    const double noise = grading::pair_noise_points(
+        m_to_f_change(*lmp), m_to_f_change(*plm), index.read_resolution_percent(*lmp, kFinestMesh),
+        index.read_resolution_percent(*plm, kFinestMesh));
     ++out.n_pairs;
     out.n_equal += points < 0.01 ? 1 : 0;
     out.n_beyond_noise += points > noise ? 1 : 0;

@@ -284,8 +284,10 @@ std::string open_read_grades(const RowFacts& f) {
   if (!f.read_leaves_grade_open())
     return {};
   const double e = *f.errors[2], r = f.read_resolution_on_f;
-  return fmt::format(" ({}–{})", schema::to_string(grading::best_reading_grade(e, r)),
-                     schema::to_string(grading::worst_reading_grade(e, r)));
+  const schema::Grade best = grading::best_reading_grade(e, r);
+  const schema::Grade worst = grading::worst_reading_grade(e, r);
+  return best == worst ? std::string()
+                       : fmt::format(" ({}–{})", schema::to_string(best), schema::to_string(worst));
 }
 
 std::string format_marked_grade_cell(const ResultsIndex& index, const schema::RowVerdict* row) {

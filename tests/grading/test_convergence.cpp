@@ -109,6 +109,17 @@ TEST(AssessConvergence, AFallEqualToItsFloorIsDecidedByNoRoundOff) {
   }
 }
 
+// Requirement: two F errors differ only beyond their pair's noise: the study's 0.01 points,
+// what one refinement changes in either, or two reads' resolutions together, whichever is
+// largest (CM_p Q8 c/a pairs one F node apart, 2.21 + 2.21 points).
+TEST(PairNoise, IsTheLargestOfResolutionChangesAndReads) {
+  EXPECT_EQ(pair_noise_points(0.0, 0.0), kErrorResolutionPercent);
+  EXPECT_EQ(pair_noise_points(2.7, 0.4), 2.7);
+  EXPECT_EQ(pair_noise_points(0.4, 2.7), 2.7);
+  EXPECT_NEAR(pair_noise_points(1.0, 0.5, 2.21, 2.21), 4.42, 1e-12);
+  EXPECT_EQ(pair_noise_points(5.0, 0.5, 2.21, 2.21), 5.0);
+}
+
 TEST(NodeReadResolution, IsZeroWithoutAPositiveFiniteSpacingAndExactValue) {
   EXPECT_TRUE(Near(node_read_resolution_percent(0.5, -2.0), 12.5, {1e-15, 0}));  // |exact|
   EXPECT_EQ(node_read_resolution_percent(0.0, 1.0), 0.0);

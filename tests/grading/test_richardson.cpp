@@ -94,6 +94,8 @@ TEST(TrustedEstimate, EachRuleAtItsThreshold) {
   const TrustedEstimate last_at_noise = trusted_estimate(row_with_errors({0.76, 0.73, 0.725}));
   EXPECT_EQ(last_at_noise.estimate, nullptr);
   EXPECT_EQ(last_at_noise.note, "M to F within the study's resolution: the order would be noise");
+  // Exactly at the resolution (0.73 -> 0.72 %, 0.01 points but for the last digits): refused.
+  EXPECT_EQ(trusted_estimate(row_with_errors({0.76, 0.73, 0.72})).estimate, nullptr);
   // An order beyond the recovered stresses' reach plus one: 3.5 is refused on Q4 (at most 3),
   // kept on Q8 (at most 4).
   schema::RowVerdict steep = of_order(3.5);

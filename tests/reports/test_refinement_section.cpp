@@ -214,6 +214,13 @@ TEST(RefinementSection, AnOrderOfTheErrorsOnlyWhereTheValuesConvergeToTheExactVa
   EXPECT_FALSE(exact.biased_limit.has_value());
   ASSERT_TRUE(exact.order.has_value()) << exact.order_note;
   EXPECT_NEAR(*exact.order, 2.0, 1e-9);
+  // A row whose F case did not converge says nothing of how the option converges: no limit.
+  for (auto& c : doc.cases) {
+    if (c.spec.algorithm == A::AL && c.spec.mesh == schema::MeshLevel::F)
+      c.status = schema::CaseStatus::not_converged;
+  }
+  const ResultsIndex unconverged(doc);
+  EXPECT_FALSE(facts_of_row(unconverged, doc.rows[0]).biased_limit.has_value());
 }
 
 // Requirement: the claims ledger (claims 9 and 10) and the estimates appendix judge "further

@@ -399,8 +399,8 @@ TEST(ClaimsLedger, AReadWithinItsResolutionIsNotEvidenceOfInaccuracy) {
 
 // Requirement: a claim of "g or better" counts a read between nodes where every reading of it
 // says the same (one rule with the verdict page): +12 +- 4 % is below g at its best reading and
-// refutes the claim; +2 +- 1 % is g at every reading and supports it; +6.25 +- 6.25 % may be e
-// or s and is left out. Claim 6 counts the first as unsatisfactory.
+// refutes the claim; +2 +- 1 % is g at every reading and supports it; +6.25 +- 6.25 % may be
+// anything from e to u and is left out. Claim 6 counts the first as unsatisfactory.
 TEST(ClaimsLedger, AReadCountsForAGradeWhereEveryReadingAgrees) {
   FixtureRows fx;
   const auto read = [&](ContactKind k, Algorithm a, double e, double resolution) {
