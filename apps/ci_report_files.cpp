@@ -38,7 +38,13 @@ void require_writable_file(const std::string& option, const std::string& path) {
   if (!fs::is_directory(dir, ec))
     throw UsageError(
         fmt::format("{} {}: the directory {} does not exist", option, path, dir.string()));
-  const bool existed = fs::exists(file, ec);
+  // A dangling link is the user's: appending through it would create its target, and removing
+  // the probe afterwards would delete the link.
+  const fs::file_status link = fs::symlink_status(file, ec);
+  if (fs::is_symlink(link) && !fs::exists(file, ec))
+    throw UsageError(
+        fmt::format("{} {}: a link to a missing file; not written through", option, path));
+  const bool existed = fs::exists(link);
   std::FILE* f = std::fopen(path.c_str(), "a");
   if (f == nullptr) {
     throw UsageError(

@@ -14,6 +14,12 @@ namespace {
 /// Eq. 46's upper bounds (|e| in %) of e, g and s.
 constexpr double kBounds[] = {1.0, 5.0, 10.0};
 
+/// A read's resolution, 0 for a point, widened by round-off: an edge at a node reads exactly
+/// half a node off, and equality within round-off counts as within the resolution.
+double widened(double resolution_percent) {
+  return resolution_percent > 0.0 ? resolution_percent * (1.0 + 1e-9) : 0.0;
+}
+
 }  // namespace
 
 schema::Grade grade_of_error(double error_percent) {
@@ -28,19 +34,18 @@ schema::Grade grade_of_error(double error_percent) {
 bool read_settles_grade(double error_percent, double resolution_percent) {
   if (!(resolution_percent > 0.0))
     return true;
-  // An edge at a node reads exactly half a node off: equality within round-off counts.
-  const double e = std::abs(error_percent), r = resolution_percent * (1.0 + 1e-9);
+  const double e = std::abs(error_percent), r = widened(resolution_percent);
   return e > r && grade_of_error(e - r) == grade_of_error(e + r);
 }
 
 schema::Grade best_reading_grade(double error_percent, double resolution_percent) {
-  const double r = resolution_percent > 0.0 ? resolution_percent * (1.0 + 1e-9) : 0.0;
+  const double r = widened(resolution_percent);
   return grade_of_error(std::isnan(error_percent) ? error_percent
                                                   : std::max(std::abs(error_percent) - r, 0.0));
 }
 
 schema::Grade worst_reading_grade(double error_percent, double resolution_percent) {
-  const double r = resolution_percent > 0.0 ? resolution_percent * (1.0 + 1e-9) : 0.0;
+  const double r = widened(resolution_percent);
   return grade_of_error(std::abs(error_percent) + r);
 }
 
@@ -51,6 +56,11 @@ std::optional<bool> read_at_least(double error_percent, double resolution_percen
   if (schema::is_worse(best_reading_grade(error_percent, resolution_percent), grade))
     return false;
   return std::nullopt;
+}
+
+double grade_upper_bound(schema::Grade grade) {
+  const auto i = static_cast<std::size_t>(grade);
+  return i < std::size(kBounds) ? kBounds[i] : INFINITY;
 }
 
 double grade_band_width(schema::Grade grade) {

@@ -40,6 +40,10 @@ schema::Grade worst_reading_grade(double error_percent, double resolution_percen
 std::optional<bool> read_at_least(double error_percent, double resolution_percent,
                                   schema::Grade grade);
 
+/// The upper bound of a grade's band of |e| (%), the bound to the next worse grade: e 1, g 5,
+/// s 10; u unbounded (inf).
+double grade_upper_bound(schema::Grade grade);
+
 /// How wide a grade's band of |e| is, in points: e 1 (0 to 1 %), g 4, s 5; u unbounded (inf).
 double grade_band_width(schema::Grade grade);
 

@@ -7,20 +7,6 @@
 #include "schema/baseline_file.hpp"
 
 namespace cs::grading {
-namespace {
-
-/// The bound of Eq. 46 between grade g and the next worse one (%): e 1, g 5, s 10.
-double upper_bound_of(schema::Grade g) {
-  double bound = 0.0;
-  for (const schema::Grade band : {schema::Grade::e, schema::Grade::g, schema::Grade::s}) {
-    bound += grade_band_width(band);
-    if (band == g)
-      break;
-  }
-  return bound;
-}
-
-}  // namespace
 
 double relative_drift(double a, double b) {
   return std::abs(b - a) / std::max(std::abs(a), 1e-300);
@@ -40,7 +26,7 @@ bool grade_change_is_round_off(const GradedValue& before, const GradedValue& aft
   if (better == worse || better == schema::Grade::u ||
       static_cast<int>(worse) - static_cast<int>(better) != 1)
     return false;
-  const double bound = upper_bound_of(better);
+  const double bound = grade_upper_bound(better);
   const double edge = 100.0 * tolerance * (1.0 + bound / 100.0) * (1.0 + 1e-9);
   return std::abs(std::abs(*before.error) - bound) <= edge &&
          std::abs(std::abs(*after.error) - bound) <= edge;

@@ -7,6 +7,8 @@
 
 #include <fmt/format.h>
 
+#include "grading/grade_change.hpp"
+
 namespace cs::suites {
 namespace {
 
@@ -98,7 +100,7 @@ std::string movement(const RowVerdict* old_row, const RowVerdict& row,
       continue;
     if (!(before == now)) {
       moved = true;
-      largest = std::max(largest, std::abs(now - before) / std::max(std::abs(before), 1e-300));
+      largest = std::max(largest, grading::relative_drift(before, now));
     }
   }
   if (moved) {

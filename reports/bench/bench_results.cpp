@@ -12,6 +12,8 @@
 #include <nlohmann/json.hpp>
 
 #include "reports/report_error.hpp"
+#include "schema/json_file.hpp"
+#include "schema/schema_error.hpp"
 
 namespace cs::reports {
 namespace {
@@ -229,9 +231,12 @@ std::pair<BenchSource, std::vector<BenchRow>> load_bench_file(const std::filesys
     fail(name, "cannot be read");
   if (text.str().empty())
     fail(name, "is empty");
-  const json doc = json::parse(json_without_nonfinite(text.str()), nullptr, false);
-  if (doc.is_discarded())
-    fail(name, "is not valid JSON (truncated?)");
+  json doc;
+  try {  // the readers' one parser: depth and duplicate keys bounded, as for results files
+    doc = schema::parse_json_text(json_without_nonfinite(text.str()), "benchmark file", name);
+  } catch (const schema::SchemaError&) {
+    fail(name, "is not valid JSON (truncated, nested beyond 64 levels, or a key given twice)");
+  }
   return read_document(doc, name);
 }
 

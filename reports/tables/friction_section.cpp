@@ -7,6 +7,7 @@
 
 #include "grading/convergence.hpp"
 
+#include "reports/facts/row_facts.hpp"
 #include "reports/tables/grade_tables.hpp"
 #include "reports/tables/section_support.hpp"
 
@@ -110,15 +111,6 @@ bool problem_part(const ResultsIndex& index, const schema::ProblemRecord& p, Tem
 
 }  // namespace
 
-namespace {
-
-/// |e_F - e_M| of a row (0 without both).
-double m_to_f_change(const schema::RowVerdict& row) {
-  return row.errors[1] && row.errors[kF] ? std::abs(*row.errors[kF] - *row.errors[1]) : 0.0;
-}
-
-}  // namespace
-
 LmpPlmDifference lmp_plm_difference(const ResultsIndex& index, schema::ProblemId problem) {
   LmpPlmDifference out;
   if (index.problem(problem) == nullptr)
@@ -128,9 +120,9 @@ LmpPlmDifference lmp_plm_difference(const ResultsIndex& index, schema::ProblemId
     if (!lmp->errors[kF] || !plm->errors[kF])
       continue;
     const double points = std::abs(*lmp->errors[kF] - *plm->errors[kF]);
-    const double noise = grading::pair_noise_points(
-        m_to_f_change(*lmp), m_to_f_change(*plm), index.read_resolution_percent(*lmp, kFinestMesh),
-        index.read_resolution_percent(*plm, kFinestMesh));
+    const RowFacts a = facts_of_row(index, *lmp), b = facts_of_row(index, *plm);
+    const double noise = grading::pair_noise_points(a.m_to_f_change(), b.m_to_f_change(),
+                                                    a.read_resolution_on_f, b.read_resolution_on_f);
     ++out.n_pairs;
     out.n_equal += points < 0.01 ? 1 : 0;
     out.n_beyond_noise += points > noise ? 1 : 0;

@@ -265,6 +265,17 @@ TEST(JunitCli, ReplacesOnlyAFileItWrote) {
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_TRUE(fs::is_symlink(xml));
   EXPECT_FALSE(fs::exists(tmp.path() / "nowhere.xml"));
+
+  // So at --summary (appended to, so a user's regular file is kept and added to): a dangling
+  // link there was deleted by the writability probe, its target created.
+  const fs::path summary = tmp.path() / "summary.md";
+  fs::create_symlink(tmp.path() / "missing.md", summary);
+  r = run_cli({"gate", "--baseline", baseline.string(), "--results", kFixture.string(), "--summary",
+               summary.string()});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("a link to a missing file"), std::string::npos) << r.err;
+  EXPECT_TRUE(fs::is_symlink(summary));
+  EXPECT_FALSE(fs::exists(tmp.path() / "missing.md"));
 }
 
 }  // namespace

@@ -45,6 +45,23 @@ TEST(GradeChange, AFlipAcrossABoundByRoundOffIsRoundOff) {
   EXPECT_FALSE(grade_change_is_round_off(before, before, 1e-6));
 }
 
+// The band's edge is what the drift moves an error at the bound, 100 tolerance (1 + b/100)
+// points: 1.01e-4 points at the e/g bound for 1e-6. An error 1.005e-4 below the bound and one
+// 0.3e-4 above it (values 0.89e-6 apart) are round-off; an edge without the factor 1 + b/100
+// (1e-4), or halved, would not cover the first. An error 1.2e-4 below the bound (the exact value
+// moved, not the value) is not.
+TEST(GradeChange, TheEdgeIsWhatTheToleranceMovesAnErrorAtTheBound) {
+  const GradedValue below{1.0 + 0.01 - 0.6e-6, 1.0 - 1.005e-4};
+  const GradedValue above{1.0 + 0.01 + 0.3e-6, 1.0 + 0.3e-4};
+  EXPECT_TRUE(grade_change_is_round_off(below, above, 1e-6));
+  const GradedValue below_far{1.0 + 0.01 - 0.6e-6, 1.0 - 1.2e-4};  // exact moved, not the value
+  EXPECT_FALSE(grade_change_is_round_off(below_far, above, 1e-6));
+  EXPECT_EQ(grade_upper_bound(schema::Grade::e), 1.0);
+  EXPECT_EQ(grade_upper_bound(schema::Grade::g), 5.0);
+  EXPECT_EQ(grade_upper_bound(schema::Grade::s), 10.0);
+  EXPECT_TRUE(std::isinf(grade_upper_bound(schema::Grade::u)));
+}
+
 // The exact value changed (an oracle fixed): the value stays, its error jumps from e to u. No
 // band's edge is involved, so it is no round-off; nor is a value that moves by round-off far
 // from any bound while its grade changes with the exact value.

@@ -225,6 +225,11 @@ TEST(BenchResults, RejectsFilesItCannotUseWithOneLineNamingTheFile) {
       {tmp.path(), "is not a regular file"},
       {write("empty.json", ""), "is empty"},
       {write("truncated.json", full.substr(0, full.size() / 2)), "is not valid JSON"},
+      // nested 100,000 deep in "context" (a copy of it overflowed the stack), a key twice
+      {write("deep.json", "{\"context\": " + std::string(100000, '[') + std::string(100000, ']') +
+                              ", \"benchmarks\": []}"),
+       "nested beyond 64 levels"},
+      {write("twice.json", R"({"benchmarks": [], "benchmarks": []})"), "a key given twice"},
       {write("array.json", "[1, 2]"), "is not a JSON object"},
       {write("results.json", read_text(testing::sample_path())), "has no 'benchmarks' array"},
       {write("other.json", R"({"benchmarks": [{"name": "BM_Assembly", "real_time": 1,
