@@ -19,11 +19,6 @@ namespace {
 
 using nlohmann::json;
 
-/// A number that reads back to the same double.
-std::string num(double v) {
-  return fmt::format("{:.17g}", v);
-}
-
 json point(const Eigen::Vector2d& x) {
   return json::array({x.x(), x.y()});
 }
@@ -88,7 +83,7 @@ std::string entities(const solver::Mesh& mesh) {
   for (const auto& x : mesh.nodes)
     lo = lo.cwiseMin(x), hi = hi.cwiseMax(x);
   const std::string box =
-      fmt::format("{} {} 0 {} {} 0", num(lo.x()), num(lo.y()), num(hi.x()), num(hi.y()));
+      fmt::format("{} {} 0 {} {} 0", round_trip_text(lo.x()), round_trip_text(lo.y()), round_trip_text(hi.x()), round_trip_text(hi.y()));
   for (std::size_t t = 1; t <= n_points; ++t)
     out += fmt::format("{} 0 0 0 1 {}\n", t, t);
   for (std::size_t t = 1; t <= mesh.edge_sets.size(); ++t)
@@ -105,7 +100,7 @@ std::string nodes_section(const solver::Mesh& mesh) {
   for (int i = 1; i <= n; ++i)
     out += fmt::format("{}\n", i);
   for (const auto& x : mesh.nodes)
-    out += fmt::format("{} {} 0\n", num(x.x()), num(x.y()));
+    out += fmt::format("{} {} 0\n", round_trip_text(x.x()), round_trip_text(x.y()));
   return out + "$EndNodes\n";
 }
 

@@ -17,11 +17,6 @@
 namespace cs::suites {
 namespace {
 
-/// A number that reads back to the same double.
-std::string num(double v) {
-  return fmt::format("{:.17g}", v);
-}
-
 std::string direction(int component) {
   return component == 0 ? "x" : "y";
 }
@@ -41,8 +36,8 @@ std::string model_csv(const ProblemSetup& setup) {
   out += fmt::format("n_nodes,{}\nn_elements,{}\n", m.mesh.n_nodes(), m.mesh.n_elements());
   out += fmt::format("thickness,{}\n", axi ? "" : "1");
   out += fmt::format("force_basis,{}\n", axi ? "per_radian" : "per_unit_thickness");
-  out += fmt::format("p,{}\nlength_unit,{}\ncontact_half_width_a,{}\n", num(setup.p),
-                     num(setup.length_unit), num(setup.contact_half_width_a));
+  out += fmt::format("p,{}\nlength_unit,{}\ncontact_half_width_a,{}\n", round_trip_text(setup.p),
+                     round_trip_text(setup.length_unit), round_trip_text(setup.contact_half_width_a));
   out += fmt::format("contact_surface,{}\ntarget_surface,{}\nsampled_surface,{}\n",
                      setup.pair.contact_surface, target_surface(setup.pair), kSampledSurface);
   return out;
@@ -51,7 +46,7 @@ std::string model_csv(const ProblemSetup& setup) {
 std::string nodes_csv(const solver::Mesh& mesh) {
   std::string out = "id,x,y\n";
   for (int n = 0; n < mesh.n_nodes(); ++n)
-    out += fmt::format("{},{},{}\n", n + 1, num(mesh.nodes[n].x()), num(mesh.nodes[n].y()));
+    out += fmt::format("{},{},{}\n", n + 1, round_trip_text(mesh.nodes[n].x()), round_trip_text(mesh.nodes[n].y()));
   return out;
 }
 
@@ -101,7 +96,7 @@ std::string boundary_csv(const solver::Model& model) {
     for (int n : solver::resolve_nodes(model.mesh, c.where)) {
       const int component = c.component == solver::Component::X ? 0 : 1;
       out += fmt::format("{},{},{},{}\n", c.where.name, n + 1, direction(component),
-                         num(c.value(model.mesh.nodes[n])));
+                         round_trip_text(c.value(model.mesh.nodes[n])));
     }
   }
   return out;
@@ -117,7 +112,7 @@ std::string loads_csv(const solver::Model& model) {
     const double fx = dofs.is_free(2 * n) ? f[2 * n] : 0.0;
     const double fy = dofs.is_free(2 * n + 1) ? f[2 * n + 1] : 0.0;
     if (fx != 0.0 || fy != 0.0)
-      out += fmt::format("{},{},{}\n", n + 1, num(fx), num(fy));
+      out += fmt::format("{},{},{}\n", n + 1, round_trip_text(fx), round_trip_text(fy));
   }
   return out;
 }
@@ -126,8 +121,8 @@ std::string materials_csv(const solver::Model& model) {
   std::string out = "body,name,E,nu\n";
   for (int b = 0; b < model.n_bodies(); ++b) {
     out += fmt::format("{},{},{},{}\n", b, model.mesh.body_names[b],
-                       num(model.materials[b].youngs_modulus_E),
-                       num(model.materials[b].poissons_ratio_nu));
+                       round_trip_text(model.materials[b].youngs_modulus_E),
+                       round_trip_text(model.materials[b].poissons_ratio_nu));
   }
   return out;
 }
@@ -138,6 +133,10 @@ std::string contact_pair_csv(const solver::ContactPair& pair) {
 }
 
 }  // namespace
+
+std::string round_trip_text(double v) {
+  return fmt::format("{:.17g}", v);
+}
 
 std::string_view sample_rule_name(SamplePoint where) {
   switch (where) {
@@ -246,8 +245,8 @@ std::string cases_csv_rows(const CaseSpec& spec, const ProblemSetup& setup,
   for (const QuantityRule& rule : setup.quantities) {
     out += fmt::format("{},{},{},{},{},{}\n", options, schema::to_string(rule.quantity),
                        stress_component_name(rule.component), sample_rule_name(rule.where),
-                       std::isfinite(rule.exact) ? num(rule.exact) : "inf",
-                       rule.study_exact ? num(*rule.study_exact) : "");
+                       std::isfinite(rule.exact) ? round_trip_text(rule.exact) : "inf",
+                       rule.study_exact ? round_trip_text(*rule.study_exact) : "");
   }
   return out;
 }

@@ -49,6 +49,9 @@ std::vector<ExportFile> model_files(const ProblemSetup& setup);
 /// The name of a sampling rule in the exchange formats: "max_on_surface", "at_axis", ...
 std::string_view sample_rule_name(SamplePoint where);
 
+/// A number as text that reads back to the same double ("{:.17g}"), for the exported files.
+std::string round_trip_text(double v);
+
 /// The name of a stress component in the exchange formats: "sigma_z", "sigma_x", "tau_xz".
 std::string_view stress_component_name(StressComponent c);
 

@@ -10,13 +10,6 @@
 
 namespace cs::solver {
 
-namespace {
-
-/// Below this reciprocal condition number the condensed system counts as singular.
-constexpr double kMinRcond = 1e-14;
-
-}  // namespace
-
 ActiveSetStep solve_with_laws(const CondensedProblem& p, const std::vector<RowLaw>& laws) {
   const int m = p.size();
   ActiveSetStep step;

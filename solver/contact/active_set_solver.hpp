@@ -90,6 +90,10 @@ struct AlgorithmOutcome {
 /// Relative residual below which the loop stops converged.
 inline constexpr double kActiveSetTolerance = 1e-9;
 
+/// Below this reciprocal condition number a condensed system (frictionless or coupled) counts as
+/// singular, and the loop stops not converged.
+inline constexpr double kMinRcond = 1e-14;
+
 /// What every algorithm reads: the condensed problem and the per-row scales.
 struct AlgorithmInput {
   const CondensedProblem& problem;

@@ -11,9 +11,6 @@ namespace cs::solver {
 
 namespace {
 
-/// Below this reciprocal condition number the coupled system counts as singular.
-constexpr double kMinRcond = 1e-14;
-
 /// The laws of one iteration: one per row, and the coefficient of the partner row's force
 /// (non-zero only on slipping tangential rows).
 struct CoupledLaws {

@@ -50,7 +50,7 @@ TEST(RefinementSection, StudyClaimCountsOnlyConvergedVfCases) {
   EXPECT_FALSE(refinement_claim_applies(row({14.0, 13.0, 12.0}, false, 3.0)));  // u on F
 }
 
-constexpr double kExact = 1.0;
+constexpr double kUnitExact = 1.0;
 
 /// A baseline row of H_p sigma_c with values on C, M, F (and VF when given, with its status).
 void add_row(schema::ResultsDocument& doc, schema::Algorithm algorithm, schema::ContactKind contact,
@@ -70,14 +70,14 @@ void add_row(schema::ResultsDocument& doc, schema::Algorithm algorithm, schema::
     schema::QuantityResult q;
     q.quantity = schema::Quantity::sigma_c;
     q.value = value;
-    q.exact = kExact;
-    q.error_percent = grading::error_percent(value, kExact);
+    q.exact = kUnitExact;
+    q.error_percent = grading::error_percent(value, kUnitExact);
     c.quantities.push_back(q);
     doc.cases.push_back(c);
   };
   for (std::size_t m = 0; m < 3; ++m) {
     r.values[m] = values[m];
-    r.errors[m] = grading::error_percent(values[m], kExact);
+    r.errors[m] = grading::error_percent(values[m], kUnitExact);
     add_case(static_cast<schema::MeshLevel>(m), values[m], schema::CaseStatus::converged);
   }
   r.converging = false;
@@ -86,7 +86,7 @@ void add_row(schema::ResultsDocument& doc, schema::Algorithm algorithm, schema::
   if (vf) {
     r.refinement.emplace();
     r.refinement->value = *vf;
-    r.refinement->error = grading::error_percent(*vf, kExact);
+    r.refinement->error = grading::error_percent(*vf, kUnitExact);
     add_case(schema::MeshLevel::VF, *vf, vf_status);
   }
   doc.rows.push_back(r);

@@ -44,7 +44,7 @@ bool meshio_available() {
   return status == 0;
 }
 
-CaseSpec spec_of(ProblemId problem, Element element, TargetKind target) {
+CaseSpec directory_spec(ProblemId problem, Element element, TargetKind target) {
   CaseSpec spec;
   spec.problem = problem;
   spec.element = element;
@@ -89,7 +89,7 @@ class CaseDirectoryTest : public ::testing::TestWithParam<Element> {};
 TEST_P(CaseDirectoryTest, MeshioReadsEveryGroup) {
   if (!meshio_available())
     GTEST_SKIP() << "python3-meshio is not installed";
-  const CaseSpec spec = spec_of(ProblemId::H_p, GetParam(), TargetKind::Discretized);
+  const CaseSpec spec = directory_spec(ProblemId::H_p, GetParam(), TargetKind::Discretized);
   const ProblemSetup setup = build_problem(spec);
   cs::testing::TempDir dir;
   write_case_directory(dir.path(), spec, setup, "");
@@ -135,7 +135,7 @@ INSTANTIATE_TEST_SUITE_P(Elements, CaseDirectoryTest, ::testing::Values(Element:
                          [](const auto& info) { return std::string(to_string(info.param)); });
 
 TEST(CaseDirectory, RigidTargetCarriesItsProfile) {
-  const CaseSpec spec = spec_of(ProblemId::H_p, Element::Q4, TargetKind::Rigid);
+  const CaseSpec spec = directory_spec(ProblemId::H_p, Element::Q4, TargetKind::Rigid);
   const ProblemSetup setup = build_problem(spec);
   cs::testing::TempDir dir;
   write_case_directory(dir.path(), spec, setup, "nitsche");
@@ -154,7 +154,7 @@ TEST(CaseDirectory, RigidTargetCarriesItsProfile) {
 }
 
 TEST(CaseDirectory, SteuermannRigidIsAGivenLoadWithUnknownDepth) {
-  const CaseSpec spec = spec_of(ProblemId::S_1_3, Element::Q4, TargetKind::Rigid);
+  const CaseSpec spec = directory_spec(ProblemId::S_1_3, Element::Q4, TargetKind::Rigid);
   const ProblemSetup setup = build_problem(spec);
   cs::testing::TempDir dir;
   write_case_directory(dir.path(), spec, setup, "");
@@ -178,7 +178,7 @@ TEST(CaseDirectory, NoRunDirectoryFailsEveryBasisWithTheReason) {
   std::ofstream(dir.path() / "file") << "not a directory\n";
   ExecutorOptions options;
   options.external_work_root = dir.path() / "file" / "runs";
-  CaseSpec spec = spec_of(ProblemId::P_p, Element::Q4, TargetKind::Rigid);
+  CaseSpec spec = directory_spec(ProblemId::P_p, Element::Q4, TargetKind::Rigid);
   spec.algorithm = Algorithm::AL;
   spec.contact = ContactKind::ns;
   spec.solver = SolverKind::external;

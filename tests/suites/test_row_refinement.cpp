@@ -14,7 +14,7 @@ namespace {
 
 using cs::testing::Near;
 
-CaseResult hertz_case(MeshLevel mesh, double error_percent) {
+CaseResult hertz_case_of_error(MeshLevel mesh, double error_percent) {
   const double exact = 4.0 / M_PI;
   CaseResult r;
   r.spec = CaseSpec{.problem = ProblemId::H_p,
@@ -37,9 +37,9 @@ CaseResult hertz_case(MeshLevel mesh, double error_percent) {
 // C to M), converging over M-F-VF with the order log2(3/1.5) = 1 from F to VF and an M-F-VF
 // estimate of order 1; the grade is still F's (g), and results.json keeps all of it.
 TEST(RowRefinement, FourMeshesGiveBothVerdictsSideBySide) {
-  const std::vector<CaseResult> cases{hertz_case(MeshLevel::C, 4.0), hertz_case(MeshLevel::M, 6.0),
-                                      hertz_case(MeshLevel::F, 3.0),
-                                      hertz_case(MeshLevel::VF, 1.5)};
+  const std::vector<CaseResult> cases{hertz_case_of_error(MeshLevel::C, 4.0), hertz_case_of_error(MeshLevel::M, 6.0),
+                                      hertz_case_of_error(MeshLevel::F, 3.0),
+                                      hertz_case_of_error(MeshLevel::VF, 1.5)};
   const auto rows = make_row_verdicts(cases);
   ASSERT_EQ(rows.size(), 1u);
   const RowVerdict& row = rows[0];
@@ -68,8 +68,8 @@ TEST(RowRefinement, FourMeshesGiveBothVerdictsSideBySide) {
 
 // Requirement: rows without VF have no refinement record (the study's three meshes only).
 TEST(RowRefinement, ThreeMeshesHaveNoRefinementRecord) {
-  const auto rows = make_row_verdicts({hertz_case(MeshLevel::C, 4.0), hertz_case(MeshLevel::M, 2.0),
-                                       hertz_case(MeshLevel::F, 1.0)});
+  const auto rows = make_row_verdicts({hertz_case_of_error(MeshLevel::C, 4.0), hertz_case_of_error(MeshLevel::M, 2.0),
+                                       hertz_case_of_error(MeshLevel::F, 1.0)});
   ASSERT_EQ(rows.size(), 1u);
   EXPECT_FALSE(rows[0].refinement.has_value());
   EXPECT_FALSE(schema::to_json(rows[0]).contains("refinement"));

@@ -193,7 +193,7 @@ void expect_same_result(const CaseResult& base, const CaseResult& scaled, const 
   }
 }
 
-CaseSpec spec_of(ProblemId problem, Element element, TargetKind target = TargetKind::Discretized) {
+CaseSpec coarse_spec(ProblemId problem, Element element, TargetKind target = TargetKind::Discretized) {
   return CaseSpec{.problem = problem,
                   .mesh = MeshLevel::C,
                   .element = element,
@@ -258,7 +258,7 @@ TEST_P(ScalingInvariance, NormalizedResultsDoNotDependOnUnits) {
   const Bounds& bounds = is_steuermann(GetParam()) ? kStiffFloatingPunch : kStrict;
   WorstByMethod worst;
   for (Element element : elements_for(GetParam()))
-    check_invariance(spec_of(GetParam(), element), methods_for(GetParam()), bounds, worst);
+    check_invariance(coarse_spec(GetParam(), element), methods_for(GetParam()), bounds, worst);
   print_worst(to_string(GetParam()), worst);
 }
 
@@ -272,7 +272,7 @@ INSTANTIATE_TEST_SUITE_P(Catalogue, ScalingInvariance, ::testing::ValuesIn(kProb
 // problem: the looser bound of the study's punch is its conditioning, not a scaling rule.
 TEST(ScalingInvariance, SteuermannWithASofterPunchToOneInABillion) {
   WorstByMethod worst;
-  CaseSpec spec = spec_of(ProblemId::S_1_3, Element::Q4);
+  CaseSpec spec = coarse_spec(ProblemId::S_1_3, Element::Q4);
   spec.overrides = {{"E_ratio", 1e3}};
   check_invariance(spec, {{Algorithm::LMP, ContactKind::ss}, {Algorithm::AL, ContactKind::ss}},
                    kSofterPunch, worst);
@@ -285,7 +285,7 @@ TEST(ScalingInvariance, SteuermannWithASofterPunchToOneInABillion) {
 TEST(ScalingInvariance, RigidTargetsDoNotDependOnUnits) {
   WorstByMethod worst;
   for (ProblemId problem : {ProblemId::P_a, ProblemId::H_p, ProblemId::S_1_3, ProblemId::F_a}) {
-    check_invariance(spec_of(problem, Element::Q4, TargetKind::Rigid),
+    check_invariance(coarse_spec(problem, Element::Q4, TargetKind::Rigid),
                      {{Algorithm::LMP, ContactKind::ss}, {Algorithm::AL, ContactKind::mortar}},
                      is_steuermann(problem) ? kSteuermann : kStrict, worst);
   }
