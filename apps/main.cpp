@@ -22,8 +22,8 @@
 #include "platform/interrupts.hpp"
 #include "platform/platform_error.hpp"
 #include "schema/schema_error.hpp"
-#include "suites/blas_kernels.hpp"
 #include "suites/run_environment.hpp"
+#include "suites/start_settings.hpp"
 
 namespace {
 
@@ -37,10 +37,17 @@ std::string one_line(std::string text) {
   return text;
 }
 
+/// Whether the subcommand is one that builds and factorizes models (`run`, `case`).
+bool solves_models(int argc, char** argv) {
+  const std::string command = argc > 1 ? argv[1] : "";
+  return command == "run" || command == "case";
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
-  cs::suites::use_the_cpus_blas_kernels(argv);  // may execute the program again, once
+  // May execute the program again, once; huge pages for the commands that solve models.
+  cs::suites::start_with_the_machines_settings(argv, {.huge_pages = solves_models(argc, argv)});
   cs::suites::run_openmp_regions_serially();
   CLI::App app{
       "contact-suite: frictionless contact problems with exact solutions, solved by finite "

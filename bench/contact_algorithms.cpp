@@ -66,11 +66,11 @@
 
 #include "solver/contact/contact_analysis.hpp"
 #include "solver/linear_static.hpp"
-#include "suites/blas_kernels.hpp"
 #include "suites/case_matrix.hpp"
 #include "suites/problem_executor.hpp"
 #include "suites/problem_setup.hpp"
 #include "suites/run_environment.hpp"
+#include "suites/start_settings.hpp"
 
 namespace {
 
@@ -357,11 +357,12 @@ void register_benchmarks() {
 
 }  // namespace
 
-/// BENCHMARK_MAIN with the benchmarks registered by name first, and OpenBLAS's kernels and the
-/// OpenMP regions as `contact-suite` has them (suites::use_the_cpus_blas_kernels,
-/// suites::run_openmp_regions_serially), so that the timings are its.
+/// BENCHMARK_MAIN with the benchmarks registered by name first, and OpenBLAS's kernels, huge
+/// pages and the OpenMP regions as `contact-suite run` has them
+/// (suites::start_with_the_machines_settings, suites::run_openmp_regions_serially), so that the
+/// timings are its.
 int main(int argc, char** argv) {
-  cs::suites::use_the_cpus_blas_kernels(argv);
+  cs::suites::start_with_the_machines_settings(argv, {.huge_pages = true});
   cs::suites::run_openmp_regions_serially();
   register_benchmarks();
   return cs::bench::run_benchmarks(argc, argv);

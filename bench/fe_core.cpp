@@ -33,7 +33,7 @@
 #include "solver/load_vector.hpp"
 #include "solver/mesh/structured_block.hpp"
 #include "solver/stress_recovery.hpp"
-#include "suites/blas_kernels.hpp"
+#include "suites/start_settings.hpp"
 
 namespace {
 
@@ -262,8 +262,9 @@ BENCHMARK(BM_StressRecovery)
     ->ArgNames({"method", "element", "n"})
     ->Unit(benchmark::kMillisecond);
 
-/// BENCHMARK_MAIN with OpenBLAS's kernels as `contact-suite` has them (a factorization is timed).
+/// BENCHMARK_MAIN with OpenBLAS's kernels and huge pages as `contact-suite run` has them (a
+/// factorization is timed).
 int main(int argc, char** argv) {
-  cs::suites::use_the_cpus_blas_kernels(argv);
+  cs::suites::start_with_the_machines_settings(argv, {.huge_pages = true});
   return cs::bench::run_benchmarks(argc, argv);
 }

@@ -2,11 +2,9 @@
 
 #include <dlfcn.h>
 #include <strings.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <cstdlib>
-#include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <sstream>
@@ -48,28 +46,14 @@ std::string_view blas_kernels_for(const std::set<std::string>& flags) {
   return "";
 }
 
-void use_the_cpus_blas_kernels(char** argv) {
-  constexpr const char* kAgain = "CONTACT_SUITE_BLAS_REEXEC";  // set: this is the second start
-  if (std::getenv(kAgain) != nullptr) {
-    unsetenv(kAgain);  // not handed on: a child contact-suite decides for itself
-    return;
-  }
+std::optional<std::string> blas_kernels_to_set() {
   if (std::getenv("OPENBLAS_CORETYPE") != nullptr ||
       strcasecmp(blas_core_name().c_str(), "Prescott") != 0)
-    return;
+    return std::nullopt;
   const std::string_view kernels = blas_kernels_for(cpu_flags());
-  std::error_code ec;
-  const std::filesystem::path exe = std::filesystem::read_symlink("/proc/self/exe", ec);
-  // Started through the dynamic loader (ld-linux-x86-64.so.2 contact-suite ...), /proc/self/exe
-  // is the loader, which would take argv[0] for the program: keep the library's kernels.
-  if (kernels.empty() || ec || exe.filename().string().starts_with("ld-"))
-    return;
-  if (setenv("OPENBLAS_CORETYPE", std::string(kernels).c_str(), 1) != 0 ||
-      setenv(kAgain, "1", 1) != 0)
-    return;
-  execv(exe.c_str(), argv);
-  unsetenv("OPENBLAS_CORETYPE");  // the execution failed: go on with the library's kernels
-  unsetenv(kAgain);
+  if (kernels.empty())
+    return std::nullopt;
+  return std::string(kernels);
 }
 
 }  // namespace cs::suites

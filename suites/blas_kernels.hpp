@@ -4,12 +4,12 @@
 // know (Emerald Rapids, family 6 model 207) falls back to Prescott's SSE3 kernels, which take
 // the main job 1.37 times the CPU time of the AVX-512 ones (196 s against 144 s; wall 103 s
 // against 76 s, one pair on a quiet machine). The library reads OPENBLAS_CORETYPE only when it
-// is loaded, so the program sets it and executes itself again before anything else runs.
-// A user's own OPENBLAS_CORETYPE is kept; a library that is not OpenBLAS is left alone. The
-// variable stays set for the programs the tool starts (ccx, a Python adapter's NumPy), which load
-// the same library; CONTACT_SUITE_BLAS_REEXEC marks the second start, so that it never repeats
-// (set by hand, it keeps the library's own choice).
+// is loaded, so the program sets it and executes itself again before anything else runs
+// (suites/start_settings.hpp). A user's own OPENBLAS_CORETYPE is kept; a library that is not
+// OpenBLAS is left alone. The variable stays set for the programs the tool starts (ccx, a Python
+// adapter's NumPy), which load the same library.
 
+#include <optional>
 #include <set>
 #include <string>
 #include <string_view>
@@ -21,10 +21,8 @@ namespace cs::suites {
 /// alone, "Haswell" with avx2 and fma, else "" (none better than the library's).
 std::string_view blas_kernels_for(const std::set<std::string>& flags);
 
-/// When OpenBLAS fell back to Prescott on a CPU that blas_kernels_for() gives a better set,
-/// and OPENBLAS_CORETYPE is not set: sets it and executes this program (/proc/self/exe) with
-/// `argv` again. Returns (doing nothing) otherwise: on the second start, when the program was
-/// started through the dynamic loader, or when the execution fails.
-void use_the_cpus_blas_kernels(char** argv);
+/// The value OPENBLAS_CORETYPE should take: blas_kernels_for() this CPU when OpenBLAS fell back
+/// to Prescott and OPENBLAS_CORETYPE is not set; nothing otherwise.
+std::optional<std::string> blas_kernels_to_set();
 
 }  // namespace cs::suites

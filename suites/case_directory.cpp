@@ -83,7 +83,8 @@ std::string entities(const solver::Mesh& mesh) {
   for (const auto& x : mesh.nodes)
     lo = lo.cwiseMin(x), hi = hi.cwiseMax(x);
   const std::string box =
-      fmt::format("{} {} 0 {} {} 0", round_trip_text(lo.x()), round_trip_text(lo.y()), round_trip_text(hi.x()), round_trip_text(hi.y()));
+      fmt::format("{} {} 0 {} {} 0", round_trip_text(lo.x()), round_trip_text(lo.y()),
+                  round_trip_text(hi.x()), round_trip_text(hi.y()));
   for (std::size_t t = 1; t <= n_points; ++t)
     out += fmt::format("{} 0 0 0 1 {}\n", t, t);
   for (std::size_t t = 1; t <= mesh.edge_sets.size(); ++t)

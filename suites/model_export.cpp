@@ -36,8 +36,9 @@ std::string model_csv(const ProblemSetup& setup) {
   out += fmt::format("n_nodes,{}\nn_elements,{}\n", m.mesh.n_nodes(), m.mesh.n_elements());
   out += fmt::format("thickness,{}\n", axi ? "" : "1");
   out += fmt::format("force_basis,{}\n", axi ? "per_radian" : "per_unit_thickness");
-  out += fmt::format("p,{}\nlength_unit,{}\ncontact_half_width_a,{}\n", round_trip_text(setup.p),
-                     round_trip_text(setup.length_unit), round_trip_text(setup.contact_half_width_a));
+  out +=
+      fmt::format("p,{}\nlength_unit,{}\ncontact_half_width_a,{}\n", round_trip_text(setup.p),
+                  round_trip_text(setup.length_unit), round_trip_text(setup.contact_half_width_a));
   out += fmt::format("contact_surface,{}\ntarget_surface,{}\nsampled_surface,{}\n",
                      setup.pair.contact_surface, target_surface(setup.pair), kSampledSurface);
   return out;
@@ -46,7 +47,8 @@ std::string model_csv(const ProblemSetup& setup) {
 std::string nodes_csv(const solver::Mesh& mesh) {
   std::string out = "id,x,y\n";
   for (int n = 0; n < mesh.n_nodes(); ++n)
-    out += fmt::format("{},{},{}\n", n + 1, round_trip_text(mesh.nodes[n].x()), round_trip_text(mesh.nodes[n].y()));
+    out += fmt::format("{},{},{}\n", n + 1, round_trip_text(mesh.nodes[n].x()),
+                       round_trip_text(mesh.nodes[n].y()));
   return out;
 }
 

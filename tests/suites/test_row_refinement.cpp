@@ -37,9 +37,9 @@ CaseResult hertz_case_of_error(MeshLevel mesh, double error_percent) {
 // C to M), converging over M-F-VF with the order log2(3/1.5) = 1 from F to VF and an M-F-VF
 // estimate of order 1; the grade is still F's (g), and results.json keeps all of it.
 TEST(RowRefinement, FourMeshesGiveBothVerdictsSideBySide) {
-  const std::vector<CaseResult> cases{hertz_case_of_error(MeshLevel::C, 4.0), hertz_case_of_error(MeshLevel::M, 6.0),
-                                      hertz_case_of_error(MeshLevel::F, 3.0),
-                                      hertz_case_of_error(MeshLevel::VF, 1.5)};
+  const std::vector<CaseResult> cases{
+      hertz_case_of_error(MeshLevel::C, 4.0), hertz_case_of_error(MeshLevel::M, 6.0),
+      hertz_case_of_error(MeshLevel::F, 3.0), hertz_case_of_error(MeshLevel::VF, 1.5)};
   const auto rows = make_row_verdicts(cases);
   ASSERT_EQ(rows.size(), 1u);
   const RowVerdict& row = rows[0];
@@ -68,7 +68,8 @@ TEST(RowRefinement, FourMeshesGiveBothVerdictsSideBySide) {
 
 // Requirement: rows without VF have no refinement record (the study's three meshes only).
 TEST(RowRefinement, ThreeMeshesHaveNoRefinementRecord) {
-  const auto rows = make_row_verdicts({hertz_case_of_error(MeshLevel::C, 4.0), hertz_case_of_error(MeshLevel::M, 2.0),
+  const auto rows = make_row_verdicts({hertz_case_of_error(MeshLevel::C, 4.0),
+                                       hertz_case_of_error(MeshLevel::M, 2.0),
                                        hertz_case_of_error(MeshLevel::F, 1.0)});
   ASSERT_EQ(rows.size(), 1u);
   EXPECT_FALSE(rows[0].refinement.has_value());

@@ -193,7 +193,8 @@ void expect_same_result(const CaseResult& base, const CaseResult& scaled, const 
   }
 }
 
-CaseSpec coarse_spec(ProblemId problem, Element element, TargetKind target = TargetKind::Discretized) {
+CaseSpec coarse_spec(ProblemId problem, Element element,
+                     TargetKind target = TargetKind::Discretized) {
   return CaseSpec{.problem = problem,
                   .mesh = MeshLevel::C,
                   .element = element,
