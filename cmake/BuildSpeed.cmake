@@ -13,9 +13,10 @@ option(CONTACT_SUITE_PCH "Precompile the heavy third-party headers of each targe
 # compiled once per target instead of once per batch. Measured unit by unit on one core against
 # batches of 8: the command line 72 -> 32 s, the report writer 90 -> 68 s, the suites 77 -> 52 s.
 # The solver keeps batches of 8 (cs_unity_batches): its optimized code dominates its time, and
-# one unit of it would be the build's longest step. A file whose file-local names (an anonymous
-# namespace's helpers and constants) clash with another's in the same target is compiled on its
-# own: cs_unity_exclude, next to the target.
+# one unit of it would be the build's longest step. Test files whose file-local names (an
+# anonymous namespace's helpers and constants) would clash keep them in a namespace named after
+# the file (test_solver: 91 -> 63 s); a library file that cannot is compiled on its own:
+# cs_unity_exclude, next to the target.
 option(CONTACT_SUITE_UNITY "Compile each target's files as one unit (unity build)" ON)
 if(CONTACT_SUITE_UNITY)
   set(CMAKE_UNITY_BUILD ON)

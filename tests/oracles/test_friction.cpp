@@ -25,7 +25,8 @@
 #include "oracles/quadrature.hpp"
 #include "support/tolerance.hpp"
 
-namespace cs::oracles {
+// A namespace of its own: the file-local names stay apart from the program's others (unity build).
+namespace cs::oracles::test_friction {
 namespace {
 
 using cs::testing::Near;
@@ -376,4 +377,4 @@ TEST(FrictionalPatch, StickTransmitsTheShearExactlyAndSlipTransmitsMuP) {
 }
 
 }  // namespace
-}  // namespace cs::oracles
+}  // namespace cs::oracles::test_friction

@@ -14,7 +14,8 @@
 #include "oracles/quadrature.hpp"
 #include "support/tolerance.hpp"
 
-namespace cs::oracles {
+// A namespace of its own: the file-local names stay apart from the program's others (unity build).
+namespace cs::oracles::test_hertz {
 namespace {
 
 using cs::testing::Near;
@@ -113,4 +114,4 @@ TEST(HertzAxi, NormalizedPeakIsThreeHalves) {
 }
 
 }  // namespace
-}  // namespace cs::oracles
+}  // namespace cs::oracles::test_hertz

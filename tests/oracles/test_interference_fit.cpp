@@ -18,7 +18,8 @@
 #include "oracles/invalid_input.hpp"
 #include "support/tolerance.hpp"
 
-namespace cs::oracles {
+// A namespace of its own: the file-local names stay apart from the program's others (unity build).
+namespace cs::oracles::test_interference_fit {
 namespace {
 
 using cs::testing::Near;
@@ -267,4 +268,4 @@ TEST(InterferenceFit, RefusalsAtTheEdgesOfTheDomain) {
 }
 
 }  // namespace
-}  // namespace cs::oracles
+}  // namespace cs::oracles::test_interference_fit

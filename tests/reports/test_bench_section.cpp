@@ -20,7 +20,8 @@
 #include "reports/report_error.hpp"
 #include "reports/report_writer.hpp"
 
-namespace cs::reports {
+// A namespace of its own: the file-local names stay apart from the program's others (unity build).
+namespace cs::reports::test_bench_section {
 namespace {
 
 namespace fs = std::filesystem;
@@ -332,9 +333,10 @@ TEST(BenchSection, ModelCasesTableShowsTheNumbersOfTheFile) {
 }
 
 }  // namespace
-}  // namespace cs::reports
+}  // namespace cs::reports::test_bench_section
 
-namespace cs::reports {
+// A namespace of its own: the file-local names stay apart from the program's others (unity build).
+namespace cs::reports::test_bench_section {
 namespace {
 
 /// A Google Benchmark entry of Contact/H_p/F/Q4/<contact>/PM with `ratio`, or its aggregate.
@@ -444,4 +446,4 @@ TEST(BenchTarget, SaysWhenTheTimingsAreNotOfTheResultsAnalyses) {
 }
 
 }  // namespace
-}  // namespace cs::reports
+}  // namespace cs::reports::test_bench_section

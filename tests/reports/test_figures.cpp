@@ -15,7 +15,8 @@
 #include "reports/figures/figures.hpp"
 #include "reports/figures/gnuplot.hpp"
 
-namespace cs::reports {
+// A namespace of its own: the file-local names stay apart from the program's others (unity build).
+namespace cs::reports::test_figures {
 namespace {
 
 namespace fs = std::filesystem;
@@ -199,4 +200,4 @@ TEST(Figures, ProfileNotesSayWhenTheExactCurveIsMissing) {
 }
 
 }  // namespace
-}  // namespace cs::reports
+}  // namespace cs::reports::test_figures

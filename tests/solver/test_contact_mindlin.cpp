@@ -35,7 +35,8 @@
 #include "support/tolerance.hpp"
 #include "test_contact_support.hpp"
 
-namespace cs::solver {
+// A namespace of its own: the file-local names stay apart from the program's others (unity build).
+namespace cs::solver::test_contact_mindlin {
 namespace {
 
 using contact_test::FrictionLoad;
@@ -206,4 +207,4 @@ std::vector<MindlinCase> all_cases() {
 INSTANTIATE_TEST_SUITE_P(AllMethods, MindlinTest, ::testing::ValuesIn(all_cases()), case_name);
 
 }  // namespace
-}  // namespace cs::solver
+}  // namespace cs::solver::test_contact_mindlin

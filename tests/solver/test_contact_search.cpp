@@ -15,7 +15,8 @@
 #include "support/tolerance.hpp"
 #include "test_contact_support.hpp"
 
-namespace cs::solver {
+// A namespace of its own: the file-local names stay apart from the program's others (unity build).
+namespace cs::solver::test_contact_search {
 namespace {
 
 using contact_test::HertzSpec;
@@ -113,4 +114,4 @@ TEST(ContactSearch, MultipointConstraintsIgnorePointsBeyondThePinball) {
 }
 
 }  // namespace
-}  // namespace cs::solver
+}  // namespace cs::solver::test_contact_search

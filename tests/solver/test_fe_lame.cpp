@@ -23,7 +23,8 @@
 #include "support/tolerance.hpp"
 #include "test_fe_support.hpp"
 
-namespace cs::solver {
+// A namespace of its own: the file-local names stay apart from the program's others (unity build).
+namespace cs::solver::test_fe_lame {
 namespace {
 
 using cs::testing::Near;
@@ -195,4 +196,4 @@ INSTANTIATE_TEST_SUITE_P(
     lame_name);
 
 }  // namespace
-}  // namespace cs::solver
+}  // namespace cs::solver::test_fe_lame

@@ -11,7 +11,8 @@
 #include "support/tolerance.hpp"
 #include "test_fe_support.hpp"
 
-namespace cs::solver {
+// A namespace of its own: the file-local names stay apart from the program's others (unity build).
+namespace cs::solver::test_fe_patch {
 namespace {
 
 using cs::testing::Near;
@@ -161,4 +162,4 @@ INSTANTIATE_TEST_SUITE_P(AllElementsAndAnalyses, FePatchTest,
                          name);
 
 }  // namespace
-}  // namespace cs::solver
+}  // namespace cs::solver::test_fe_patch

@@ -14,7 +14,8 @@
 #include "support/tolerance.hpp"
 #include "test_fe_support.hpp"
 
-namespace cs::solver {
+// A namespace of its own: the file-local names stay apart from the program's others (unity build).
+namespace cs::solver::test_fe_patch_recovery {
 namespace {
 
 constexpr double kE = 100.0, kNu = 0.3;
@@ -150,4 +151,4 @@ TEST(FePatchRecovery, PatchesStayInTheirBody) {
 }
 
 }  // namespace
-}  // namespace cs::solver
+}  // namespace cs::solver::test_fe_patch_recovery

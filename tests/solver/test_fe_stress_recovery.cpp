@@ -14,7 +14,8 @@
 #include "support/tolerance.hpp"
 #include "test_fe_support.hpp"
 
-namespace cs::solver {
+// A namespace of its own: the file-local names stay apart from the program's others (unity build).
+namespace cs::solver::test_fe_stress_recovery {
 namespace {
 
 using cs::testing::Near;
@@ -191,4 +192,4 @@ TEST(FeSurfacePath, ChainsLoopsAndFallback) {
 }
 
 }  // namespace
-}  // namespace cs::solver
+}  // namespace cs::solver::test_fe_stress_recovery

@@ -19,7 +19,8 @@
 #include "support/tolerance.hpp"
 #include "test_fe_support.hpp"
 
-namespace cs::solver {
+// A namespace of its own: the file-local names stay apart from the program's others (unity build).
+namespace cs::solver::test_fe_strip_load {
 namespace {
 
 constexpr double kHalfWidth = 1.0, kPressure = 1.0, kSize = 4.0;
@@ -87,4 +88,4 @@ TEST(FeStripLoad, InteriorStressesConvergeToTheHalfSpaceSolution) {
 }
 
 }  // namespace
-}  // namespace cs::solver
+}  // namespace cs::solver::test_fe_strip_load

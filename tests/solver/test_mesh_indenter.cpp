@@ -10,7 +10,8 @@
 #include "solver/mesh/mesh_sets.hpp"
 #include "support/tolerance.hpp"
 
-namespace cs::solver {
+// A namespace of its own: the file-local names stay apart from the program's others (unity build).
+namespace cs::solver::test_mesh_indenter {
 namespace {
 
 using cs::testing::Near;
@@ -92,4 +93,4 @@ TEST(Indenter, RejectsAnIndenterThinnerThanItsProfileDrop) {
 }
 
 }  // namespace
-}  // namespace cs::solver
+}  // namespace cs::solver::test_mesh_indenter

@@ -10,7 +10,8 @@
 #include "solver/mesh/nested_refinement.hpp"
 #include "support/tolerance.hpp"
 
-namespace cs::solver {
+// A namespace of its own: the file-local names stay apart from the program's others (unity build).
+namespace cs::solver::test_mesh_nested_refinement {
 namespace {
 
 using cs::testing::Near;
@@ -157,4 +158,4 @@ TEST(NestedRefinement, BadInputIsRejectedWithACause) {
 }
 
 }  // namespace
-}  // namespace cs::solver
+}  // namespace cs::solver::test_mesh_nested_refinement

@@ -9,7 +9,8 @@
 #include "solver/mesh/spacing.hpp"
 #include "support/tolerance.hpp"
 
-namespace cs::solver {
+// A namespace of its own: the file-local names stay apart from the program's others (unity build).
+namespace cs::solver::test_mesh_spacing {
 namespace {
 
 using cs::testing::Near;
@@ -101,4 +102,4 @@ TEST(Spacing, BadGradingIsRejected) {
 }
 
 }  // namespace
-}  // namespace cs::solver
+}  // namespace cs::solver::test_mesh_spacing

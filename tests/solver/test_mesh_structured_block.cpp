@@ -9,7 +9,8 @@
 #include "solver/mesh/structured_block.hpp"
 #include "support/tolerance.hpp"
 
-namespace cs::solver {
+// A namespace of its own: the file-local names stay apart from the program's others (unity build).
+namespace cs::solver::test_mesh_structured_block {
 namespace {
 
 using cs::testing::Near;
@@ -158,4 +159,4 @@ TEST(MappedBlock, RejectsAnInvertingMap) {
 }
 
 }  // namespace
-}  // namespace cs::solver
+}  // namespace cs::solver::test_mesh_structured_block

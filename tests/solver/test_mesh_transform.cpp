@@ -12,7 +12,8 @@
 #include "solver/mesh/structured_block.hpp"
 #include "support/tolerance.hpp"
 
-namespace cs::solver {
+// A namespace of its own: the file-local names stay apart from the program's others (unity build).
+namespace cs::solver::test_mesh_transform {
 namespace {
 
 using cs::testing::Near;
@@ -175,4 +176,4 @@ TEST(MeshSets, EdgeSetNodesSortedAlongXAndRenamed) {
 }
 
 }  // namespace
-}  // namespace cs::solver
+}  // namespace cs::solver::test_mesh_transform

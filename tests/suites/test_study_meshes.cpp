@@ -13,7 +13,8 @@
 #include "suites/suite_error.hpp"
 #include "support/tolerance.hpp"
 
-namespace cs::suites {
+// A namespace of its own: the file-local names stay apart from the program's others (unity build).
+namespace cs::suites::test_study_meshes {
 namespace {
 
 using cs::testing::Near;
@@ -356,4 +357,4 @@ TEST(StudyMeshes, ExtentBelowOneOrOnAPatchTestIsRejected) {
 }
 
 }  // namespace
-}  // namespace cs::suites
+}  // namespace cs::suites::test_study_meshes
