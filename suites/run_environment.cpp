@@ -64,7 +64,9 @@ nlohmann::json run_environment() {
           {"eigen",
            fmt::format("{}.{}.{}", EIGEN_WORLD_VERSION, EIGEN_MAJOR_VERSION, EIGEN_MINOR_VERSION)},
           {"gsl", GSL_VERSION},
-          {"blas", blas_name()}};
+          {"blas", blas_name()},
+          // glibc's tunables in force, e.g. the huge pages of suites/huge_pages.hpp ("" if unset)
+          {"glibc_tunables", std::getenv("GLIBC_TUNABLES") ? std::getenv("GLIBC_TUNABLES") : ""}};
 }
 
 std::string utc_now_iso8601() {

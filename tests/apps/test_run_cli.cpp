@@ -2,6 +2,7 @@
 // line recorded in results.json, a bad recovery name rejected as bad input, and `case --vtu`
 // writing the whole field without overwriting a file of the user's.
 
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -100,6 +101,31 @@ TEST(RunCli, UsesTheCpusBlasKernels) {
   const std::string kept = blas((tmp.path() / "b").string());
   ::unsetenv("OPENBLAS_CORETYPE");
   EXPECT_NE(kept.find("Prescott"), std::string::npos) << kept;
+}
+
+// Requirement: where the kernel gives transparent huge pages on request only, `run` works with
+// glibc.malloc.hugetlb=1 (suites/huge_pages.hpp), and a user's own setting of it is kept:
+// results.json's environment names the tunables in force. Fails if the restart does not set the
+// tunable, or if it overrides the user's.
+TEST(RunCli, AsksForHugePagesAndKeepsTheUsersChoice) {
+  if (read_text("/sys/kernel/mm/transparent_hugepage/enabled").find("[madvise]") ==
+      std::string::npos)
+    GTEST_SKIP() << "the kernel does not give huge pages on request only";
+  TempDir tmp;
+  const auto tunables = [&](const std::string& out) {
+    const auto r = run_cli({"run", "--problems", "P_p", "--meshes", "C", "--elements", "Q4",
+                            "--algorithms", "AL", "--contacts", "ss", "--no-report", "--out", out});
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    const auto doc = nlohmann::json::parse(read_text(fs::path(out) / "results.json"));
+    return doc["run"]["environment"]["glibc_tunables"].get<std::string>();
+  };
+  const char* own = std::getenv("GLIBC_TUNABLES");
+  const std::string saved = own != nullptr ? own : "";
+  ::unsetenv("GLIBC_TUNABLES");
+  EXPECT_EQ(tunables((tmp.path() / "a").string()), "glibc.malloc.hugetlb=1");
+  ::setenv("GLIBC_TUNABLES", "glibc.malloc.hugetlb=0", 1);  // the user's choice is kept
+  EXPECT_EQ(tunables((tmp.path() / "b").string()), "glibc.malloc.hugetlb=0");
+  saved.empty() ? ::unsetenv("GLIBC_TUNABLES") : ::setenv("GLIBC_TUNABLES", saved.c_str(), 1);
 }
 
 // Requirement: `case --vtu` replaces only a .vtu contact-suite wrote. A file of the user's at that
