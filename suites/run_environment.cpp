@@ -4,6 +4,7 @@
 #include <sys/utsname.h>
 #include <unistd.h>
 
+#include <atomic>
 #include <cstdlib>
 #include <ctime>
 #include <fstream>
@@ -20,6 +21,9 @@
 
 namespace cs::suites {
 namespace {
+
+/// Whether the process asked for serial OpenMP regions (run_openmp_regions_serially).
+std::atomic<bool> openmp_regions_serial = false;
 
 std::string cpu_model() {
   std::ifstream in("/proc/cpuinfo");
@@ -100,7 +104,13 @@ bool run_openmp_regions_serially() {
   if (fn == nullptr || std::getenv("OMP_THREAD_LIMIT") != nullptr)
     return false;
   fn(0);  // no level of parallel regions is active: each runs on the thread that meets it
+  openmp_regions_serial = true;
   return true;
+}
+
+void keep_openmp_regions_serial_here() {
+  if (openmp_regions_serial)
+    run_openmp_regions_serially();
 }
 
 std::string contact_suite_version() {

@@ -30,6 +30,13 @@ int blas_threads();
 /// longer than the loops take. The dense kernels, where a factorization spends its time, are
 /// threaded by OpenBLAS (set_blas_threads), which this does not touch. Returns false when no
 /// OpenMP runtime is loaded or the user's limit is kept. Call once, before any factorization.
+/// libgomp keeps the setting per thread (max-active-levels-var belongs to the thread's data
+/// environment): a thread started later inherits the runtime's default, not this, and calls
+/// keep_openmp_regions_serial_here().
 bool run_openmp_regions_serially();
+
+/// On a thread started after run_openmp_regions_serially() (the runner's workers): runs the
+/// libraries' OpenMP regions met on this thread serially too, if the process asked for it.
+void keep_openmp_regions_serial_here();
 
 }  // namespace cs::suites

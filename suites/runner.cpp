@@ -11,6 +11,8 @@
 #include <optional>
 #include <thread>
 
+#include "suites/run_environment.hpp"
+
 namespace cs::suites {
 namespace {
 
@@ -196,8 +198,12 @@ std::vector<CaseResult> run_cases(const std::vector<CaseSpec>& cases,
     worker();
   } else {
     std::vector<std::jthread> threads;
-    for (int j = 0; j < jobs; ++j)
-      threads.emplace_back(worker);
+    for (int j = 0; j < jobs; ++j) {
+      threads.emplace_back([&] {
+        keep_openmp_regions_serial_here();  // the setting is per thread
+        worker();
+      });
+    }
   }
   return results;
 }

@@ -5,9 +5,11 @@
 
 #include <unistd.h>
 
+#include <atomic>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
@@ -18,6 +20,7 @@
 #include "platform/child_process.hpp"
 #include "solver/linear_solver.hpp"
 #include "suites/run_environment.hpp"
+#include "suites/runner.hpp"
 
 namespace {
 
@@ -70,6 +73,44 @@ Probe run_probe(std::vector<std::pair<std::string, std::string>> environment) {
 
 }  // namespace
 
+/// One supernodal factorization per case, on the worker that runs it; records the most threads
+/// the process had just after any of them.
+class FactorizingExecutor : public cs::suites::GroupExecutor {
+ public:
+  explicit FactorizingExecutor(std::atomic<int>& most) : most_(most) {}
+  cs::suites::CaseResult run(const cs::schema::CaseSpec&) override {
+    cs::solver::LinearSolver solver;
+    EXPECT_TRUE(solver.compute(grid_matrix(120)).ok());
+    EXPECT_TRUE(solver.info().supernodal);
+    for (int n = thread_count(), m = most_; n > m && !most_.compare_exchange_weak(m, n);) {
+    }
+    return {};
+  }
+
+ private:
+  std::atomic<int>& most_;
+};
+
+/// The threads after factorizing: on this thread, or (CS_OPENMP_WORKERS) on each of the two
+/// workers of a run of two models, the most the process had after any factorization.
+int threads_after_factorizing() {
+  if (std::getenv("CS_OPENMP_WORKERS") == nullptr) {
+    cs::solver::LinearSolver solver;
+    EXPECT_TRUE(solver.compute(grid_matrix(120)).ok());
+    EXPECT_TRUE(solver.info().supernodal);
+    return thread_count();
+  }
+  std::atomic<int> most = 0;
+  cs::schema::CaseSpec a, b;
+  b.mesh = cs::schema::MeshLevel::M;  // another model: the two run on two workers
+  cs::suites::RunnerOptions two_workers;
+  two_workers.jobs = 2;
+  cs::suites::run_cases(
+      {a, b}, [&](const auto&) { return std::make_unique<FactorizingExecutor>(most); },
+      two_workers);
+  return most;
+}
+
 /// Not a test on its own: what a child run of this program reports to the tests below.
 TEST(OpenmpRegions, Probe) {
   const char* file = std::getenv("CS_OPENMP_PROBE");
@@ -78,12 +119,9 @@ TEST(OpenmpRegions, Probe) {
   const int serial =
       std::getenv("CS_OPENMP_SERIAL") ? int{cs::suites::run_openmp_regions_serially()} : -1;
   cs::suites::set_blas_threads(1);
-  const Eigen::SparseMatrix<double> a = grid_matrix(120);
-  cs::solver::LinearSolver solver;
   const int before = thread_count();
-  ASSERT_TRUE(solver.compute(a).ok());
-  ASSERT_TRUE(solver.info().supernodal);
-  std::ofstream(file) << serial << ' ' << before << ' ' << thread_count() << '\n';
+  const int after = threads_after_factorizing();
+  std::ofstream(file) << serial << ' ' << before << ' ' << after << '\n';
 }
 
 TEST(OpenmpRegions, ASupernodalFactorizationStartsNoOpenmpThread) {
@@ -96,6 +134,20 @@ TEST(OpenmpRegions, ASupernodalFactorizationStartsNoOpenmpThread) {
   // Without the call, the same factorization starts CHOLMOD's OpenMP team.
   const Probe team = run_probe({});
   EXPECT_GT(team.after, team.before);
+}
+
+/// libgomp keeps the setting per thread: the runner's workers must take it up themselves. A run
+/// of two models on two workers then has the two workers' threads and no OpenMP team.
+TEST(OpenmpRegions, TheRunnersWorkersStartNoOpenmpThread) {
+  if (std::getenv("OMP_THREAD_LIMIT") != nullptr)
+    GTEST_SKIP() << "OMP_THREAD_LIMIT is set: the user's limit is kept";
+  const Probe serial = run_probe({{"CS_OPENMP_SERIAL", "1"}, {"CS_OPENMP_WORKERS", "1"}});
+  EXPECT_EQ(serial.serial, 1);
+  EXPECT_GT(serial.before, 0);
+  EXPECT_LE(serial.after, serial.before + 2);
+  // Without the call, each worker's factorization starts a team of its own.
+  const Probe team = run_probe({{"CS_OPENMP_WORKERS", "1"}});
+  EXPECT_GT(team.after, team.before + 2);
 }
 
 TEST(OpenmpRegions, TheUsersThreadLimitIsKept) {
