@@ -6,9 +6,14 @@
 
 #include <metis.h>
 
+#include "solver/per_thread_rand.hpp"
+
 namespace cs::solver {
 
 std::unique_lock<std::mutex> metis_turn() {
+  static const bool per_thread = rand_is_per_thread();
+  if (per_thread)
+    return {};
   static std::mutex metis;
   return std::unique_lock(metis);
 }

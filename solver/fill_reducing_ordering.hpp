@@ -14,10 +14,11 @@
 namespace cs::solver {
 
 /// The turn that every call into METIS holds, direct or through CHOLMOD's analysis with its
-/// METIS or NESDIS orderings. METIS reseeds one random generator of the whole process at each
-/// call and draws from it while it orders: two calls at once interleave their draws and return
-/// other orderings, so the same matrix was factored with other round-off and the results moved
-/// with the schedule of a run's workers.
+/// METIS or NESDIS orderings. METIS reseeds libc's random generator at each call and draws from
+/// it while it orders. Where that generator is the whole process's, two calls at once
+/// interleave their draws and return other orderings, so the same matrix was factored with
+/// other round-off and the results moved with the schedule of a run's workers: the turn is a
+/// lock. Where each thread draws from its own (rand_is_per_thread), it holds nothing.
 std::unique_lock<std::mutex> metis_turn();
 
 /// The METIS nested-dissection ordering of the symmetric matrix whose lower triangle is

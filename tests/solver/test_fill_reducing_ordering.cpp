@@ -2,14 +2,19 @@
 // thread, while other threads order other matrices. METIS draws from one random generator for
 // the whole process, so concurrent calls interleaved their draws and returned other orderings;
 // those factor the same matrix with other round-off, and the load-controlled S cases of a run
-// with two workers then moved in the 7th digit from run to run.
+// with two workers then moved in the 7th digit from run to run. A program linked with the
+// solver gives each thread a generator of its own (solver/per_thread_rand.hpp), so the calls
+// need not take turns.
 
+#include <atomic>
+#include <cstdlib>
 #include <thread>
 #include <vector>
 
 #include <gtest/gtest.h>
 
 #include "solver/fill_reducing_ordering.hpp"
+#include "solver/per_thread_rand.hpp"
 
 namespace cs::solver {
 namespace {
@@ -67,6 +72,46 @@ TEST(FillReducingOrdering, MetisOrderingIsTheSameFromConcurrentThreads) {
   }
   for (std::size_t k = 0; k < sizes.size(); ++k)
     EXPECT_EQ(differing[k], 0) << sizes[k] << " x " << sizes[k] << " grid";
+}
+
+/// The first draws after srand(seed) on this thread.
+std::vector<int> draws(unsigned seed, int count) {
+  srand(seed);
+  std::vector<int> out;
+  for (int k = 0; k < count; ++k)
+    out.push_back(rand());
+  return out;
+}
+
+// Requirement: this program draws rand() per thread, with glibc's numbers (glibc's first draw
+// after srand(1) is 1804289383, as it is before any srand), and the calls into METIS take no
+// turn.
+TEST(PerThreadRand, AProgramLinkedWithTheSolverDrawsPerThreadWithGlibcsNumbers) {
+  ASSERT_TRUE(rand_is_per_thread());
+  EXPECT_FALSE(metis_turn().owns_lock());
+  int first = 0;
+  std::jthread([&] { first = rand(); }).join();  // a new thread's generator, never seeded
+  EXPECT_EQ(first, 1804289383);
+  EXPECT_EQ(draws(1, 1).front(), 1804289383);
+}
+
+// Requirement: two threads seeded alike draw the same numbers while they draw at once, each
+// what it draws alone (METIS's draws while another thread orders).
+TEST(PerThreadRand, AThreadsDrawsAreItsOwn) {
+  const std::vector<int> alone = draws(4321, 20000);
+  std::atomic<int> ready = 0;
+  std::vector<int> a, b;
+  {
+    const auto both = [&](std::vector<int>& out) {
+      ++ready;
+      while (ready < 2) {
+      }
+      out = draws(4321, 20000);
+    };
+    std::jthread ta(both, std::ref(a)), tb(both, std::ref(b));
+  }
+  EXPECT_EQ(a, alone);
+  EXPECT_EQ(b, alone);
 }
 
 }  // namespace
