@@ -332,23 +332,26 @@ def _read_elements(text, groups, names):
     return out
 
 
-def _mesh_sets(elements):
-    """Quadrilateral blocks by body, edge sets, node sets from the element groups."""
+def _mesh_sets(elements, n_nodes):
+    """Quadrilateral blocks by body (element id, then node indices), edge sets, node sets from
+    the element groups; a node tag outside 1..n_nodes is refused naming its group."""
     quads, edge_sets, node_sets = {}, {}, {}
     for (dim, name), blocks in elements.items():
-        rows = [r for _, block in blocks for r in block]
+        rows = np.array([r for _, block in blocks for r in block], dtype=int)
         types = {t for t, _ in blocks}
+        where = f"$Elements: group '{name}'"
         if dim == 2:
             if len(types) != 1 or next(iter(types)) not in _QUAD_TYPES:
                 raise _Missing(f"body '{name}': element types {sorted(types)} are not one of "
                                "3 (Q4) or 16 (Q8)")
-            quads[name] = (_QUAD_TYPES[next(iter(types))][0], np.array(rows, dtype=int))
+            nodes = _node_ids(rows[:, 1:], n_nodes, where)
+            quads[name] = (_QUAD_TYPES[next(iter(types))][0], rows[:, 0], nodes)
         elif dim == 1:
             if len(types) != 1 or next(iter(types)) not in _LINE_TYPES:
                 raise _Missing(f"edge set '{name}': element types {sorted(types)} are not 1 or 8")
-            edge_sets[name] = np.array([r[1:] for r in rows], dtype=int) - 1
+            edge_sets[name] = _node_ids(rows[:, 1:], n_nodes, where)
         elif dim == 0:
-            node_sets[name.removesuffix(":nodes")] = np.array([r[1] for r in rows], dtype=int) - 1
+            node_sets[name.removesuffix(":nodes")] = _node_ids(rows[:, 1], n_nodes, where)
     for name, sides in edge_sets.items():
         node_sets.setdefault(name, np.unique(sides))
     return quads, edge_sets, node_sets
@@ -378,8 +381,8 @@ def _contact(j):
 
 
 def _node_ids(ids, n_nodes, where):
-    """0-based node indices of case.json's node ids (1..n_nodes), or _Missing naming `where`:
-    an id of 0 or below would index from the end of a NumPy array."""
+    """0-based node indices of node ids (1..n_nodes) of case.json or mesh.msh, or _Missing
+    naming `where`: an id of 0 or below would index from the end of a NumPy array."""
     ids = np.asarray(ids, dtype=int)
     bad = ids[(ids < 1) | (ids > n_nodes)]
     if bad.size:
@@ -446,9 +449,9 @@ def _bodies(j, quads):
         group = b.get("physical_group", b["name"])
         if group not in quads:
             raise _Missing(f"bodies: '{group}' is not a physical group of dimension 2")
-        element, rows = quads[group]
-        out.append(Body(b["name"], b["role"], float(b["E"]), float(b["nu"]), element,
-                        rows[:, 1:] - 1, rows[:, 0]))
+        element, ids, nodes = quads[group]
+        out.append(Body(b["name"], b["role"], float(b["E"]), float(b["nu"]), element, nodes,
+                        ids))
     return out
 
 
@@ -475,7 +478,7 @@ def read_case(path):
     try:
         nodes = _read_nodes(text)
         elements = _read_elements(text, _entity_groups(text), _physical_names(text))
-        quads, edge_sets, node_sets = _mesh_sets(elements)
+        quads, edge_sets, node_sets = _mesh_sets(elements, len(nodes))
     except (KeyError, IndexError, ValueError) as e:
         raise ValueError(f"{mesh_file}: {_why(e)}") from None
     try:

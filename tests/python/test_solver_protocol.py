@@ -268,6 +268,27 @@ def test_read_case_refuses_a_node_id_out_of_range(code_dir, tmp_path):
         cs.read_case(case_dir)
 
 
+@pytest.mark.parametrize("tag", ["0", "n+1"])
+def test_read_case_refuses_a_mesh_node_tag_out_of_range(code_dir, tmp_path, tag):
+    """Requirement: an element of mesh.msh naming node 0 (or a node beyond the mesh) raises
+    ValueError naming the file and the group; it never reads the last node for node 0."""
+    doc = run(code_dir, tmp_path / "out", "keep", "--problems", "P_p", "--meshes", "C",
+              "--elements", "Q4", "--target", "rigid")
+    case_dir = tmp_path / "case"
+    shutil.copytree(kept_case_directory(doc.cases[0]), case_dir)
+    lines = (case_dir / "mesh.msh").read_text().split("\n")
+    n_nodes = int(lines[lines.index("$Nodes") + 1].split()[1])
+    start = lines.index("$Elements") + 2
+    header = next(k for k in range(start, len(lines)) if lines[k].split()[2:3] == ["3"])
+    row = lines[header + 1].split()
+    row[1] = "0" if tag == "0" else str(n_nodes + 1)
+    lines[header + 1] = " ".join(row)
+    (case_dir / "mesh.msh").write_text("\n".join(lines))
+    with pytest.raises(ValueError, match=f"mesh.msh: .*group '.*': node id {row[1]} is not in "
+                                         f"1..{n_nodes}"):
+        cs.read_case(case_dir)
+
+
 def test_signed_distances():
     """Requirement: the profiles' signed distance is the documented formula (values by hand)."""
     plane = cs.RigidProfile("plane", {"point": (0.0, 0.0), "normal": (0.0, 1.0)})
