@@ -159,7 +159,8 @@ int run_case(const CaseArgs& args) {
   result.peak_rss_mb = suites::peak_rss_mb();
   auto* builtin = dynamic_cast<suites::ProblemExecutor*>(executor.get());
   if (args.vtu_given && builtin && builtin->last_displacement().size() > 0)
-    builtin->write_vtu(args.vtu, platform::kWrittenMarkText);
+    platform::replace_written_file(args.vtu, builtin->vtu_document(platform::kWrittenMarkText),
+                                   "--vtu");
   if (args.json) {
     fmt::print("{}\n", schema::to_json(result).dump(2, ' ', false,
                                                     nlohmann::json::error_handler_t::replace));

@@ -22,6 +22,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
+/// How a JUnit file of an earlier version (before the mark) began: its root element.
+constexpr std::string_view kOlderJunitMark = R"(<testsuites name="contact-suite )";
+
 fs::path directory_of(const fs::path& file) {
   return file.has_parent_path() ? file.parent_path() : fs::path(".");
 }
@@ -55,25 +58,6 @@ void require_writable_file(const std::string& option, const std::string& path) {
     fs::remove(file, ec);
 }
 
-/// Writes `text` to a temporary file beside `path`, then renames it over `path`.
-void replace_file(const std::string& option, const std::string& path, const std::string& text) {
-  std::string temp = (directory_of(path) / ".contact-suite-XXXXXX").string();
-  const int fd = mkstemp(temp.data());
-  if (fd < 0)
-    throw UsageError(
-        fmt::format("{} {}: cannot be written ({})", option, path, std::strerror(errno)));
-  const bool written = ::write(fd, text.data(), text.size()) == static_cast<ssize_t>(text.size()) &&
-                       ::fsync(fd) == 0;
-  ::close(fd);
-  std::error_code ec;
-  if (written)
-    fs::permissions(temp, fs::perms(0644), ec);
-  if (!written || ec || std::rename(temp.c_str(), path.c_str()) != 0) {
-    fs::remove(temp, ec);
-    throw UsageError(fmt::format("{} {}: cannot be written", option, path));
-  }
-}
-
 void append_file(const std::string& option, const std::string& path, const std::string& text) {
   std::ofstream out(path, std::ios::binary | std::ios::app);
   out << text;
@@ -104,7 +88,7 @@ void require_writable(const CiReportFiles& files) {
   platform::require_outside_sets(files.summary, "--summary");
   // First, so that a link or a FIFO is refused before it is opened. A file of an earlier version
   // (before the mark) began with its root element, named by write_ci_reports' callers.
-  platform::require_replaceable(files.junit, "--junit", R"(<testsuites name="contact-suite )");
+  platform::require_replaceable(files.junit, "--junit", kOlderJunitMark);
   require_writable_file("--junit", files.junit);
   require_writable_file("--summary", files.summary);
 }
@@ -112,7 +96,7 @@ void require_writable(const CiReportFiles& files) {
 void write_ci_reports(const CiReportFiles& files, const std::vector<schema::RowOutcome>& rows,
                       std::string_view name, std::string_view title) {
   if (!files.junit.empty())
-    replace_file("--junit", files.junit, junit_xml(rows, name));
+    platform::replace_written_file(files.junit, junit_xml(rows, name), "--junit", kOlderJunitMark);
   if (!files.summary.empty())
     append_file("--summary", files.summary, ci_summary_markdown(rows, title));
 }

@@ -1,5 +1,12 @@
 #include "platform/replaceable_file.hpp"
 
+#include <fcntl.h>
+#include <stdio.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
 #include <fstream>
 #include <string>
 #include <system_error>
@@ -21,7 +28,49 @@ std::string head_of(const fs::path& file) {
   return head;
 }
 
+/// A file beside `file` holding `text` (mode 0644, synced to disk); throws OutputError.
+fs::path temporary_copy(const fs::path& file, std::string_view text, const char* what) {
+  const fs::path dir = file.has_parent_path() ? file.parent_path() : fs::path(".");
+  std::string temp = (dir / ".contact-suite-XXXXXX").string();
+  const int fd = ::mkstemp(temp.data());
+  if (fd < 0) {
+    throw OutputError(std::string(what) + " " + file.string() + ": cannot be written (" +
+                      std::strerror(errno) + ")");
+  }
+  const bool written = ::write(fd, text.data(), text.size()) == static_cast<ssize_t>(text.size()) &&
+                       ::fchmod(fd, 0644) == 0 && ::fsync(fd) == 0;
+  const int error = errno;
+  ::close(fd);
+  if (!written) {
+    ::unlink(temp.c_str());
+    throw OutputError(std::string(what) + " " + file.string() + ": cannot be written (" +
+                      std::strerror(error) + ")");
+  }
+  return temp;
+}
+
 }  // namespace
+
+void replace_written_file(const fs::path& file, std::string_view text, const char* what,
+                          std::string_view older_mark) {
+  const fs::path temp = temporary_copy(file, text, what);
+  try {
+    // Absent: created only while still absent. Present (or no RENAME_NOREPLACE here): replaced
+    // only if it still is the tool's.
+    if (::renameat2(AT_FDCWD, temp.c_str(), AT_FDCWD, file.c_str(), RENAME_NOREPLACE) == 0)
+      return;
+    if (errno != EEXIST && errno != EINVAL && errno != ENOSYS)
+      throw OutputError(std::string(what) + " " + file.string() + ": cannot be written (" +
+                        std::strerror(errno) + ")");
+    require_replaceable(file, what, older_mark);
+    if (::rename(temp.c_str(), file.c_str()) != 0)
+      throw OutputError(std::string(what) + " " + file.string() + ": cannot be written (" +
+                        std::strerror(errno) + ")");
+  } catch (...) {
+    ::unlink(temp.c_str());
+    throw;
+  }
+}
 
 std::string written_mark() {
   return "<!--" + std::string(kWrittenMarkText) + "-->";

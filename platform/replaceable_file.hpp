@@ -26,4 +26,13 @@ void require_replaceable(const std::filesystem::path& file, const char* what,
 /// How far into a file require_replaceable looks for the mark.
 inline constexpr std::size_t kWrittenMarkReach = 512;
 
+/// Writes `text` as `file` (given as option `what`) in one step: a temporary file beside it,
+/// then a rename. The check of require_replaceable is made again at the rename, not only when
+/// the run started: a file the user put there meanwhile is kept, and the call throws
+/// PlatformError (nothing is written). An absent file is created only if it is still absent
+/// (renameat2's RENAME_NOREPLACE; where the file system lacks it, the check just before the
+/// rename). Throws OutputError when the file system fails (e.g. no space left).
+void replace_written_file(const std::filesystem::path& file, std::string_view text,
+                          const char* what, std::string_view older_mark = {});
+
 }  // namespace cs::platform

@@ -264,7 +264,7 @@ const std::optional<solver::StressField>& ProblemExecutor::last_stresses() {
   return last_stresses_;
 }
 
-void ProblemExecutor::write_vtu(const std::string& path, std::string_view comment) {
+std::string ProblemExecutor::vtu_document(std::string_view comment) {
   if (last_u_.size() == 0 || !last_stresses()) {
     throw std::runtime_error("no displacement to write: the case produced no values");
   }
@@ -283,7 +283,7 @@ void ProblemExecutor::write_vtu(const std::string& path, std::string_view commen
       stresses[k].values.push_back(s[k]);
   }
   stresses.insert(stresses.begin(), displacement);
-  solver::write_vtu(path, mesh, stresses, comment);
+  return solver::vtu_document(mesh, stresses, comment);
 }
 
 std::unique_ptr<GroupExecutor> make_problem_executor(const CaseSpec& representative) {

@@ -49,7 +49,7 @@ class ProblemExecutor final : public GroupExecutor {
   /// Cases run after this call recover the whole displacement field. By default a case
   /// recovers it only where its grading reads it (the sampled surface's patches, the contact
   /// rows and, under load control, the support), NaN elsewhere: call this first for
-  /// last_displacement(), last_stresses() or write_vtu().
+  /// last_displacement(), last_stresses() or vtu_document().
   void recover_whole_field();
   /// The displacement of the last case run (empty if it produced none; see
   /// recover_whole_field()).
@@ -61,10 +61,10 @@ class ProblemExecutor final : public GroupExecutor {
   /// How many contact solves the cases run so far took: a case that only recovers another way,
   /// or whose solve would repeat a recent one (contact_solution), takes none.
   int contact_solves() const { return contact_solves_; }
-  /// Writes the model with the displacement and nodal stresses of the last case run as a
-  /// .vtu file (atomically), with `comment` as an XML comment at its top (none when empty).
-  /// Throws std::runtime_error if the last case produced no values.
-  void write_vtu(const std::string& path, std::string_view comment = {});
+  /// The model with the displacement and nodal stresses of the last case run as a .vtu
+  /// document, with `comment` as an XML comment at its top (none when empty). Throws
+  /// std::runtime_error if the last case produced no values.
+  std::string vtu_document(std::string_view comment = {});
 
  private:
   /// The contact solution of `spec`: solved, or the last one when only the recovery differs
