@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <utility>
 
 #include <fmt/format.h>
 
@@ -75,18 +76,44 @@ std::optional<double> lm_mean_error(const ResultsIndex& index, schema::ProblemId
   return out;
 }
 
-/// "Q8 LMP mortar, Q8 PLM mortar": every option whose arc deviation on F lies within the study's
-/// resolution of |`extreme`|: a tie is named whole, not by its first member.
-std::string tied_options(const ResultsIndex& index, schema::ProblemId id, double extreme) {
+/// "−0.01 % … +3.0e-03 %": a signed range of F errors, one value where both ends print alike.
+std::string signed_range(double low, double high) {
+  const std::string a = format_error_resolved(low), b = format_error_resolved(high);
+  return a == b ? a : a + " … " + b;
+}
+
+/// Every option whose arc deviation on F lies within the study's resolution of |`extreme`| (a
+/// tie is named whole, not by its first member: "Q8 LMP mortar, Q8 PLM mortar"), and the signed
+/// range of their deviations, which a tie of magnitudes may give both signs.
+std::pair<std::string, std::string> tied_options(const ResultsIndex& index, schema::ProblemId id,
+                                                 double extreme) {
   std::vector<std::string> tied;
+  double low = extreme, high = extreme;
   for (const auto element : schema::values<schema::Element>()) {
     for (const Option& option : all_options()) {
       const auto e = fine_error(index.row(id, Quantity::p_arc, element, option));
-      if (e && std::abs(std::abs(*e) - std::abs(extreme)) <= grading::kErrorResolutionPercent)
+      if (e && std::abs(std::abs(*e) - std::abs(extreme)) <= grading::kErrorResolutionPercent) {
         tied.push_back(fmt::format("{} {}", schema::to_string(element), option.label()));
+        low = std::min(low, *e);
+        high = std::max(high, *e);
+      }
     }
   }
-  return join_words(tied, ", ");
+  return {signed_range(low, high), join_words(tied, ", ")};
+}
+
+/// The signed range of every option's arc deviation on F.
+std::string all_options_range(const ResultsIndex& index, schema::ProblemId id) {
+  double low = INFINITY, high = -INFINITY;
+  for (const auto element : schema::values<schema::Element>()) {
+    for (const Option& option : all_options()) {
+      if (const auto e = fine_error(index.row(id, Quantity::p_arc, element, option))) {
+        low = std::min(low, *e);
+        high = std::max(high, *e);
+      }
+    }
+  }
+  return signed_range(low, high);
 }
 
 /// The part of one problem; false when it has no row to show.
@@ -100,9 +127,11 @@ bool problem_part(const ResultsIndex& index, const schema::ProblemRecord& p, Tem
   d.set("lm_within", lm && std::abs(*lm) < 1.0);
   if (const auto arc = arc_range(index, p.id)) {
     d.set("arc", true);
+    d.set("all", all_options_range(index, p.id));
     for (const auto& [key, e] : {std::pair{"worst", arc->worst}, {"best", arc->best}}) {
-      d.set(key, format_error_resolved(e.deviation_percent));
-      d.set(std::string(key) + "_option", tied_options(index, p.id, e.deviation_percent));
+      const auto [range, options] = tied_options(index, p.id, e.deviation_percent);
+      d.set(key, range);
+      d.set(std::string(key) + "_option", options);
     }
   }
   return !table.empty();
