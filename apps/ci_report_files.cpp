@@ -1,7 +1,5 @@
 #include "apps/ci_report_files.hpp"
 
-#include <unistd.h>
-
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
