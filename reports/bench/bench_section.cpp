@@ -81,13 +81,11 @@ TemplateData reference_spread(const std::vector<const BenchRow*>& contact) {
       wide.emplace_back(r.second / r.first,
                         fmt::format("{}: {:.3g} to {:.3g} ms", model_md(model), r.first, r.second));
   }
-  if (wide.empty())
-    return TemplateData(false);
   std::ranges::sort(wide, std::greater<>());
   std::vector<std::string> text;
   for (const auto& w : wide)
     text.push_back(w.second);
-  return TemplateData(fmt::format("{}", fmt::join(text, "; ")));
+  return joined_or_false(text, "; ");
 }
 
 /// The cases with a ratio below the physical floor of 1, and the lowest of them.

@@ -8,6 +8,7 @@
 #include <tuple>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <gsl/gsl_statistics_double.h>
 
 #include "grading/convergence.hpp"
@@ -197,8 +198,7 @@ ClaimEvidence ss_equals_ns(const std::vector<RowFacts>& rows) {
         add_example(c.examples2, c.examples2_more, example);
     }
   }
-  for (const Algorithm a : run)
-    c.members += (c.members.empty() ? "" : ", ") + std::string(schema::to_string(a));
+  c.members = join_words(names_of(run), ", ");
   c.figure = largest_lm;
   c.figure2 = largest_mpc;
   c.verdict1 = verdict_of(c.n_hold, c.n);
@@ -632,14 +632,7 @@ ClaimEvidence divergence(const std::vector<DivergenceFacts>& singular) {
 }
 
 /// Closing: AL, PM ss good for most problems; LMP, PLM fine wherever nodes can be aligned.
-/// "LMP/PLM": the algorithms in the vocabulary's order.
-std::string slash_joined(const std::set<Algorithm>& algorithms) {
-  std::string out;
-  for (const Algorithm a : algorithms)
-    out += (out.empty() ? "" : "/") + std::string(schema::to_string(a));
-  return out;
-}
-
+/// members: "LMP/PLM", the algorithms in the vocabulary's order.
 ClaimEvidence closing(const std::vector<RowFacts>& rows) {
   ClaimEvidence c{.key = "closing"};
   std::set<Algorithm> run, run2;  // the algorithms of each part with evidence rows
@@ -666,8 +659,8 @@ ClaimEvidence closing(const std::vector<RowFacts>& rows) {
         add_example(c, row_name(f));
     }
   }
-  c.members = slash_joined(run);
-  c.members2 = slash_joined(run2);
+  c.members = fmt::format("{}", fmt::join(names_of(run), "/"));
+  c.members2 = fmt::format("{}", fmt::join(names_of(run2), "/"));
   c.verdict1 = verdict_of(c.n_hold, c.n, kRefined);
   c.verdict2 = verdict_of(c.n2_hold, c.n2);
   set_verdict_of_parts(c, {c.verdict1, c.verdict2});

@@ -12,6 +12,7 @@
 #include "grading/accuracy.hpp"
 #include "grading/convergence.hpp"
 #include "reports/facts/solvers.hpp"
+#include "reports/tables/markdown_table.hpp"
 #include "reports/tables/option_classes.hpp"
 
 namespace cs::reports {
@@ -364,12 +365,7 @@ std::string family_label(OptionFamily family) {
 }  // namespace
 
 std::string members_label(OptionFamily family, const std::set<schema::Algorithm>& members) {
-  if (members.empty())
-    return family_label(family);
-  std::string out;
-  for (const auto a : members)
-    out += (out.empty() ? "" : ", ") + std::string(schema::to_string(a));
-  return out;
+  return members.empty() ? family_label(family) : join_words(names_of(members), ", ");
 }
 
 std::string option_label(const OptionCell& cell) {

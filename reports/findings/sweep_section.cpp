@@ -242,8 +242,7 @@ void set_study_al(TemplateData& d, const std::vector<ParameterSeries>& series,
   d.set("study_exact", match.value->exact_printed);
   d.set("target", format_error_resolved(target));
   d.set("study_al", template_list(ours, [&](const ParameterSeries* s) {
-          TemplateData r("crossings",
-                         text_or_false(fmt::format("{}", fmt::join(crossings(*s, target), ", "))));
+          TemplateData r("crossings", joined_or_false(crossings(*s, target), ", "));
           r.set("lo", format_error_resolved(s->error_range()->first));
           r.set("hi", format_error_resolved(s->error_range()->second));
           return r;
@@ -370,7 +369,7 @@ TemplateData fkn(const ResultsIndex& index, const std::vector<ParameterSeries>& 
   d.set("v_first", format_parameter(values.front()));
   d.set("it_last", std::to_string(most_iterations(series, values.back(), Algorithm::AL)));
   d.set("v_last", format_parameter(values.back()));
-  d.set("not_converged", text_or_false(fmt::format("{}", fmt::join(not_converged, ", "))));
+  d.set("not_converged", joined_or_false(not_converged, ", "));
   if (!eg.empty())
     d.set("default", fkn_default(series, values, e, eg));
   d.set("al_pm", al_pm(series));

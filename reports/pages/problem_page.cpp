@@ -20,13 +20,6 @@ std::string trend_word(const RowFacts& f) {
   return std::string(schema::label(f.trend->trend));
 }
 
-std::string mesh_cell(const std::optional<double>& value, const std::optional<double>& error) {
-  if (!value)
-    return kMissing;
-  return error ? fmt::format("{} ({})", format_value(*value), format_error_resolved(*error))
-               : format_value(*value);
-}
-
 /// "yes", "F not converged" or "no: force balance 19.2 tensile pressure 167" (with "; luck of
 /// one mesh" where `luck`): a row's facts, nonsingular or singular.
 template <typename Facts>
@@ -74,12 +67,13 @@ std::string grade_cell(const RowFacts& f) {
 TemplateData row_data(const RowFacts& f, const std::string& label, bool has_vf) {
   TemplateData d;
   d.set("option", label);
-  d.set("c", mesh_cell(f.row->values[0], f.errors[0]));
-  d.set("m", mesh_cell(f.row->values[1], f.errors[1]));
-  d.set("f", mesh_cell(f.row->values[2], f.errors[2]));
+  d.set("c", format_value_and_error(f.row->values[0], f.errors[0]));
+  d.set("m", format_value_and_error(f.row->values[1], f.errors[1]));
+  d.set("f", format_value_and_error(f.row->values[2], f.errors[2]));
   d.set("has_vf", has_vf);
-  d.set("vf", f.row->refinement ? mesh_cell(f.row->refinement->value, f.row->refinement->error)
-                                : std::string(kMissing));
+  d.set("vf", f.row->refinement
+                  ? format_value_and_error(f.row->refinement->value, f.row->refinement->error)
+                  : std::string(kMissing));
   d.set("grade", grade_cell(f));
   d.set("study_c", f.study_c ? "c" : "");
   d.set("trend", trend_word(f));

@@ -75,9 +75,7 @@ std::vector<LmpPlm> lmp_plm_pairs(const ResultsIndex& index, const schema::Probl
 std::string lmp_plm_table(const ResultsIndex& index, const schema::ProblemRecord& p) {
   // A value without an error (an exact value of zero, e.g. a slip length) stands alone.
   const auto cell = [](const RowVerdict* r) {
-    const std::string value = format_value(*r->values[kF]);
-    return r->errors[kF] ? fmt::format("{} ({})", value, format_error_resolved(*r->errors[kF]))
-                         : value;
+    return format_value_and_error(r->values[kF], r->errors[kF]);
   };
   MarkdownTable table({"Element", "Contact", "Quantity", "LMP (F)", "PLM (F)", "LMP − PLM"});
   for (const auto& [quantity, element, contact, lmp, plm] : lmp_plm_pairs(index, p)) {

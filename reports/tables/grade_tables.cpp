@@ -191,8 +191,7 @@ TemplateData comparison_data(const AnsysComparison& c) {
   d.set("better", std::to_string(c.better));
   d.set("worse", std::to_string(c.worse));
   d.set("worse_cells", joined_or_false(c.worse_cells, "; "));
-  d.set("not_evidence",
-        c.not_evidence > 0 ? TemplateData(std::to_string(c.not_evidence)) : TemplateData(false));
+  d.set("not_evidence", count_or_false(c.not_evidence));
   return d;
 }
 
