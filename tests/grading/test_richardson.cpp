@@ -77,7 +77,8 @@ TEST(TrustedEstimate, EachRuleAtItsThreshold) {
                 .estimate,
             nullptr);
   // Values 10.5, 10.3, 10.2 converge (order 1) to 10.1, 1 % above the exact 10.
-  const TrustedEstimate biased = trusted_estimate(row_with_errors({5.0, 3.0, 2.0}));
+  const schema::RowVerdict biased_row = row_with_errors({5.0, 3.0, 2.0});  // the estimate's row
+  const TrustedEstimate biased = trusted_estimate(biased_row);
   ASSERT_NE(biased.estimate, nullptr);
   EXPECT_NEAR(*biased.estimate->richardson, 10.1, 1e-9);
   EXPECT_EQ(trusted_estimate(schema::RowVerdict{}).estimate, nullptr);  // no estimate at all
