@@ -157,16 +157,18 @@ int run_case(const CaseArgs& args) {
   result.wall_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   result.peak_rss_mb = suites::peak_rss_mb();
-  auto* builtin = dynamic_cast<suites::ProblemExecutor*>(executor.get());
-  if (args.vtu_given && builtin && builtin->last_displacement().size() > 0)
-    platform::replace_written_file(args.vtu, builtin->vtu_document(platform::kWrittenMarkText),
-                                   "--vtu");
   if (args.json) {
     fmt::print("{}\n", schema::to_json(result).dump(2, ' ', false,
                                                     nlohmann::json::error_handler_t::replace));
   } else {
     print_text(result);
   }
+  // After the values are printed: a file the user put at --vtu during the analysis is refused
+  // (exit 2), and the analysis's values are not lost with it.
+  auto* builtin = dynamic_cast<suites::ProblemExecutor*>(executor.get());
+  if (args.vtu_given && builtin && builtin->last_displacement().size() > 0)
+    platform::replace_written_file(args.vtu, builtin->vtu_document(platform::kWrittenMarkText),
+                                   "--vtu");
   return result.status == suites::CaseStatus::converged ? kSuccess : kCasesFailed;
 }
 

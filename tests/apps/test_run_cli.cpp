@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -76,6 +77,36 @@ TEST(RunCli, CaseVtuHoldsTheWholeField) {
   EXPECT_EQ(text.find("inf"), std::string::npos);
 }
 
+/// Sets (or, with nullopt, unsets) an environment variable for the programs a test runs, and
+/// puts back what it was when the test leaves the scope, whatever the way out.
+class ScopedEnvironment {
+ public:
+  ScopedEnvironment(const char* name, const std::optional<std::string>& value) : name_(name) {
+    if (const char* old = std::getenv(name))
+      old_ = old;
+    set(value);
+  }
+  ~ScopedEnvironment() { set(old_); }
+  ScopedEnvironment(const ScopedEnvironment&) = delete;
+  ScopedEnvironment& operator=(const ScopedEnvironment&) = delete;
+  void set(const std::optional<std::string>& value) const {
+    value ? ::setenv(name_, value->c_str(), 1) : ::unsetenv(name_);
+  }
+
+ private:
+  const char* name_;
+  std::optional<std::string> old_;
+};
+
+/// The field `key` of results.json's environment after `run` of one small case into `out`.
+std::string environment_of_a_run(const std::string& out, const char* key) {
+  const auto r = run_cli({"run", "--problems", "P_p", "--meshes", "C", "--elements", "Q4",
+                          "--algorithms", "AL", "--contacts", "ss", "--no-report", "--out", out});
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  const auto doc = nlohmann::json::parse(read_text(fs::path(out) / "results.json"));
+  return doc["run"]["environment"][key].get<std::string>();
+}
+
 // Requirement: on a CPU with AVX2 and FMA the program never runs OpenBLAS's Prescott (SSE3)
 // kernels, the library's fall-back for a CPU model it does not know: results.json's environment
 // names the kernels used. Fails on such a CPU if the program keeps the fall-back (Debian 12's
@@ -85,21 +116,14 @@ TEST(RunCli, UsesTheCpusBlasKernels) {
   if (flags.find(" avx2") == std::string::npos || flags.find(" fma") == std::string::npos)
     GTEST_SKIP() << "no AVX2 and FMA: the library's own kernels are the best";
   TempDir tmp;
-  const auto blas = [&](const std::string& out) {
-    const auto r = run_cli({"run", "--problems", "P_p", "--meshes", "C", "--elements", "Q4",
-                            "--algorithms", "AL", "--contacts", "ss", "--no-report", "--out", out});
-    EXPECT_EQ(r.exit_code, 0) << r.err;
-    const auto doc = nlohmann::json::parse(read_text(fs::path(out) / "results.json"));
-    return doc["run"]["environment"]["blas"].get<std::string>();
-  };
-  const std::string chosen = blas((tmp.path() / "a").string());
+  ScopedEnvironment coretype("OPENBLAS_CORETYPE", std::nullopt);
+  const std::string chosen = environment_of_a_run((tmp.path() / "a").string(), "blas");
   if (chosen.find("OpenBLAS") == std::string::npos ||
       chosen.find("DYNAMIC_ARCH") == std::string::npos)
     GTEST_SKIP() << "not an OpenBLAS that chooses its kernels at load time: " << chosen;
   EXPECT_EQ(chosen.find("Prescott"), std::string::npos) << chosen;
-  ::setenv("OPENBLAS_CORETYPE", "Prescott", 1);  // the user's choice is kept
-  const std::string kept = blas((tmp.path() / "b").string());
-  ::unsetenv("OPENBLAS_CORETYPE");
+  coretype.set("Prescott");  // the user's choice is kept
+  const std::string kept = environment_of_a_run((tmp.path() / "b").string(), "blas");
   EXPECT_NE(kept.find("Prescott"), std::string::npos) << kept;
 }
 
@@ -112,20 +136,12 @@ TEST(RunCli, AsksForHugePagesAndKeepsTheUsersChoice) {
       std::string::npos)
     GTEST_SKIP() << "the kernel does not give huge pages on request only";
   TempDir tmp;
-  const auto tunables = [&](const std::string& out) {
-    const auto r = run_cli({"run", "--problems", "P_p", "--meshes", "C", "--elements", "Q4",
-                            "--algorithms", "AL", "--contacts", "ss", "--no-report", "--out", out});
-    EXPECT_EQ(r.exit_code, 0) << r.err;
-    const auto doc = nlohmann::json::parse(read_text(fs::path(out) / "results.json"));
-    return doc["run"]["environment"]["glibc_tunables"].get<std::string>();
-  };
-  const char* own = std::getenv("GLIBC_TUNABLES");
-  const std::string saved = own != nullptr ? own : "";
-  ::unsetenv("GLIBC_TUNABLES");
-  EXPECT_EQ(tunables((tmp.path() / "a").string()), "glibc.malloc.hugetlb=1");
-  ::setenv("GLIBC_TUNABLES", "glibc.malloc.hugetlb=0", 1);  // the user's choice is kept
-  EXPECT_EQ(tunables((tmp.path() / "b").string()), "glibc.malloc.hugetlb=0");
-  saved.empty() ? ::unsetenv("GLIBC_TUNABLES") : ::setenv("GLIBC_TUNABLES", saved.c_str(), 1);
+  ScopedEnvironment tunables("GLIBC_TUNABLES", std::nullopt);
+  EXPECT_EQ(environment_of_a_run((tmp.path() / "a").string(), "glibc_tunables"),
+            "glibc.malloc.hugetlb=1");
+  tunables.set("glibc.malloc.hugetlb=0");  // the user's choice is kept
+  EXPECT_EQ(environment_of_a_run((tmp.path() / "b").string(), "glibc_tunables"),
+            "glibc.malloc.hugetlb=0");
 }
 
 // Requirement: `case --vtu` replaces only a .vtu contact-suite wrote. A file of the user's at that

@@ -1,8 +1,6 @@
 // Single files the tool writes where the user names them: replace_written_file checks again at
 // the rename, so a file that appears at the path while a run works is the user's and is kept.
 
-#include <unistd.h>
-
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -12,6 +10,7 @@
 
 #include "platform/platform_error.hpp"
 #include "platform/replaceable_file.hpp"
+#include "support/temp_dir.hpp"
 
 namespace cs::platform {
 namespace {
@@ -20,14 +19,7 @@ namespace fs = std::filesystem;
 
 class ReplaceWrittenFile : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("cs-replaceable-" + std::to_string(::getpid()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
-  fs::path path(const std::string& name) const { return dir_ / name; }
+  fs::path path(const std::string& name) const { return dir_.path() / name; }
   static std::string read(const fs::path& file) {
     std::ifstream in(file);
     std::stringstream text;
@@ -37,12 +29,12 @@ class ReplaceWrittenFile : public ::testing::Test {
   /// The directory's entries: no temporary file may be left.
   int entries() const {
     int n = 0;
-    for ([[maybe_unused]] const auto& e : fs::directory_iterator(dir_))
+    for ([[maybe_unused]] const auto& e : fs::directory_iterator(dir_.path()))
       ++n;
     return n;
   }
 
-  fs::path dir_;
+  testing::TempDir dir_;
 };
 
 const std::string kOurs = written_mark() + "\nnew\n";
