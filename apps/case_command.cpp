@@ -14,10 +14,12 @@
 #include "apps/case_selection_options.hpp"
 #include "apps/usage_error.hpp"
 #include "oracles/invalid_input.hpp"
+#include "platform/available_cores.hpp"
 #include "platform/output_directory.hpp"
 #include "platform/output_transaction.hpp"
 #include "platform/replaceable_file.hpp"
 #include "schema/results_file.hpp"
+#include "solver/spare_cores.hpp"
 #include "suites/executor_factory.hpp"
 #include "suites/external_executor.hpp"
 #include "suites/problem_catalog.hpp"
@@ -134,8 +136,10 @@ int run_case(const CaseArgs& args) {
   options.solver_dirs = args.solver_dirs;
   suites::require_solvers({spec}, options);  // e.g. ccx missing: exit 2 before anything runs
   // One BLAS thread, as `run` gives every model (apps/model_cost.hpp): the same values as the
-  // model's cases in a run.
+  // model's cases in a run. The other cores go to the steps that split without changing a value
+  // (a large model's ordering).
   suites::set_blas_threads(1);
+  const solver::CoreLoan loan(platform::available_cores() - 1);
   const auto start = std::chrono::steady_clock::now();
   suites::CaseResult result;
   std::unique_ptr<suites::GroupExecutor> executor;

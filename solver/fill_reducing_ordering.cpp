@@ -1,12 +1,17 @@
 #include "solver/fill_reducing_ordering.hpp"
 
 #include <algorithm>
+#include <exception>
+#include <functional>
 #include <stdexcept>
-#include <string>
+#include <thread>
+
+#include <fmt/format.h>
 
 #include <metis.h>
 
 #include "solver/per_thread_rand.hpp"
+#include "solver/spare_cores.hpp"
 
 namespace cs::solver {
 
@@ -17,6 +22,128 @@ std::unique_lock<std::mutex> metis_turn() {
   static std::mutex metis;
   return std::unique_lock(metis);
 }
+
+namespace {
+
+/// An undirected graph in METIS's form: the neighbours of v are adjncy[xadj[v] .. xadj[v+1]).
+struct Graph {
+  std::vector<idx_t> xadj{0};
+  std::vector<idx_t> adjncy;
+  idx_t vertices() const { return static_cast<idx_t>(xadj.size()) - 1; }
+};
+
+void check_metis(int status, const char* call) {
+  if (status != METIS_OK)
+    throw std::runtime_error(fmt::format("{} failed with status {}", call, status));
+}
+
+/// METIS's nested-dissection ordering of g: perm[k] = the vertex eliminated k-th.
+std::vector<idx_t> metis_node_nd(Graph& g) {
+  idx_t nv = g.vertices();
+  std::vector<idx_t> perm(nv), iperm(nv);
+  if (nv == 0)
+    return perm;
+  idx_t options[METIS_NOPTIONS];
+  METIS_SetDefaultOptions(options);
+  options[METIS_OPTION_NUMBERING] = 0;
+  const auto turn = metis_turn();
+  check_metis(METIS_NodeND(&nv, g.xadj.data(), g.adjncy.data(), nullptr, options, perm.data(),
+                           iperm.data()),
+              "METIS_NodeND");
+  return perm;
+}
+
+/// The subgraph of g induced by the vertices v with part[v] == which; `vertices` receives its
+/// vertices (subgraph index -> vertex of g).
+Graph induced_subgraph(const Graph& g, const std::vector<idx_t>& part, idx_t which,
+                       std::vector<idx_t>& vertices) {
+  const idx_t n = g.vertices();
+  std::vector<idx_t> index(n, -1);
+  vertices.clear();
+  for (idx_t v = 0; v < n; ++v) {
+    if (part[v] == which) {
+      index[v] = static_cast<idx_t>(vertices.size());
+      vertices.push_back(v);
+    }
+  }
+  Graph sub;
+  sub.xadj.reserve(vertices.size() + 1);
+  for (idx_t v : vertices) {
+    for (idx_t k = g.xadj[v]; k < g.xadj[v + 1]; ++k) {
+      if (index[g.adjncy[k]] >= 0)
+        sub.adjncy.push_back(index[g.adjncy[k]]);
+    }
+    sub.xadj.push_back(static_cast<idx_t>(sub.adjncy.size()));
+  }
+  return sub;
+}
+
+/// Runs first() here and second() on a borrowed spare core when one is idle, else after first().
+void run_both(const std::function<void()>& first, const std::function<void()>& second) {
+  const SpareCore core;
+  if (!core) {
+    first();
+    second();
+    return;
+  }
+  std::exception_ptr failed;
+  std::thread other([&] {
+    try {
+      second();
+    } catch (...) {
+      failed = std::current_exception();
+    }
+  });
+  try {
+    first();
+  } catch (...) {
+    other.join();
+    throw;
+  }
+  other.join();
+  if (failed)
+    std::rethrow_exception(failed);
+}
+
+/// Nested dissection of g. From kSplitFrom vertices on, the first level is taken here: METIS's
+/// vertex separator splits g into two parts, METIS orders each part on its own (at once when a
+/// spare core is idle), and the separator is eliminated last, in vertex order. Each METIS call
+/// reseeds its generator, so the permutation is the same on one thread or two.
+std::vector<idx_t> nested_dissection(Graph g) {
+  if (g.vertices() < kSplitFrom)
+    return metis_node_nd(g);
+  idx_t nv = g.vertices();
+  idx_t separator_size = 0;
+  std::vector<idx_t> part(nv);
+  {
+    idx_t options[METIS_NOPTIONS];
+    METIS_SetDefaultOptions(options);
+    options[METIS_OPTION_NUMBERING] = 0;
+    const auto turn = metis_turn();
+    check_metis(METIS_ComputeVertexSeparator(&nv, g.xadj.data(), g.adjncy.data(), nullptr, options,
+                                             &separator_size, part.data()),
+                "METIS_ComputeVertexSeparator");
+  }
+  std::vector<idx_t> vertices0, vertices1;
+  Graph g0 = induced_subgraph(g, part, 0, vertices0);
+  Graph g1 = induced_subgraph(g, part, 1, vertices1);
+  g = Graph{};
+  std::vector<idx_t> perm0, perm1;
+  run_both([&] { perm0 = metis_node_nd(g0); }, [&] { perm1 = metis_node_nd(g1); });
+  std::vector<idx_t> perm;
+  perm.reserve(nv);
+  for (idx_t k : perm0)
+    perm.push_back(vertices0[k]);
+  for (idx_t k : perm1)
+    perm.push_back(vertices1[k]);
+  for (idx_t v = 0; v < nv; ++v) {
+    if (part[v] == 2)
+      perm.push_back(v);
+  }
+  return perm;
+}
+
+}  // namespace
 
 std::vector<int> metis_quotient_ordering(const Eigen::SparseMatrix<double>& A,
                                          const std::vector<int>& group_of_equation) {
@@ -107,19 +234,7 @@ std::vector<int> metis_quotient_ordering(const Eigen::SparseMatrix<double>& A,
   up.clear();
   up.shrink_to_fit();
 
-  std::vector<idx_t> perm(n_vertices), iperm(n_vertices);
-  if (n_vertices > 0) {
-    idx_t nv = n_vertices;
-    idx_t options[METIS_NOPTIONS];
-    METIS_SetDefaultOptions(options);
-    options[METIS_OPTION_NUMBERING] = 0;
-    const auto turn = metis_turn();
-    const int status =
-        METIS_NodeND(&nv, xadj.data(), adjncy.data(), nullptr, options, perm.data(), iperm.data());
-    if (status != METIS_OK) {
-      throw std::runtime_error("METIS_NodeND failed with status " + std::to_string(status));
-    }
-  }
+  const std::vector<idx_t> perm = nested_dissection(Graph{std::move(xadj), std::move(adjncy)});
   std::vector<int> order;
   order.reserve(n);
   for (int k = 0; k < n_vertices; ++k) {

@@ -21,12 +21,18 @@ namespace cs::solver {
 /// lock. Where each thread draws from its own (rand_is_per_thread), it holds nothing.
 std::unique_lock<std::mutex> metis_turn();
 
+/// The number of graph vertices from which the first level of the nested dissection is taken
+/// outside METIS (a vertex separator, then one METIS ordering per part), so that the two parts
+/// can be ordered at once on a spare core (spare_cores.hpp). Below it, one METIS call orders all.
+inline constexpr int kSplitFrom = 200'000;
+
 /// The METIS nested-dissection ordering of the symmetric matrix whose lower triangle is
 /// `A_lower`, computed on the graph whose vertices are the groups of `group_of_equation`
 /// (group index per equation, 0 <= group < n_groups; equations of a group are eliminated
 /// consecutively, in increasing order). Returns perm with perm[k] = the equation eliminated
-/// k-th (CHOLMOD's and METIS's convention), the same from any thread (calls into METIS take
-/// turns). Throws std::runtime_error if METIS fails.
+/// k-th (CHOLMOD's and METIS's convention), the same from any thread and whether or not a spare
+/// core was idle (from kSplitFrom groups on, the two parts of the first separator are ordered by
+/// separate METIS calls). Throws std::runtime_error if METIS fails.
 std::vector<int> metis_quotient_ordering(const Eigen::SparseMatrix<double>& A_lower,
                                          const std::vector<int>& group_of_equation);
 

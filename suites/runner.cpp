@@ -11,6 +11,8 @@
 #include <optional>
 #include <thread>
 
+#include "platform/available_cores.hpp"
+#include "solver/spare_cores.hpp"
 #include "suites/run_environment.hpp"
 
 namespace cs::suites {
@@ -191,17 +193,24 @@ std::vector<CaseResult> run_cases(const std::vector<CaseSpec>& cases,
       queue.finished(*g);
     }
   };
-  int jobs =
-      options.jobs > 0 ? options.jobs : static_cast<int>(std::thread::hardware_concurrency());
+  const int cores = platform::available_cores();
+  int jobs = options.jobs > 0 ? options.jobs : cores;
   jobs = std::clamp(jobs, 1, std::max<int>(1, static_cast<int>(groups.size())));
-  if (jobs == 1) {
+  // Cores no worker uses, and each worker's once it has no model left, go to the steps of a
+  // solve that split without changing a value (solver/spare_cores.hpp).
+  solver::CoreLoan loan(std::max(0, cores - jobs));
+  auto lending_worker = [&] {
     worker();
+    loan.lend(1);
+  };
+  if (jobs == 1) {
+    lending_worker();
   } else {
     std::vector<std::jthread> threads;
     for (int j = 0; j < jobs; ++j) {
       threads.emplace_back([&] {
         keep_openmp_regions_serial_here();  // the setting is per thread
-        worker();
+        lending_worker();
       });
     }
   }

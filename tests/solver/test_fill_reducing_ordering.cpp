@@ -6,6 +6,7 @@
 // solver gives each thread a generator of its own (solver/per_thread_rand.hpp), so the calls
 // need not take turns.
 
+#include <algorithm>
 #include <atomic>
 #include <cstdlib>
 #include <thread>
@@ -13,8 +14,11 @@
 
 #include <gtest/gtest.h>
 
+#include <cholmod.h>
+
 #include "solver/fill_reducing_ordering.hpp"
 #include "solver/per_thread_rand.hpp"
+#include "solver/spare_cores.hpp"
 
 namespace cs::solver {
 namespace {
@@ -72,6 +76,96 @@ TEST(FillReducingOrdering, MetisOrderingIsTheSameFromConcurrentThreads) {
   }
   for (std::size_t k = 0; k < sizes.size(); ++k)
     EXPECT_EQ(differing[k], 0) << sizes[k] << " x " << sizes[k] << " grid";
+}
+
+/// The nonzeros of the Cholesky factor of A (lower triangle given) in the order perm, or, with an
+/// empty perm, in CHOLMOD's own METIS ordering of A's graph.
+double factor_nonzeros(const Eigen::SparseMatrix<double>& A_lower, std::vector<int> perm) {
+  cholmod_common c;
+  cholmod_start(&c);
+  c.nmethods = 1;
+  c.method[0].ordering = perm.empty() ? CHOLMOD_METIS : CHOLMOD_GIVEN;
+  c.supernodal = CHOLMOD_SIMPLICIAL;
+  Eigen::SparseMatrix<double> A = A_lower;
+  cholmod_sparse view{};
+  view.nrow = view.ncol = static_cast<size_t>(A.rows());
+  view.nzmax = static_cast<size_t>(A.nonZeros());
+  view.p = A.outerIndexPtr();
+  view.i = A.innerIndexPtr();
+  view.x = A.valuePtr();
+  view.stype = -1;
+  view.itype = CHOLMOD_INT;
+  view.xtype = CHOLMOD_REAL;
+  view.dtype = CHOLMOD_DOUBLE;
+  view.sorted = 1;
+  view.packed = 1;
+  cholmod_factor* L =
+      cholmod_analyze_p(&view, perm.empty() ? nullptr : perm.data(), nullptr, 0, &c);
+  const double lnz = L != nullptr ? c.lnz : -1.0;
+  cholmod_free_factor(&L, &c);
+  cholmod_finish(&c);
+  return lnz;
+}
+
+bool is_permutation_of_0_to(const std::vector<int>& perm, int n) {
+  std::vector<int> sorted = perm;
+  std::sort(sorted.begin(), sorted.end());
+  for (int k = 0; k < n; ++k) {
+    if (k >= static_cast<int>(sorted.size()) || sorted[k] != k)
+      return false;
+  }
+  return static_cast<int>(sorted.size()) == n;
+}
+
+// Requirement: from kSplitFrom vertices on, the first separator is taken outside METIS and the
+// two parts are ordered by two METIS calls; the ordering is a permutation, the same whether or
+// not a spare core orders the second part at once, and it fills the factor about as little as
+// METIS's own nested dissection of the whole graph.
+TEST(FillReducingOrdering, ASplitOrderingIsTheSameOnOneCoreOrTwoAndFillsLikeMetis) {
+  const int side = 450;  // 202,500 nodes
+  ASSERT_GE(side * side, kSplitFrom);
+  const Eigen::SparseMatrix<double> A = grid_lower(side);
+  const std::vector<int> groups = node_groups(static_cast<int>(A.rows()));
+  ASSERT_EQ(spare_cores(), 0);
+  const std::vector<int> alone = metis_quotient_ordering(A, groups);
+  std::vector<int> with_a_spare_core;
+  {
+    const CoreLoan loan(1);
+    with_a_spare_core = metis_quotient_ordering(A, groups);
+    EXPECT_EQ(spare_cores(), 1);  // returned after use
+  }
+  EXPECT_EQ(spare_cores(), 0);
+  ASSERT_TRUE(is_permutation_of_0_to(alone, static_cast<int>(A.rows())));
+  EXPECT_EQ(with_a_spare_core, alone);
+  const double split_fill = factor_nonzeros(A, alone);
+  const double metis_fill = factor_nonzeros(A, {});
+  ASSERT_GT(metis_fill, 0.0);
+  EXPECT_LT(split_fill, 1.10 * metis_fill) << split_fill << " vs " << metis_fill;
+}
+
+// Requirement: a core is borrowed only while the pool holds one, and each loan is taken back.
+TEST(SpareCores, ACoreIsBorrowedOnlyFromTheLoanedPool) {
+  ASSERT_EQ(spare_cores(), 0);
+  {
+    const SpareCore none;
+    EXPECT_FALSE(none);
+  }
+  {
+    CoreLoan loan(1);
+    {
+      const SpareCore first;
+      const SpareCore second;
+      EXPECT_TRUE(first);
+      EXPECT_FALSE(second);
+      EXPECT_EQ(spare_cores(), 0);
+    }
+    EXPECT_EQ(spare_cores(), 1);
+    loan.lend(2);
+    EXPECT_EQ(spare_cores(), 3);
+  }
+  EXPECT_EQ(spare_cores(), 0);
+  lend_spare_cores(-5);  // never below zero
+  EXPECT_EQ(spare_cores(), 0);
 }
 
 /// The first draws after srand(seed) on this thread.

@@ -1,0 +1,58 @@
+#pragma once
+// Cores a program lends to the parallel steps of one solve.
+//
+// Some steps of a solve can run on a second thread without changing a single bit of their
+// result: the two halves of a split nested dissection (fill_reducing_ordering.hpp) are ordered
+// independently, so ordering them one after the other or at once gives the same permutation.
+// Such a step borrows a spare core when one is idle and runs alone otherwise. The program says
+// how many cores are idle: `case` lends the cores it does not use itself; `run` lends those its
+// jobs leave unused, and each worker's core once the worker has no model left. No value ever
+// depends on whether a core was free.
+
+#include <atomic>
+
+namespace cs::solver {
+
+/// Adds `n` idle cores to the pool (n may be negative to take them back; the pool never goes
+/// below zero).
+void lend_spare_cores(int n);
+
+/// Cores lent to the pool for this object's lifetime: the constructor and lend() add them, the
+/// destructor takes all of them back.
+class CoreLoan {
+ public:
+  explicit CoreLoan(int n = 0) { lend(n); }
+  ~CoreLoan() { lend_spare_cores(-lent_.load()); }
+  CoreLoan(const CoreLoan&) = delete;
+  CoreLoan& operator=(const CoreLoan&) = delete;
+
+  /// Lends `n` more (n >= 0).
+  void lend(int n) {
+    lent_ += n;
+    lend_spare_cores(n);
+  }
+
+ private:
+  std::atomic<int> lent_{0};
+};
+
+/// The number of idle cores in the pool now.
+int spare_cores();
+
+/// One core borrowed from the pool for the borrower's lifetime, or none when the pool was
+/// empty; returned on destruction.
+class SpareCore {
+ public:
+  SpareCore();  ///< tries to borrow one
+  ~SpareCore();
+  SpareCore(const SpareCore&) = delete;
+  SpareCore& operator=(const SpareCore&) = delete;
+
+  /// Whether a core was borrowed.
+  explicit operator bool() const { return borrowed_; }
+
+ private:
+  bool borrowed_ = false;
+};
+
+}  // namespace cs::solver
