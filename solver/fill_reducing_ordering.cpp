@@ -154,28 +154,38 @@ std::vector<int> metis_quotient_ordering(const Eigen::SparseMatrix<double>& A,
   int n_groups = 0;
   for (int g : group_of_equation)
     n_groups = std::max(n_groups, g + 1);
-  // Compact the group numbering (groups without equations are dropped).
+  // Compact the group numbering (groups without equations are dropped); the equations left out
+  // (negative group) have no vertex.
   std::vector<int> compact(n_groups, -1);
   int n_vertices = 0;
   for (int g : group_of_equation) {
-    if (compact[g] < 0)
+    if (g >= 0 && compact[g] < 0)
       compact[g] = n_vertices++;
   }
-  std::vector<int> vertex(n);
-  for (int i = 0; i < n; ++i)
-    vertex[i] = compact[group_of_equation[i]];
+  std::vector<int> vertex(n, -1);
+  int n_kept = 0;
+  for (int i = 0; i < n; ++i) {
+    if (group_of_equation[i] >= 0) {
+      vertex[i] = compact[group_of_equation[i]];
+      ++n_kept;
+    }
+  }
 
   // Equations of each vertex (CSR), in increasing order.
   std::vector<int> eq_start(n_vertices + 1, 0);
-  for (int i = 0; i < n; ++i)
-    ++eq_start[vertex[i] + 1];
+  for (int i = 0; i < n; ++i) {
+    if (vertex[i] >= 0)
+      ++eq_start[vertex[i] + 1];
+  }
   for (int v = 0; v < n_vertices; ++v)
     eq_start[v + 1] += eq_start[v];
-  std::vector<int> eqs(n);
+  std::vector<int> eqs(n_kept);
   {
     std::vector<int> fill(eq_start.begin(), eq_start.end() - 1);
-    for (int i = 0; i < n; ++i)
-      eqs[fill[vertex[i]]++] = i;
+    for (int i = 0; i < n; ++i) {
+      if (vertex[i] >= 0)
+        eqs[fill[vertex[i]]++] = i;
+    }
   }
 
   // Quotient graph edges from the lower triangle: each off-group entry gives (min, max) once
@@ -188,7 +198,7 @@ std::vector<int> metis_quotient_ordering(const Eigen::SparseMatrix<double>& A,
     for (int j = 0; j < n; ++j) {
       for (Eigen::SparseMatrix<double>::InnerIterator it(A, j); it; ++it) {
         const int a = vertex[it.row()], b = vertex[j];
-        if (a != b)
+        if (a != b && a >= 0 && b >= 0)
           ++count[std::min(a, b) + 1];
       }
     }
@@ -199,7 +209,7 @@ std::vector<int> metis_quotient_ordering(const Eigen::SparseMatrix<double>& A,
     for (int j = 0; j < n; ++j) {
       for (Eigen::SparseMatrix<double>::InnerIterator it(A, j); it; ++it) {
         const int a = vertex[it.row()], b = vertex[j];
-        if (a != b)
+        if (a != b && a >= 0 && b >= 0)
           raw[fill[std::min(a, b)]++] = std::max(a, b);
       }
     }
@@ -236,7 +246,7 @@ std::vector<int> metis_quotient_ordering(const Eigen::SparseMatrix<double>& A,
 
   const std::vector<idx_t> perm = nested_dissection(Graph{std::move(xadj), std::move(adjncy)});
   std::vector<int> order;
-  order.reserve(n);
+  order.reserve(n_kept);
   for (int k = 0; k < n_vertices; ++k) {
     const int v = static_cast<int>(perm[k]);
     for (int e = eq_start[v]; e < eq_start[v + 1]; ++e)

@@ -29,7 +29,9 @@ inline constexpr int kSplitFrom = 200'000;
 /// The METIS nested-dissection ordering of the symmetric matrix whose lower triangle is
 /// `A_lower`, computed on the graph whose vertices are the groups of `group_of_equation`
 /// (group index per equation, 0 <= group < n_groups; equations of a group are eliminated
-/// consecutively, in increasing order). Returns perm with perm[k] = the equation eliminated
+/// consecutively, in increasing order; an equation with a negative group is left out of the
+/// graph and of the result, as if its rows and columns were deleted). Returns perm with
+/// perm[k] = the equation eliminated
 /// k-th (CHOLMOD's and METIS's convention), the same from any thread and whether or not a spare
 /// core was idle (from kSplitFrom groups on, the two parts of the first separator are ordered by
 /// separate METIS calls). Throws std::runtime_error if METIS fails.

@@ -96,29 +96,6 @@ Eigen::SparseMatrix<double> raised_matrix(const Eigen::SparseMatrix<double>& K,
   return A0;
 }
 
-/// The lower pattern of the principal submatrix of A (lower CSC) on the equations with
-/// new_index >= 0, renumbered by new_index (increasing, so lower stays lower). Values are 1.
-Eigen::SparseMatrix<double> principal_pattern(const Eigen::SparseMatrix<double>& A,
-                                              const std::vector<int>& new_index, int n_keep) {
-  std::vector<int> outer(n_keep + 1, 0), inner;
-  inner.reserve(static_cast<size_t>(A.nonZeros()));
-  for (int j = 0; j < A.outerSize(); ++j) {
-    const int nj = new_index[j];
-    if (nj < 0)
-      continue;
-    for (Eigen::SparseMatrix<double>::InnerIterator it(A, j); it; ++it) {
-      const int ni = new_index[it.row()];
-      if (ni >= 0)
-        inner.push_back(ni);
-    }
-    outer[nj + 1] = static_cast<int>(inner.size());
-  }
-  const std::vector<double> values(inner.size(), 1.0);
-  return Eigen::Map<const Eigen::SparseMatrix<double>>(n_keep, n_keep,
-                                                       static_cast<Eigen::Index>(inner.size()),
-                                                       outer.data(), inner.data(), values.data());
-}
-
 /// A failed or numerically singular factorization as a status naming the likely cause.
 SolveOutcome check_factor(const cholmod_factor& L, const cholmod_common& c) {
   if (c.status < CHOLMOD_OK && c.status != CHOLMOD_NOT_POSDEF) {
@@ -214,30 +191,16 @@ struct DofCondensation::Impl {
     return out;
   }
 
-  /// The interior of A0 (the equations not in c) as a graph: its lower pattern and the group
-  /// (node) of each equation, for the quotient orderings.
-  struct InteriorGraph {
-    std::vector<int> equations;           ///< interior index -> equation
-    std::vector<int> group;               ///< interior index -> node (or itself)
-    Eigen::SparseMatrix<double> pattern;  ///< lower pattern, interior numbering
-  };
-
-  static InteriorGraph interior_graph(const Eigen::SparseMatrix<double>& A0,
-                                      const DofCondensationInput& in,
-                                      const std::vector<char>& is_contact) {
-    const int n = static_cast<int>(A0.rows());
+  /// The node of each equation of A0 (the equation itself without nodes), and -1 for the contact
+  /// DOFs c: the interior's groups for the quotient ordering.
+  static std::vector<int> interior_groups(const DofCondensationInput& in,
+                                          const std::vector<char>& is_contact) {
+    const int n = static_cast<int>(is_contact.size());
     const bool by_node = static_cast<int>(in.node_of_equation.size()) == n;
-    InteriorGraph g;
-    std::vector<int> index(n, -1);
-    for (int eq = 0; eq < n; ++eq) {
-      if (is_contact[eq])
-        continue;
-      index[eq] = static_cast<int>(g.equations.size());
-      g.equations.push_back(eq);
-      g.group.push_back(by_node ? in.node_of_equation[eq] : eq);
-    }
-    g.pattern = principal_pattern(A0, index, static_cast<int>(g.equations.size()));
-    return g;
+    std::vector<int> group(n);
+    for (int eq = 0; eq < n; ++eq)
+      group[eq] = is_contact[eq] ? -1 : by_node ? in.node_of_equation[eq] : eq;
+    return group;
   }
 
   /// Constrained AMD (CAMD) on the node (quotient) graph of the whole matrix, the contact DOFs
@@ -306,19 +269,14 @@ struct DofCondensation::Impl {
 
   /// METIS nested dissection on the node graph of the interior (the FE core's quotient
   /// ordering), then c.
-  bool order_metis(const InteriorGraph& g, const std::vector<int>& contact_dofs,
-                   std::vector<int>& perm) {
-    perm.clear();
-    if (!g.equations.empty()) {
-      try {
-        for (int k : metis_quotient_ordering(g.pattern, g.group))
-          perm.push_back(g.equations[k]);
-      } catch (const std::exception&) {
-        return false;
-      }
+  bool order_metis(const Eigen::SparseMatrix<double>& A0, const DofCondensationInput& in,
+                   const std::vector<char>& is_contact, std::vector<int>& perm) {
+    try {
+      perm = metis_quotient_ordering(A0, interior_groups(in, is_contact));
+    } catch (const std::exception&) {
+      return false;
     }
-    for (int eq : contact_dofs)
-      perm.push_back(eq);
+    perm.insert(perm.end(), in.contact_dofs.begin(), in.contact_dofs.end());
     return true;
   }
 
@@ -380,7 +338,7 @@ struct DofCondensation::Impl {
     const bool metis_only = in.ordering == FillReducingOrdering::Metis ||
                             (in.ordering != FillReducingOrdering::Amd && A0.rows() >= kMetisFrom);
     if (metis_only) {
-      if (!order_metis(interior_graph(A0, in, is_contact), in.contact_dofs, perm) ||
+      if (!order_metis(A0, in, is_contact, perm) ||
           (L = analyze(&A, perm, is_contact)) == nullptr) {
         return failed();
       }
@@ -393,7 +351,7 @@ struct DofCondensation::Impl {
     const double camd_lnz = common.lnz;
     if (in.ordering != FillReducingOrdering::Amd && camd_flops / camd_lnz >= 500.0 &&
         camd_lnz / static_cast<double>(A0.nonZeros()) >= 5.0 &&
-        order_metis(interior_graph(A0, in, is_contact), in.contact_dofs, perm)) {
+        order_metis(A0, in, is_contact, perm)) {
       cholmod_factor* F = analyze(&A, perm, is_contact);
       if (F != nullptr && common.fl < camd_flops) {
         cholmod_free_factor(&L, &common);

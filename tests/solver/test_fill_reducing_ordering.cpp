@@ -78,6 +78,41 @@ TEST(FillReducingOrdering, MetisOrderingIsTheSameFromConcurrentThreads) {
     EXPECT_EQ(differing[k], 0) << sizes[k] << " x " << sizes[k] << " grid";
 }
 
+// Requirement: equations with a negative group are left out, as if their rows and columns were
+// deleted: the ordering is the principal submatrix's, in the whole matrix's numbering.
+TEST(FillReducingOrdering, EquationsWithANegativeGroupAreLeftOut) {
+  const int side = 60;
+  const Eigen::SparseMatrix<double> A = grid_lower(side);
+  const int n = static_cast<int>(A.rows());
+  std::vector<int> groups = node_groups(n);
+  std::vector<int> kept;  // sub index -> equation
+  std::vector<int> index(n, -1);
+  for (int eq = 0; eq < n; ++eq) {
+    if (eq % 7 == 3 || eq >= n - 2 * side) {  // scattered DOFs and the last row of nodes
+      groups[eq] = -1;
+    } else {
+      index[eq] = static_cast<int>(kept.size());
+      kept.push_back(eq);
+    }
+  }
+  std::vector<Eigen::Triplet<double>> t;
+  std::vector<int> sub_groups;
+  for (int eq : kept)
+    sub_groups.push_back(groups[eq]);
+  for (int j = 0; j < n; ++j) {
+    for (Eigen::SparseMatrix<double>::InnerIterator it(A, j); it; ++it) {
+      if (index[j] >= 0 && index[it.row()] >= 0)
+        t.emplace_back(index[it.row()], index[j], it.value());
+    }
+  }
+  Eigen::SparseMatrix<double> sub(static_cast<int>(kept.size()), static_cast<int>(kept.size()));
+  sub.setFromTriplets(t.begin(), t.end());
+  std::vector<int> expected;
+  for (int k : metis_quotient_ordering(sub, sub_groups))
+    expected.push_back(kept[k]);
+  EXPECT_EQ(metis_quotient_ordering(A, groups), expected);
+}
+
 /// The nonzeros of the Cholesky factor of A (lower triangle given) in the order perm, or, with an
 /// empty perm, in CHOLMOD's own METIS ordering of A's graph.
 double factor_nonzeros(const Eigen::SparseMatrix<double>& A_lower, std::vector<int> perm) {
