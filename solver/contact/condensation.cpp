@@ -15,6 +15,7 @@
 
 #include "solver/contact/backward_solve_subset.hpp"
 #include "solver/contact/dense_kernels.hpp"
+#include "solver/elimination_postorder.hpp"
 #include "solver/fill_reducing_ordering.hpp"
 #include "solver/linear_solver.hpp"
 
@@ -280,42 +281,19 @@ struct DofCondensation::Impl {
     return true;
   }
 
-  /// Symbolic analysis of A in the order `perm` (c last), with CHOLMOD's postorder of the
-  /// elimination tree where it keeps c last; where it does not (an interior subtree hangs below
-  /// a contact DOF of another body), the postordered order with c moved back to the end, which
-  /// is still a postorder. Returns the symbolic factor or nullptr.
-  cholmod_factor* analyze(cholmod_sparse* A, const std::vector<int>& perm,
-                          const std::vector<char>& is_contact) {
+  /// Symbolic analysis of A0 in the order `perm` (its last nc entries the contact DOFs c), with
+  /// the interior postordered here (elimination_postorder.hpp) so that c stays last and CHOLMOD
+  /// analyzes once without postordering. Returns the symbolic factor or nullptr.
+  cholmod_factor* analyze(const Eigen::SparseMatrix<double>& A0, const std::vector<int>& perm,
+                          int nc) {
+    std::vector<int> order =
+        postordered_leading_block(A0, perm, static_cast<int>(perm.size()) - nc);
+    cholmod_sparse A = view_lower(A0);
     common.nmethods = 1;
     common.method[0].ordering = CHOLMOD_GIVEN;
     common.supernodal = CHOLMOD_SUPERNODAL;
-    common.postorder = 1;
-    cholmod_factor* F = cholmod_analyze_p(A, const_cast<int*>(perm.data()), nullptr, 0, &common);
-    if (F == nullptr)
-      return nullptr;
-    const int n = static_cast<int>(F->n);
-    const int* P = static_cast<const int*>(F->Perm);
-    int nc = 0;
-    for (int k = 0; k < n; ++k)
-      nc += is_contact[k];
-    bool last = true;
-    for (int k = n - nc; k < n && last; ++k)
-      last = is_contact[P[k]] != 0;
-    if (last)
-      return F;
-    std::vector<int> moved;
-    moved.reserve(n);
-    for (int k = 0; k < n; ++k) {
-      if (!is_contact[P[k]])
-        moved.push_back(P[k]);
-    }
-    for (int k = 0; k < n; ++k) {
-      if (is_contact[P[k]])
-        moved.push_back(P[k]);
-    }
-    cholmod_free_factor(&F, &common);
     common.postorder = 0;
-    return cholmod_analyze_p(A, moved.data(), nullptr, 0, &common);
+    return cholmod_analyze_p(&A, order.data(), nullptr, 0, &common);
   }
 
   /// The ordering policy. Small systems: CAMD on the node graph, then (as CHOLMOD's default
@@ -328,7 +306,7 @@ struct DofCondensation::Impl {
                                  const std::vector<char>& is_contact) {
     if (L != nullptr)
       cholmod_free_factor(&L, &common);
-    cholmod_sparse A = view_lower(A0);
+    const int nc = static_cast<int>(in.contact_dofs.size());
     std::vector<int> perm;
     const auto failed = [this] {
       return SolveOutcome{
@@ -338,13 +316,12 @@ struct DofCondensation::Impl {
     const bool metis_only = in.ordering == FillReducingOrdering::Metis ||
                             (in.ordering != FillReducingOrdering::Amd && A0.rows() >= kMetisFrom);
     if (metis_only) {
-      if (!order_metis(A0, in, is_contact, perm) ||
-          (L = analyze(&A, perm, is_contact)) == nullptr) {
+      if (!order_metis(A0, in, is_contact, perm) || (L = analyze(A0, perm, nc)) == nullptr) {
         return failed();
       }
       return {SolveStatus::Ok, ""};
     }
-    if (!order_camd(A0, in, is_contact, perm) || (L = analyze(&A, perm, is_contact)) == nullptr) {
+    if (!order_camd(A0, in, is_contact, perm) || (L = analyze(A0, perm, nc)) == nullptr) {
       return failed();
     }
     const double camd_flops = common.fl;
@@ -352,7 +329,7 @@ struct DofCondensation::Impl {
     if (in.ordering != FillReducingOrdering::Amd && camd_flops / camd_lnz >= 500.0 &&
         camd_lnz / static_cast<double>(A0.nonZeros()) >= 5.0 &&
         order_metis(A0, in, is_contact, perm)) {
-      cholmod_factor* F = analyze(&A, perm, is_contact);
+      cholmod_factor* F = analyze(A0, perm, nc);
       if (F != nullptr && common.fl < camd_flops) {
         cholmod_free_factor(&L, &common);
         L = F;
