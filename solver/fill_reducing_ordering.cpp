@@ -4,6 +4,7 @@
 #include <exception>
 #include <functional>
 #include <stdexcept>
+#include <system_error>
 #include <thread>
 
 #include <fmt/format.h>
@@ -78,22 +79,29 @@ Graph induced_subgraph(const Graph& g, const std::vector<idx_t>& part, idx_t whi
   return sub;
 }
 
-/// Runs first() here and second() on a borrowed spare core when one is idle, else after first().
+/// Runs first() here and second() on a borrowed spare core when one is idle (and a thread can be
+/// started), else after first().
 void run_both(const std::function<void()>& first, const std::function<void()>& second) {
   const SpareCore core;
-  if (!core) {
+  std::exception_ptr failed;
+  std::thread other;
+  if (core) {
+    try {
+      other = std::thread([&] {
+        try {
+          second();
+        } catch (...) {
+          failed = std::current_exception();
+        }
+      });
+    } catch (const std::system_error&) {  // no thread to be had: both here
+    }
+  }
+  if (!other.joinable()) {
     first();
     second();
     return;
   }
-  std::exception_ptr failed;
-  std::thread other([&] {
-    try {
-      second();
-    } catch (...) {
-      failed = std::current_exception();
-    }
-  });
   try {
     first();
   } catch (...) {
