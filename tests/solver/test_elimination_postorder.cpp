@@ -7,8 +7,8 @@
 #include <numeric>
 #include <vector>
 
-#include <cholmod.h>
 #include <gtest/gtest.h>
+#include <Eigen/CholmodSupport>
 
 #include "solver/elimination_postorder.hpp"
 
@@ -49,30 +49,15 @@ Eigen::SparseMatrix<double> two_bodies_lower(int side, int& n_link_dofs) {
   return A;
 }
 
-cholmod_sparse cholmod_view_of(Eigen::SparseMatrix<double>& A, int stype) {
-  cholmod_sparse v{};
-  v.nrow = v.ncol = static_cast<size_t>(A.rows());
-  v.nzmax = static_cast<size_t>(A.nonZeros());
-  v.p = A.outerIndexPtr();
-  v.i = A.innerIndexPtr();
-  v.x = A.valuePtr();
-  v.stype = stype;
-  v.itype = CHOLMOD_INT;
-  v.xtype = CHOLMOD_REAL;
-  v.dtype = CHOLMOD_DOUBLE;
-  v.sorted = 1;
-  v.packed = 1;
-  return v;
-}
-
 /// CHOLMOD's nonzeros of L for A in the order perm, without a postorder of its own.
-double nonzeros_without_postorder(Eigen::SparseMatrix<double> A_lower, std::vector<int> perm) {
+double nonzeros_without_postorder(const Eigen::SparseMatrix<double>& A_lower,
+                                  std::vector<int> perm) {
   cholmod_common c;
   cholmod_start(&c);
   c.nmethods = 1;
   c.method[0].ordering = CHOLMOD_GIVEN;
   c.postorder = 0;
-  cholmod_sparse v = cholmod_view_of(A_lower, -1);
+  cholmod_sparse v = Eigen::viewAsCholmod(A_lower.selfadjointView<Eigen::Lower>());
   cholmod_factor* L = cholmod_analyze_p(&v, perm.data(), nullptr, 0, &c);
   const double lnz = L != nullptr ? c.lnz : -1.0;
   cholmod_free_factor(&L, &c);
@@ -89,11 +74,10 @@ std::vector<int> cholmod_tree(const Eigen::SparseMatrix<double>& A_lower,
     P.indices()[perm[k]] = k;  // equation perm[k] goes to position k
   Eigen::SparseMatrix<double> permuted;
   permuted = A_lower.selfadjointView<Eigen::Lower>().twistedBy(P);
-  Eigen::SparseMatrix<double> upper = permuted.triangularView<Eigen::Upper>();
-  upper.makeCompressed();
+  const Eigen::SparseMatrix<double> upper = permuted.triangularView<Eigen::Upper>();
   cholmod_common c;
   cholmod_start(&c);
-  cholmod_sparse v = cholmod_view_of(upper, 1);
+  cholmod_sparse v = Eigen::viewAsCholmod(upper.selfadjointView<Eigen::Upper>());
   std::vector<int> parent(n);
   EXPECT_TRUE(cholmod_etree(&v, parent.data(), &c));
   cholmod_finish(&c);

@@ -14,7 +14,7 @@
 
 #include <gtest/gtest.h>
 
-#include <cholmod.h>
+#include <Eigen/CholmodSupport>
 
 #include "solver/fill_reducing_ordering.hpp"
 #include "solver/per_thread_rand.hpp"
@@ -121,19 +121,7 @@ double factor_nonzeros(const Eigen::SparseMatrix<double>& A_lower, std::vector<i
   c.nmethods = 1;
   c.method[0].ordering = perm.empty() ? CHOLMOD_METIS : CHOLMOD_GIVEN;
   c.supernodal = CHOLMOD_SIMPLICIAL;
-  Eigen::SparseMatrix<double> A = A_lower;
-  cholmod_sparse view{};
-  view.nrow = view.ncol = static_cast<size_t>(A.rows());
-  view.nzmax = static_cast<size_t>(A.nonZeros());
-  view.p = A.outerIndexPtr();
-  view.i = A.innerIndexPtr();
-  view.x = A.valuePtr();
-  view.stype = -1;
-  view.itype = CHOLMOD_INT;
-  view.xtype = CHOLMOD_REAL;
-  view.dtype = CHOLMOD_DOUBLE;
-  view.sorted = 1;
-  view.packed = 1;
+  cholmod_sparse view = Eigen::viewAsCholmod(A_lower.selfadjointView<Eigen::Lower>());
   cholmod_factor* L =
       cholmod_analyze_p(&view, perm.empty() ? nullptr : perm.data(), nullptr, 0, &c);
   const double lnz = L != nullptr ? c.lnz : -1.0;
