@@ -14,13 +14,11 @@ std::atomic<int>& pool() {
 }  // namespace
 
 void lend_spare_cores(int n) {
-  int now = pool().load();
-  while (!pool().compare_exchange_weak(now, std::max(0, now + n))) {
-  }
+  pool().fetch_add(n);
 }
 
 int spare_cores() {
-  return pool().load();
+  return std::max(0, pool().load());
 }
 
 SpareCore::SpareCore() {

@@ -6,19 +6,19 @@
 // independently, so ordering them one after the other or at once gives the same permutation.
 // Such a step borrows a spare core when one is idle and runs alone otherwise. The program says
 // how many cores are idle: `case` lends the cores it does not use itself; `run` lends those its
-// jobs leave unused, and each worker's core once the worker has no model left. No value ever
-// depends on whether a core was free.
+// jobs leave unused, and each a finished worker frees once fewer workers than cores are left.
+// No value ever depends on whether a core was free.
 
 #include <atomic>
 
 namespace cs::solver {
 
-/// Adds `n` idle cores to the pool (n may be negative to take them back; the pool never goes
-/// below zero).
+/// Adds `n` idle cores to the pool; a negative n takes them back. The count is exact: cores
+/// taken back while borrowed leave it below zero until the borrowers return them.
 void lend_spare_cores(int n);
 
-/// Cores lent to the pool for this object's lifetime: the constructor and lend() add them, the
-/// destructor takes all of them back.
+/// Cores lent to the pool for this object's lifetime: the constructor, lend() and
+/// lend_up_to() add them, the destructor takes all of them back.
 class CoreLoan {
  public:
   explicit CoreLoan(int n = 0) { lend(n); }
@@ -32,11 +32,20 @@ class CoreLoan {
     lend_spare_cores(n);
   }
 
+  /// Lends what brings this loan up to `total` cores; nothing if it holds that many already.
+  void lend_up_to(int total) {
+    int now = lent_.load();
+    while (now < total && !lent_.compare_exchange_weak(now, total)) {
+    }
+    if (now < total)
+      lend_spare_cores(total - now);
+  }
+
  private:
   std::atomic<int> lent_{0};
 };
 
-/// The number of idle cores in the pool now.
+/// The number of idle cores in the pool now (0 while it is below zero).
 int spare_cores();
 
 /// One core borrowed from the pool for the borrower's lifetime, or none when the pool was

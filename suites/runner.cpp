@@ -3,6 +3,7 @@
 #include <sys/resource.h>
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <condition_variable>
 #include <exception>
@@ -196,12 +197,14 @@ std::vector<CaseResult> run_cases(const std::vector<CaseSpec>& cases,
   const int cores = platform::available_cores();
   int jobs = options.jobs > 0 ? options.jobs : cores;
   jobs = std::clamp(jobs, 1, std::max<int>(1, static_cast<int>(groups.size())));
-  // Cores no worker uses, and each worker's once it has no model left, go to the steps of a
-  // solve that split without changing a value (solver/spare_cores.hpp).
+  // Cores no worker uses go to the steps of a solve that split without changing a value
+  // (solver/spare_cores.hpp): those --jobs leaves idle, and each that a finished worker frees
+  // once fewer workers than cores are left (with --jobs above the core count, not before).
   solver::CoreLoan loan(std::max(0, cores - jobs));
+  std::atomic<int> working = jobs;
   auto lending_worker = [&] {
     worker();
-    loan.lend(1);
+    loan.lend_up_to(std::max(0, cores - --working));
   };
   if (jobs == 1) {
     lending_worker();

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cstdlib>
+#include <optional>
 #include <thread>
 #include <vector>
 
@@ -187,7 +188,27 @@ TEST(SpareCores, ACoreIsBorrowedOnlyFromTheLoanedPool) {
     EXPECT_EQ(spare_cores(), 3);
   }
   EXPECT_EQ(spare_cores(), 0);
-  lend_spare_cores(-5);  // never below zero
+  {
+    // A loan taken back while its core is borrowed: the core comes back to an empty pool.
+    std::optional<CoreLoan> loan(std::in_place, 1);
+    {
+      const SpareCore borrowed;
+      ASSERT_TRUE(borrowed);
+      loan.reset();
+      EXPECT_EQ(spare_cores(), 0);
+    }
+    EXPECT_EQ(spare_cores(), 0);
+  }
+  {
+    // lend_up_to lends the difference, and never takes back.
+    CoreLoan loan;
+    loan.lend_up_to(2);
+    EXPECT_EQ(spare_cores(), 2);
+    loan.lend_up_to(1);
+    EXPECT_EQ(spare_cores(), 2);
+    loan.lend_up_to(3);
+    EXPECT_EQ(spare_cores(), 3);
+  }
   EXPECT_EQ(spare_cores(), 0);
 }
 

@@ -9,6 +9,8 @@
 
 #include <gtest/gtest.h>
 
+#include "platform/available_cores.hpp"
+#include "solver/spare_cores.hpp"
 #include "suites/case_matrix.hpp"
 #include "suites/runner.hpp"
 
@@ -171,6 +173,66 @@ TEST(Runner, MemoryBudgetKeepsTheLargestModelsApart) {
       EXPECT_EQ(r.status, CaseStatus::converged);
     EXPECT_EQ(most.load(), budget > 0 ? 1 : 2) << "budget " << budget;
   }
+}
+
+/// Records, at each case, by how much the cores the run has lent (solver/spare_cores.hpp)
+/// exceed those the models being run leave idle.
+class LendingExecutor : public GroupExecutor {
+ public:
+  LendingExecutor(const CaseSpec& representative, std::atomic<int>& running,
+                  std::atomic<int>& most_over_cores, int cores)
+      : running_(running),
+        most_(most_over_cores),
+        cores_(cores),
+        case_time_(1 + std::hash<std::string>{}(model_key(representative)) % 6) {
+    ++running_;
+  }
+  ~LendingExecutor() override { --running_; }
+  CaseResult run(const CaseSpec&) override {
+    const int over = solver::spare_cores() - std::max(0, cores_ - running_.load());
+    most_ = std::max(most_.load(), over);
+    std::this_thread::sleep_for(std::chrono::milliseconds(case_time_));
+    CaseResult r;
+    r.status = CaseStatus::converged;
+    return r;
+  }
+
+ private:
+  std::atomic<int>& running_;
+  std::atomic<int>& most_;
+  int cores_;
+  long case_time_;  ///< ms; models of unlike lengths, so that workers finish one by one
+};
+
+// Requirement: a run lends the cores its workers leave idle, never one a worker still needs:
+// never more than the cores less the models running, with --jobs at one, at the core count and
+// above it (a finished worker's core is lent only once fewer workers than cores are left);
+// every core is taken back when the run ends.
+TEST(Runner, LendsOnlyTheCoresNoWorkerNeeds) {
+  const int cores = platform::available_cores();
+  const auto cases = small_matrix();  // 8 models of 10 cases
+  for (const int jobs : {1, cores, cores + 2}) {
+    std::atomic<int> running{0}, most{-cores};
+    RunnerOptions options;
+    options.jobs = jobs;
+    options.group_cost = [](const CaseSpec& s) { return s.mesh == MeshLevel::M ? 3.0 : 1.0; };
+    run_cases(
+        cases,
+        [&](const CaseSpec& s) {
+          return std::make_unique<LendingExecutor>(s, running, most, cores);
+        },
+        options);
+    EXPECT_LE(most.load(), 0) << "jobs " << jobs;
+    EXPECT_EQ(solver::spare_cores(), 0) << "jobs " << jobs;
+  }
+  std::atomic<int> running{0}, most{-cores};
+  RunnerOptions one;
+  one.jobs = 1;
+  run_cases(
+      cases,
+      [&](const CaseSpec& s) { return std::make_unique<LendingExecutor>(s, running, most, cores); },
+      one);
+  EXPECT_EQ(most.load(), 0);  // one worker: the other cores are lent throughout
 }
 
 TEST(Runner, ContactOnlyParametersShareTheModel) {
