@@ -1,11 +1,7 @@
 #include "solver/fill_reducing_ordering.hpp"
 
 #include <algorithm>
-#include <exception>
-#include <functional>
 #include <stdexcept>
-#include <system_error>
-#include <thread>
 
 #include <fmt/format.h>
 
@@ -79,38 +75,21 @@ Graph induced_subgraph(const Graph& g, const std::vector<idx_t>& part, idx_t whi
   return sub;
 }
 
-/// Runs first() here and second() on a borrowed spare core when one is idle (and a thread can be
-/// started), else after first().
-void run_both(const std::function<void()>& first, const std::function<void()>& second) {
-  const SpareCore core;
-  std::exception_ptr failed;
-  std::thread other;
-  if (core) {
-    try {
-      other = std::thread([&] {
-        try {
-          second();
-        } catch (...) {
-          failed = std::current_exception();
-        }
-      });
-    } catch (const std::system_error&) {  // no thread to be had: both here
-    }
-  }
-  if (!other.joinable()) {
-    first();
-    second();
-    return;
-  }
-  try {
-    first();
-  } catch (...) {
-    other.join();
-    throw;
-  }
-  other.join();
-  if (failed)
-    std::rethrow_exception(failed);
+/// METIS's vertex separator of g: part[v] = 0 or 1 for the two sides, 2 for the separator.
+std::vector<idx_t> vertex_separator(Graph& g) {
+  idx_t nv = g.vertices();
+  idx_t separator_size = 0;
+  std::vector<idx_t> part(nv);
+  if (nv == 0)
+    return part;
+  idx_t options[METIS_NOPTIONS];
+  METIS_SetDefaultOptions(options);
+  options[METIS_OPTION_NUMBERING] = 0;
+  const auto turn = metis_turn();
+  check_metis(METIS_ComputeVertexSeparator(&nv, g.xadj.data(), g.adjncy.data(), nullptr, options,
+                                           &separator_size, part.data()),
+              "METIS_ComputeVertexSeparator");
+  return part;
 }
 
 /// Nested dissection of g. From kSplitFrom vertices on, the first level is taken here: METIS's
@@ -120,18 +99,8 @@ void run_both(const std::function<void()>& first, const std::function<void()>& s
 std::vector<idx_t> nested_dissection(Graph g) {
   if (g.vertices() < kSplitFrom)
     return metis_node_nd(g);
-  idx_t nv = g.vertices();
-  idx_t separator_size = 0;
-  std::vector<idx_t> part(nv);
-  {
-    idx_t options[METIS_NOPTIONS];
-    METIS_SetDefaultOptions(options);
-    options[METIS_OPTION_NUMBERING] = 0;
-    const auto turn = metis_turn();
-    check_metis(METIS_ComputeVertexSeparator(&nv, g.xadj.data(), g.adjncy.data(), nullptr, options,
-                                             &separator_size, part.data()),
-                "METIS_ComputeVertexSeparator");
-  }
+  const idx_t nv = g.vertices();
+  const std::vector<idx_t> part = vertex_separator(g);
   std::vector<idx_t> vertices0, vertices1;
   Graph g0 = induced_subgraph(g, part, 0, vertices0);
   Graph g1 = induced_subgraph(g, part, 1, vertices1);
@@ -153,11 +122,23 @@ std::vector<idx_t> nested_dissection(Graph g) {
 
 }  // namespace
 
-std::vector<int> metis_quotient_ordering(const Eigen::SparseMatrix<double>& A,
-                                         const std::vector<int>& group_of_equation) {
+namespace {
+
+/// The graph whose vertices are the groups of equations (quotient_graph()).
+struct QuotientGraph {
+  Graph graph;
+  std::vector<int> vertex;    ///< per equation: its vertex, -1 if left out
+  std::vector<int> eq_start;  ///< the equations of vertex v: eqs[eq_start[v] .. eq_start[v+1])
+  std::vector<int> eqs;
+};
+
+/// The quotient graph of A's pattern on the groups of `group_of_equation` (see
+/// metis_quotient_ordering); `caller` names the entry point in the error for a wrong size.
+QuotientGraph quotient_graph(const Eigen::SparseMatrix<double>& A,
+                             const std::vector<int>& group_of_equation, const char* caller) {
   const int n = static_cast<int>(A.rows());
   if (static_cast<int>(group_of_equation.size()) != n) {
-    throw std::invalid_argument("metis_quotient_ordering: one group per equation expected");
+    throw std::invalid_argument(fmt::format("{}: one group per equation expected", caller));
   }
   int n_groups = 0;
   for (int g : group_of_equation)
@@ -249,18 +230,35 @@ std::vector<int> metis_quotient_ordering(const Eigen::SparseMatrix<double>& A,
       }
     }
   }
-  up.clear();
-  up.shrink_to_fit();
+  return {Graph{std::move(xadj), std::move(adjncy)}, std::move(vertex), std::move(eq_start),
+          std::move(eqs)};
+}
 
-  const std::vector<idx_t> perm = nested_dissection(Graph{std::move(xadj), std::move(adjncy)});
+}  // namespace
+
+std::vector<int> metis_quotient_ordering(const Eigen::SparseMatrix<double>& A,
+                                         const std::vector<int>& group_of_equation) {
+  QuotientGraph q = quotient_graph(A, group_of_equation, "metis_quotient_ordering");
+  const std::vector<idx_t> perm = nested_dissection(std::move(q.graph));
   std::vector<int> order;
-  order.reserve(n_kept);
-  for (int k = 0; k < n_vertices; ++k) {
-    const int v = static_cast<int>(perm[k]);
-    for (int e = eq_start[v]; e < eq_start[v + 1]; ++e)
-      order.push_back(eqs[e]);
+  order.reserve(q.eqs.size());
+  for (idx_t v : perm) {
+    for (int e = q.eq_start[v]; e < q.eq_start[v + 1]; ++e)
+      order.push_back(q.eqs[e]);
   }
   return order;
+}
+
+std::vector<int> quotient_bisection(const Eigen::SparseMatrix<double>& A,
+                                    const std::vector<int>& group_of_equation) {
+  QuotientGraph q = quotient_graph(A, group_of_equation, "quotient_bisection");
+  const std::vector<idx_t> part = vertex_separator(q.graph);
+  std::vector<int> side(q.vertex.size(), -1);
+  for (std::size_t eq = 0; eq < side.size(); ++eq) {
+    if (q.vertex[eq] >= 0)
+      side[eq] = static_cast<int>(part[q.vertex[eq]]);
+  }
+  return side;
 }
 
 }  // namespace cs::solver

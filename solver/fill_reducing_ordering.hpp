@@ -38,4 +38,11 @@ inline constexpr int kSplitFrom = 200'000;
 std::vector<int> metis_quotient_ordering(const Eigen::SparseMatrix<double>& A_lower,
                                          const std::vector<int>& group_of_equation);
 
+/// METIS's vertex separator of the same quotient graph (groups as in metis_quotient_ordering):
+/// per equation 0 or 1 for the side it lies on, 2 if its vertex is in the separator, -1 if left
+/// out. No entry of A couples an equation of side 0 with one of side 1. Throws
+/// std::runtime_error if METIS fails.
+std::vector<int> quotient_bisection(const Eigen::SparseMatrix<double>& A_lower,
+                                    const std::vector<int>& group_of_equation);
+
 }  // namespace cs::solver

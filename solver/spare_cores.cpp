@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <atomic>
+#include <exception>
+#include <system_error>
+#include <thread>
 
 namespace cs::solver {
 namespace {
@@ -31,6 +34,38 @@ SpareCore::SpareCore() {
 SpareCore::~SpareCore() {
   if (borrowed_)
     pool().fetch_add(1);
+}
+
+void run_both(const std::function<void()>& first, const std::function<void()>& second) {
+  const SpareCore core;
+  std::exception_ptr failed;
+  std::thread other;
+  if (core) {
+    try {
+      other = std::thread([&] {
+        try {
+          second();
+        } catch (...) {
+          failed = std::current_exception();
+        }
+      });
+    } catch (const std::system_error&) {  // no thread to be had: both here
+    }
+  }
+  if (!other.joinable()) {
+    first();
+    second();
+    return;
+  }
+  try {
+    first();
+  } catch (...) {
+    other.join();
+    throw;
+  }
+  other.join();
+  if (failed)
+    std::rethrow_exception(failed);
 }
 
 }  // namespace cs::solver

@@ -10,6 +10,7 @@
 // No value ever depends on whether a core was free.
 
 #include <atomic>
+#include <functional>
 
 namespace cs::solver {
 
@@ -63,5 +64,11 @@ class SpareCore {
  private:
   bool borrowed_ = false;
 };
+
+/// Runs first() on this thread and second() on a borrowed spare core when one is idle (and a
+/// thread can be started), else second() after first(). Both have run when it returns; an
+/// exception of either is rethrown (first()'s when both throw; on one thread, a throwing
+/// first() leaves second() unrun).
+void run_both(const std::function<void()>& first, const std::function<void()>& second);
 
 }  // namespace cs::solver

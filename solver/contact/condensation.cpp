@@ -1,12 +1,17 @@
 #include "solver/contact/condensation.hpp"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <limits>
 #include <map>
+#include <numeric>
 #include <optional>
 #include <stdexcept>
+#include <tuple>
+#include <utility>
 #include <vector>
 
 #include <cholmod.h>
@@ -18,6 +23,7 @@
 #include "solver/elimination_postorder.hpp"
 #include "solver/fill_reducing_ordering.hpp"
 #include "solver/linear_solver.hpp"
+#include "solver/spare_cores.hpp"
 
 namespace cs::solver {
 
@@ -97,6 +103,86 @@ Eigen::SparseMatrix<double> raised_matrix(const Eigen::SparseMatrix<double>& K,
   return A0;
 }
 
+/// A0 is not positive definite: its pivot at `equation` (-1: not known) failed.
+SolveOutcome not_positive_definite(int equation) {
+  SolveOutcome out{SolveStatus::NotPositiveDefinite,
+                   fmt::format("the elastic stiffness with the contact DOFs held is not positive "
+                               "definite{}: a body is held neither by prescribed displacements "
+                               "nor by its contact surface",
+                               equation >= 0 ? fmt::format(" (pivot at equation {})", equation)
+                                             : std::string())};
+  out.failed_equation = equation;
+  return out;
+}
+
+/// A0's factor has the pivot ratio `rcond`, too small to trust.
+SolveOutcome numerically_singular(double rcond) {
+  return {SolveStatus::Singular,
+          fmt::format("the elastic stiffness with the contact DOFs held is numerically singular "
+                      "(pivot ratio {:.3g}): a body is held neither by prescribed displacements "
+                      "nor by its contact surface",
+                      rcond)};
+}
+
+/// The lower triangle of A's principal submatrix on the equations `global` (local equation l
+/// is A's global[l]), CSC with sorted rows. A_lower: A's lower triangle, CSC.
+Eigen::SparseMatrix<double> principal_lower(const Eigen::SparseMatrix<double>& A_lower,
+                                            const std::vector<int>& global) {
+  const int m = static_cast<int>(global.size());
+  std::vector<int> local(A_lower.rows(), -1);
+  for (int l = 0; l < m; ++l)
+    local[global[l]] = l;
+  // Each entry goes under its smaller local index; a column's rows are then sorted in place.
+  Eigen::SparseMatrix<double> out(m, m);
+  std::vector<int> count(m, 0);
+  for (int l = 0; l < m; ++l) {
+    for (Eigen::SparseMatrix<double>::InnerIterator it(A_lower, global[l]); it; ++it) {
+      const int r = local[it.row()];
+      if (r >= 0)
+        ++count[std::min(r, l)];
+    }
+  }
+  out.reserve(count);
+  for (int l = 0; l < m; ++l) {
+    for (Eigen::SparseMatrix<double>::InnerIterator it(A_lower, global[l]); it; ++it) {
+      const int r = local[it.row()];
+      if (r >= 0)
+        out.insertBackUncompressed(std::max(r, l), std::min(r, l)) = it.value();
+    }
+  }
+  out.makeCompressed();
+  std::vector<std::pair<int, double>> column;
+  for (int j = 0; j < m; ++j) {
+    int* rows = out.innerIndexPtr() + out.outerIndexPtr()[j];
+    double* values = out.valuePtr() + out.outerIndexPtr()[j];
+    const int size = out.outerIndexPtr()[j + 1] - out.outerIndexPtr()[j];
+    if (std::is_sorted(rows, rows + size))
+      continue;
+    column.clear();
+    for (int k = 0; k < size; ++k)
+      column.emplace_back(rows[k], values[k]);
+    std::sort(column.begin(), column.end());
+    for (int k = 0; k < size; ++k)
+      std::tie(rows[k], values[k]) = column[k];
+  }
+  return out;
+}
+
+/// The number of distinct groups >= 0.
+int count_groups(const std::vector<int>& group) {
+  std::vector<char> seen;
+  int count = 0;
+  for (int g : group) {
+    if (g < 0)
+      continue;
+    if (g >= static_cast<int>(seen.size()))
+      seen.resize(g + 1, 0);
+    count += seen[g] ? 0 : 1;
+    seen[g] = 1;
+  }
+  return count;
+}
+
 /// A failed or numerically singular factorization as a status naming the likely cause.
 SolveOutcome check_factor(const cholmod_factor& L, const cholmod_common& c) {
   if (c.status < CHOLMOD_OK && c.status != CHOLMOD_NOT_POSDEF) {
@@ -104,24 +190,12 @@ SolveOutcome check_factor(const cholmod_factor& L, const cholmod_common& c) {
             fmt::format("CHOLMOD factorization failed (status {})", c.status)};
   }
   const int* P = static_cast<const int*>(L.Perm);
-  if (L.minor < L.n) {
-    SolveOutcome out{SolveStatus::NotPositiveDefinite,
-                     fmt::format("the elastic stiffness with the contact DOFs held is not positive "
-                                 "definite (pivot at equation {}): a body is held neither by "
-                                 "prescribed displacements nor by its contact surface",
-                                 P[L.minor])};
-    out.failed_equation = P[L.minor];
-    return out;
-  }
+  if (L.minor < L.n)
+    return not_positive_definite(P[L.minor]);
   const double rcond =
       cholmod_rcond(const_cast<cholmod_factor*>(&L), const_cast<cholmod_common*>(&c));
-  if (!(rcond > 1e-15)) {
-    return {SolveStatus::Singular,
-            fmt::format("the elastic stiffness with the contact DOFs held is numerically singular "
-                        "(pivot ratio {:.3g}): a body is held neither by prescribed displacements "
-                        "nor by its contact surface",
-                        rcond)};
-  }
+  if (!(rcond > 1e-15))
+    return numerically_singular(rcond);
   return {SolveStatus::Ok, ""};
 }
 
@@ -155,11 +229,138 @@ constexpr Eigen::Index kMetisFrom = 200000;
 
 }  // namespace
 
+/// The two sides' condensations onto their borders and the border's dense factor
+/// (compute_sides).
+struct DofCondensation::Sides {
+  std::array<DofCondensation, 2> side;
+  /// Per side: local equation -> A0's equation (the side's own, increasing, then its border).
+  std::array<std::vector<int>, 2> global;
+  /// Per side: the position in `border` of each equation of its border (the border equations
+  /// that an entry of A0 couples with the side).
+  std::array<std::vector<int>, 2> at;
+  std::vector<int> border;   ///< A0's equations of the border: the separator, increasing, then c
+  std::vector<int> side_of;  ///< per A0 equation: 0 or 1, 2 on the separator, -1 in c
+  std::vector<int> local;    ///< per A0 equation on a side: its local equation there
+  std::vector<int> border_position;  ///< per A0 equation: its position in border, or -1
+  std::vector<char> touches;         ///< per border equation: bit k if it couples with side k
+  Eigen::MatrixXd L;                 ///< the Cholesky factor of S_b (lower), separator first
+  Eigen::VectorXd z;                 ///< L^{-1} g_b, g_b the border's condensed load
+
+  int n_border() const { return static_cast<int>(border.size()); }
+  int n_own(int k) const { return static_cast<int>(global[k].size() - at[k].size()); }
+
+  /// From side_of: the border (separator, then `contact_dofs`), each side's equations and
+  /// border.
+  void partition(const Eigen::SparseMatrix<double>& A0, const std::vector<int>& contact_dofs) {
+    const int n = static_cast<int>(A0.rows());
+    local.assign(n, -1);
+    border_position.assign(n, -1);
+    for (int eq = 0; eq < n; ++eq) {
+      const int k = side_of[eq];
+      if (k == 2) {
+        border_position[eq] = n_border();
+        border.push_back(eq);
+      } else if (k >= 0) {
+        local[eq] = static_cast<int>(global[k].size());
+        global[k].push_back(eq);
+      }
+    }
+    for (int eq : contact_dofs) {
+      border_position[eq] = n_border();
+      border.push_back(eq);
+    }
+    touches.assign(n_border(), 0);
+    const auto on_side = [this](int eq) { return side_of[eq] == 0 || side_of[eq] == 1; };
+    for (int j = 0; j < n; ++j) {
+      for (Eigen::SparseMatrix<double>::InnerIterator it(A0, j); it; ++it) {
+        const int r = static_cast<int>(it.row());
+        if (border_position[j] >= 0 && on_side(r))
+          touches[border_position[j]] |= static_cast<char>(1 << side_of[r]);
+        if (border_position[r] >= 0 && on_side(j))
+          touches[border_position[r]] |= static_cast<char>(1 << side_of[j]);
+      }
+    }
+    for (int k = 0; k < 2; ++k) {
+      for (int b = 0; b < n_border(); ++b) {
+        if (touches[b] & (1 << k)) {
+          at[k].push_back(b);
+          global[k].push_back(border[b]);
+        }
+      }
+    }
+  }
+
+  /// S_b = A0_bb + sum_k (S_k - A0[b_k, b_k]), the sides condensed: A0_bb less both sides'
+  /// couplings (A0[b_k, b_k] is in S_k).
+  Eigen::MatrixXd border_block(const Eigen::SparseMatrix<double>& A0) const {
+    const int nb = n_border();
+    Eigen::MatrixXd Sb = Eigen::MatrixXd::Zero(nb, nb);
+    for (int k = 0; k < 2; ++k)
+      Sb(at[k], at[k]) += side[k].schur();
+    for (int b = 0; b < nb; ++b) {
+      for (Eigen::SparseMatrix<double>::InnerIterator it(A0, border[b]); it; ++it) {
+        const int a = border_position[it.row()];
+        if (a < 0)
+          continue;
+        const int both = touches[a] & touches[b];  // the sides whose S_k holds A0_ab
+        const double v = (1 - (both & 1) - ((both >> 1) & 1)) * it.value();
+        Sb(a, b) += v;
+        if (a != b)
+          Sb(b, a) += v;
+      }
+    }
+    return Sb;
+  }
+
+  /// Side k's load: f on its own equations, zero on its border (whose load is added once).
+  Eigen::VectorXd side_load(int k, const Eigen::VectorXd& f) const {
+    Eigen::VectorXd fk = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(global[k].size()));
+    for (int l = 0; l < n_own(k); ++l)
+      fk[l] = f[global[k][l]];
+    return fk;
+  }
+
+  /// z = L^{-1} g_b, g_b = f_b + the sides' condensed loads (their loads given).
+  void condense_load(const Eigen::VectorXd& f) {
+    z.resize(n_border());
+    for (int b = 0; b < n_border(); ++b)
+      z[b] = f[border[b]];
+    for (int k = 0; k < 2; ++k)
+      z(at[k]) += side[k].condensed_load();
+    L.triangularView<Eigen::Lower>().solveInPlace(z);
+  }
+
+  /// The field for the border's values x_b: x_b on the border, each side's own equations from
+  /// its recovery (those of its part of `subset` when one is given); NaN elsewhere.
+  Eigen::VectorXd recover(const Eigen::VectorXd& x_b, const RecoverySubset* subset,
+                          Eigen::Index n) const {
+    Eigen::VectorXd u = Eigen::VectorXd::Constant(n, std::numeric_limits<double>::quiet_NaN());
+    u(border) = x_b;
+    for (int k = 0; k < 2; ++k) {
+      const Eigen::VectorXd x_k = x_b(at[k]);
+      const Eigen::VectorXd u_k =
+          subset != nullptr ? side[k].recover(x_k, subset->sides[k]) : side[k].recover(x_k);
+      if (subset != nullptr) {
+        for (int l : subset->sides[k].equations) {
+          if (l < n_own(k))
+            u[global[k][l]] = u_k[l];
+        }
+      } else {
+        for (int l = 0; l < n_own(k); ++l)
+          u[global[k][l]] = u_k[l];
+      }
+    }
+    return u;
+  }
+};
+
 struct DofCondensation::Impl {
   // Trailing-block path: CHOLMOD directly (given permutation, access to the factor's blocks).
   cholmod_common common{};
   cholmod_factor* L = nullptr;
   bool started = false;
+  // Two-sides path (compute_sides).
+  std::unique_ptr<Sides> sides;
   // Reference path: the FE core's linear solver.
   std::optional<LinearSolver> solver;
   Eigen::VectorXd f;
@@ -296,6 +497,12 @@ struct DofCondensation::Impl {
     return cholmod_analyze_p(&A, order.data(), nullptr, 0, &common);
   }
 
+  /// Whether the ordering is METIS's alone (the policy below).
+  static bool metis_only(const Eigen::SparseMatrix<double>& A0, const DofCondensationInput& in) {
+    return in.ordering == FillReducingOrdering::Metis ||
+           (in.ordering != FillReducingOrdering::Amd && A0.rows() >= kMetisFrom);
+  }
+
   /// The ordering policy. Small systems: CAMD on the node graph, then (as CHOLMOD's default
   /// strategy does) METIS where CAMD's fill is high (flops / nnz(L) >= 500 and nnz(L) / nnz(A)
   /// >= 5), keeping the cheaper. Large systems (>= kMetisFrom equations): METIS alone, since
@@ -313,9 +520,7 @@ struct DofCondensation::Impl {
           SolveStatus::SolverFailure,
           fmt::format("CHOLMOD symbolic analysis failed (status {})", common.status)};
     };
-    const bool metis_only = in.ordering == FillReducingOrdering::Metis ||
-                            (in.ordering != FillReducingOrdering::Amd && A0.rows() >= kMetisFrom);
-    if (metis_only) {
+    if (metis_only(A0, in)) {
       if (!order_metis(A0, in, is_contact, perm) || (L = analyze(A0, perm, nc)) == nullptr) {
         return failed();
       }
@@ -363,7 +568,14 @@ SolveOutcome DofCondensation::compute(const DofCondensationInput& in) {
   impl_->f = in.f;
   const auto start = Clock::now();
   ContactDiagonal delta;
-  const Eigen::SparseMatrix<double> A0 = raised_matrix(in.K_lower, contact_dofs_, delta);
+  Eigen::SparseMatrix<double> raised;
+  if (in.hold_contact_dofs) {
+    raised = raised_matrix(in.K_lower, contact_dofs_, delta);
+  } else {
+    delta.d = Eigen::VectorXd::Zero(nc);
+    delta.e = Eigen::VectorXd::Zero(std::max(0, nc - 1));
+  }
+  const Eigen::SparseMatrix<double>& A0 = in.hold_contact_dofs ? raised : in.K_lower;
   delta_d_ = std::move(delta.d);
   delta_e_ = std::move(delta.e);
   timings_.assemble_s = seconds_since(start);
@@ -415,6 +627,11 @@ SolveOutcome DofCondensation::compute_trailing(const Eigen::SparseMatrix<double>
   cholmod_common& c = im.common;
   const int n = static_cast<int>(A0.rows());
   const int nc = n_contact_dofs();
+  im.sides.reset();
+  if (Impl::metis_only(A0, in) &&
+      count_groups(Impl::interior_groups(in, is_contact)) >= in.substructure_from) {
+    return compute_sides(A0, in, is_contact);
+  }
   auto start = Clock::now();
   const SolveOutcome analyzed = im.order_and_analyze(A0, in, is_contact);
   timings_.analyze_s = seconds_since(start);
@@ -438,6 +655,14 @@ SolveOutcome DofCondensation::compute_trailing(const Eigen::SparseMatrix<double>
   for (int k = 0; k < nc; ++k)
     tail_position_[k] = position_[P[n - nc + k]];
   L_tail_ = trailing_block(*im.L, nc);
+  schur_from_tail();
+  update_load(in.f);
+  timings_.condense_s = seconds_since(start);
+  return {SolveStatus::Ok, ""};
+}
+
+void DofCondensation::schur_from_tail() {
+  const int nc = n_contact_dofs();
   Eigen::MatrixXd SDt;
   dense::lower_outer_product(L_tail_, SDt);
   S_.resize(nc, nc);
@@ -446,8 +671,74 @@ SolveOutcome DofCondensation::compute_trailing(const Eigen::SparseMatrix<double>
       S_(tail_position_[a], tail_position_[b]) = SDt(a, b);
   }
   subtract_delta();
-  update_load(in.f);
-  timings_.condense_s = seconds_since(start);
+}
+
+SolveOutcome DofCondensation::compute_sides(const Eigen::SparseMatrix<double>& A0,
+                                            const DofCondensationInput& in,
+                                            const std::vector<char>& is_contact) {
+  const int n = static_cast<int>(A0.rows());
+  const int nc = n_contact_dofs();
+  auto start = Clock::now();
+  auto sides = std::make_unique<Sides>();
+  Sides& s = *sides;
+  try {
+    s.side_of = quotient_bisection(A0, Impl::interior_groups(in, is_contact));
+  } catch (const std::exception& e) {
+    return {SolveStatus::SolverFailure, fmt::format("the interior's separator: {}", e.what())};
+  }
+  s.partition(A0, contact_dofs_);
+  const int nb = s.n_border();
+  const double bisect_s = seconds_since(start);
+
+  // Each side condensed onto the border: A0[k+b] is positive definite as A0 is, so no Delta.
+  std::array<SolveOutcome, 2> outcome;
+  const auto condense_side = [&](int k) {
+    const std::vector<int>& global = s.global[k];
+    const Eigen::SparseMatrix<double> Ak = principal_lower(A0, global);
+    const Eigen::VectorXd fk = s.side_load(k, in.f);
+    std::vector<int> border(s.at[k].size());
+    std::iota(border.begin(), border.end(), s.n_own(k));
+    std::vector<int> node_of_equation;
+    if (static_cast<int>(in.node_of_equation.size()) == n) {
+      for (int eq : global)
+        node_of_equation.push_back(in.node_of_equation[eq]);
+    }
+    DofCondensationInput side_in{Ak, fk, border, node_of_equation, in.ordering};
+    side_in.substructure_from = std::numeric_limits<int>::max();
+    side_in.hold_contact_dofs = false;
+    outcome[k] = s.side[k].compute(side_in);
+  };
+  run_both([&] { condense_side(0); }, [&] { condense_side(1); });
+  for (int k = 0; k < 2; ++k) {
+    if (outcome[k].failed_equation >= 0)
+      return not_positive_definite(s.global[k][outcome[k].failed_equation]);
+    if (!outcome[k].ok())
+      return outcome[k];
+  }
+  const CondensationTimings& t0 = s.side[0].timings();
+  const CondensationTimings& t1 = s.side[1].timings();
+  timings_.analyze_s = bisect_s + std::max(t0.analyze_s, t1.analyze_s);
+  timings_.factorize_s = std::max(t0.factorize_s, t1.factorize_s);
+
+  // S_b's Cholesky factor, the separator first.
+  start = Clock::now();
+  Eigen::MatrixXd Sb = s.border_block(A0);
+  const double norm1 = Sb.cwiseAbs().colwise().sum().maxCoeff();
+  s.L = std::move(Sb);
+  if (!dense::cholesky_in_place(s.L))
+    return not_positive_definite(-1);
+  const double rcond = dense::cholesky_rcond(s.L, norm1);
+  if (!(rcond > 1e-15))
+    return numerically_singular(rcond);
+  factor_nnz_ = s.side[0].factor_nonzeros() + s.side[1].factor_nonzeros() + 0.5 * nb * (nb + 1.0);
+  factor_flops_ = s.side[0].factor_flops() + s.side[1].factor_flops() + std::pow(nb, 3) / 3.0;
+  L_tail_ = s.L.bottomRightCorner(nc, nc);
+  tail_position_.resize(nc);
+  std::iota(tail_position_.begin(), tail_position_.end(), 0);
+  impl_->sides = std::move(sides);
+  schur_from_tail();
+  condense_sides_load();  // the sides hold their loads already
+  timings_.condense_s = std::max(t0.condense_s, t1.condense_s) + seconds_since(start);
   return {SolveStatus::Ok, ""};
 }
 
@@ -481,6 +772,12 @@ void DofCondensation::update_load(const Eigen::VectorXd& f) {
     f_c_ = S_ * x_c + delta_times(x_c);
     return;
   }
+  if (im.sides) {
+    for (int k = 0; k < 2; ++k)
+      im.sides->side[k].update_load(im.sides->side_load(k, f));
+    condense_sides_load();
+    return;
+  }
   // y = L^{-1} P f; f_c = L_cc y_c.
   cholmod_dense fb = view_vector(f);
   cholmod_dense* Pf = cholmod_solve(CHOLMOD_P, im.L, &fb, &im.common);
@@ -492,6 +789,25 @@ void DofCondensation::update_load(const Eigen::VectorXd& f) {
   const Eigen::VectorXd ft = L_tail_.triangularView<Eigen::Lower>() * y_c;
   for (int a = 0; a < nc; ++a)
     f_c_[tail_position_[a]] = ft[a];
+}
+
+void DofCondensation::condense_sides_load() {
+  Sides& s = *impl_->sides;
+  s.condense_load(impl_->f);
+  const int nc = n_contact_dofs();
+  f_c_ = L_tail_.triangularView<Eigen::Lower>() * s.z.tail(nc);  // tail order = c's order
+}
+
+Eigen::VectorXd DofCondensation::border_values(const Eigen::VectorXd& u_c) const {
+  // As backward_right_side() on the border's dense factor: L^T x = [z_s; L_cc^T u_c] has
+  // x_c = u_c and x_s in equilibrium with it.
+  const Sides& s = *impl_->sides;
+  const int nc = n_contact_dofs();
+  Eigen::VectorXd x = s.z;
+  x.tail(nc) = L_tail_.triangularView<Eigen::Lower>().transpose() * u_c;
+  s.L.triangularView<Eigen::Lower>().transpose().solveInPlace(x);
+  x.tail(nc) = u_c;  // exact on c
+  return x;
 }
 
 Eigen::VectorXd DofCondensation::backward_right_side(const Eigen::VectorXd& u_c) const {
@@ -509,6 +825,9 @@ Eigen::VectorXd DofCondensation::backward_right_side(const Eigen::VectorXd& u_c)
 
 Eigen::VectorXd DofCondensation::recover(const Eigen::VectorXd& u_c) const {
   Impl& im = *impl_;
+  if (im.sides)
+    return im.sides->recover(border_values(u_c), nullptr,
+                             static_cast<Eigen::Index>(position_.size()));
   if (im.solver) {
     // x = A0^{-1} [f_i; f_c(original) - f_c(condensed) + (S + Delta) u_c] has x_c = u_c and
     // the interior in equilibrium with it.
@@ -537,6 +856,29 @@ Eigen::VectorXd DofCondensation::recover(const Eigen::VectorXd& u_c) const {
 
 RecoverySubset DofCondensation::subset(const std::vector<int>& equations) const {
   const Impl& im = *impl_;
+  if (im.sides) {
+    const Sides& s = *im.sides;
+    std::array<std::vector<int>, 2> wanted;
+    for (int eq : equations) {
+      if (eq < 0 || eq >= static_cast<int>(position_.size()))
+        throw std::invalid_argument(
+            fmt::format("DofCondensation::subset: equation {} of {}", eq, position_.size()));
+      const int k = s.side_of[eq];
+      if (k == 0 || k == 1)
+        wanted[k].push_back(s.local[eq]);
+    }
+    RecoverySubset out;
+    out.equations = s.border;
+    for (int k = 0; k < 2; ++k) {
+      out.sides.push_back(s.side[k].subset(wanted[k]));
+      for (int l : out.sides.back().equations)
+        out.equations.push_back(s.global[k][l]);
+    }
+    std::sort(out.equations.begin(), out.equations.end());
+    out.equations.erase(std::unique(out.equations.begin(), out.equations.end()),
+                        out.equations.end());
+    return out;
+  }
   if (im.solver || im.L == nullptr)
     return {};
   // Factor column k holds equation Perm[k].
@@ -565,6 +907,9 @@ RecoverySubset DofCondensation::subset(const std::vector<int>& equations) const 
 Eigen::VectorXd DofCondensation::recover(const Eigen::VectorXd& u_c,
                                          const RecoverySubset& subset) const {
   const Impl& im = *impl_;
+  if (im.sides && subset.sides.size() == 2)
+    return im.sides->recover(border_values(u_c), &subset,
+                             static_cast<Eigen::Index>(position_.size()));
   if (!subset.backward || im.solver)
     return recover(u_c);
   // As recover(u_c), the backward solve over the subset's supernodes only.

@@ -21,6 +21,13 @@
 //     dissection of the rest (the FE core's quotient ordering) with c appended. With METIS,
 //     ordering c last costs about 20% more factorization flops than the unconstrained ordering
 //     on these meshes; CHOLMOD's postorder is kept where it leaves c last.
+//     Two sides (from DofCondensationInput::substructure_from interior vertices, with METIS): a
+//     vertex separator s of the interior's graph leaves two sides 0 and 1 that no entry of A0
+//     couples. With the border b = s + c, each principal submatrix A0[k+b] is positive definite
+//     (A0 is) and is condensed onto b as above, each side on its own core when one is idle:
+//       S_k = A0_bb - A0_bk A0_kk^{-1} A0_kb,   S_b = S_0 + S_1 - A0_bb   (A0_bb is in both),
+//     and the dense Cholesky factor of S_b, s first and c last, has the trailing block L_cc.
+//     Both sides' numeric factorizations run at once; the values do not depend on it.
 //   - MultipleRightHandSides: factor A0 in the solver's own ordering and solve for the |c| unit
 //     columns: S + Delta = ((A0^{-1})_cc)^{-1}. The simple reference (memory n x |c|).
 //
@@ -49,11 +56,15 @@ class BackwardSolveSubset;
 /// The equations of the free displacement a caller reads (DofCondensation::subset): recover()
 /// with it gives only those entries (and the contact DOFs').
 struct RecoverySubset {
-  std::shared_ptr<const BackwardSolveSubset> backward;  ///< null: the whole field
-  std::vector<int> equations;                           ///< the entries given, increasing
+  std::shared_ptr<const BackwardSolveSubset> backward;  ///< one factor's backward solve
+  std::vector<RecoverySubset> sides;  ///< or each side's, when the sides were factored apart
+  std::vector<int> equations;         ///< the entries given, increasing
+  /// Whether recover() with it gives the whole field (nothing to prune).
+  bool whole_field() const { return !backward && sides.empty(); }
 };
 
-/// Wall-clock seconds of the condensation's phases.
+/// Wall-clock seconds of the condensation's phases. Where the two sides of a separator are
+/// factored at once, a phase counts the longer side's time.
 struct CondensationTimings {
   double assemble_s = 0.0;   ///< A0 = K + D, the node graph
   double analyze_s = 0.0;    ///< fill-reducing ordering and symbolic factorization
@@ -61,6 +72,13 @@ struct CondensationTimings {
   double condense_s = 0.0;   ///< S and f_c from the factor (dense BLAS-3)
   double total() const { return assemble_s + analyze_s + factorize_s + condense_s; }
 };
+
+/// The interior vertices from which DofCondensationInput's default condenses two sides apart.
+/// Condensing a side onto its border factors and multiplies out the border's dense block, so the
+/// sides cost about 4 b^3 / 3 flops more than one factor (b: a side's border, separator and
+/// contact DOFs; 2.9e10 on S(1/7) F Q8, b = 2,783, against 2.0e11 for the factorization): worth
+/// it only where the sparse factorization dominates, the largest models.
+inline constexpr int kSubstructureFrom = 500'000;
 
 /// What stage 1 reads. The references must outlive DofCondensation::compute.
 struct DofCondensationInput {
@@ -73,6 +91,13 @@ struct DofCondensationInput {
   /// TrailingFactorBlock's ordering: CholmodDefault = the policy below (CAMD, METIS if its fill
   /// is high; METIS from 2e5 equations); Amd = CAMD only; Metis = METIS only.
   FillReducingOrdering ordering = FillReducingOrdering::CholmodDefault;
+  /// TrailingFactorBlock with a METIS ordering, from this many vertices of the interior's graph
+  /// on: the two sides of a vertex separator are condensed apart, each onto the separator and c
+  /// (at once when a spare core is idle, spare_cores.hpp), and the separator is then eliminated
+  /// from the sum in a dense block. The values are the same on one core or two.
+  int substructure_from = kSubstructureFrom;
+  /// false: K is positive definite as given (a side of a larger A0) and Delta is zero.
+  bool hold_contact_dofs = true;
 };
 
 /// Stage 1: the elastic system condensed onto the contact DOFs.
@@ -106,11 +131,11 @@ class DofCondensation {
   Eigen::VectorXd recover(const Eigen::VectorXd& u_c) const;
   /// The subset of recover() that gives the entries of `equations` (free equation indices) and
   /// of the contact DOFs: the backward solve visits only the factor's supernodes those entries
-  /// need (solver/contact/backward_solve_subset.hpp). The reference method gives the whole
-  /// field (a null backward).
+  /// need (solver/contact/backward_solve_subset.hpp), on each side's factor where the sides
+  /// were factored apart. The reference method gives the whole field (whole_field()).
   RecoverySubset subset(const std::vector<int>& equations) const;
   /// recover(u_c) at subset.equations only, bit for bit; the other entries are NaN. With a
-  /// null subset.backward, recover(u_c).
+  /// subset.whole_field(), recover(u_c).
   Eigen::VectorXd recover(const Eigen::VectorXd& u_c, const RecoverySubset& subset) const;
 
   int n_contact_dofs() const { return static_cast<int>(contact_dofs_.size()); }
@@ -122,10 +147,19 @@ class DofCondensation {
 
  private:
   struct Impl;
+  struct Sides;
   SolveOutcome compute_reference(const Eigen::SparseMatrix<double>& A0);
   SolveOutcome compute_trailing(const Eigen::SparseMatrix<double>& A0,
                                 const DofCondensationInput& in,
                                 const std::vector<char>& is_contact);
+  SolveOutcome compute_sides(const Eigen::SparseMatrix<double>& A0, const DofCondensationInput& in,
+                             const std::vector<char>& is_contact);
+  /// S = L_tail L_tail^T - Delta, from the trailing block L_tail_ (tail_position_'s order).
+  void schur_from_tail();
+  /// Two sides: f_c from the sides' condensed loads of the load impl_->f.
+  void condense_sides_load();
+  /// Two sides: the border's values (separator, then c) for contact values u_c.
+  Eigen::VectorXd border_values(const Eigen::VectorXd& u_c) const;
 
   CondensationMethod method_;
   std::unique_ptr<Impl> impl_;

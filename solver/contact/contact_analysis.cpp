@@ -540,7 +540,7 @@ SearchReview ContactAnalysis::recover_results(const ContactSettings& settings,
   const RecoverySubset* subset = recovery_subset(key);
   const Eigen::VectorXd u_free = cd.condensation.recover(ds.condensation, out.step.mu, subset);
   result.displacement = elastic_.expand(u_free);
-  result.displacement_complete = subset == nullptr || !subset->backward;
+  result.displacement_complete = subset == nullptr || subset->whole_field();
   const bool finite =
       result.displacement_complete ? u_free.allFinite() : u_free(subset->equations).allFinite();
   if (!finite) {

@@ -7,6 +7,7 @@
 // need not take turns.
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <cstdlib>
 #include <optional>
@@ -112,6 +113,37 @@ TEST(FillReducingOrdering, EquationsWithANegativeGroupAreLeftOut) {
   for (int k : metis_quotient_ordering(sub, sub_groups))
     expected.push_back(kept[k]);
   EXPECT_EQ(metis_quotient_ordering(A, groups), expected);
+}
+
+// quotient_bisection: fails if an entry couples the two sides, a side is empty or much smaller
+// than the other, a node's DOFs lie on different sides, the separator is not a thin line of the
+// grid, or an equation left out gets a side.
+TEST(FillReducingOrdering, ABisectionLeavesNoEntryBetweenItsSides) {
+  const int side = 60;
+  const Eigen::SparseMatrix<double> A = grid_lower(side);
+  const int n = static_cast<int>(A.rows());
+  std::vector<int> groups = node_groups(n);
+  for (int eq = n - 2 * side; eq < n; ++eq)
+    groups[eq] = -1;  // the last row of nodes left out
+  const std::vector<int> part = quotient_bisection(A, groups);
+  ASSERT_EQ(static_cast<int>(part.size()), n);
+  std::array<int, 4> count{};  // left out, side 0, side 1, separator
+  for (int eq = 0; eq < n; ++eq) {
+    ++count[part[eq] + 1];
+    EXPECT_EQ(part[eq] < 0, groups[eq] < 0) << "equation " << eq;
+    if (eq % 2 == 1)
+      EXPECT_EQ(part[eq], part[eq - 1]) << "node " << eq / 2;
+  }
+  for (int j = 0; j < n; ++j) {
+    for (Eigen::SparseMatrix<double>::InnerIterator it(A, j); it; ++it) {
+      const int a = part[it.row()], b = part[j];
+      EXPECT_FALSE((a == 0 && b == 1) || (a == 1 && b == 0)) << it.row() << ", " << j;
+    }
+  }
+  EXPECT_EQ(count[0], 2 * side);
+  EXPECT_GT(count[1], count[2] / 2);
+  EXPECT_GT(count[2], count[1] / 2);
+  EXPECT_LE(count[3], 2 * 2 * side);  // at most two grid lines of nodes
 }
 
 /// The nonzeros of the Cholesky factor of A (lower triangle given) in the order perm, or, with an
