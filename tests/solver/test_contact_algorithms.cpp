@@ -359,34 +359,49 @@ std::vector<int> node_of_equations(const DofMap& dofs) {
   return out;
 }
 
+/// A Hertz Q8 model's elastic system, its contact DOFs (both bodies' surfaces), the block's far
+/// side (wanted) and a contact displacement u_c, for the condensation tests.
+struct CondensedHertz {
+  Model model;
+  LinearStaticAnalysis elastic;
+  std::vector<int> c, wanted, node_of;
+  Eigen::VectorXd f, u_c;
+
+  explicit CondensedHertz(int divisions) : model(meshed_hertz_q8(divisions)), elastic(model) {
+    elastic.assemble();
+    c = free_equations(model, dofs(), {"block.bottom", "indenter.contact"});
+    wanted = free_equations(model, dofs(), {"block.top"});
+    node_of = node_of_equations(dofs());
+    f = elastic.reduced_load(model.loads);
+    u_c = Eigen::VectorXd::LinSpaced(static_cast<Eigen::Index>(c.size()), -1e-3, 2e-3);
+  }
+  CondensedHertz(const CondensedHertz&) = delete;  // elastic refers to model
+  CondensedHertz& operator=(const CondensedHertz&) = delete;
+
+  const DofMap& dofs() const { return elastic.dof_map(); }
+  DofCondensationInput input() const { return {elastic.stiffness().K_ff, f, c, node_of}; }
+};
+
 TEST(ContactCondensation, SchurComplementIsTheSameForEveryOrderingAndMethod) {
   // The Schur complement onto the block's contact-surface DOFs (the block floats: K is
   // singular, K_ii is not) from the reference (multiple right-hand sides) and from the trailing
   // factor block with CAMD and with METIS orderings.
-  const Model model = meshed_hertz_q8(16);
-  LinearStaticAnalysis elastic(model);
-  elastic.assemble();
-  const DofMap& dofs = elastic.dof_map();
-  const std::vector<int> c = free_equations(model, dofs, {"block.bottom", "indenter.contact"});
-  const std::vector<int> node_of = node_of_equations(dofs);
-  const Eigen::VectorXd f = elastic.reduced_load(model.loads);
-  const Eigen::VectorXd u_c =
-      Eigen::VectorXd::LinSpaced(static_cast<Eigen::Index>(c.size()), -1e-3, 2e-3);
+  const CondensedHertz h(16);
   DofCondensation reference(CondensationMethod::MultipleRightHandSides);
-  ASSERT_TRUE(reference.compute({elastic.stiffness().K_ff, f, c, node_of}).ok());
-  const Eigen::VectorXd u_ref = reference.recover(u_c);
+  ASSERT_TRUE(reference.compute(h.input()).ok());
+  const Eigen::VectorXd u_ref = reference.recover(h.u_c);
   for (FillReducingOrdering ordering : {FillReducingOrdering::Amd, FillReducingOrdering::Metis,
                                         FillReducingOrdering::CholmodDefault}) {
     DofCondensation fast(CondensationMethod::TrailingFactorBlock);
-    DofCondensationInput in{elastic.stiffness().K_ff, f, c, node_of};
+    DofCondensationInput in = h.input();
     in.ordering = ordering;
     ASSERT_TRUE(fast.compute(in).ok());
     // Round-off, amplified by the E ratio 1e6 between the two bodies' stiffness blocks.
     const double scale = reference.schur().cwiseAbs().maxCoeff();
     EXPECT_LE((fast.schur() - reference.schur()).cwiseAbs().maxCoeff(), 1e-10 * scale);
     EXPECT_LE((fast.condensed_load() - reference.condensed_load()).norm(),
-              1e-10 * reference.condensed_load().norm() + 1e-12 * f.norm());
-    EXPECT_LE((fast.recover(u_c) - u_ref).norm(), 1e-10 * u_ref.norm());
+              1e-10 * reference.condensed_load().norm() + 1e-12 * h.f.norm());
+    EXPECT_LE((fast.recover(h.u_c) - u_ref).norm(), 1e-10 * u_ref.norm());
   }
 }
 
@@ -395,33 +410,23 @@ TEST(ContactCondensation, SchurComplementIsTheSameForEveryOrderingAndMethod) {
 // differs, a wanted or contact equation is missing, the subset is the whole factor (no saving),
 // or an entry outside it is not NaN (a stale value read as an answer).
 TEST(ContactCondensation, RecoveryOfSomeEquationsIsTheWholeRecoveryThere) {
-  const Model model = meshed_hertz_q8(32);
-  LinearStaticAnalysis elastic(model);
-  elastic.assemble();
-  const DofMap& dofs = elastic.dof_map();
-  // The contact DOFs hold both bodies; the wanted ones lie on the block's far side.
-  const std::vector<int> c = free_equations(model, dofs, {"block.bottom", "indenter.contact"});
-  const std::vector<int> wanted = free_equations(model, dofs, {"block.top"});
-  const std::vector<int> node_of = node_of_equations(dofs);
-  const Eigen::VectorXd f = elastic.reduced_load(model.loads);
-  const Eigen::VectorXd u_c =
-      Eigen::VectorXd::LinSpaced(static_cast<Eigen::Index>(c.size()), -1e-3, 2e-3);
+  const CondensedHertz h(32);
   for (FillReducingOrdering ordering : {FillReducingOrdering::Amd, FillReducingOrdering::Metis}) {
     DofCondensation fast(CondensationMethod::TrailingFactorBlock);
-    DofCondensationInput in{elastic.stiffness().K_ff, f, c, node_of};
+    DofCondensationInput in = h.input();
     in.ordering = ordering;
     ASSERT_TRUE(fast.compute(in).ok());
-    const Eigen::VectorXd whole = fast.recover(u_c);
-    const RecoverySubset subset = fast.subset(wanted);
+    const Eigen::VectorXd whole = fast.recover(h.u_c);
+    const RecoverySubset subset = fast.subset(h.wanted);
     ASSERT_FALSE(subset.whole_field());
-    const Eigen::VectorXd part = fast.recover(u_c, subset);
+    const Eigen::VectorXd part = fast.recover(h.u_c, subset);
     ASSERT_EQ(part.size(), whole.size());
     std::vector<char> given(part.size(), 0);
     for (int eq : subset.equations) {
       given[eq] = 1;
       EXPECT_EQ(part[eq], whole[eq]) << "equation " << eq;
     }
-    for (const std::vector<int>* set : {&wanted, &c}) {
+    for (const std::vector<int>* set : {&h.wanted, &h.c}) {
       for (int eq : *set)
         EXPECT_TRUE(given[eq]) << "equation " << eq << " left out";
     }
@@ -431,16 +436,16 @@ TEST(ContactCondensation, RecoveryOfSomeEquationsIsTheWholeRecoveryThere) {
     const int outside = static_cast<int>(part.size() - subset.equations.size());
     EXPECT_EQ(nan, outside);
     std::printf("[ info     ] ordering %d: %zu of %d equations recovered\n",
-                static_cast<int>(ordering), subset.equations.size(), dofs.n_free());
-    EXPECT_LT(subset.equations.size(), static_cast<std::size_t>(dofs.n_free()) / 2);
-    EXPECT_THROW(fast.subset({dofs.n_free()}), std::invalid_argument);
+                static_cast<int>(ordering), subset.equations.size(), h.dofs().n_free());
+    EXPECT_LT(subset.equations.size(), static_cast<std::size_t>(h.dofs().n_free()) / 2);
+    EXPECT_THROW(fast.subset({h.dofs().n_free()}), std::invalid_argument);
   }
   // The reference method has no factor to prune: its subset is the whole field.
   DofCondensation reference(CondensationMethod::MultipleRightHandSides);
-  ASSERT_TRUE(reference.compute({elastic.stiffness().K_ff, f, c, node_of}).ok());
-  const RecoverySubset none = reference.subset(wanted);
+  ASSERT_TRUE(reference.compute(h.input()).ok());
+  const RecoverySubset none = reference.subset(h.wanted);
   EXPECT_TRUE(none.whole_field());
-  EXPECT_TRUE(reference.recover(u_c, none) == reference.recover(u_c));
+  EXPECT_TRUE(reference.recover(h.u_c, none) == reference.recover(h.u_c));
 }
 
 // Requirement (issue 27): from DofCondensationInput::substructure_from vertices the two sides of
@@ -449,20 +454,11 @@ TEST(ContactCondensation, RecoveryOfSomeEquationsIsTheWholeRecoveryThere) {
 // differ from the one factor's beyond round-off, if the values depend on whether a core was
 // idle, or if a subset recovery differs from the whole one or leaves a wanted equation out.
 TEST(ContactCondensation, TwoSidesGiveTheOneFactorValuesOnOneCoreOrTwo) {
-  const Model model = meshed_hertz_q8(32);
-  LinearStaticAnalysis elastic(model);
-  elastic.assemble();
-  const DofMap& dofs = elastic.dof_map();
-  const std::vector<int> c = free_equations(model, dofs, {"block.bottom", "indenter.contact"});
-  const std::vector<int> wanted = free_equations(model, dofs, {"block.top"});
-  const std::vector<int> node_of = node_of_equations(dofs);
-  const Eigen::VectorXd f = elastic.reduced_load(model.loads);
-  const Eigen::VectorXd u_c =
-      Eigen::VectorXd::LinSpaced(static_cast<Eigen::Index>(c.size()), -1e-3, 2e-3);
+  const CondensedHertz h(32);
   const auto condense = [&](int substructure_from, int spare) {
     const CoreLoan loan(spare);
     DofCondensation out(CondensationMethod::TrailingFactorBlock);
-    DofCondensationInput in{elastic.stiffness().K_ff, f, c, node_of};
+    DofCondensationInput in = h.input();
     in.ordering = FillReducingOrdering::Metis;
     in.substructure_from = substructure_from;
     EXPECT_TRUE(out.compute(in).ok());
@@ -471,30 +467,30 @@ TEST(ContactCondensation, TwoSidesGiveTheOneFactorValuesOnOneCoreOrTwo) {
   const DofCondensation one = condense(std::numeric_limits<int>::max(), 0);
   const DofCondensation alone = condense(1, 0);
   const DofCondensation at_once = condense(1, 1);
-  ASSERT_FALSE(one.subset(wanted).sides.size() == 2);
+  ASSERT_FALSE(one.subset(h.wanted).sides.size() == 2);
   const double scale = one.schur().cwiseAbs().maxCoeff();
   EXPECT_LE((alone.schur() - one.schur()).cwiseAbs().maxCoeff(), 1e-10 * scale);
   EXPECT_LE((alone.condensed_load() - one.condensed_load()).norm(),
-            1e-10 * one.condensed_load().norm() + 1e-12 * f.norm());
-  const Eigen::VectorXd u = alone.recover(u_c);
-  EXPECT_LE((u - one.recover(u_c)).norm(), 1e-10 * u.norm());
+            1e-10 * one.condensed_load().norm() + 1e-12 * h.f.norm());
+  const Eigen::VectorXd u = alone.recover(h.u_c);
+  EXPECT_LE((u - one.recover(h.u_c)).norm(), 1e-10 * u.norm());
   EXPECT_TRUE(at_once.schur() == alone.schur());
   EXPECT_TRUE(at_once.condensed_load() == alone.condensed_load());
-  EXPECT_TRUE(at_once.recover(u_c) == u);
-  const RecoverySubset subset = alone.subset(wanted);
+  EXPECT_TRUE(at_once.recover(h.u_c) == u);
+  const RecoverySubset subset = alone.subset(h.wanted);
   ASSERT_EQ(subset.sides.size(), 2u);
-  const Eigen::VectorXd part = alone.recover(u_c, subset);
+  const Eigen::VectorXd part = alone.recover(h.u_c, subset);
   std::vector<char> given(part.size(), 0);
   for (int eq : subset.equations) {
     given[eq] = 1;
     EXPECT_EQ(part[eq], u[eq]) << "equation " << eq;
   }
-  for (const std::vector<int>* set : {&wanted, &c}) {
+  for (const std::vector<int>* set : {&h.wanted, &h.c}) {
     for (int eq : *set)
       EXPECT_TRUE(given[eq]) << "equation " << eq << " left out";
   }
-  EXPECT_LT(subset.equations.size(), static_cast<std::size_t>(dofs.n_free()) / 2);
-  EXPECT_THROW(alone.subset({dofs.n_free()}), std::invalid_argument);
+  EXPECT_LT(subset.equations.size(), static_cast<std::size_t>(h.dofs().n_free()) / 2);
+  EXPECT_THROW(alone.subset({h.dofs().n_free()}), std::invalid_argument);
 }
 
 TEST(ContactCondensation, BothMethodsAgree) {
