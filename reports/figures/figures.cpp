@@ -25,10 +25,11 @@ FigureSet render_figures(const ResultsIndex& index, const std::filesystem::path&
   FigureSet set;
   GnuplotWriter writer(options);
   set.unavailable = writer.unavailable();
-  const auto add = [&](const Plot& plot, Figure&& figure) {
+  std::vector<Plot> plots;  // drawn at once below, plots[i] into set.figures[i]
+  const auto add = [&](Plot&& plot, Figure&& figure) {
     if (plot.panels.empty())
       return;
-    writer.draw(plot, out_root, figure);
+    plots.push_back(std::move(plot));
     set.figures.push_back(std::move(figure));
   };
   for (const schema::ProblemRecord* p : index.problems()) {
@@ -41,8 +42,7 @@ FigureSet render_figures(const ResultsIndex& index, const std::filesystem::path&
                fmt::format("figures/profile_{}_{}.png", schema::to_string(p->id),
                            schema::to_string(element)),
                p->id);
-      const Plot plot = profile_plot(index, p->id, element, f);
-      add(plot, std::move(f));
+      add(profile_plot(index, p->id, element, f), std::move(f));
     }
   }
   const std::vector<RowFacts> rows = row_facts(index);
@@ -53,10 +53,10 @@ FigureSet render_figures(const ResultsIndex& index, const std::filesystem::path&
                fmt::format("figures/convergence_{}_{}.png", schema::to_string(p->id),
                            schema::to_string(q.quantity)),
                p->id);
-      const Plot plot = convergence_plot(index, rows, singular, *p, q, f);
-      add(plot, std::move(f));
+      add(convergence_plot(index, rows, singular, *p, q, f), std::move(f));
     }
   }
+  writer.draw_all(plots, out_root, set.figures);
   return set;
 }
 

@@ -1,14 +1,17 @@
 #include "reports/figures/gnuplot.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
 #include <system_error>
+#include <thread>
 #include <vector>
 
 #include <fmt/format.h>
 
+#include "platform/available_cores.hpp"
 #include "platform/child_process.hpp"
 #include "reports/report_error.hpp"
 
@@ -234,7 +237,7 @@ GnuplotWriter::~GnuplotWriter() {
     fs::remove_all(work_, ec);
 }
 
-void GnuplotWriter::draw(const Plot& plot, const fs::path& out_root, Figure& figure) {
+void GnuplotWriter::draw(const Plot& plot, const fs::path& out_root, Figure& figure) const {
   figure.produced = false;
   figure.error = !gnuplot_ ? unavailable_ : plot.panels.empty() ? "nothing to plot" : "";
   if (!figure.error.empty())
@@ -250,7 +253,27 @@ void GnuplotWriter::draw(const Plot& plot, const fs::path& out_root, Figure& fig
     figure.error = "gnuplot wrote no image";
 }
 
-std::string GnuplotWriter::run_script(const Plot& plot, const fs::path& png) {
+void GnuplotWriter::draw_all(const std::vector<Plot>& plots, const fs::path& out_root,
+                             std::vector<Figure>& figures) const {
+  std::atomic<std::size_t> next{0};
+  const auto drawer = [&] {
+    for (std::size_t i = next++; i < plots.size(); i = next++)
+      draw(plots[i], out_root, figures[i]);
+  };
+  const std::size_t threads =
+      std::min(plots.size(), static_cast<std::size_t>(platform::available_cores()));
+  std::vector<std::thread> helpers;
+  try {
+    for (std::size_t t = 1; t < threads; ++t)
+      helpers.emplace_back(drawer);
+  } catch (const std::system_error&) {  // fewer threads: the others draw the rest
+  }
+  drawer();
+  for (std::thread& helper : helpers)
+    helper.join();
+}
+
+std::string GnuplotWriter::run_script(const Plot& plot, const fs::path& png) const {
   const int n = static_cast<int>(plot.panels.size());
   const int cols = std::clamp(plot.columns, 1, n), rows = (n + cols - 1) / cols;
   // The key goes below each panel in as many columns as fit its widest entry; the panel grows.

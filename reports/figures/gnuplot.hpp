@@ -7,6 +7,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "reports/figures/plot_model.hpp"
 
@@ -34,12 +35,18 @@ class GnuplotWriter {
   GnuplotWriter& operator=(const GnuplotWriter&) = delete;
   /// Empty when gnuplot can draw; else a sentence saying why no figure can be drawn.
   const std::string& unavailable() const { return unavailable_; }
-  /// Draws `plot` into `out_root`/`figure.file` and records the outcome in `figure`.
-  void draw(const Plot& plot, const std::filesystem::path& out_root, Figure& figure);
+  /// Draws `plot` into `out_root`/`figure.file` and records the outcome in `figure`. Safe to call
+  /// from several threads at once for figures of different files.
+  void draw(const Plot& plot, const std::filesystem::path& out_root, Figure& figure) const;
+  /// draw(plots[i], out_root, figures[i]) for every i, the figures shared among as many threads
+  /// as this process has cores (each a gnuplot of its own): the same files and outcomes as one by
+  /// one. plots and figures have the same size.
+  void draw_all(const std::vector<Plot>& plots, const std::filesystem::path& out_root,
+                std::vector<Figure>& figures) const;
 
  private:
   /// Writes the script and data of `plot`, runs gnuplot; "" on success, else why not.
-  std::string run_script(const Plot& plot, const std::filesystem::path& png);
+  std::string run_script(const Plot& plot, const std::filesystem::path& png) const;
   std::optional<Gnuplot> gnuplot_;
   std::filesystem::path work_;  ///< scratch directory for scripts and data, removed afterwards
   std::string unavailable_;

@@ -145,6 +145,44 @@ TEST(Figures, DrawsNonEmptyPngFiles) {
   }
 }
 
+// Requirement (issue 27): draw_all shares the figures among threads and gives each the outcome
+// and the file that draw() gives it alone. Fails if a figure gets another's image or outcome
+// (an empty plot's or a refused label's error), or a file differs from the one-by-one drawing.
+TEST(Figures, DrawingAtOnceGivesEachFigureItsOwnOutcome) {
+  if (!find_gnuplot())
+    GTEST_SKIP() << "gnuplot with a PNG terminal is not installed";
+  const Loaded data(sample_json());
+  std::vector<Plot> plots;
+  std::vector<Figure> figures;
+  for (const schema::ProblemRecord* p : data.index.problems()) {
+    Figure f(FigureKind::convergence, fmt::format("figures/c_{}.png", schema::to_string(p->id)),
+             p->id);
+    plots.push_back(sample_convergence(data, p->id, f));
+    figures.push_back(f);
+  }
+  ASSERT_GE(plots.size(), 4u);
+  plots[1].panels.clear();          // nothing to plot
+  plots[2].title = "bad\x01title";  // a control character: refused
+  TempDir at_once, one_by_one;
+  const GnuplotWriter writer;
+  std::vector<Figure> drawn = figures;
+  writer.draw_all(plots, at_once.path(), drawn);
+  for (std::size_t i = 0; i < plots.size(); ++i) {
+    Figure alone = figures[i];
+    writer.draw(plots[i], one_by_one.path(), alone);
+    EXPECT_EQ(drawn[i].produced, alone.produced) << alone.file;
+    EXPECT_EQ(drawn[i].error, alone.error) << alone.file;
+    if (alone.produced)
+      EXPECT_EQ(testing::read_text(at_once.path() / alone.file),
+                testing::read_text(one_by_one.path() / alone.file))
+          << alone.file;
+  }
+  EXPECT_FALSE(drawn[1].produced);
+  EXPECT_FALSE(drawn[2].produced);
+  EXPECT_NE(drawn[1].error, drawn[2].error);
+  EXPECT_TRUE(drawn[0].produced && drawn[3].produced);
+}
+
 // Requirement: figure titles name problems and quantities in plain text, from the vocabulary's
 // Markdown labels.
 TEST(Figures, PlainTextOfTheVocabularysLabels) {
