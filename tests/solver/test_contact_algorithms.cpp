@@ -493,6 +493,26 @@ TEST(ContactCondensation, TwoSidesGiveTheOneFactorValuesOnOneCoreOrTwo) {
   EXPECT_THROW(alone.subset({h.dofs().n_free()}), std::invalid_argument);
 }
 
+// Requirement: a body that nothing holds (here the block, its contact DOFs left out of c) is a
+// status with its reason, on one factor and on two sides alike, and a failed pivot names an
+// equation of the whole system. Fails on a crash, an Ok, or a side's local equation number.
+TEST(ContactCondensation, ABodyNothingHoldsIsAStatusOnOneFactorOrTwoSides) {
+  const CondensedHertz h(16);
+  const std::vector<int> indenter_only = free_equations(h.model, h.dofs(), {"indenter.contact"});
+  for (int substructure_from : {std::numeric_limits<int>::max(), 1}) {
+    DofCondensation condensation(CondensationMethod::TrailingFactorBlock);
+    DofCondensationInput in{h.elastic.stiffness().K_ff, h.f, indenter_only, h.node_of};
+    in.ordering = FillReducingOrdering::Metis;
+    in.substructure_from = substructure_from;
+    const SolveOutcome out = condensation.compute(in);
+    EXPECT_TRUE(out.status == SolveStatus::NotPositiveDefinite ||
+                out.status == SolveStatus::Singular)
+        << to_string(out.status);
+    EXPECT_NE(out.reason.find("held neither"), std::string::npos) << out.reason;
+    EXPECT_LT(out.failed_equation, h.dofs().n_free());
+  }
+}
+
 TEST(ContactCondensation, BothMethodsAgree) {
   for (bool meshed : {false, true}) {
     HertzSpec spec;
