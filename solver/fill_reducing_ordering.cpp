@@ -1,6 +1,7 @@
 #include "solver/fill_reducing_ordering.hpp"
 
 #include <algorithm>
+#include <array>
 #include <stdexcept>
 
 #include <fmt/format.h>
@@ -34,18 +35,24 @@ void check_metis(int status, const char* call) {
     throw std::runtime_error(fmt::format("{} failed with status {}", call, status));
 }
 
+/// METIS's default options, numbering from 0.
+std::array<idx_t, METIS_NOPTIONS> default_options() {
+  std::array<idx_t, METIS_NOPTIONS> options{};
+  METIS_SetDefaultOptions(options.data());
+  options[METIS_OPTION_NUMBERING] = 0;
+  return options;
+}
+
 /// METIS's nested-dissection ordering of g: perm[k] = the vertex eliminated k-th.
 std::vector<idx_t> metis_node_nd(Graph& g) {
   idx_t nv = g.vertices();
   std::vector<idx_t> perm(nv), iperm(nv);
   if (nv == 0)
     return perm;
-  idx_t options[METIS_NOPTIONS];
-  METIS_SetDefaultOptions(options);
-  options[METIS_OPTION_NUMBERING] = 0;
+  std::array<idx_t, METIS_NOPTIONS> options = default_options();
   const auto turn = metis_turn();
-  check_metis(METIS_NodeND(&nv, g.xadj.data(), g.adjncy.data(), nullptr, options, perm.data(),
-                           iperm.data()),
+  check_metis(METIS_NodeND(&nv, g.xadj.data(), g.adjncy.data(), nullptr, options.data(),
+                           perm.data(), iperm.data()),
               "METIS_NodeND");
   return perm;
 }
@@ -82,12 +89,10 @@ std::vector<idx_t> vertex_separator(Graph& g) {
   std::vector<idx_t> part(nv);
   if (nv == 0)
     return part;
-  idx_t options[METIS_NOPTIONS];
-  METIS_SetDefaultOptions(options);
-  options[METIS_OPTION_NUMBERING] = 0;
+  std::array<idx_t, METIS_NOPTIONS> options = default_options();
   const auto turn = metis_turn();
-  check_metis(METIS_ComputeVertexSeparator(&nv, g.xadj.data(), g.adjncy.data(), nullptr, options,
-                                           &separator_size, part.data()),
+  check_metis(METIS_ComputeVertexSeparator(&nv, g.xadj.data(), g.adjncy.data(), nullptr,
+                                           options.data(), &separator_size, part.data()),
               "METIS_ComputeVertexSeparator");
   return part;
 }
