@@ -10,7 +10,6 @@
 #include <numeric>
 #include <optional>
 #include <stdexcept>
-#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -23,6 +22,7 @@
 #include "solver/elimination_postorder.hpp"
 #include "solver/fill_reducing_ordering.hpp"
 #include "solver/linear_solver.hpp"
+#include "solver/principal_submatrix.hpp"
 #include "solver/spare_cores.hpp"
 
 namespace cs::solver {
@@ -122,50 +122,6 @@ SolveOutcome numerically_singular(double rcond) {
                       "(pivot ratio {:.3g}): a body is held neither by prescribed displacements "
                       "nor by its contact surface",
                       rcond)};
-}
-
-/// The lower triangle of A's principal submatrix on the equations `global` (local equation l
-/// is A's global[l]), CSC with sorted rows. A_lower: A's lower triangle, CSC.
-Eigen::SparseMatrix<double> principal_lower(const Eigen::SparseMatrix<double>& A_lower,
-                                            const std::vector<int>& global) {
-  const int m = static_cast<int>(global.size());
-  std::vector<int> local(A_lower.rows(), -1);
-  for (int l = 0; l < m; ++l)
-    local[global[l]] = l;
-  // Each entry goes under its smaller local index; a column's rows are then sorted in place.
-  Eigen::SparseMatrix<double> out(m, m);
-  std::vector<int> count(m, 0);
-  for (int l = 0; l < m; ++l) {
-    for (Eigen::SparseMatrix<double>::InnerIterator it(A_lower, global[l]); it; ++it) {
-      const int r = local[it.row()];
-      if (r >= 0)
-        ++count[std::min(r, l)];
-    }
-  }
-  out.reserve(count);
-  for (int l = 0; l < m; ++l) {
-    for (Eigen::SparseMatrix<double>::InnerIterator it(A_lower, global[l]); it; ++it) {
-      const int r = local[it.row()];
-      if (r >= 0)
-        out.insertBackUncompressed(std::max(r, l), std::min(r, l)) = it.value();
-    }
-  }
-  out.makeCompressed();
-  std::vector<std::pair<int, double>> column;
-  for (int j = 0; j < m; ++j) {
-    int* rows = out.innerIndexPtr() + out.outerIndexPtr()[j];
-    double* values = out.valuePtr() + out.outerIndexPtr()[j];
-    const int size = out.outerIndexPtr()[j + 1] - out.outerIndexPtr()[j];
-    if (std::is_sorted(rows, rows + size))
-      continue;
-    column.clear();
-    for (int k = 0; k < size; ++k)
-      column.emplace_back(rows[k], values[k]);
-    std::sort(column.begin(), column.end());
-    for (int k = 0; k < size; ++k)
-      std::tie(rows[k], values[k]) = column[k];
-  }
-  return out;
 }
 
 /// The number of distinct groups >= 0.
