@@ -31,10 +31,10 @@ inline constexpr int kSplitFrom = 200'000;
 /// (group index per equation, 0 <= group < n_groups; equations of a group are eliminated
 /// consecutively, in increasing order; an equation with a negative group is left out of the
 /// graph and of the result, as if its rows and columns were deleted). Returns perm with
-/// perm[k] = the equation eliminated
-/// k-th (CHOLMOD's and METIS's convention), the same from any thread and whether or not a spare
-/// core was idle (from kSplitFrom groups on, the two parts of the first separator are ordered by
-/// separate METIS calls). Throws std::runtime_error if METIS fails.
+/// perm[k] = the equation eliminated k-th (CHOLMOD's and METIS's convention), the same from any
+/// thread and whether or not a spare core was idle (from kSplitFrom groups on, the two parts of
+/// the first separator are ordered by separate METIS calls). Throws std::runtime_error if METIS
+/// fails.
 std::vector<int> metis_quotient_ordering(const Eigen::SparseMatrix<double>& A_lower,
                                          const std::vector<int>& group_of_equation);
 

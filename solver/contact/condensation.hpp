@@ -23,9 +23,11 @@
 //     on these meshes; CHOLMOD's postorder is kept where it leaves c last.
 //     Two sides (from DofCondensationInput::substructure_from interior vertices, with METIS): a
 //     vertex separator s of the interior's graph leaves two sides 0 and 1 that no entry of A0
-//     couples. With the border b = s + c, each principal submatrix A0[k+b] is positive definite
-//     (A0 is) and is condensed onto b as above, each side on its own core when one is idle:
-//       S_k = A0_bb - A0_bk A0_kk^{-1} A0_kb,   S_b = S_0 + S_1 - A0_bb   (A0_bb is in both),
+//     couples. The border b = s + c; side k's border b_k is the part of b that an entry couples
+//     with side k. Each principal submatrix A0[k+b_k] is positive definite (A0 is) and is
+//     condensed onto b_k as above, each side on its own core when one is idle:
+//       S_k = A0[b_k,b_k] - A0[b_k,k] A0[k,k]^{-1} A0[k,b_k],
+//       S_b = A0_bb + sum_k (S_k - A0[b_k,b_k])   (scattered into b),
 //     and the dense Cholesky factor of S_b, s first and c last, has the trailing block L_cc.
 //     Both sides' numeric factorizations run at once; the values do not depend on it.
 //   - MultipleRightHandSides: factor A0 in the solver's own ordering and solve for the |c| unit

@@ -382,6 +382,41 @@ struct CondensedHertz {
   DofCondensationInput input() const { return {elastic.stiffness().K_ff, f, c, node_of}; }
 };
 
+/// The trailing-block condensation of K onto `contact` with METIS, as one factor
+/// (substructure_from = int max) or as two sides (1); `spare` cores lent while it runs.
+SolveOutcome condense_metis(const CondensedHertz& h, const Eigen::SparseMatrix<double>& K,
+                            const std::vector<int>& contact, int substructure_from,
+                            DofCondensation& out, int spare = 0) {
+  const CoreLoan loan(spare);
+  DofCondensationInput in{K, h.f, contact, h.node_of};
+  in.ordering = FillReducingOrdering::Metis;
+  in.substructure_from = substructure_from;
+  return out.compute(in);
+}
+
+/// A subset recovery `part` equals the whole recovery at every equation the subset gives, gives
+/// the wanted and contact equations, and is NaN everywhere else.
+void expect_the_whole_there(const CondensedHertz& h, const RecoverySubset& subset,
+                            const Eigen::VectorXd& part, const Eigen::VectorXd& whole) {
+  ASSERT_EQ(part.size(), whole.size());
+  std::vector<char> given(part.size(), 0);
+  for (int eq : subset.equations) {
+    given[eq] = 1;
+    EXPECT_EQ(part[eq], whole[eq]) << "equation " << eq;
+  }
+  for (const std::vector<int>* set : {&h.wanted, &h.c}) {
+    for (int eq : *set)
+      EXPECT_TRUE(given[eq]) << "equation " << eq << " left out";
+  }
+  int nan = 0;
+  for (Eigen::Index eq = 0; eq < part.size(); ++eq)
+    nan += given[eq] ? 0 : (std::isnan(part[eq]) ? 1 : 0);
+  EXPECT_EQ(nan, static_cast<int>(part.size() - subset.equations.size()));
+}
+
+constexpr int kOneFactor = std::numeric_limits<int>::max();
+constexpr int kTwoSides = 1;
+
 TEST(ContactCondensation, SchurComplementIsTheSameForEveryOrderingAndMethod) {
   // The Schur complement onto the block's contact-surface DOFs (the block floats: K is
   // singular, K_ii is not) from the reference (multiple right-hand sides) and from the trailing
@@ -419,22 +454,7 @@ TEST(ContactCondensation, RecoveryOfSomeEquationsIsTheWholeRecoveryThere) {
     const Eigen::VectorXd whole = fast.recover(h.u_c);
     const RecoverySubset subset = fast.subset(h.wanted);
     ASSERT_FALSE(subset.whole_field());
-    const Eigen::VectorXd part = fast.recover(h.u_c, subset);
-    ASSERT_EQ(part.size(), whole.size());
-    std::vector<char> given(part.size(), 0);
-    for (int eq : subset.equations) {
-      given[eq] = 1;
-      EXPECT_EQ(part[eq], whole[eq]) << "equation " << eq;
-    }
-    for (const std::vector<int>* set : {&h.wanted, &h.c}) {
-      for (int eq : *set)
-        EXPECT_TRUE(given[eq]) << "equation " << eq << " left out";
-    }
-    int nan = 0;
-    for (Eigen::Index eq = 0; eq < part.size(); ++eq)
-      nan += given[eq] ? 0 : (std::isnan(part[eq]) ? 1 : 0);
-    const int outside = static_cast<int>(part.size() - subset.equations.size());
-    EXPECT_EQ(nan, outside);
+    expect_the_whole_there(h, subset, fast.recover(h.u_c, subset), whole);
     std::printf("[ info     ] ordering %d: %zu of %d equations recovered\n",
                 static_cast<int>(ordering), subset.equations.size(), h.dofs().n_free());
     EXPECT_LT(subset.equations.size(), static_cast<std::size_t>(h.dofs().n_free()) / 2);
@@ -452,21 +472,19 @@ TEST(ContactCondensation, RecoveryOfSomeEquationsIsTheWholeRecoveryThere) {
 // a separator are condensed apart (at once on a spare core) and the separator is eliminated in
 // a dense border block. Fails if the sides' Schur complement, condensed load or recovered field
 // differ from the one factor's beyond round-off, if the values depend on whether a core was
-// idle, or if a subset recovery differs from the whole one or leaves a wanted equation out.
+// idle, or if a subset recovery differs from the whole one, leaves a wanted equation out or
+// leaves a stale value (not NaN) outside it.
 TEST(ContactCondensation, TwoSidesGiveTheOneFactorValuesOnOneCoreOrTwo) {
   const CondensedHertz h(32);
   const auto condense = [&](int substructure_from, int spare) {
-    const CoreLoan loan(spare);
     DofCondensation out(CondensationMethod::TrailingFactorBlock);
-    DofCondensationInput in = h.input();
-    in.ordering = FillReducingOrdering::Metis;
-    in.substructure_from = substructure_from;
-    EXPECT_TRUE(out.compute(in).ok());
+    EXPECT_TRUE(
+        condense_metis(h, h.elastic.stiffness().K_ff, h.c, substructure_from, out, spare).ok());
     return out;
   };
-  const DofCondensation one = condense(std::numeric_limits<int>::max(), 0);
-  const DofCondensation alone = condense(1, 0);
-  const DofCondensation at_once = condense(1, 1);
+  const DofCondensation one = condense(kOneFactor, 0);
+  const DofCondensation alone = condense(kTwoSides, 0);
+  const DofCondensation at_once = condense(kTwoSides, 1);
   ASSERT_FALSE(one.subset(h.wanted).sides.size() == 2);
   const double scale = one.schur().cwiseAbs().maxCoeff();
   EXPECT_LE((alone.schur() - one.schur()).cwiseAbs().maxCoeff(), 1e-10 * scale);
@@ -479,37 +497,43 @@ TEST(ContactCondensation, TwoSidesGiveTheOneFactorValuesOnOneCoreOrTwo) {
   EXPECT_TRUE(at_once.recover(h.u_c) == u);
   const RecoverySubset subset = alone.subset(h.wanted);
   ASSERT_EQ(subset.sides.size(), 2u);
-  const Eigen::VectorXd part = alone.recover(h.u_c, subset);
-  std::vector<char> given(part.size(), 0);
-  for (int eq : subset.equations) {
-    given[eq] = 1;
-    EXPECT_EQ(part[eq], u[eq]) << "equation " << eq;
-  }
-  for (const std::vector<int>* set : {&h.wanted, &h.c}) {
-    for (int eq : *set)
-      EXPECT_TRUE(given[eq]) << "equation " << eq << " left out";
-  }
+  expect_the_whole_there(h, subset, alone.recover(h.u_c, subset), u);
   EXPECT_LT(subset.equations.size(), static_cast<std::size_t>(h.dofs().n_free()) / 2);
   EXPECT_THROW(alone.subset({h.dofs().n_free()}), std::invalid_argument);
 }
 
 // Requirement: a body that nothing holds (here the block, its contact DOFs left out of c) is a
-// status with its reason, on one factor and on two sides alike, and a failed pivot names an
-// equation of the whole system. Fails on a crash, an Ok, or a side's local equation number.
+// status with its reason, on one factor and on two sides alike. Fails on a crash or an Ok.
 TEST(ContactCondensation, ABodyNothingHoldsIsAStatusOnOneFactorOrTwoSides) {
   const CondensedHertz h(16);
   const std::vector<int> indenter_only = free_equations(h.model, h.dofs(), {"indenter.contact"});
-  for (int substructure_from : {std::numeric_limits<int>::max(), 1}) {
+  for (int substructure_from : {kOneFactor, kTwoSides}) {
     DofCondensation condensation(CondensationMethod::TrailingFactorBlock);
-    DofCondensationInput in{h.elastic.stiffness().K_ff, h.f, indenter_only, h.node_of};
-    in.ordering = FillReducingOrdering::Metis;
-    in.substructure_from = substructure_from;
-    const SolveOutcome out = condensation.compute(in);
+    const SolveOutcome out = condense_metis(h, h.elastic.stiffness().K_ff, indenter_only,
+                                            substructure_from, condensation);
     EXPECT_TRUE(out.status == SolveStatus::NotPositiveDefinite ||
                 out.status == SolveStatus::Singular)
         << to_string(out.status);
     EXPECT_NE(out.reason.find("held neither"), std::string::npos) << out.reason;
-    EXPECT_LT(out.failed_equation, h.dofs().n_free());
+  }
+}
+
+// Requirement: a negative pivot is named by its equation of the whole system, on one factor and
+// on two sides (where it fails inside a side's factor, in the side's own numbering). The
+// stiffness gets a strongly negative diagonal at one equation of the block's far side, where
+// Cholesky must stop. Fails if a side reports its local equation, or another equation.
+TEST(ContactCondensation, ANegativePivotIsNamedByItsEquationOnOneFactorOrTwoSides) {
+  const CondensedHertz h(16);
+  Eigen::SparseMatrix<double> K = h.elastic.stiffness().K_ff;
+  const int bad = h.wanted[h.wanted.size() / 2];
+  K.coeffRef(bad, bad) = -10.0 * std::abs(K.coeff(bad, bad));
+  for (int substructure_from : {kOneFactor, kTwoSides}) {
+    DofCondensation condensation(CondensationMethod::TrailingFactorBlock);
+    const SolveOutcome out = condense_metis(h, K, h.c, substructure_from, condensation);
+    EXPECT_EQ(out.status, SolveStatus::NotPositiveDefinite) << to_string(out.status);
+    EXPECT_EQ(out.failed_equation, bad);
+    EXPECT_NE(out.reason.find("pivot at equation " + std::to_string(bad)), std::string::npos)
+        << out.reason;
   }
 }
 
