@@ -1,8 +1,11 @@
 #include "apps/list_command.hpp"
 
 #include <string>
+#include <string_view>
+#include <vector>
 
 #include <fmt/core.h>
+#include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
 #include "adapters/protocol/solver_registry.hpp"
@@ -58,10 +61,10 @@ void print_external_solvers(const std::vector<std::filesystem::path>& dirs) {
   fmt::print("\nRegistered codes (--solver NAME; case ids end in /@NAME:OPTION):\n");
   for (const auto& code :
        adapters::registered_codes(adapters::protocol::solver_directories(dirs))) {
-    std::string supports;
+    std::vector<std::string_view> supports;
     for (auto s : code.supports)
-      supports += (supports.empty() ? "" : " ") + std::string(adapters::protocol::to_string(s));
-    fmt::print("  {:<10} {} [{}] ({})\n", code.name, code.description, supports,
+      supports.push_back(adapters::protocol::to_string(s));
+    fmt::print("  {:<10} {} [{}] ({})\n", code.name, code.description, fmt::join(supports, " "),
                code.folder.string());
     for (const auto& o : code.options)
       fmt::print("    {:<22} {:<20} {:<6} {}\n", code.name + ":" + o.label,

@@ -24,9 +24,9 @@ inline constexpr double kErrorNoiseFloorPercent = 1e-6;
 /// the sequence is oscillatory or diverging or its differences are at round-off.
 struct ErrorEstimate {
   bool asymptotic = false;
-  std::optional<double> observed_order;
-  std::optional<double> richardson;
-  std::optional<double> gci_percent;
+  std::optional<double> observed_order{};
+  std::optional<double> richardson{};
+  std::optional<double> gci_percent{};
   std::string note;  ///< why there is no estimate ("oscillatory", "at round-off", ...)
 };
 

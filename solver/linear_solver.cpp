@@ -12,7 +12,9 @@
 #include <Eigen/SparseCholesky>
 
 namespace cs::solver {
-namespace {
+
+/// What LinearSolver::Impl holds. Named, not file-local: a class with linkage holds them.
+namespace linear_solver_parts {
 
 using SparseMatrix = Eigen::SparseMatrix<double>;
 
@@ -46,6 +48,14 @@ struct PatternKey {
   std::uint64_t hash = 0;
   bool operator==(const PatternKey&) const = default;
 };
+
+}  // namespace linear_solver_parts
+
+namespace {
+
+using linear_solver_parts::PatternKey;
+using linear_solver_parts::SparseMatrix;
+using linear_solver_parts::SupernodalLLT;
 
 PatternKey pattern_key(const SparseMatrix& A) {
   PatternKey key{A.rows(), A.nonZeros(), 1469598103934665603ull};

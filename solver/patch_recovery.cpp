@@ -34,6 +34,11 @@ int n_monomials(int degree) {
   return (degree + 1) * (degree + 2) / 2;
 }
 
+}  // namespace
+
+/// What PatchScope::Impl holds. Named, not file-local: a class with linkage holds them.
+namespace patch_scope_parts {
+
 /// The elements of one body around each node, in compressed rows: the elements around node n
 /// are elements[offsets[n] .. offsets[n + 1]).
 struct NodeElements {
@@ -43,6 +48,21 @@ struct NodeElements {
     return {elements.data() + offsets[node], elements.data() + offsets[node + 1]};
   }
 };
+
+/// The patches of one body that a recovery uses: its vertices' element lists, the patch centres
+/// (increasing) and which vertices lie on the body's boundary.
+struct BodyPatches {
+  NodeElements around;
+  std::vector<int> centres;
+  std::vector<char> boundary;
+};
+
+}  // namespace patch_scope_parts
+
+namespace {
+
+using patch_scope_parts::BodyPatches;
+using patch_scope_parts::NodeElements;
 
 NodeElements elements_around(const Mesh& mesh, int body) {
   NodeElements around;
@@ -177,14 +197,6 @@ std::vector<char> patch_centres(const Mesh& mesh, int body, const std::vector<ch
   }
   return centre;
 }
-
-/// The patches of one body that a recovery uses: its vertices' element lists, the patch centres
-/// (increasing) and which vertices lie on the body's boundary.
-struct BodyPatches {
-  NodeElements around;
-  std::vector<int> centres;
-  std::vector<char> boundary;
-};
 
 BodyPatches body_patches(const Mesh& mesh, int body, const std::vector<char>* nodes) {
   BodyPatches b;

@@ -78,8 +78,8 @@ struct BenchRow {
   /// A ratio as measured in one file: its median and its spread over repetitions, if any.
   struct Measurement {
     double ratio = 0.0;
-    std::optional<double> stddev;
-    std::optional<double> reference_ms;  ///< the model's reference in that file
+    std::optional<double> stddev{};
+    std::optional<double> reference_ms{};  ///< the model's reference in that file
   };
   /// The same case measured in earlier files (this row is the last file's).
   std::vector<Measurement> earlier;

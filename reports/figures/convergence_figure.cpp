@@ -89,12 +89,12 @@ Plot convergence_plot(const ResultsIndex& index, const std::vector<RowFacts>& ro
       for (std::size_t m = 0; m < kMeshes.size(); ++m) {
         const schema::CaseResult* c = index.case_of(*row, kMeshes[m]);
         const auto y = p.singular ? row->values[m] : row->errors[m];
-        const auto h = c ? finite(c->element_size_h) : std::nullopt;
-        relative = relative || (y && !(h && *h > 0));
+        const double h = c ? finite(c->element_size_h).value_or(0.0) : 0.0;  // 0: not known
+        relative = relative || (y && !(h > 0));
         if (y && std::abs(*y) < schema::kErrorNoiseFloorPercent)
           round_off = true;  // exact to round-off: nothing to draw on a log scale
         else if (y && std::isfinite(*y))
-          s.xy.emplace_back(h && *h > 0 ? *h : std::ldexp(1.0, -static_cast<int>(m)), std::abs(*y));
+          s.xy.emplace_back(h > 0 ? h : std::ldexp(1.0, -static_cast<int>(m)), std::abs(*y));
       }
       panel.series.push_back(std::move(s));
     }

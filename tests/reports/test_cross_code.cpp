@@ -415,7 +415,7 @@ TEST(CrossCodeSection, InTheReportOnlyWithSeveralCodes) {
             std::string::npos);
   ReportContent content;
   content.cross_code_md = md;
-  content.companions = {{"x/report.md", "T"}};
+  content.companions = {{.path = "x/report.md", .title = "T", .writer = ""}};
   const auto appendices = appendix_pages(index, study(), content);
   const std::string report = report_markdown(index, content, {}, appendices);
   EXPECT_NE(report.find("(appendix-cross-code.md)"), std::string::npos);

@@ -172,10 +172,11 @@ TEST(Figures, DrawingAtOnceGivesEachFigureItsOwnOutcome) {
     writer.draw(plots[i], one_by_one.path(), alone);
     EXPECT_EQ(drawn[i].produced, alone.produced) << alone.file;
     EXPECT_EQ(drawn[i].error, alone.error) << alone.file;
-    if (alone.produced)
+    if (alone.produced) {
       EXPECT_EQ(testing::read_text(at_once.path() / alone.file),
                 testing::read_text(one_by_one.path() / alone.file))
           << alone.file;
+    }
   }
   EXPECT_FALSE(drawn[1].produced);
   EXPECT_FALSE(drawn[2].produced);

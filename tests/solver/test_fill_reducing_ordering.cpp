@@ -131,8 +131,9 @@ TEST(FillReducingOrdering, ABisectionLeavesNoEntryBetweenItsSides) {
   for (int eq = 0; eq < n; ++eq) {
     ++count[part[eq] + 1];
     EXPECT_EQ(part[eq] < 0, groups[eq] < 0) << "equation " << eq;
-    if (eq % 2 == 1)
+    if (eq % 2 == 1) {
       EXPECT_EQ(part[eq], part[eq - 1]) << "node " << eq / 2;
+    }
   }
   for (int j = 0; j < n; ++j) {
     for (Eigen::SparseMatrix<double>::InnerIterator it(A, j); it; ++it) {
