@@ -69,7 +69,10 @@ class SpareCore {
 /// Runs first() on this thread and second() on a borrowed spare core when one is idle (and a
 /// thread can be started), else second() after first(). Both have run when it returns; an
 /// exception of either is rethrown (first()'s when both throw; on one thread, a throwing
-/// first() leaves second() unrun).
+/// first() leaves second() unrun). The borrowed core's thread runs the libraries' OpenMP
+/// regions as this thread does: libgomp keeps max-active-levels per thread, and a new thread
+/// would otherwise start CHOLMOD's team of four for every supernodal factorization, whose
+/// spinning threads take the core that first() runs on.
 void run_both(const std::function<void()>& first, const std::function<void()>& second);
 
 }  // namespace cs::solver

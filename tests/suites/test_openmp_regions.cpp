@@ -11,6 +11,7 @@
 #include <fstream>
 #include <memory>
 #include <string>
+#include <thread>
 #include <utility>
 #include <vector>
 
@@ -19,6 +20,7 @@
 
 #include "platform/child_process.hpp"
 #include "solver/linear_solver.hpp"
+#include "solver/spare_cores.hpp"
 #include "suites/run_environment.hpp"
 #include "suites/runner.hpp"
 
@@ -91,15 +93,38 @@ class FactorizingExecutor : public cs::suites::GroupExecutor {
   std::atomic<int>& most_;
 };
 
-/// The threads after factorizing: on this thread, or (CS_OPENMP_WORKERS) on each of the two
-/// workers of a run of two models, the most the process had after any factorization.
+/// The process's threads just after one supernodal factorization on the calling thread.
+int factorize_and_count() {
+  cs::solver::LinearSolver solver;
+  EXPECT_TRUE(solver.compute(grid_matrix(120)).ok());
+  EXPECT_TRUE(solver.info().supernodal);
+  return thread_count();
+}
+
+/// The threads after factorizing on a core this thread lends and run_both() borrows, while
+/// the borrowed core's thread is alive.
+int threads_after_factorizing_on_a_borrowed_core() {
+  const cs::solver::CoreLoan loan(1);
+  const auto lender = std::this_thread::get_id();
+  bool borrowed = false;
+  int after = 0;
+  cs::solver::run_both([] {},
+                       [&] {
+                         borrowed = std::this_thread::get_id() != lender;
+                         after = factorize_and_count();
+                       });
+  EXPECT_TRUE(borrowed);
+  return after;
+}
+
+/// The threads after factorizing: on this thread, (CS_OPENMP_BORROWED) on a borrowed core, or
+/// (CS_OPENMP_WORKERS) on each of the two workers of a run of two models, the most the process
+/// had after any factorization.
 int threads_after_factorizing() {
-  if (std::getenv("CS_OPENMP_WORKERS") == nullptr) {
-    cs::solver::LinearSolver solver;
-    EXPECT_TRUE(solver.compute(grid_matrix(120)).ok());
-    EXPECT_TRUE(solver.info().supernodal);
-    return thread_count();
-  }
+  if (std::getenv("CS_OPENMP_BORROWED") != nullptr)
+    return threads_after_factorizing_on_a_borrowed_core();
+  if (std::getenv("CS_OPENMP_WORKERS") == nullptr)
+    return factorize_and_count();
   std::atomic<int> most = 0;
   cs::schema::CaseSpec a, b;
   b.mesh = cs::schema::MeshLevel::M;  // another model: the two run on two workers
@@ -148,6 +173,20 @@ TEST(OpenmpRegions, TheRunnersWorkersStartNoOpenmpThread) {
   // Without the call, each worker's factorization starts a team of its own.
   const Probe team = run_probe({{"CS_OPENMP_WORKERS", "1"}});
   EXPECT_GT(team.after, team.before + 2);
+}
+
+/// run_both() hands the setting to the thread of the core it borrows (a large model's second
+/// side): the factorization there starts no team either, only that thread.
+TEST(OpenmpRegions, ABorrowedCoresThreadStartsNoOpenmpThread) {
+  if (std::getenv("OMP_THREAD_LIMIT") != nullptr)
+    GTEST_SKIP() << "OMP_THREAD_LIMIT is set: the user's limit is kept";
+  const Probe serial = run_probe({{"CS_OPENMP_SERIAL", "1"}, {"CS_OPENMP_BORROWED", "1"}});
+  EXPECT_EQ(serial.serial, 1);
+  EXPECT_GT(serial.before, 0);
+  EXPECT_EQ(serial.after, serial.before + 1);
+  // Without the call, the borrowed core's factorization starts CHOLMOD's team.
+  const Probe team = run_probe({{"CS_OPENMP_BORROWED", "1"}});
+  EXPECT_GT(team.after, team.before + 1);
 }
 
 TEST(OpenmpRegions, TheUsersThreadLimitIsKept) {
