@@ -24,6 +24,7 @@
 #include "solver/linear_solver.hpp"
 #include "solver/principal_submatrix.hpp"
 #include "solver/spare_cores.hpp"
+#include "solver/sparse_sum.hpp"
 
 namespace cs::solver {
 
@@ -98,9 +99,7 @@ Eigen::SparseMatrix<double> raised_matrix(const Eigen::SparseMatrix<double>& K,
   }
   Eigen::SparseMatrix<double> D(K.rows(), K.cols());
   D.setFromTriplets(t.begin(), t.end());
-  Eigen::SparseMatrix<double> A0 = K + D;
-  A0.makeCompressed();
-  return A0;
+  return sparse_sum(K, D);
 }
 
 /// A0 is not positive definite: its pivot at `equation` (-1: not known) failed.
