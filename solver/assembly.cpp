@@ -7,9 +7,14 @@
 
 #include "solver/elements/element_stiffness.hpp"
 #include "solver/model_error.hpp"
+#include "solver/spare_cores.hpp"
 
 namespace cs::solver {
 namespace {
+
+/// Elements whose matrices are computed at once before they are added: 2,048 of 16 x 16 take
+/// 4 MiB.
+constexpr int kElementsPerStep = 2048;
 
 /// Node -> nodes sharing an element with it (including itself), CSR, sorted.
 void node_adjacency(const Mesh& mesh, std::vector<int>& start, std::vector<int>& adjacent) {
@@ -60,6 +65,9 @@ Assembler::Assembler(const Model& model, const DofMap& dofs) : model_(model), do
   const int n_free = dofs.n_free();
   outer_.assign(n_free + 1, 0);
   inner_.clear();
+  // At most 2 x 2 entries per pair of neighbours m >= n: reserved (untouched pages cost
+  // nothing) so that growing never copies the pattern.
+  inner_.reserve(2 * (adjacent.size() + static_cast<std::size_t>(mesh.n_nodes())));
   for (int j = 0; j < n_free; ++j) {
     const int d = dofs.free_dofs()[j];
     const int n = d / 2;
@@ -76,15 +84,23 @@ Assembler::Assembler(const Model& model, const DofMap& dofs) : model_(model), do
     outer_[j + 1] = static_cast<int>(inner_.size());
   }
 
-  // Scatter map: local lower-triangle pair (i >= j), column-major, -> position in inner_.
+  // Scatter map: local lower-triangle pair (i >= j), column-major, -> position in inner_. The
+  // halves of the elements on this core and, when one is idle, a borrowed one.
   const int nd = 2 * mesh.n_element_nodes();
   pairs_per_element_ = nd * (nd + 1) / 2;
   scatter_.assign(static_cast<std::size_t>(mesh.n_elements()) * pairs_per_element_, -1);
+  const int half = mesh.n_elements() / 2;
+  run_both([&] { map_elements(0, half); }, [&] { map_elements(half, mesh.n_elements()); });
+}
+
+void Assembler::map_elements(int first, int last) {
+  const Mesh& mesh = model_.mesh;
+  const int nd = 2 * mesh.n_element_nodes();
   int eq[16];
-  for (int e = 0; e < mesh.n_elements(); ++e) {
+  for (int e = first; e < last; ++e) {
     for (int a = 0; a < nd / 2; ++a) {
-      eq[2 * a] = dofs.equation(2 * mesh.elements[e][a]);
-      eq[2 * a + 1] = dofs.equation(2 * mesh.elements[e][a] + 1);
+      eq[2 * a] = dofs_.equation(2 * mesh.elements[e][a]);
+      eq[2 * a + 1] = dofs_.equation(2 * mesh.elements[e][a] + 1);
     }
     int* out = scatter_.data() + static_cast<std::size_t>(e) * pairs_per_element_;
     for (int j = 0; j < nd; ++j) {
@@ -93,9 +109,9 @@ Assembler::Assembler(const Model& model, const DofMap& dofs) : model_(model), do
           continue;
         const int row = std::max(eq[i], eq[j]);
         const int col = std::min(eq[i], eq[j]);
-        const int* first = inner_.data() + outer_[col];
-        const int* last = inner_.data() + outer_[col + 1];
-        const int* pos = std::lower_bound(first, last, row);
+        const int* begin = inner_.data() + outer_[col];
+        const int* end = inner_.data() + outer_[col + 1];
+        const int* pos = std::lower_bound(begin, end, row);
         *out = static_cast<int>(pos - inner_.data());
       }
     }
@@ -136,25 +152,36 @@ void Assembler::assemble(StiffnessMatrices& out) const {
   const int nd = 2 * nen;
   const int points = model_.element_points();
   std::vector<Eigen::Triplet<double>> constrained;
-  ElementMatrix K_e;
-  for (int e = 0; e < mesh.n_elements(); ++e) {
-    const ElementGeometry g = element_geometry(mesh, model_.analysis, e);
-    element_stiffness(g, D[mesh.element_body[e]], points, K_e);
-    const int* map = scatter_.data() + static_cast<std::size_t>(e) * pairs_per_element_;
-    for (int j = 0; j < nd; ++j) {
-      for (int i = j; i < nd; ++i, ++map) {
-        if (*map >= 0)
-          values[*map] += K_e(i, j);
-      }
+  // A step's element matrices are computed in two halves, on this core and, when one is idle,
+  // a borrowed one, then added in element order: the sums do not depend on where they ran.
+  std::vector<ElementMatrix> K_step(std::min(kElementsPerStep, mesh.n_elements()));
+  const auto compute = [&](int step_first, int first, int last) {
+    for (int e = first; e < last; ++e) {
+      element_stiffness(element_geometry(mesh, model_.analysis, e), D[mesh.element_body[e]], points,
+                        K_step[e - step_first]);
     }
-    // Rows of prescribed DOFs, all columns.
-    for (int i = 0; i < nd; ++i) {
-      const int dof_i = 2 * mesh.elements[e][i / 2] + i % 2;
-      const int ci = dofs_.constrained_index(dof_i);
-      if (ci < 0)
-        continue;
+  };
+  for (int step = 0; step < mesh.n_elements(); step += kElementsPerStep) {
+    const int last = std::min(mesh.n_elements(), step + kElementsPerStep);
+    const int mid = step + (last - step) / 2;
+    run_both([&] { compute(step, step, mid); }, [&] { compute(step, mid, last); });
+    for (int e = step; e < last; ++e) {
+      const ElementMatrix& K_e = K_step[e - step];
+      const int* map = scatter_.data() + static_cast<std::size_t>(e) * pairs_per_element_;
       for (int j = 0; j < nd; ++j) {
-        constrained.emplace_back(ci, 2 * mesh.elements[e][j / 2] + j % 2, K_e(i, j));
+        for (int i = j; i < nd; ++i, ++map) {
+          if (*map >= 0)
+            values[*map] += K_e(i, j);
+        }
+      }
+      // Rows of prescribed DOFs, all columns.
+      for (int i = 0; i < nd; ++i) {
+        const int dof_i = 2 * mesh.elements[e][i / 2] + i % 2;
+        const int ci = dofs_.constrained_index(dof_i);
+        if (ci < 0)
+          continue;
+        for (int j = 0; j < nd; ++j)
+          constrained.emplace_back(ci, 2 * mesh.elements[e][j / 2] + j % 2, K_e(i, j));
       }
     }
   }

@@ -42,6 +42,9 @@ class Assembler {
   long nnz() const { return static_cast<long>(inner_.size()); }
 
  private:
+  /// The scatter map of elements [first, last).
+  void map_elements(int first, int last);
+
   const Model& model_;
   const DofMap& dofs_;
   int pairs_per_element_ = 0;  ///< nd (nd + 1) / 2 with nd = 2 n_element_nodes
