@@ -118,6 +118,27 @@ void Assembler::map_elements(int first, int last) {
   }
 }
 
+void Assembler::add_element(int e, const ElementMatrix& K_e, double* values,
+                            std::vector<Eigen::Triplet<double>>& constrained) const {
+  const Mesh& mesh = model_.mesh;
+  const int nd = 2 * mesh.n_element_nodes();
+  const int* map = scatter_.data() + static_cast<std::size_t>(e) * pairs_per_element_;
+  for (int j = 0; j < nd; ++j) {
+    for (int i = j; i < nd; ++i, ++map) {
+      if (*map >= 0)
+        values[*map] += K_e(i, j);
+    }
+  }
+  // Rows of prescribed DOFs, all columns.
+  for (int i = 0; i < nd; ++i) {
+    const int ci = dofs_.constrained_index(2 * mesh.elements[e][i / 2] + i % 2);
+    if (ci < 0)
+      continue;
+    for (int j = 0; j < nd; ++j)
+      constrained.emplace_back(ci, 2 * mesh.elements[e][j / 2] + j % 2, K_e(i, j));
+  }
+}
+
 void Assembler::assemble(StiffnessMatrices& out) const {
   const Mesh& mesh = model_.mesh;
   const int n_free = dofs_.n_free();
@@ -148,8 +169,6 @@ void Assembler::assemble(StiffnessMatrices& out) const {
     D[b] = elasticity_matrix(model_.materials[b]);
   }
 
-  const int nen = mesh.n_element_nodes();
-  const int nd = 2 * nen;
   const int points = model_.element_points();
   std::vector<Eigen::Triplet<double>> constrained;
   // A step's element matrices are computed in two halves, on this core and, when one is idle,
@@ -165,25 +184,8 @@ void Assembler::assemble(StiffnessMatrices& out) const {
     const int last = std::min(mesh.n_elements(), step + kElementsPerStep);
     const int mid = step + (last - step) / 2;
     run_both([&] { compute(step, step, mid); }, [&] { compute(step, mid, last); });
-    for (int e = step; e < last; ++e) {
-      const ElementMatrix& K_e = K_step[e - step];
-      const int* map = scatter_.data() + static_cast<std::size_t>(e) * pairs_per_element_;
-      for (int j = 0; j < nd; ++j) {
-        for (int i = j; i < nd; ++i, ++map) {
-          if (*map >= 0)
-            values[*map] += K_e(i, j);
-        }
-      }
-      // Rows of prescribed DOFs, all columns.
-      for (int i = 0; i < nd; ++i) {
-        const int dof_i = 2 * mesh.elements[e][i / 2] + i % 2;
-        const int ci = dofs_.constrained_index(dof_i);
-        if (ci < 0)
-          continue;
-        for (int j = 0; j < nd; ++j)
-          constrained.emplace_back(ci, 2 * mesh.elements[e][j / 2] + j % 2, K_e(i, j));
-      }
-    }
+    for (int e = step; e < last; ++e)
+      add_element(e, K_step[e - step], values, constrained);
   }
   out.K_cg.resize(dofs_.n_constrained(), dofs_.n_dofs());
   out.K_cg.setFromTriplets(constrained.begin(), constrained.end());

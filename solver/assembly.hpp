@@ -13,6 +13,7 @@
 #include <Eigen/SparseCore>
 
 #include "solver/dof_map.hpp"
+#include "solver/elements/element_kinematics.hpp"
 #include "solver/model.hpp"
 
 namespace cs::solver {
@@ -35,7 +36,9 @@ class Assembler {
   Assembler(const Model& model, const DofMap& dofs);
 
   /// Computes every element stiffness and assembles K_ff (values into the fixed pattern) and
-  /// K_cg. Throws ModelError for an inverted or degenerate element (named, with its body).
+  /// K_cg. Throws ModelError for an inverted or degenerate element (named, with its body). The
+  /// element matrices are computed on a spare core too when one is idle
+  /// (solver/spare_cores.hpp) and added in element order, so the sums never depend on it.
   void assemble(StiffnessMatrices& out) const;
 
   /// Nonzeros of the lower triangle of K_ff.
@@ -44,6 +47,10 @@ class Assembler {
  private:
   /// The scatter map of elements [first, last).
   void map_elements(int first, int last);
+  /// Adds element e's matrix K_e to K_ff's `values` and its prescribed DOFs' rows to
+  /// `constrained`.
+  void add_element(int e, const ElementMatrix& K_e, double* values,
+                   std::vector<Eigen::Triplet<double>>& constrained) const;
 
   const Model& model_;
   const DofMap& dofs_;

@@ -2,7 +2,6 @@
 // second on a borrowed core when one is idle, and added in element order; the scatter map is
 // built in two halves the same way. Nothing may depend on where they ran.
 
-#include <cstring>
 #include <optional>
 #include <string>
 
@@ -14,10 +13,13 @@
 #include "solver/material.hpp"
 #include "solver/model_error.hpp"
 #include "solver/spare_cores.hpp"
+#include "support/same_bits.hpp"
 #include "test_fe_support.hpp"
 
 namespace cs::solver::test_fe_assembly {
 namespace {
+
+using cs::testing::expect_same_bits;
 
 /// A distorted Q8 block, 7 x 6.5, of 70 x 65 elements (4,550: two whole steps and a part),
 /// fixed on its left edge (K_cg has rows) or free.
@@ -41,19 +43,6 @@ StiffnessMatrices assembled(const Model& model, int spare) {
   return analysis.stiffness();
 }
 
-template <class Matrix>
-void expect_bitwise_equal(const Matrix& a, const Matrix& b) {
-  ASSERT_TRUE(a.isCompressed() && b.isCompressed());
-  ASSERT_EQ(a.rows(), b.rows());
-  ASSERT_EQ(a.cols(), b.cols());
-  ASSERT_EQ(a.nonZeros(), b.nonZeros());
-  const auto n = static_cast<std::size_t>(a.nonZeros());
-  EXPECT_EQ(std::memcmp(a.outerIndexPtr(), b.outerIndexPtr(), (a.outerSize() + 1) * sizeof(int)),
-            0);
-  EXPECT_EQ(std::memcmp(a.innerIndexPtr(), b.innerIndexPtr(), n * sizeof(int)), 0);
-  EXPECT_EQ(std::memcmp(a.valuePtr(), b.valuePtr(), n * sizeof(double)), 0);
-}
-
 // Requirement (issue 27): K_ff and K_cg are the same to the bit whether a core was idle or
 // not. Fails if a half's matrices are added out of element order, a step's boundary drops or
 // repeats an element, or a half of the scatter map is left unset.
@@ -62,8 +51,8 @@ TEST(Assembly, IsTheSameOnOneCoreOrTwo) {
   ASSERT_GT(model.mesh.n_elements(), 2 * 2048);
   const StiffnessMatrices one = assembled(model, 0);
   const StiffnessMatrices two = assembled(model, 1);
-  expect_bitwise_equal(one.K_ff, two.K_ff);
-  expect_bitwise_equal(one.K_cg, two.K_cg);
+  expect_same_bits(one.K_ff, two.K_ff);
+  expect_same_bits(one.K_cg, two.K_cg);
 }
 
 // Requirement: every element is added once. For the uniform strain u = (eps x, 0) of the free

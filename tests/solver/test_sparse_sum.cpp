@@ -1,7 +1,6 @@
 // sparse_sum: K + D, checked against Eigen's own `K + D` to the bit.
 
 #include <cmath>
-#include <cstring>
 #include <stdexcept>
 #include <vector>
 
@@ -10,10 +9,12 @@
 #include <Eigen/SparseCore>
 
 #include "solver/sparse_sum.hpp"
+#include "support/same_bits.hpp"
 
 namespace cs::solver::test_sparse_sum {
 namespace {
 
+using cs::testing::expect_same_bits;
 using SparseMatrix = Eigen::SparseMatrix<double>;
 
 /// A 30 x 30 lower triangle with a scattered pattern (entry (i, j) when i == j or
@@ -42,19 +43,6 @@ SparseMatrix few_entries() {
   return D;
 }
 
-/// Whether two compressed matrices hold the same pattern and the same value bits.
-void expect_bitwise_equal(const SparseMatrix& a, const SparseMatrix& b) {
-  ASSERT_TRUE(a.isCompressed());
-  ASSERT_TRUE(b.isCompressed());
-  ASSERT_EQ(a.rows(), b.rows());
-  ASSERT_EQ(a.cols(), b.cols());
-  ASSERT_EQ(a.nonZeros(), b.nonZeros());
-  const auto n = static_cast<std::size_t>(a.nonZeros());
-  EXPECT_EQ(std::memcmp(a.outerIndexPtr(), b.outerIndexPtr(), (a.cols() + 1) * sizeof(int)), 0);
-  EXPECT_EQ(std::memcmp(a.innerIndexPtr(), b.innerIndexPtr(), n * sizeof(int)), 0);
-  EXPECT_EQ(std::memcmp(a.valuePtr(), b.valuePtr(), n * sizeof(double)), 0);
-}
-
 // Requirement (issue 27): the contact DOFs' Delta added without Eigen's generic evaluation gives
 // Eigen's K + D to the bit: the union of the patterns, each sum k + d, signed zeros as Eigen
 // gives them (-0.0 + 0.0 is +0.0). Fails on a dropped or doubled entry, an unsorted column, or a
@@ -64,14 +52,14 @@ TEST(SparseSum, IsEigensSumToTheBit) {
   const SparseMatrix D = few_entries();
   SparseMatrix eigen = K + D;
   eigen.makeCompressed();
-  expect_bitwise_equal(sparse_sum(K, D), eigen);
+  expect_same_bits(sparse_sum(K, D), eigen);
   EXPECT_FALSE(std::signbit(sparse_sum(K, SparseMatrix(30, 30)).coeff(9, 3)));
 
   // K not compressed (room left in its columns): the same sum.
   SparseMatrix loose = K;
   loose.reserve(Eigen::VectorXi::Constant(30, 3));
   ASSERT_FALSE(loose.isCompressed());
-  expect_bitwise_equal(sparse_sum(loose, D), eigen);
+  expect_same_bits(sparse_sum(loose, D), eigen);
 }
 
 TEST(SparseSum, MatricesOfTwoSizesAreRefused) {
