@@ -1,7 +1,5 @@
 #include "solver/spare_cores.hpp"
 
-#include <dlfcn.h>
-
 #include <algorithm>
 #include <atomic>
 #include <exception>
@@ -9,27 +7,14 @@
 #include <system_error>
 #include <thread>
 
+#include "solver/openmp_levels.hpp"
+
 namespace cs::solver {
 namespace {
 
 std::atomic<int>& pool() {
   static std::atomic<int> idle{0};
   return idle;
-}
-
-/// The OpenMP runtime's max-active-levels on the calling thread, or nothing when no OpenMP
-/// runtime is loaded (the libraries load it, the solver does not link it).
-std::optional<int> openmp_levels_here() {
-  using GetFn = int (*)();
-  const auto get = reinterpret_cast<GetFn>(dlsym(RTLD_DEFAULT, "omp_get_max_active_levels"));
-  return get != nullptr ? std::optional<int>(get()) : std::nullopt;
-}
-
-void set_openmp_levels_here(std::optional<int> levels) {
-  using SetFn = void (*)(int);
-  const auto set = reinterpret_cast<SetFn>(dlsym(RTLD_DEFAULT, "omp_set_max_active_levels"));
-  if (levels && set != nullptr)
-    set(*levels);
 }
 
 }  // namespace
@@ -59,10 +44,11 @@ void run_both(const std::function<void()>& first, const std::function<void()>& s
   std::exception_ptr failed;
   std::thread other;
   if (core) {
-    const std::optional<int> levels = openmp_levels_here();
+    const std::optional<int> levels = openmp_active_levels();
     try {
       other = std::thread([&, levels] {
-        set_openmp_levels_here(levels);  // libgomp keeps the setting per thread
+        if (levels)
+          set_openmp_active_levels(*levels);  // libgomp keeps the setting per thread
         try {
           second();
         } catch (...) {

@@ -4,7 +4,9 @@
 // Some steps of a solve can run on a second thread without changing a single bit of their
 // result: the two halves of a split nested dissection (fill_reducing_ordering.hpp) are ordered
 // independently, so ordering them one after the other or at once gives the same permutation;
-// the two sides of the largest models are condensed independently (contact/condensation.hpp).
+// the two sides of the largest models are condensed independently (contact/condensation.hpp);
+// the assembly's element matrices are computed in two halves and added in element order
+// (assembly.hpp).
 // Such a step borrows a spare core when one is idle and runs alone otherwise. The program says
 // how many cores are idle: `case` lends the cores it does not use itself; `run` lends those its
 // jobs leave unused, and each a finished worker frees once fewer workers than cores are left.

@@ -15,6 +15,8 @@
 #include <gsl/gsl_version.h>
 #include <Eigen/Core>
 
+#include "solver/openmp_levels.hpp"
+
 #ifndef CONTACT_SUITE_VERSION
 #define CONTACT_SUITE_VERSION "unknown"
 #endif
@@ -99,11 +101,8 @@ int blas_threads() {
 }
 
 bool run_openmp_regions_serially() {
-  using SetFn = void (*)(int);
-  const auto fn = reinterpret_cast<SetFn>(dlsym(RTLD_DEFAULT, "omp_set_max_active_levels"));
-  if (fn == nullptr || std::getenv("OMP_THREAD_LIMIT") != nullptr)
-    return false;
-  fn(0);  // no level of parallel regions is active: each runs on the thread that meets it
+  if (std::getenv("OMP_THREAD_LIMIT") != nullptr || !solver::set_openmp_active_levels(0))
+    return false;  // (0: each parallel region runs on the thread that meets it)
   openmp_regions_serial = true;
   return true;
 }
