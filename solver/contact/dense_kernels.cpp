@@ -23,6 +23,13 @@ void dpocon_(const char* uplo, const int* n, const double* a, const int* lda, co
              double* rcond, double* work, int* iwork, int* info);
 double dlansy_(const char* norm, const char* uplo, const int* n, const double* a, const int* lda,
                double* work);
+void dgetrf_(const int* m, const int* n, double* a, const int* lda, int* ipiv, int* info);
+void dgetrs_(const char* trans, const int* n, const int* nrhs, const double* a, const int* lda,
+             const int* ipiv, double* b, const int* ldb, int* info);
+void dgecon_(const char* norm, const int* n, const double* a, const int* lda, const double* anorm,
+             double* rcond, double* work, int* iwork, int* info);
+double dlange_(const char* norm, const int* m, const int* n, const double* a, const int* lda,
+               double* work);
 }
 
 namespace cs::solver::dense {
@@ -236,6 +243,39 @@ void SymmetricFactorization::solve_in_place(Eigen::VectorXd& b) const {
       return;
     }
   }
+}
+
+Eigen::MatrixXd& GeneralLu::matrix(int n) {
+  lu_.resize(n, n);
+  return lu_;
+}
+
+bool GeneralLu::factorize() {
+  const int n = static_cast<int>(lu_.rows());
+  rcond_ = 0.0;
+  pivots_.resize(n);
+  if (n == 0) {
+    rcond_ = 1.0;
+    return true;
+  }
+  const double anorm = dlange_("1", &n, &n, lu_.data(), &n, nullptr);  // no work for "1"
+  int info = 0;
+  dgetrf_(&n, &n, lu_.data(), &n, pivots_.data(), &info);
+  if (info != 0)
+    return false;
+  std::vector<double> work(4 * n);
+  std::vector<int> iwork(n);
+  dgecon_("1", &n, lu_.data(), &n, &anorm, &rcond_, work.data(), iwork.data(), &info);
+  return info == 0;
+}
+
+void GeneralLu::solve_transposed_in_place(Eigen::VectorXd& b) const {
+  const int n = static_cast<int>(lu_.rows());
+  if (n == 0)
+    return;
+  const int nrhs = 1;
+  int info = 0;
+  dgetrs_("T", &n, &nrhs, lu_.data(), &n, pivots_.data(), b.data(), &n, &info);
 }
 
 }  // namespace cs::solver::dense

@@ -72,4 +72,24 @@ class SymmetricFactorization {
   double rcond_ = 0.0;
 };
 
+/// A general square matrix factorized in place by LU with partial pivoting (LAPACK dgetrf),
+/// P A = L U, for the frictional contact system, which is not symmetric. The matrix is filled
+/// through matrix() and factorized where it lies, so that one workspace serves every iteration.
+class GeneralLu {
+ public:
+  /// The n x n matrix to fill before factorize() (resized, contents unspecified).
+  Eigen::MatrixXd& matrix(int n);
+  /// Factorizes the matrix in place. Returns false if it is exactly singular.
+  bool factorize();
+  /// Reciprocal condition number estimate in the 1-norm (0 if exactly singular).
+  double rcond() const { return rcond_; }
+  /// Solves A^T x = b in place, A the matrix factorized.
+  void solve_transposed_in_place(Eigen::VectorXd& b) const;
+
+ private:
+  Eigen::MatrixXd lu_;
+  Eigen::VectorXi pivots_;
+  double rcond_ = 0.0;
+};
+
 }  // namespace cs::solver::dense

@@ -168,6 +168,36 @@ TEST(DenseFactorization, CholeskyQuasiDefiniteOrLdlt) {
   }
 }
 
+// The frictional system's LU (LAPACK dgetrf): it solves A^T x = b for a matrix that is not
+// symmetric, to round-off; its condition estimate is the 1-norm one, within LAPACK's factor of
+// the exact 1 / (|A|_1 |A^-1|_1) and never below it; a singular matrix is refused or reads
+// rcond 0, and one workspace serves matrices of other sizes.
+TEST(DenseFactorization, GeneralLuSolvesTheTransposedSystem) {
+  dense::GeneralLu lu;
+  for (const int n : {7, 3, 60}) {
+    Eigen::MatrixXd A = Eigen::MatrixXd::Zero(n, n);
+    for (int i = 0; i < n; ++i) {
+      for (int j = 0; j < n; ++j)
+        A(i, j) = std::sin(1.0 + i + 3.0 * j * j) + (i == j ? 0.5 * n : 0.0) + (j == i + 1 ? 2 : 0);
+    }
+    A(0, 0) = 0.0;  // a zero first pivot: only row exchanges factor it
+    lu.matrix(n) = A;
+    ASSERT_TRUE(lu.factorize()) << A;
+    const Eigen::VectorXd x = Eigen::VectorXd::LinSpaced(n, 1.0, -2.0);
+    Eigen::VectorXd b = A.transpose() * x;
+    lu.solve_transposed_in_place(b);
+    EXPECT_LT((b - x).norm(), 1e-12 * n) << n;
+    const double exact = 1.0 / (A.cwiseAbs().colwise().sum().maxCoeff() *
+                                A.inverse().cwiseAbs().colwise().sum().maxCoeff());
+    EXPECT_GE(lu.rcond(), exact * (1 - 1e-12)) << n;
+    EXPECT_LT(lu.rcond(), 10.0 * exact) << n;
+  }
+  Eigen::MatrixXd singular(3, 3);
+  singular << 1, 2, 3, 2, 4, 6, 0, 1, 1;
+  lu.matrix(3) = singular;
+  EXPECT_FALSE(lu.factorize() && lu.rcond() > 1e-14);
+}
+
 TEST(ContactInput, BadInputRaisesContactErrorNamingTheCause) {
   PatchSpec spec;
   spec.indenter_nx = 4;
