@@ -131,10 +131,13 @@ TEST(ReportWriter, ReportsADocumentInMemory) {
   EXPECT_NE(run.find("| `(this run)` |"), std::string::npos);
 }
 
+/// A results file that `report` refuses. Its text is made when the test runs, not when the
+/// tests are registered: every test of this program runs in a process of its own, and each
+/// would otherwise parse and write the sample results for all of them.
 struct BadInput {
   const char* name;
-  std::string content;  ///< the results file's text; "<none>": no file
-  const char* message;  ///< expected in the error
+  std::string (*content)();  ///< the results file's text; nullptr: no file
+  const char* message;       ///< expected in the error
 };
 
 class ReportWriterBadInput : public ::testing::TestWithParam<BadInput> {};
@@ -144,8 +147,8 @@ TEST_P(ReportWriterBadInput, OneLineErrorAndTheDirectoryUntouched) {
   TempDir tmp;
   UserDir user(tmp.path());
   const fs::path results = tmp.path() / "results.json";
-  if (bad.content != "<none>")
-    write_text(results, bad.content);
+  if (bad.content != nullptr)
+    write_text(results, bad.content());
   try {
     report_from_file(results, options_for(user.path));
     FAIL() << "no error for " << bad.name;
@@ -185,20 +188,21 @@ std::string sample_with_unknown_algorithm() {
 
 INSTANTIATE_TEST_SUITE_P(
     Inputs, ReportWriterBadInput,
-    ::testing::Values(BadInput{"missing", "<none>", "does not exist"},
-                      BadInput{"empty", "", "is not valid JSON"},
-                      BadInput{"not JSON", "results, but in prose", "is not valid JSON"},
-                      BadInput{"truncated", truncated_sample(), "is not valid JSON (truncated?)"},
-                      BadInput{"other schema", sample_with("schema", "someone/else"),
-                               "not a contact-suite results file"},
-                      BadInput{"older version", sample_with("schema_version", 2),
-                               "schema_version: 2 is not supported (this build reads 3 and 4)"},
-                      BadInput{"no cases", sample_with("cases", 7), ".cases: is not an array"},
-                      BadInput{
-                          "bad case", sample_with_bad_case(),
-                          "cases[3].mesh: unknown mesh level \"X\" (expected one of: C, M, F, VF)"},
-                      BadInput{"unknown algorithm", sample_with_unknown_algorithm(),
-                               "rows[1].algorithm: unknown algorithm \"IMCX\""}),
+    ::testing::Values(
+        BadInput{"missing", nullptr, "does not exist"},
+        BadInput{"empty", [] { return std::string(); }, "is not valid JSON"},
+        BadInput{"not JSON", [] { return std::string("results, but in prose"); },
+                 "is not valid JSON"},
+        BadInput{"truncated", truncated_sample, "is not valid JSON (truncated?)"},
+        BadInput{"other schema", [] { return sample_with("schema", "someone/else"); },
+                 "not a contact-suite results file"},
+        BadInput{"older version", [] { return sample_with("schema_version", 2); },
+                 "schema_version: 2 is not supported (this build reads 3 and 4)"},
+        BadInput{"no cases", [] { return sample_with("cases", 7); }, ".cases: is not an array"},
+        BadInput{"bad case", sample_with_bad_case,
+                 "cases[3].mesh: unknown mesh level \"X\" (expected one of: C, M, F, VF)"},
+        BadInput{"unknown algorithm", sample_with_unknown_algorithm,
+                 "rows[1].algorithm: unknown algorithm \"IMCX\""}),
     [](const auto& info) {
       std::string name = info.param.name;
       for (char& c : name)
