@@ -3,8 +3,9 @@
 #
 # Each target compiled as several units precompiles the third-party headers that most of its
 # translation units include anyway (measured with `ninja -t deps`): parsing Eigen, nlohmann-json
-# or GoogleTest once per target instead of once per unit. Headers a target's files rarely include stay out of its
-# precompiled header, since every file of the target pays for what the header holds.
+# or GoogleTest once per target instead of once per unit. Headers a target's files rarely
+# include stay out of its precompiled header, since every file of the target pays for what the
+# header holds.
 option(CONTACT_SUITE_PCH "Precompile the heavy third-party headers of each target" ON)
 
 # Unity builds: each target compiles its files as one translation unit, so the headers every
@@ -45,9 +46,9 @@ set(cs_pch_cli11 <CLI/CLI.hpp>)
 # add the time it takes to write it. Measured on two clean builds in turn on 2 cores: writing
 # the precompiled headers of the nine test programs, the schema, the suites and the command line
 # took 70 CPU-s, and their units compiled about 20 CPU-s faster for them (whole build 698 -> 602
-# CPU-s, 351 -> 301 s wall, on a noisy host). The decision waits for
-# the end of the target's directory, where its batch size and the files compiled on their own
-# (cs_unity_batches, cs_unity_exclude) are known.
+# CPU-s, 351 -> 301 s wall, on a noisy host). The decision waits for the end of the target's
+# directory, where its batch size and the files compiled on their own (cs_unity_batches,
+# cs_unity_exclude) are known.
 function(cs_precompile target)
   if(NOT CONTACT_SUITE_PCH)
     return()
