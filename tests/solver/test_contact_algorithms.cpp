@@ -170,7 +170,8 @@ TEST(DenseFactorization, CholeskyQuasiDefiniteOrLdlt) {
 
 // The frictional system's LU (LAPACK dgetrf): it solves A^T x = b for a matrix that is not
 // symmetric, to round-off; its condition estimate is the 1-norm one, within LAPACK's factor of
-// the exact 1 / (|A|_1 |A^-1|_1) and never below it; a singular matrix is refused or reads
+// the exact 1 / (|A|_1 |A^-1|_1) and never below it (with the infinity norm it would read far
+// below at n = 60); a singular matrix is refused or reads
 // rcond 0, and one workspace serves matrices of other sizes.
 TEST(DenseFactorization, GeneralLuSolvesTheTransposedSystem) {
   dense::GeneralLu lu;
@@ -180,7 +181,8 @@ TEST(DenseFactorization, GeneralLuSolvesTheTransposedSystem) {
       for (int j = 0; j < n; ++j)
         A(i, j) = std::sin(1.0 + i + 3.0 * j * j) + (i == j ? 0.5 * n : 0.0) + (j == i + 1 ? 2 : 0);
     }
-    A(0, 0) = 0.0;  // a zero first pivot: only row exchanges factor it
+    A.row(0).array() += 40.0;  // a heavy row: the infinity norm far above the 1-norm
+    A(0, 0) = 0.0;             // a zero first pivot: only row exchanges factor it
     lu.matrix(n) = A;
     ASSERT_TRUE(lu.factorize()) << A;
     const Eigen::VectorXd x = Eigen::VectorXd::LinSpaced(n, 1.0, -2.0);
