@@ -1,6 +1,8 @@
 #include "reports/results/results_csv.hpp"
 
+#include <algorithm>
 #include <map>
+#include <string_view>
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -68,38 +70,19 @@ std::vector<std::string> verdict_fields(const ResultsIndex& index, const schema:
   return {flag(r->converging), trend, eq47, strict};
 }
 
-/// The CSV header line's fields, in order.
-const std::vector<std::string>& results_csv_columns() {
-  static const std::vector<std::string> columns{"case_id",
-                                                "problem",
-                                                "mesh",
-                                                "element",
-                                                "algorithm",
-                                                "contact",
-                                                "target",
-                                                "recovery",
-                                                "overrides",
-                                                "status",
-                                                "reason",
-                                                "iterations",
-                                                "wall_seconds",
-                                                "n_elements",
-                                                "n_equations",
-                                                "element_size_h",
-                                                "quantity",
-                                                "value",
-                                                "exact",
-                                                "error_percent",
-                                                "grade",
-                                                "contact_pressure",
-                                                "study_exact",
-                                                "ansys_value",
-                                                "ansys_table",
-                                                "converging",
-                                                "trend",
-                                                "eq47",
-                                                "strict_divergence"};
-  return columns;
+/// The CSV's columns: the case's, its quantity's, then its row's verdicts (verdict_fields).
+constexpr std::string_view kColumns =
+    "case_id,problem,mesh,element,algorithm,contact,target,recovery,overrides,status,reason,"
+    "iterations,wall_seconds,n_elements,n_equations,element_size_h,quantity,value,exact,"
+    "error_percent,grade,contact_pressure,study_exact,ansys_value,ansys_table,converging,trend,"
+    "eq47,strict_divergence";
+
+/// One line of the CSV: `fields`, each quoted where it must be.
+std::string csv_line(const std::vector<std::string>& fields) {
+  std::vector<std::string> quoted;
+  for (const auto& f : fields)
+    quoted.push_back(csv_field(f));
+  return fmt::format("{}\n", fmt::join(quoted, ","));
 }
 
 }  // namespace
@@ -119,7 +102,7 @@ std::string csv_field(const std::string& text) {
 
 std::string results_csv(const ResultsIndex& index, const schema::StudyReference& study) {
   const RowsByCase rows = rows_by_case(index);
-  std::string out = fmt::format("{}\n", fmt::join(results_csv_columns(), ","));
+  std::string out = std::string(kColumns) + "\n";
   for (const auto& c : index.results().cases) {
     const schema::CaseSpec& s = c.spec;
     const std::vector<std::string> head{schema::case_id(s),
@@ -138,21 +121,10 @@ std::string results_csv(const ResultsIndex& index, const schema::StudyReference&
                                         std::to_string(c.n_elements),
                                         std::to_string(c.n_equations),
                                         number(c.element_size_h)};
-    auto emit = [&](const std::vector<std::string>& tail) {
-      std::string line;
-      for (const auto& f : head) {
-        if (!line.empty())
-          line += ',';
-        line += csv_field(f);
-      }
-      for (const auto& f : tail) {
-        line += ',';
-        line += csv_field(f);
-      }
-      out += line + "\n";
-    };
     if (c.quantities.empty()) {
-      emit(std::vector<std::string>(13));
+      std::vector<std::string> fields = head;  // and every quantity's column empty
+      fields.resize(std::ranges::count(kColumns, ',') + 1);
+      out += csv_line(fields);
       continue;
     }
     for (const auto& q : c.quantities) {
@@ -167,18 +139,14 @@ std::string results_csv(const ResultsIndex& index, const schema::StudyReference&
       }
       const auto row = rows.find({&c, q.quantity});
       const bool converged = c.status == schema::CaseStatus::converged;  // else no grade
-      std::vector<std::string> tail{name_of(q.quantity),
-                                    number(q.value),
-                                    q.singular() ? "inf" : number(q.exact),
-                                    number(q.error_percent),
-                                    converged ? name_of(q.grade) : "",
-                                    number(q.contact_pressure),
-                                    number(q.study_exact),
-                                    ansys_value,
-                                    ansys_table};
+      std::vector<std::string> fields = head;
+      fields.insert(fields.end(),
+                    {name_of(q.quantity), number(q.value), q.singular() ? "inf" : number(q.exact),
+                     number(q.error_percent), converged ? name_of(q.grade) : "",
+                     number(q.contact_pressure), number(q.study_exact), ansys_value, ansys_table});
       for (auto& f : verdict_fields(index, row == rows.end() ? nullptr : row->second))
-        tail.push_back(std::move(f));
-      emit(tail);
+        fields.push_back(std::move(f));
+      out += csv_line(fields);
     }
   }
   return out;
