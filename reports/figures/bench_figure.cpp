@@ -86,11 +86,7 @@ FigureSet render_bench_figures(const BenchResults& bench, const std::filesystem:
   caption.set("target", fmt::format("{:g}", target.max_ratio));
   caption.set("any_failed", any_failed);
   figure.caption_md = figure_text("bench", caption);
-  GnuplotWriter writer(options);
-  FigureSet set{{}, writer.unavailable()};
-  writer.draw(plot, out_root, figure);
-  set.figures.push_back(std::move(figure));
-  return set;
+  return draw_figures({plot}, {figure}, out_root, options);
 }
 
 }  // namespace cs::reports

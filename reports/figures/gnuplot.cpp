@@ -37,8 +37,7 @@ platform::ChildResult run(std::vector<std::string> argv, const fs::path& log) {
 }
 
 bool has_control_character(const std::string& text) {
-  return std::any_of(text.begin(), text.end(),
-                     [](unsigned char c) { return c < 0x20 || c == 0x7f; });
+  return std::ranges::any_of(text, [](unsigned char c) { return c < 0x20 || c == 0x7f; });
 }
 
 /// `text` as a gnuplot single-quoted string ('' for a quote); a control character would end
@@ -71,13 +70,11 @@ std::string failure(const platform::ChildResult& result, const fs::path& log) {
 
 std::pair<double, double> data_range(const PlotPanel& panel, bool x) {
   double lo = INFINITY, hi = -INFINITY;
-  for (const auto& s : panel.series) {
-    for (const auto& [px, py] : s.xy) {
-      const double v = x ? px : py;
-      if (std::isfinite(v) && (v > 0 || (x ? panel.x : panel.y).scale == Scale::linear)) {
-        lo = std::min(lo, v);
-        hi = std::max(hi, v);
-      }
+  for (const auto& [px, py] : points_of(panel)) {
+    const double v = x ? px : py;
+    if (std::isfinite(v) && (v > 0 || (x ? panel.x : panel.y).scale == Scale::linear)) {
+      lo = std::min(lo, v);
+      hi = std::max(hi, v);
     }
   }
   return {lo, hi};
@@ -150,9 +147,7 @@ std::string write_data(const fs::path& file, const PlotSeries& s) {
 std::string panel_script(const PlotPanel& panel, const fs::path& stem) {
   std::string s = fmt::format("unset label\nunset arrow\nset title {}\nset size {}\n",
                               text(panel.title), panel.equal_aspect ? "ratio -1" : "noratio");
-  const bool empty = std::none_of(panel.series.begin(), panel.series.end(),
-                                  [](const PlotSeries& series) { return !series.xy.empty(); });
-  if (empty) {
+  if (points_of(panel).empty()) {
     // gnuplot cannot autoscale a plot without points: fixed ranges and a word of explanation.
     s += "set xrange [0.1:1]\nset yrange [0.1:1]\nset xtics autofreq\nset ytics autofreq\n"
          "set label 'nothing to draw' at graph 0.5, 0.5 center\n";
@@ -271,6 +266,14 @@ void GnuplotWriter::draw_all(const std::vector<Plot>& plots, const fs::path& out
   drawer();
   for (std::thread& helper : helpers)
     helper.join();
+}
+
+FigureSet draw_figures(const std::vector<Plot>& plots, std::vector<Figure> figures,
+                       const fs::path& out_root, const FigureOptions& options) {
+  const GnuplotWriter writer(options);
+  FigureSet set{std::move(figures), writer.unavailable()};
+  writer.draw_all(plots, out_root, set.figures);
+  return set;
 }
 
 std::string GnuplotWriter::run_script(const Plot& plot, const fs::path& png) const {

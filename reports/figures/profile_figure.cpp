@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <iterator>
 
 #include <fmt/format.h>
 
@@ -12,8 +13,6 @@
 
 namespace cs::reports {
 namespace {
-
-using schema::ProblemId;
 
 /// The mesh of a curve by its dashes (C dotted, M dashed, F solid) and width.
 constexpr std::array<int, 3> kMeshDash{3, 2, 1};
@@ -51,18 +50,16 @@ PlotPanel class_panel(const ResultsIndex& index, const OptionClass& cls, const S
 
 /// Where any curve is above 1 % of the highest peak, widened 15 %.
 std::optional<std::pair<double, double>> profile_range(const std::vector<PlotPanel>& panels) {
+  Points all;
+  for (const auto& p : panels)
+    std::ranges::copy(points_of(p), std::back_inserter(all));
   double peak = 0, lo = INFINITY, hi = -INFINITY;
-  for (int pass = 0; pass < 2; ++pass) {
-    for (const auto& p : panels) {
-      for (const auto& s : p.series) {
-        for (const auto& [x, y] : s.xy) {
-          peak = pass == 0 ? std::max(peak, std::abs(y)) : peak;
-          if (pass == 1 && std::abs(y) > 0.01 * peak) {
-            lo = std::min(lo, x);
-            hi = std::max(hi, x);
-          }
-        }
-      }
+  for (const auto& [x, y] : all)
+    peak = std::max(peak, std::abs(y));
+  for (const auto& [x, y] : all) {
+    if (std::abs(y) > 0.01 * peak) {
+      lo = std::min(lo, x);
+      hi = std::max(hi, x);
     }
   }
   if (!(hi > lo))
@@ -76,8 +73,7 @@ double spacing_at(const std::vector<PlotPanel>& panels, double x) {
   double widest = 0;
   for (const auto& p : panels) {
     for (const auto& s : p.series) {
-      const auto after =
-          std::find_if(s.xy.begin(), s.xy.end(), [x](const auto& q) { return q.first >= x; });
+      const auto after = std::ranges::find_if(s.xy, [x](const auto& q) { return q.first >= x; });
       if (after != s.xy.begin() && after != s.xy.end())
         widest = std::max(widest, after->first - std::prev(after)->first);
     }
@@ -90,8 +86,7 @@ double spacing_at(const std::vector<PlotPanel>& panels, double x) {
 /// above 80 % of its peak, widened to hold points of the coarsest curve, y spanning the curves'
 /// own peaks there (within 0.5 to 1.6 times the exact peak).
 std::optional<PlotPanel> peak_zoom(const std::vector<PlotPanel>& panels, const Points& exact) {
-  const auto peak = std::max_element(
-      exact.begin(), exact.end(), [](const auto& a, const auto& b) { return a.second < b.second; });
+  const auto peak = std::ranges::max_element(exact, {}, &std::pair<double, double>::second);
   if (peak == exact.end() || !(peak->second > 0))
     return std::nullopt;
   double x_lo = peak->first, x_hi = peak->first;
@@ -129,7 +124,7 @@ std::optional<PlotPanel> peak_zoom(const std::vector<PlotPanel>& panels, const P
 
 }  // namespace
 
-Plot profile_plot(const ResultsIndex& index, ProblemId problem, schema::Element element,
+Plot profile_plot(const ResultsIndex& index, schema::ProblemId problem, schema::Element element,
                   Figure& figure) {
   Plot plot{.title = fmt::format("{} {}: -sigma_z/p on z = 0, meshes C (dotted), M (dashed), F "
                                  "(solid)",

@@ -423,11 +423,11 @@ std::vector<Figure> render_cross_code_figure(const ResultsIndex& index,
                                              const std::filesystem::path& out_root,
                                              const FigureOptions& options) {
   const auto tallies = option_tallies(index);
-  Plot plot;
-  plot.title = "Contact pressure of each code's advised option against the exact one (fine mesh)";
-  plot.panel_height = 400;
-  plot.key = KeyPlace::inside;
-  plot.key_columns = 1;
+  Plot plot{
+      .title = "Contact pressure of each code's advised option against the exact one (fine mesh)",
+      .panel_height = 400,
+      .key = KeyPlace::inside,
+      .key_columns = 1};
   for (const schema::ProblemId id : {schema::ProblemId::H_p, schema::ProblemId::S_1_3}) {
     for (const auto element : schema::values<schema::Element>()) {
       if (auto panel =
@@ -439,8 +439,7 @@ std::vector<Figure> render_cross_code_figure(const ResultsIndex& index,
     return {};
   Figure figure(FigureKind::profile, "figures/cross_code_profiles.png");
   figure.caption_md = figure_text("cross_code");
-  GnuplotWriter(options).draw(plot, out_root, figure);
-  return {figure};
+  return draw_figures({plot}, {figure}, out_root, options).figures;
 }
 
 std::vector<std::string> code_advice_lines(const ResultsIndex& index) {
