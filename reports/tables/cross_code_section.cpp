@@ -164,7 +164,7 @@ void add_case(CostLine& line, CostLine& total, const CaseResult& c, bool is_ours
       l->seconds += c.wall_seconds;
     double& peak = is_ours ? l->ours_peak_mb : l->peak_mb;
     peak = std::max(peak, c.peak_rss_mb);
-    l->converged += !is_ours && c.status == schema::CaseStatus::converged ? 1 : 0;
+    l->converged += !is_ours && converged ? 1 : 0;
   }
 }
 
@@ -278,9 +278,8 @@ std::optional<PlotPanel> profile_panel(const ResultsIndex& index,
   // code_rows and the tallies are in the same order: ours first, then by code, target, option.
   for (const auto& r : code_rows(index, problem, schema::Quantity::sigma_c, element)) {
     const auto best = advised(tallies, r.code);
-    const auto t = std::find_if(best.begin(), best.end(), [&](const OptionTally* t) {
-      return t->option == r.option && t->target == r.target;
-    });
+    const auto t = std::ranges::find_if(
+        best, [&](const OptionTally* t) { return t->option == r.option && t->target == r.target; });
     const CaseResult* c = r.common ? index.case_of(*r.common, schema::MeshLevel::F) : nullptr;
     if (t == best.end() || c == nullptr || c->profile.pressure_over_p.empty())
       continue;
@@ -335,12 +334,11 @@ std::vector<OptionTally> option_tallies(const ResultsIndex& index) {
   using Group = std::pair<std::string, schema::TargetKind>;
   std::map<Group, std::set<Cell>> shared;
   for (const auto& [key, rows] : by_option) {
-    std::set<Cell> cells;
-    for (const auto& [cell, row] : rows)
-      cells.insert(cell);
-    auto [it, first] = shared.try_emplace(Group{std::get<1>(key), std::get<2>(key)}, cells);
+    const auto cells = std::views::keys(rows);
+    auto [it, first] =
+        shared.try_emplace(Group{std::get<1>(key), std::get<2>(key)}, cells.begin(), cells.end());
     if (!first)
-      std::erase_if(it->second, [&](const Cell& c) { return !cells.count(c); });
+      std::erase_if(it->second, [&](const Cell& c) { return !rows.contains(c); });
   }
   std::vector<OptionTally> out;
   for (const auto& [key, rows] : by_option) {
@@ -394,14 +392,14 @@ std::vector<CodeCost> code_costs(const ResultsIndex& index) {
   for (const schema::ProblemRecord* p : index.problems())
     order.emplace(p->id, order.size());
   std::vector<CodeCost> out;
-  for (const auto& code : solvers_in(index)) {
+  for (const auto& code : other_codes(index)) {
     std::map<std::pair<std::size_t, schema::MeshLevel>, CostLine> lines;
     std::set<Model> counted;
     CodeCost cost{code, {}};
     for (const auto& c : index.results().cases) {
       const schema::CaseSpec& s = c.spec;
-      if (ours(code) || code_of(s) != code || s.recovery != schema::Recovery::spr ||
-          !s.overrides.empty() || !ours_cases.count(model_of(s)))
+      if (code_of(s) != code || s.recovery != schema::Recovery::spr || !s.overrides.empty() ||
+          !ours_cases.count(model_of(s)))
         continue;
       CostLine& line = lines[{order.count(s.problem) ? order[s.problem] : order.size(), s.mesh}];
       line.label = fmt::format("{} {}", schema::label(s.problem), schema::to_string(s.mesh));
@@ -466,7 +464,7 @@ std::string cross_code_section(const ResultsIndex& index, const schema::StudyRef
   TemplateData tables{TemplateData::type::list};
   for (const Slot& s : slots_of(index)) {
     const auto rows = code_rows(index, s.problem, s.quantity, s.element);
-    if (std::all_of(rows.begin(), rows.end(), [](const CodeRow& r) { return ours(r.code); }))
+    if (std::ranges::all_of(rows, [](const CodeRow& r) { return ours(r.code); }))
       continue;
     TemplateData t("title", fmt::format("{} {} ({}), {}", schema::label(s.problem),
                                         schema::description(s.quantity), schema::label(s.quantity),

@@ -113,32 +113,31 @@ LmpPlmDifference lmp_plm_difference(const ResultsIndex& index, schema::ProblemId
   LmpPlmDifference out;
   if (index.problem(problem) == nullptr)
     return out;
-  for (const auto& [quantity, element, contact, lmp, plm] :
-       lmp_plm_pairs(index, *index.problem(problem))) {
-    if (!lmp->errors[kF] || !plm->errors[kF])
+  std::vector<std::pair<LmpPlm, double>> differences;  // of the pairs with both errors on F
+  for (const LmpPlm& pair : lmp_plm_pairs(index, *index.problem(problem))) {
+    if (!pair.lmp->errors[kF] || !pair.plm->errors[kF])
       continue;
-    const double points = std::abs(*lmp->errors[kF] - *plm->errors[kF]);
-    const RowFacts a = facts_of_row(index, *lmp), b = facts_of_row(index, *plm);
+    const double points = std::abs(*pair.lmp->errors[kF] - *pair.plm->errors[kF]);
+    const RowFacts a = facts_of_row(index, *pair.lmp), b = facts_of_row(index, *pair.plm);
     const double noise = grading::pair_noise_points(a.m_to_f_change(), b.m_to_f_change(),
                                                     a.read_resolution_on_f, b.read_resolution_on_f);
+    differences.emplace_back(pair, points);
     ++out.n_pairs;
     out.n_equal += points < 0.01 ? 1 : 0;
     out.n_beyond_noise += points > noise ? 1 : 0;
     if (points > out.points) {
       out.points = points;
-      out.quantity = quantity;
-      out.element = element;
-      out.contact = contact;
+      out.quantity = pair.quantity;
+      out.element = pair.element;
+      out.contact = pair.contact;
       out.largest_noise = noise;
     }
   }
-  for (const auto& [quantity, element, contact, lmp, plm] :
-       lmp_plm_pairs(index, *index.problem(problem))) {
-    if (lmp->errors[kF] && plm->errors[kF] &&
-        std::abs(std::abs(*lmp->errors[kF] - *plm->errors[kF]) - out.points) <=
-            grading::kErrorResolutionPercent)
-      out.largest_at.push_back(fmt::format("{}, {} {}", schema::label(quantity),
-                                           schema::to_string(element), schema::to_string(contact)));
+  for (const auto& [pair, points] : differences) {
+    if (std::abs(points - out.points) <= grading::kErrorResolutionPercent)
+      out.largest_at.push_back(fmt::format("{}, {} {}", schema::label(pair.quantity),
+                                           schema::to_string(pair.element),
+                                           schema::to_string(pair.contact)));
   }
   return out;
 }
