@@ -8,6 +8,7 @@
 
 #include "reports/figures/figures.hpp"
 #include "reports/render/template_text.hpp"
+#include "reports/tables/markdown_table.hpp"
 #include "reports/tables/option_classes.hpp"
 
 namespace cs::reports {
@@ -70,7 +71,7 @@ Plot convergence_plot(const ResultsIndex& index, const std::vector<RowFacts>& ro
       continue;
     const Slot slot{p.id, q.quantity, element};
     PlotPanel panel{
-        std::string(schema::to_string(element)),
+        name_of(element),
         {fmt::format("element size h / {}", schema::symbol(length_scale_of(index, p.id))),
          Scale::log},
         {p.singular ? q.definition_plain : "|error| (%)", Scale::log}};

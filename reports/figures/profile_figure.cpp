@@ -9,6 +9,7 @@
 
 #include "reports/figures/figures.hpp"
 #include "reports/render/template_text.hpp"
+#include "reports/tables/markdown_table.hpp"
 #include "reports/tables/option_classes.hpp"
 
 namespace cs::reports {
@@ -41,9 +42,9 @@ PlotPanel class_panel(const ResultsIndex& index, const OptionClass& cls, const S
     if (exact.empty())
       exact = points(c->exact_profile.x_over_a, c->exact_profile.sigma_z_over_p);
     const std::size_t m = mesh_index(mesh);
-    panel.series.push_back({std::string(schema::to_string(mesh)),
-                            option_colour(cls.members.front()), Mark::line, kMeshDash[m], 7,
-                            kMeshWidth[m], points(c->profile.x_over_a, c->profile.sigma_z_over_p)});
+    panel.series.push_back({name_of(mesh), option_colour(cls.members.front()), Mark::line,
+                            kMeshDash[m], 7, kMeshWidth[m],
+                            points(c->profile.x_over_a, c->profile.sigma_z_over_p)});
   }
   return panel;
 }
@@ -157,7 +158,7 @@ Plot profile_plot(const ResultsIndex& index, schema::ProblemId problem, schema::
   if (zoom)
     plot.panels.push_back(*zoom);
   TemplateData caption("problem", std::string(schema::label(problem)));
-  caption.set("element", std::string(schema::to_string(element)));
+  caption.set("element", name_of(element));
   caption.set("exact", !exact.empty());
   caption.set("zoom", zoom.has_value());
   caption.set("length", std::string(schema::label(length_scale_of(index, problem))));

@@ -41,8 +41,7 @@ std::string options_table(const ResultsIndex& index, const schema::ProblemRecord
   MarkdownTable table(header);
   for (const auto element : schema::values<schema::Element>()) {
     for (const auto contact : schema::values<schema::ContactKind>()) {
-      std::vector<std::string> cells{std::string(schema::to_string(element)),
-                                     std::string(schema::to_string(contact))};
+      std::vector<std::string> cells{name_of(element), name_of(contact)};
       for (const auto a : schema::values<schema::Algorithm>())
         cells.push_back(option_cell(index, p.id, element, {a, contact}));
       if (std::any_of(cells.begin() + 2, cells.end(),

@@ -142,7 +142,7 @@ MarkdownTable problem_table(const ResultsIndex& index, const schema::StudyRefere
                    "F interface checks", "F, own basis", "ANSYS F"});
   for (const auto& r : rows) {
     const RowVerdict& any = *(r.common ? r.common : r.own);
-    t.add_row({solver_display_name(r.code), r.option, std::string(schema::to_string(r.target)),
+    t.add_row({solver_display_name(r.code), r.option, name_of(r.target),
                Option{any.spec.algorithm, any.spec.contact}.label(), mesh_cell(index, r.common, 0),
                mesh_cell(index, r.common, 1), mesh_cell(index, r.common, 2),
                grade_cell(index, r.common), checks_cell(index, r.common),
@@ -482,7 +482,7 @@ std::string cross_code_section(const ResultsIndex& index, const schema::StudyRef
     d.set("version", run.build().value_or(kMissing));
     std::set<std::string> targets;  // what the run's cases solved against, from the cases
     for (const auto& c : cost_run->results().cases)
-      targets.insert(std::string(schema::to_string(c.spec.target)));
+      targets.insert(name_of(c.spec.target));
     d.set("cost_targets", join_words(std::vector<std::string>(targets.begin(), targets.end())));
   }
   d.set("costs", template_list(code_costs(cost_run ? *cost_run : index), [](const CodeCost& c) {

@@ -101,8 +101,7 @@ DivergenceTableFacts build_divergence_table(const ResultsIndex& index,
         a[3] += " ✗";
       }
       const bool fine_ok = index.state(*row, kFinestMesh) != MeshState::not_converged;
-      out.table.add_row({std::string(schema::label(s.problem)),
-                         std::string(schema::to_string(s.element)), option.label(),
+      out.table.add_row({std::string(schema::label(s.problem)), name_of(s.element), option.label(),
                          format_value(row->values[0]), format_value(row->values[1]),
                          format_value(row->values[2]) + (fine_ok ? "" : "!"), a[1], a[2], a[3],
                          b[0], b[1], b[2], b[3]});

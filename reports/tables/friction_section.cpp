@@ -34,7 +34,7 @@ std::string grades_table(const ResultsIndex& index, const schema::ProblemRecord&
   MarkdownTable table(header);
   for (const auto element : schema::values<schema::Element>()) {
     for (const Option& option : all_options()) {
-      std::vector<std::string> cells{std::string(schema::to_string(element)), option.label()};
+      std::vector<std::string> cells{name_of(element), option.label()};
       bool any = false;
       for (const auto& q : p.quantities) {
         const RowVerdict* row = index.row(p.id, q.quantity, element, option);
@@ -83,8 +83,8 @@ std::string lmp_plm_table(const ResultsIndex& index, const schema::ProblemRecord
       continue;
     // A difference below the printed resolution as 0, so that it does not print as -0.0000.
     const double difference = *lmp->values[kF] - *plm->values[kF];
-    table.add_row({std::string(schema::to_string(element)), std::string(schema::to_string(contact)),
-                   std::string(schema::label(quantity)), cell(lmp), cell(plm),
+    table.add_row({name_of(element), name_of(contact), std::string(schema::label(quantity)),
+                   cell(lmp), cell(plm),
                    format_value(std::abs(difference) < 5e-5 ? 0.0 : difference)});
   }
   return rendered_if_any(table);

@@ -51,7 +51,7 @@ std::vector<ColumnGroup> column_groups(const schema::StudyReference& study) {
     }
   }
   for (const ContactKind c : contacts_in_study(false)) {
-    ColumnGroup g{std::string(schema::to_string(c)), {}};
+    ColumnGroup g{name_of(c), {}};
     for (const Algorithm a : schema::values<Algorithm>())
       g.candidates.push_back({a, c});
     groups.push_back(std::move(g));
@@ -195,7 +195,7 @@ TemplateData comparison_data(const AnsysComparison& c) {
 
 TemplateData table_data(const GradeTableFacts& t) {
   TemplateData d("study_table", t.study_table);
-  d.set("element", std::string(schema::to_string(t.element)));
+  d.set("element", name_of(t.element));
   d.set("study_element", std::string(schema::study_name(t.element)));
   d.set("table", t.table.render());
   d.set("twins", t.extrapolated);
@@ -257,7 +257,7 @@ std::string format_grade_cell(const ResultsIndex& index, const schema::RowVerdic
   if (!row->grade) {
     const bool failed = std::ranges::any_of(
         kMeshes, [&](schema::MeshLevel m) { return index.state(*row, m) == MeshState::failed; });
-    text = failed ? std::string(schema::to_string(schema::CaseStatus::failed)) : kMissing;
+    text = failed ? name_of(schema::CaseStatus::failed) : kMissing;
   } else {
     text = schema::to_string(*row->grade);
     if (row->converging.value_or(false))

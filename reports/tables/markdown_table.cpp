@@ -10,10 +10,17 @@ namespace {
 /// A signed percentage: "+0.07 %", "−12.3 %" (2 significant decimals below 10 %, 1 above).
 std::string format_percent(double percent) {
   const double magnitude = std::abs(percent);
-  const std::string sign = percent < 0 ? "−" : "+";
-  if (magnitude >= 10)
-    return fmt::format("{}{:.1f} %", sign, magnitude);
-  return fmt::format("{}{:.2f} %", sign, magnitude);
+  return fmt::format("{}{:.{}f} %", percent < 0 ? "−" : "+", magnitude, magnitude >= 10 ? 1 : 2);
+}
+
+std::string render_row(const std::vector<std::string>& cells, std::size_t width) {
+  std::string line = "|";
+  for (std::size_t i = 0; i < width; ++i) {
+    line += ' ';
+    line += i < cells.size() ? escape_cell(cells[i]) : std::string();
+    line += " |";
+  }
+  return line + "\n";
 }
 
 }  // namespace
@@ -32,20 +39,6 @@ std::string escape_cell(const std::string& text) {
   }
   return out;
 }
-
-namespace {
-
-std::string render_row(const std::vector<std::string>& cells, std::size_t width) {
-  std::string line = "|";
-  for (std::size_t i = 0; i < width; ++i) {
-    line += ' ';
-    line += i < cells.size() ? escape_cell(cells[i]) : std::string();
-    line += " |";
-  }
-  return line + "\n";
-}
-
-}  // namespace
 
 std::string MarkdownTable::render() const {
   std::size_t width = header_.size();
@@ -97,13 +90,7 @@ std::string format_value(double v) {
 }
 
 std::string format_milliseconds(double ms) {
-  if (ms >= 100)
-    return fmt::format("{:.0f}", ms);
-  if (ms >= 10)
-    return fmt::format("{:.1f}", ms);
-  if (ms >= 1)
-    return fmt::format("{:.2f}", ms);
-  return fmt::format("{:.3f}", ms);
+  return fmt::format("{:.{}f}", ms, ms >= 100 ? 0 : ms >= 10 ? 1 : ms >= 1 ? 2 : 3);
 }
 
 std::string format_value(const std::optional<double>& v) {
