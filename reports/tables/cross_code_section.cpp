@@ -217,13 +217,10 @@ std::string advice_line(const std::vector<OptionTally>& tallies, const std::stri
     std::vector<std::string> names;
     for (const OptionTally* t : best)
       names.push_back(t->option);
-    TemplateData c("target", targets.size() > 1
-                                 ? TemplateData(fmt::format("{} target", schema::to_string(target)))
-                                 : TemplateData(false));
+    TemplateData c("target", targets.size() > 1 ? TemplateData(name_of(target)) : false);
     c.set("advised", text_or_false(join_words(names, " or ")));
-    c.set("score", best.empty() ? std::string()
-                                : fmt::format("best in {} of {} verdict cells", best[0]->best_cells,
-                                              best[0]->cells));
+    c.set("best_cells", std::to_string(best.empty() ? 0 : best[0]->best_cells));
+    c.set("cells", std::to_string(best.empty() ? 0 : best[0]->cells));
     c.set("more", target != *targets.rbegin());
     choices.push_back(c);
   }
