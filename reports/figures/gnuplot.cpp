@@ -98,9 +98,8 @@ std::string axis_script(const PlotPanel& panel, bool x) {
   const char* n = x ? "x" : "y";
   const bool log = a.scale == Scale::log;
   auto [lo, hi] = data_range(panel, x);
-  std::string s = fmt::format(
-      "set {}label {}\n{}set format {} '%g'\n", n, text(a.label),
-      log ? fmt::format("set logscale {}\n", n) : fmt::format("unset logscale {}\n", n), n);
+  std::string s = fmt::format("set {0}label {1}\n{2}set logscale {0}\nset format {0} '%g'\n", n,
+                              text(a.label), log ? "" : "un");
   std::string tics;
   for (const auto& [v, label] : a.tics)
     tics += fmt::format("{}{} {:.10g}", tics.empty() ? "(" : ", ", text(label), v);
@@ -212,9 +211,8 @@ std::optional<Gnuplot> find_gnuplot(const std::string& program) {
 GnuplotWriter::GnuplotWriter(const FigureOptions& options)
     : gnuplot_(find_gnuplot(options.gnuplot_program)) {
   // Scripts name files in the scratch directory: a TMPDIR with a control character is not used.
-  fs::path base = fs::temp_directory_path();
-  std::string pattern = (has_control_character(base.string()) ? fs::path("/tmp") : base).string();
-  pattern += "/cs-report-XXXXXX";
+  const std::string base = fs::temp_directory_path().string();
+  std::string pattern = (has_control_character(base) ? "/tmp" : base) + "/cs-report-XXXXXX";
   if (gnuplot_ && mkdtemp(pattern.data()) != nullptr)
     work_ = pattern;
   else if (gnuplot_)

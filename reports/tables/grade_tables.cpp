@@ -51,10 +51,9 @@ std::vector<ColumnGroup> column_groups(const schema::StudyReference& study) {
     }
   }
   for (const ContactKind c : contacts_in_study(false)) {
-    ColumnGroup g{name_of(c), {}};
+    groups.push_back({name_of(c), {}});
     for (const Algorithm a : schema::values<Algorithm>())
-      g.candidates.push_back({a, c});
-    groups.push_back(std::move(g));
+      groups.back().candidates.push_back({a, c});
   }
   return groups;
 }

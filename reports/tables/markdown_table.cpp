@@ -27,16 +27,8 @@ std::string render_row(const std::vector<std::string>& cells, std::size_t width)
 
 std::string escape_cell(const std::string& text) {
   std::string out;
-  out.reserve(text.size());
-  for (char c : text) {
-    if (c == '|') {
-      out += "\\|";
-    } else if (c == '\n' || c == '\r') {
-      out += ' ';
-    } else {
-      out += c;
-    }
-  }
+  for (char c : text)
+    out += c == '|' ? "\\|" : c == '\n' || c == '\r' ? " " : std::string(1, c);
   return out;
 }
 

@@ -58,8 +58,7 @@ OptionComparison compare_options(const ResultsIndex& index, const Option& a, con
         continue;
       const double scale = std::max(std::abs(*va), std::abs(*vb));
       const double rel = scale > 0 ? std::abs(*va - *vb) / scale : 0.0;
-      if (!grading::values_coincide(*va, *vb))
-        differ = true;
+      differ = differ || !grading::values_coincide(*va, *vb);
       if (rel > out.max_relative) {
         out.max_relative = rel;
         out.where_max =
@@ -67,10 +66,8 @@ OptionComparison compare_options(const ResultsIndex& index, const Option& a, con
                         schema::to_string(s.element), schema::to_string(mesh));
       }
     }
-    if (differ)
-      ++out.differing;
-    if (states)
-      ++out.states_differ;
+    out.differing += differ ? 1 : 0;
+    out.states_differ += states ? 1 : 0;
   }
   return out;
 }
