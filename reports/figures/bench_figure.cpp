@@ -25,7 +25,7 @@ PlotPanel bar_panel(const BenchGrid& grid, double max_ratio) {
   const double n = static_cast<double>(methods.size());
   panel.bar_width = 1.0 / (n + kGap);
   for (std::size_t j = 0; j < methods.size(); ++j) {
-    PlotSeries bars{std::string(schema::to_string(methods[j])),
+    PlotSeries bars{name_of(methods[j]),
                     std::string(schema::traits(study_algorithm(methods[j])).colour), Mark::bars};
     for (std::size_t i = 0; i < contacts.size(); ++i) {
       const BenchRow* b = grid.at(contacts[i], methods[j]);
@@ -42,7 +42,7 @@ PlotPanel bar_panel(const BenchGrid& grid, double max_ratio) {
   }
   const double right = static_cast<double>(contacts.size()) - 0.5;
   for (std::size_t i = 0; i < contacts.size(); ++i)
-    panel.x.tics.emplace_back(static_cast<double>(i), std::string(schema::to_string(contacts[i])));
+    panel.x.tics.emplace_back(static_cast<double>(i), name_of(contacts[i]));
   panel.x.range = std::pair(-0.5, right);
   if (const auto reference = grid.reference_ms()) {
     const double ms = *reference;
@@ -86,11 +86,7 @@ FigureSet render_bench_figures(const BenchResults& bench, const std::filesystem:
   caption.set("target", fmt::format("{:g}", target.max_ratio));
   caption.set("any_failed", any_failed);
   figure.caption_md = figure_text("bench", caption);
-  GnuplotWriter writer(options);
-  FigureSet set{{}, writer.unavailable()};
-  writer.draw(plot, out_root, figure);
-  set.figures.push_back(std::move(figure));
-  return set;
+  return draw_figures({plot}, {figure}, out_root, options);
 }
 
 }  // namespace cs::reports

@@ -2,17 +2,17 @@
 
 #include <algorithm>
 #include <cmath>
+#include <ranges>
 
 #include <fmt/format.h>
 
 #include "reports/figures/figures.hpp"
 #include "reports/render/template_text.hpp"
+#include "reports/tables/markdown_table.hpp"
 #include "reports/tables/option_classes.hpp"
 
 namespace cs::reports {
 namespace {
-
-using schema::ProblemId;
 
 /// What the legend says of a row: the guarded observed order (grading::observed_order, through
 /// RowFacts) or why there is none; for a singular row, its divergence exponent.
@@ -37,23 +37,18 @@ std::string order_legend(const schema::RowVerdict* row, const std::vector<RowFac
 /// Grey reference lines through the median curve's coarsest point: slopes 1 and 2 for an
 /// error, -1/2 (a square-root singularity's growth) for a singular value.
 void add_reference_slopes(PlotPanel& panel, bool singular) {
-  double lo = INFINITY, hi = 0;
-  for (const auto& s : panel.series) {
-    for (const auto& [x, y] : s.xy) {
-      lo = std::min(lo, x);
-      hi = std::max(hi, x);
-    }
-  }
-  std::vector<double> start;
-  for (const auto& s : panel.series) {
-    for (const auto& [x, y] : s.xy) {
-      if (x >= hi * (1 - 1e-9))
-        start.push_back(y);
-    }
-  }
-  if (!(hi > lo) || !(lo > 0) || start.empty())
+  const Points all = points_of(panel);
+  if (all.empty())
     return;
-  std::sort(start.begin(), start.end());
+  const auto [lo, hi] = std::ranges::minmax(all | std::views::keys);
+  std::vector<double> start;
+  for (const auto& [x, y] : all) {
+    if (x >= hi * (1 - 1e-9))
+      start.push_back(y);
+  }
+  if (!(hi > lo) || !(lo > 0))
+    return;
+  std::ranges::sort(start);
   const double y0 = start[start.size() / 2];
   for (const double slope : singular ? std::vector{-0.5} : std::vector{1.0, 2.0}) {
     panel.series.push_back(line_series(fmt::format("slope {:g}", slope), "#999999",
@@ -76,7 +71,7 @@ Plot convergence_plot(const ResultsIndex& index, const std::vector<RowFacts>& ro
       continue;
     const Slot slot{p.id, q.quantity, element};
     PlotPanel panel{
-        std::string(schema::to_string(element)),
+        name_of(element),
         {fmt::format("element size h / {}", schema::symbol(length_scale_of(index, p.id))),
          Scale::log},
         {p.singular ? q.definition_plain : "|error| (%)", Scale::log}};
@@ -98,12 +93,10 @@ Plot convergence_plot(const ResultsIndex& index, const std::vector<RowFacts>& ro
       }
       panel.series.push_back(std::move(s));
     }
-    for (const auto& s : panel.series) {
-      for (const auto& [x, y] : s.xy) {
-        if (std::none_of(panel.x.tics.begin(), panel.x.tics.end(),
-                         [x](const auto& t) { return std::abs(t.first - x) <= 1e-6 * x; }))
-          panel.x.tics.emplace_back(x, fmt::format("{:.3g}", x));  // the meshes' sizes
-      }
+    for (const auto& [x, y] : points_of(panel)) {
+      if (std::ranges::none_of(panel.x.tics,
+                               [x](const auto& t) { return std::abs(t.first - x) <= 1e-6 * x; }))
+        panel.x.tics.emplace_back(x, fmt::format("{:.3g}", x));  // the meshes' sizes
     }
     add_reference_slopes(panel, p.singular);
     plot.panels.push_back(std::move(panel));

@@ -22,15 +22,13 @@ std::string option_colour(const Option& option) {
 
 FigureSet render_figures(const ResultsIndex& index, const std::filesystem::path& out_root,
                          const FigureOptions& options) {
-  FigureSet set;
-  GnuplotWriter writer(options);
-  set.unavailable = writer.unavailable();
-  std::vector<Plot> plots;  // drawn at once below, plots[i] into set.figures[i]
+  std::vector<Plot> plots;  // drawn at once below, plots[i] into figures[i]
+  std::vector<Figure> figures;
   const auto add = [&](Plot&& plot, Figure&& figure) {
     if (plot.panels.empty())
       return;
     plots.push_back(std::move(plot));
-    set.figures.push_back(std::move(figure));
+    figures.push_back(std::move(figure));
   };
   for (const schema::ProblemRecord* p : index.problems()) {
     // The profile is -sigma_z/p along a flat contact surface z = 0 (the study's Figure 4); a
@@ -56,8 +54,7 @@ FigureSet render_figures(const ResultsIndex& index, const std::filesystem::path&
       add(convergence_plot(index, rows, singular, *p, q, f), std::move(f));
     }
   }
-  writer.draw_all(plots, out_root, set.figures);
-  return set;
+  return draw_figures(plots, std::move(figures), out_root, options);
 }
 
 }  // namespace cs::reports

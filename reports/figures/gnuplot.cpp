@@ -37,8 +37,7 @@ platform::ChildResult run(std::vector<std::string> argv, const fs::path& log) {
 }
 
 bool has_control_character(const std::string& text) {
-  return std::any_of(text.begin(), text.end(),
-                     [](unsigned char c) { return c < 0x20 || c == 0x7f; });
+  return std::ranges::any_of(text, [](unsigned char c) { return c < 0x20 || c == 0x7f; });
 }
 
 /// `text` as a gnuplot single-quoted string ('' for a quote); a control character would end
@@ -71,13 +70,11 @@ std::string failure(const platform::ChildResult& result, const fs::path& log) {
 
 std::pair<double, double> data_range(const PlotPanel& panel, bool x) {
   double lo = INFINITY, hi = -INFINITY;
-  for (const auto& s : panel.series) {
-    for (const auto& [px, py] : s.xy) {
-      const double v = x ? px : py;
-      if (std::isfinite(v) && (v > 0 || (x ? panel.x : panel.y).scale == Scale::linear)) {
-        lo = std::min(lo, v);
-        hi = std::max(hi, v);
-      }
+  for (const auto& [px, py] : points_of(panel)) {
+    const double v = x ? px : py;
+    if (std::isfinite(v) && (v > 0 || (x ? panel.x : panel.y).scale == Scale::linear)) {
+      lo = std::min(lo, v);
+      hi = std::max(hi, v);
     }
   }
   return {lo, hi};
@@ -101,9 +98,8 @@ std::string axis_script(const PlotPanel& panel, bool x) {
   const char* n = x ? "x" : "y";
   const bool log = a.scale == Scale::log;
   auto [lo, hi] = data_range(panel, x);
-  std::string s = fmt::format(
-      "set {}label {}\n{}set format {} '%g'\n", n, text(a.label),
-      log ? fmt::format("set logscale {}\n", n) : fmt::format("unset logscale {}\n", n), n);
+  std::string s = fmt::format("set {0}label {1}\n{2}set logscale {0}\nset format {0} '%g'\n", n,
+                              text(a.label), log ? "" : "un");
   std::string tics;
   for (const auto& [v, label] : a.tics)
     tics += fmt::format("{}{} {:.10g}", tics.empty() ? "(" : ", ", text(label), v);
@@ -150,9 +146,7 @@ std::string write_data(const fs::path& file, const PlotSeries& s) {
 std::string panel_script(const PlotPanel& panel, const fs::path& stem) {
   std::string s = fmt::format("unset label\nunset arrow\nset title {}\nset size {}\n",
                               text(panel.title), panel.equal_aspect ? "ratio -1" : "noratio");
-  const bool empty = std::none_of(panel.series.begin(), panel.series.end(),
-                                  [](const PlotSeries& series) { return !series.xy.empty(); });
-  if (empty) {
+  if (points_of(panel).empty()) {
     // gnuplot cannot autoscale a plot without points: fixed ranges and a word of explanation.
     s += "set xrange [0.1:1]\nset yrange [0.1:1]\nset xtics autofreq\nset ytics autofreq\n"
          "set label 'nothing to draw' at graph 0.5, 0.5 center\n";
@@ -217,9 +211,8 @@ std::optional<Gnuplot> find_gnuplot(const std::string& program) {
 GnuplotWriter::GnuplotWriter(const FigureOptions& options)
     : gnuplot_(find_gnuplot(options.gnuplot_program)) {
   // Scripts name files in the scratch directory: a TMPDIR with a control character is not used.
-  fs::path base = fs::temp_directory_path();
-  std::string pattern = (has_control_character(base.string()) ? fs::path("/tmp") : base).string();
-  pattern += "/cs-report-XXXXXX";
+  const std::string base = fs::temp_directory_path().string();
+  std::string pattern = (has_control_character(base) ? "/tmp" : base) + "/cs-report-XXXXXX";
   if (gnuplot_ && mkdtemp(pattern.data()) != nullptr)
     work_ = pattern;
   else if (gnuplot_)
@@ -271,6 +264,14 @@ void GnuplotWriter::draw_all(const std::vector<Plot>& plots, const fs::path& out
   drawer();
   for (std::thread& helper : helpers)
     helper.join();
+}
+
+FigureSet draw_figures(const std::vector<Plot>& plots, std::vector<Figure> figures,
+                       const fs::path& out_root, const FigureOptions& options) {
+  const GnuplotWriter writer(options);
+  FigureSet set{std::move(figures), writer.unavailable()};
+  writer.draw_all(plots, out_root, set.figures);
+  return set;
 }
 
 std::string GnuplotWriter::run_script(const Plot& plot, const fs::path& png) const {

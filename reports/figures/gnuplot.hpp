@@ -52,4 +52,9 @@ class GnuplotWriter {
   std::string unavailable_;
 };
 
+/// Draws plots[i] into `out_root`/figures[i].file (GnuplotWriter::draw_all) and returns the
+/// figures as a set, which says why none could be drawn when gnuplot cannot draw.
+FigureSet draw_figures(const std::vector<Plot>& plots, std::vector<Figure> figures,
+                       const std::filesystem::path& out_root, const FigureOptions& options);
+
 }  // namespace cs::reports

@@ -50,9 +50,8 @@ Plot mesh_plot(const ExportedModel& m) {
 FigureSet render_mesh_figures(const fs::path& export_dir, const fs::path& out_root,
                               const FigureOptions& options) {
   const std::vector<ExportedModel> models = read_exported_models(export_dir);
-  FigureSet set;
-  GnuplotWriter writer(options);
-  set.unavailable = writer.unavailable();
+  std::vector<Plot> plots;
+  std::vector<Figure> figures;
   for (const auto& m : models) {
     Figure f(FigureKind::mesh, "figures/mesh_" + m.name + ".png");
     TemplateData caption("name", m.name);
@@ -64,10 +63,10 @@ FigureSet render_mesh_figures(const fs::path& export_dir, const fs::path& out_ro
     f.problem = cut == std::string::npos
                     ? std::nullopt
                     : schema::try_parse<schema::ProblemId>(m.name.substr(0, cut));
-    writer.draw(mesh_plot(m), out_root, f);
-    set.figures.push_back(std::move(f));
+    plots.push_back(mesh_plot(m));
+    figures.push_back(std::move(f));
   }
-  return set;
+  return draw_figures(plots, std::move(figures), out_root, options);
 }
 
 std::string mesh_figures_section(const FigureSet& figures) {

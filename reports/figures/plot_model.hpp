@@ -22,22 +22,13 @@ enum class KeyPlace { below, inside };
 using Points = std::vector<std::pair<double, double>>;
 
 struct PlotSeries {
-  PlotSeries(std::string title, std::string colour, Mark mark = Mark::line, int dash = 1,
-             int point = 7, double width = 1.5, Points xy = {})
-      : title(std::move(title)),
-        colour(std::move(colour)),
-        mark(mark),
-        dash(dash),
-        point(point),
-        width(width),
-        xy(std::move(xy)) {}
   std::string title;   ///< empty: not in the key
   std::string colour;  ///< "#rrggbb"
-  Mark mark;
-  int dash;      ///< gnuplot dash type: 1 solid, 2 dashed, 3 dotted, 4 dash-dotted
-  int point;     ///< gnuplot point type
-  double width;  ///< line width
-  Points xy;     ///< a NaN point breaks the line
+  Mark mark = Mark::line;
+  int dash = 1;        ///< gnuplot dash type: 1 solid, 2 dashed, 3 dotted, 4 dash-dotted
+  int point = 7;       ///< gnuplot point type
+  double width = 1.5;  ///< line width
+  Points xy = {};      ///< a NaN point breaks the line
 };
 
 /// A plain line of one colour through `xy` (an exact curve, a reference line or slope).
@@ -47,13 +38,10 @@ inline PlotSeries line_series(std::string title, std::string colour, Points xy, 
 }
 
 struct PlotAxis {
-  PlotAxis(std::string label = {}, Scale scale = Scale::linear,
-           std::optional<std::pair<double, double>> range = {})
-      : label(std::move(label)), scale(scale), range(range) {}
   std::string label;
-  Scale scale;
-  std::optional<std::pair<double, double>> range;    ///< none: from the data
-  std::vector<std::pair<double, std::string>> tics;  ///< none: automatic (1-2-5 on short logs)
+  Scale scale = Scale::linear;
+  std::optional<std::pair<double, double>> range = {};    ///< none: from the data
+  std::vector<std::pair<double, std::string>> tics = {};  ///< none: automatic (1-2-5 on short logs)
   bool reversed = false;
 };
 
@@ -70,16 +58,22 @@ struct PlotLabel {
 };
 
 struct PlotPanel {
-  PlotPanel(std::string title, PlotAxis x, PlotAxis y)
-      : title(std::move(title)), x(std::move(x)), y(std::move(y)) {}
   std::string title;
   PlotAxis x, y;
-  std::vector<PlotSeries> series;
-  std::vector<VerticalMark> marks;
-  std::vector<PlotLabel> labels;
+  std::vector<PlotSeries> series = {};
+  std::vector<VerticalMark> marks = {};
+  std::vector<PlotLabel> labels = {};
   double bar_width = 0.0;     ///< in x units, for Mark::bars
   bool equal_aspect = false;  ///< one unit of x as long as one of y (a mesh)
 };
+
+/// The points of every series of `panel`, in order.
+inline Points points_of(const PlotPanel& panel) {
+  Points out;
+  for (const auto& s : panel.series)
+    out.insert(out.end(), s.xy.begin(), s.xy.end());
+  return out;
+}
 
 struct Plot {
   std::string title{};

@@ -3,17 +3,17 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <iterator>
 
 #include <fmt/format.h>
 
 #include "reports/figures/figures.hpp"
 #include "reports/render/template_text.hpp"
+#include "reports/tables/markdown_table.hpp"
 #include "reports/tables/option_classes.hpp"
 
 namespace cs::reports {
 namespace {
-
-using schema::ProblemId;
 
 /// The mesh of a curve by its dashes (C dotted, M dashed, F solid) and width.
 constexpr std::array<int, 3> kMeshDash{3, 2, 1};
@@ -42,27 +42,25 @@ PlotPanel class_panel(const ResultsIndex& index, const OptionClass& cls, const S
     if (exact.empty())
       exact = points(c->exact_profile.x_over_a, c->exact_profile.sigma_z_over_p);
     const std::size_t m = mesh_index(mesh);
-    panel.series.push_back({std::string(schema::to_string(mesh)),
-                            option_colour(cls.members.front()), Mark::line, kMeshDash[m], 7,
-                            kMeshWidth[m], points(c->profile.x_over_a, c->profile.sigma_z_over_p)});
+    panel.series.push_back({name_of(mesh), option_colour(cls.members.front()), Mark::line,
+                            kMeshDash[m], 7, kMeshWidth[m],
+                            points(c->profile.x_over_a, c->profile.sigma_z_over_p)});
   }
   return panel;
 }
 
 /// Where any curve is above 1 % of the highest peak, widened 15 %.
 std::optional<std::pair<double, double>> profile_range(const std::vector<PlotPanel>& panels) {
+  Points all;
+  for (const auto& p : panels)
+    std::ranges::copy(points_of(p), std::back_inserter(all));
   double peak = 0, lo = INFINITY, hi = -INFINITY;
-  for (int pass = 0; pass < 2; ++pass) {
-    for (const auto& p : panels) {
-      for (const auto& s : p.series) {
-        for (const auto& [x, y] : s.xy) {
-          peak = pass == 0 ? std::max(peak, std::abs(y)) : peak;
-          if (pass == 1 && std::abs(y) > 0.01 * peak) {
-            lo = std::min(lo, x);
-            hi = std::max(hi, x);
-          }
-        }
-      }
+  for (const auto& [x, y] : all)
+    peak = std::max(peak, std::abs(y));
+  for (const auto& [x, y] : all) {
+    if (std::abs(y) > 0.01 * peak) {
+      lo = std::min(lo, x);
+      hi = std::max(hi, x);
     }
   }
   if (!(hi > lo))
@@ -76,8 +74,7 @@ double spacing_at(const std::vector<PlotPanel>& panels, double x) {
   double widest = 0;
   for (const auto& p : panels) {
     for (const auto& s : p.series) {
-      const auto after =
-          std::find_if(s.xy.begin(), s.xy.end(), [x](const auto& q) { return q.first >= x; });
+      const auto after = std::ranges::find_if(s.xy, [x](const auto& q) { return q.first >= x; });
       if (after != s.xy.begin() && after != s.xy.end())
         widest = std::max(widest, after->first - std::prev(after)->first);
     }
@@ -90,8 +87,7 @@ double spacing_at(const std::vector<PlotPanel>& panels, double x) {
 /// above 80 % of its peak, widened to hold points of the coarsest curve, y spanning the curves'
 /// own peaks there (within 0.5 to 1.6 times the exact peak).
 std::optional<PlotPanel> peak_zoom(const std::vector<PlotPanel>& panels, const Points& exact) {
-  const auto peak = std::max_element(
-      exact.begin(), exact.end(), [](const auto& a, const auto& b) { return a.second < b.second; });
+  const auto peak = std::ranges::max_element(exact, {}, &std::pair<double, double>::second);
   if (peak == exact.end() || !(peak->second > 0))
     return std::nullopt;
   double x_lo = peak->first, x_hi = peak->first;
@@ -129,7 +125,7 @@ std::optional<PlotPanel> peak_zoom(const std::vector<PlotPanel>& panels, const P
 
 }  // namespace
 
-Plot profile_plot(const ResultsIndex& index, ProblemId problem, schema::Element element,
+Plot profile_plot(const ResultsIndex& index, schema::ProblemId problem, schema::Element element,
                   Figure& figure) {
   Plot plot{.title = fmt::format("{} {}: -sigma_z/p on z = 0, meshes C (dotted), M (dashed), F "
                                  "(solid)",
@@ -162,7 +158,7 @@ Plot profile_plot(const ResultsIndex& index, ProblemId problem, schema::Element 
   if (zoom)
     plot.panels.push_back(*zoom);
   TemplateData caption("problem", std::string(schema::label(problem)));
-  caption.set("element", std::string(schema::to_string(element)));
+  caption.set("element", name_of(element));
   caption.set("exact", !exact.empty());
   caption.set("zoom", zoom.has_value());
   caption.set("length", std::string(schema::label(length_scale_of(index, problem))));

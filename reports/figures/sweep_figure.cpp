@@ -62,7 +62,6 @@ std::vector<SeriesRefs> sweep_panels(const std::vector<ParameterSeries>& series)
 Plot sweep_plot(const schema::ResultsDocument& doc, const std::string& key,
                 const std::vector<SeriesRefs>& panels, Figure& figure) {
   Plot plot{.title = fmt::format("|error| against {} (open circles: not converged)", key),
-            .panels = {},
             .columns = 3,
             .panel_width = 520,
             .panel_height = 400};
@@ -108,22 +107,21 @@ std::string sweep_figure_file(const std::string& key) {
 FigureSet render_sweep_figures(const schema::ResultsDocument& doc,
                                const std::filesystem::path& out_root,
                                const FigureOptions& options) {
-  FigureSet set;
   const auto keys = swept_keys(doc);
   if (keys.empty())
-    return set;
-  GnuplotWriter writer(options);
-  set.unavailable = writer.unavailable();
+    return {};
+  std::vector<Plot> plots;
+  std::vector<Figure> figures;
   for (const auto& key : keys) {
     const auto series = sweep_series(doc, key);
     const auto panels = sweep_panels(series);
     if (panels.empty())
       continue;
     Figure figure(FigureKind::sweep, sweep_figure_file(key));
-    writer.draw(sweep_plot(doc, key, panels, figure), out_root, figure);
-    set.figures.push_back(std::move(figure));
+    plots.push_back(sweep_plot(doc, key, panels, figure));
+    figures.push_back(std::move(figure));
   }
-  return set;
+  return draw_figures(plots, std::move(figures), out_root, options);
 }
 
 }  // namespace cs::reports

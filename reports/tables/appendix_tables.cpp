@@ -77,7 +77,7 @@ AppendixTableFacts build_one(const ResultsIndex& index, const schema::StudyRefer
       if (const RowVerdict* r = class_row(index, cls, slot))
         our_rows.push_back(r);
     }
-    const bool study_has = std::any_of(kMeshes.begin(), kMeshes.end(), [&](schema::MeshLevel m) {
+    const bool study_has = std::ranges::any_of(kMeshes, [&](schema::MeshLevel m) {
       return study.find_value(t.problem, t.quantity, t.element, first, t.contact, m).value;
     });
     if (study_has) {
@@ -87,8 +87,7 @@ AppendixTableFacts build_one(const ResultsIndex& index, const schema::StudyRefer
   }
   t.table = MarkdownTable(header);
   for (const auto mesh : kMeshes) {
-    std::vector<std::string> cells{std::string(schema::to_string(mesh)),
-                                   element_size_cell(index, our_rows, mesh)};
+    std::vector<std::string> cells{name_of(mesh), element_size_cell(index, our_rows, mesh)};
     for (const auto& col : sources) {
       if (col.ours) {
         // On ANSYS's basis where the case ran: its extrapolated nodal stresses.
@@ -131,7 +130,7 @@ std::optional<double> parse_printed(const std::string& printed) {
 TemplateData table_data(const AppendixTableFacts& t) {
   TemplateData d("quantity", std::string(schema::label(t.quantity)));
   d.set("contact", std::string(schema::traits(t.contact).words));
-  d.set("element", std::string(schema::to_string(t.element)));
+  d.set("element", name_of(t.element));
   d.set("study_tables", joined_or_false(t.study_tables, ", "));
   d.set("table", t.table.render());
   d.set("merged", t.merged);
@@ -176,8 +175,7 @@ std::vector<AppendixTableFacts> build_appendix_tables(const ResultsIndex& index,
       continue;  // not in the study's appendix
     const auto present = index.options_present(s.problem, s.quantity, s.element);
     for (const auto contact : schema::values<ContactKind>()) {
-      if (std::any_of(present.begin(), present.end(),
-                      [&](const Option& o) { return o.contact == contact; }))
+      if (std::ranges::any_of(present, [&](const Option& o) { return o.contact == contact; }))
         out.push_back(build_one(index, study, {s.problem, s.quantity, s.element, contact}));
     }
   }

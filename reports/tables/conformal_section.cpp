@@ -41,8 +41,7 @@ std::string options_table(const ResultsIndex& index, const schema::ProblemRecord
   MarkdownTable table(header);
   for (const auto element : schema::values<schema::Element>()) {
     for (const auto contact : schema::values<schema::ContactKind>()) {
-      std::vector<std::string> cells{std::string(schema::to_string(element)),
-                                     std::string(schema::to_string(contact))};
+      std::vector<std::string> cells{name_of(element), name_of(contact)};
       for (const auto a : schema::values<schema::Algorithm>())
         cells.push_back(option_cell(index, p.id, element, {a, contact}));
       if (std::any_of(cells.begin() + 2, cells.end(),
@@ -82,38 +81,37 @@ std::string signed_range(double low, double high) {
   return a == b ? a : a + " … " + b;
 }
 
+/// Every option's arc deviation on F (the error of p_arc), by element and option.
+std::vector<ArcExtreme> arc_deviations(const ResultsIndex& index, schema::ProblemId id) {
+  std::vector<ArcExtreme> out;
+  for (const auto element : schema::values<schema::Element>()) {
+    for (const Option& option : all_options()) {
+      if (const auto e = fine_error(index.row(id, Quantity::p_arc, element, option)))
+        out.push_back({*e, element, option});
+    }
+  }
+  return out;
+}
+
+double magnitude(const ArcExtreme& x) {
+  return std::abs(x.deviation_percent);
+}
+
 /// Every option whose arc deviation on F lies within the study's resolution of |`extreme`| (a
 /// tie is named whole, not by its first member: "Q8 LMP mortar, Q8 PLM mortar"), and the signed
 /// range of their deviations, which a tie of magnitudes may give both signs.
-std::pair<std::string, std::string> tied_options(const ResultsIndex& index, schema::ProblemId id,
+std::pair<std::string, std::string> tied_options(const std::vector<ArcExtreme>& deviations,
                                                  double extreme) {
   std::vector<std::string> tied;
   double low = extreme, high = extreme;
-  for (const auto element : schema::values<schema::Element>()) {
-    for (const Option& option : all_options()) {
-      const auto e = fine_error(index.row(id, Quantity::p_arc, element, option));
-      if (e && std::abs(std::abs(*e) - std::abs(extreme)) <= grading::kErrorResolutionPercent) {
-        tied.push_back(fmt::format("{} {}", schema::to_string(element), option.label()));
-        low = std::min(low, *e);
-        high = std::max(high, *e);
-      }
+  for (const ArcExtreme& x : deviations) {
+    if (std::abs(magnitude(x) - std::abs(extreme)) <= grading::kErrorResolutionPercent) {
+      tied.push_back(fmt::format("{} {}", schema::to_string(x.element), x.option.label()));
+      low = std::min(low, x.deviation_percent);
+      high = std::max(high, x.deviation_percent);
     }
   }
   return {signed_range(low, high), join_words(tied, ", ")};
-}
-
-/// The signed range of every option's arc deviation on F.
-std::string all_options_range(const ResultsIndex& index, schema::ProblemId id) {
-  double low = INFINITY, high = -INFINITY;
-  for (const auto element : schema::values<schema::Element>()) {
-    for (const Option& option : all_options()) {
-      if (const auto e = fine_error(index.row(id, Quantity::p_arc, element, option))) {
-        low = std::min(low, *e);
-        high = std::max(high, *e);
-      }
-    }
-  }
-  return signed_range(low, high);
 }
 
 /// The part of one problem; false when it has no row to show.
@@ -126,10 +124,12 @@ bool problem_part(const ResultsIndex& index, const schema::ProblemRecord& p, Tem
   d.set("lm", text_or_false(lm ? format_error_resolved(*lm) : ""));
   d.set("lm_within", lm && std::abs(*lm) < 1.0);
   if (const auto arc = arc_range(index, p.id)) {
+    const auto deviations = arc_deviations(index, p.id);
+    const auto [low, high] = std::ranges::minmax(deviations, {}, &ArcExtreme::deviation_percent);
     d.set("arc", true);
-    d.set("all", all_options_range(index, p.id));
+    d.set("all", signed_range(low.deviation_percent, high.deviation_percent));
     for (const auto& [key, e] : {std::pair{"worst", arc->worst}, {"best", arc->best}}) {
-      const auto [range, options] = tied_options(index, p.id, e.deviation_percent);
+      const auto [range, options] = tied_options(deviations, e.deviation_percent);
       d.set(key, range);
       d.set(std::string(key) + "_option", options);
     }
@@ -140,22 +140,12 @@ bool problem_part(const ResultsIndex& index, const schema::ProblemRecord& p, Tem
 }  // namespace
 
 std::optional<ArcRange> arc_range(const ResultsIndex& index, schema::ProblemId problem) {
-  std::optional<ArcRange> out;
-  for (const auto element : schema::values<schema::Element>()) {
-    for (const Option& option : all_options()) {
-      const auto e = fine_error(index.row(problem, Quantity::p_arc, element, option));
-      if (!e)
-        continue;
-      const ArcExtreme x{*e, element, option};
-      if (!out)
-        out = ArcRange{x, x};
-      if (std::abs(*e) < std::abs(out->best.deviation_percent))
-        out->best = x;
-      if (std::abs(*e) > std::abs(out->worst.deviation_percent))
-        out->worst = x;
-    }
-  }
-  return out;
+  const auto deviations = arc_deviations(index, problem);
+  if (deviations.empty())
+    return std::nullopt;
+  // The first of equal magnitudes.
+  return ArcRange{*std::ranges::min_element(deviations, {}, magnitude),
+                  *std::ranges::max_element(deviations, {}, magnitude)};
 }
 
 std::string conformal_section(const ResultsIndex& index) {

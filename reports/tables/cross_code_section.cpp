@@ -142,7 +142,7 @@ MarkdownTable problem_table(const ResultsIndex& index, const schema::StudyRefere
                    "F interface checks", "F, own basis", "ANSYS F"});
   for (const auto& r : rows) {
     const RowVerdict& any = *(r.common ? r.common : r.own);
-    t.add_row({solver_display_name(r.code), r.option, std::string(schema::to_string(r.target)),
+    t.add_row({solver_display_name(r.code), r.option, name_of(r.target),
                Option{any.spec.algorithm, any.spec.contact}.label(), mesh_cell(index, r.common, 0),
                mesh_cell(index, r.common, 1), mesh_cell(index, r.common, 2),
                grade_cell(index, r.common), checks_cell(index, r.common),
@@ -164,7 +164,7 @@ void add_case(CostLine& line, CostLine& total, const CaseResult& c, bool is_ours
       l->seconds += c.wall_seconds;
     double& peak = is_ours ? l->ours_peak_mb : l->peak_mb;
     peak = std::max(peak, c.peak_rss_mb);
-    l->converged += !is_ours && c.status == schema::CaseStatus::converged ? 1 : 0;
+    l->converged += !is_ours && converged ? 1 : 0;
   }
 }
 
@@ -217,13 +217,10 @@ std::string advice_line(const std::vector<OptionTally>& tallies, const std::stri
     std::vector<std::string> names;
     for (const OptionTally* t : best)
       names.push_back(t->option);
-    TemplateData c("target", targets.size() > 1
-                                 ? TemplateData(fmt::format("{} target", schema::to_string(target)))
-                                 : TemplateData(false));
+    TemplateData c("target", targets.size() > 1 ? TemplateData(name_of(target)) : false);
     c.set("advised", text_or_false(join_words(names, " or ")));
-    c.set("score", best.empty() ? std::string()
-                                : fmt::format("best in {} of {} verdict cells", best[0]->best_cells,
-                                              best[0]->cells));
+    c.set("best_cells", std::to_string(best.empty() ? 0 : best[0]->best_cells));
+    c.set("cells", std::to_string(best.empty() ? 0 : best[0]->cells));
     c.set("more", target != *targets.rbegin());
     choices.push_back(c);
   }
@@ -278,9 +275,8 @@ std::optional<PlotPanel> profile_panel(const ResultsIndex& index,
   // code_rows and the tallies are in the same order: ours first, then by code, target, option.
   for (const auto& r : code_rows(index, problem, schema::Quantity::sigma_c, element)) {
     const auto best = advised(tallies, r.code);
-    const auto t = std::find_if(best.begin(), best.end(), [&](const OptionTally* t) {
-      return t->option == r.option && t->target == r.target;
-    });
+    const auto t = std::ranges::find_if(
+        best, [&](const OptionTally* t) { return t->option == r.option && t->target == r.target; });
     const CaseResult* c = r.common ? index.case_of(*r.common, schema::MeshLevel::F) : nullptr;
     if (t == best.end() || c == nullptr || c->profile.pressure_over_p.empty())
       continue;
@@ -335,12 +331,11 @@ std::vector<OptionTally> option_tallies(const ResultsIndex& index) {
   using Group = std::pair<std::string, schema::TargetKind>;
   std::map<Group, std::set<Cell>> shared;
   for (const auto& [key, rows] : by_option) {
-    std::set<Cell> cells;
-    for (const auto& [cell, row] : rows)
-      cells.insert(cell);
-    auto [it, first] = shared.try_emplace(Group{std::get<1>(key), std::get<2>(key)}, cells);
+    const auto cells = std::views::keys(rows);
+    auto [it, first] =
+        shared.try_emplace(Group{std::get<1>(key), std::get<2>(key)}, cells.begin(), cells.end());
     if (!first)
-      std::erase_if(it->second, [&](const Cell& c) { return !cells.count(c); });
+      std::erase_if(it->second, [&](const Cell& c) { return !rows.contains(c); });
   }
   std::vector<OptionTally> out;
   for (const auto& [key, rows] : by_option) {
@@ -394,14 +389,14 @@ std::vector<CodeCost> code_costs(const ResultsIndex& index) {
   for (const schema::ProblemRecord* p : index.problems())
     order.emplace(p->id, order.size());
   std::vector<CodeCost> out;
-  for (const auto& code : solvers_in(index)) {
+  for (const auto& code : other_codes(index)) {
     std::map<std::pair<std::size_t, schema::MeshLevel>, CostLine> lines;
     std::set<Model> counted;
     CodeCost cost{code, {}};
     for (const auto& c : index.results().cases) {
       const schema::CaseSpec& s = c.spec;
-      if (ours(code) || code_of(s) != code || s.recovery != schema::Recovery::spr ||
-          !s.overrides.empty() || !ours_cases.count(model_of(s)))
+      if (code_of(s) != code || s.recovery != schema::Recovery::spr || !s.overrides.empty() ||
+          !ours_cases.count(model_of(s)))
         continue;
       CostLine& line = lines[{order.count(s.problem) ? order[s.problem] : order.size(), s.mesh}];
       line.label = fmt::format("{} {}", schema::label(s.problem), schema::to_string(s.mesh));
@@ -423,11 +418,11 @@ std::vector<Figure> render_cross_code_figure(const ResultsIndex& index,
                                              const std::filesystem::path& out_root,
                                              const FigureOptions& options) {
   const auto tallies = option_tallies(index);
-  Plot plot;
-  plot.title = "Contact pressure of each code's advised option against the exact one (fine mesh)";
-  plot.panel_height = 400;
-  plot.key = KeyPlace::inside;
-  plot.key_columns = 1;
+  Plot plot{
+      .title = "Contact pressure of each code's advised option against the exact one (fine mesh)",
+      .panel_height = 400,
+      .key = KeyPlace::inside,
+      .key_columns = 1};
   for (const schema::ProblemId id : {schema::ProblemId::H_p, schema::ProblemId::S_1_3}) {
     for (const auto element : schema::values<schema::Element>()) {
       if (auto panel =
@@ -439,8 +434,7 @@ std::vector<Figure> render_cross_code_figure(const ResultsIndex& index,
     return {};
   Figure figure(FigureKind::profile, "figures/cross_code_profiles.png");
   figure.caption_md = figure_text("cross_code");
-  GnuplotWriter(options).draw(plot, out_root, figure);
-  return {figure};
+  return draw_figures({plot}, {figure}, out_root, options).figures;
 }
 
 std::vector<std::string> code_advice_lines(const ResultsIndex& index) {
@@ -467,7 +461,7 @@ std::string cross_code_section(const ResultsIndex& index, const schema::StudyRef
   TemplateData tables{TemplateData::type::list};
   for (const Slot& s : slots_of(index)) {
     const auto rows = code_rows(index, s.problem, s.quantity, s.element);
-    if (std::all_of(rows.begin(), rows.end(), [](const CodeRow& r) { return ours(r.code); }))
+    if (std::ranges::all_of(rows, [](const CodeRow& r) { return ours(r.code); }))
       continue;
     TemplateData t("title", fmt::format("{} {} ({}), {}", schema::label(s.problem),
                                         schema::description(s.quantity), schema::label(s.quantity),
@@ -485,7 +479,7 @@ std::string cross_code_section(const ResultsIndex& index, const schema::StudyRef
     d.set("version", run.build().value_or(kMissing));
     std::set<std::string> targets;  // what the run's cases solved against, from the cases
     for (const auto& c : cost_run->results().cases)
-      targets.insert(std::string(schema::to_string(c.spec.target)));
+      targets.insert(name_of(c.spec.target));
     d.set("cost_targets", join_words(std::vector<std::string>(targets.begin(), targets.end())));
   }
   d.set("costs", template_list(code_costs(cost_run ? *cost_run : index), [](const CodeCost& c) {

@@ -69,16 +69,17 @@ DivergenceTableFacts build_divergence_table(const ResultsIndex& index,
       continue;
     for (const auto& option : index.options_present(s.problem, s.quantity, s.element)) {
       const schema::RowVerdict* row = index.row(s.problem, s.quantity, s.element, option);
+      const auto it = facts.find(row);
+      const DivergenceFacts* f = it != facts.end() ? &it->second : nullptr;
       std::optional<schema::DivergenceVerdict> ours;
-      if (const auto it = facts.find(row); it != facts.end()) {
-        const DivergenceFacts& f = it->second;
-        ours = {f.eq47, row->divergence && row->divergence->monotone, f.exponent, f.strict};
-        (f.eq47 ? out.eq47 : out.eq47_fails)++;
-        (f.strict ? out.strict : out.strict_fails)++;
-        out.eq47_only += f.eq47 && !f.strict;
-        out.fine_not_converged += f.fine_converged ? 0 : 1;
-        out.not_credible += f.credible ? 0 : 1;
-        out.not_credible_eq47 += !f.credible && f.eq47 ? 1 : 0;
+      if (f != nullptr) {
+        ours = {f->eq47, row->divergence && row->divergence->monotone, f->exponent, f->strict};
+        (f->eq47 ? out.eq47 : out.eq47_fails)++;
+        (f->strict ? out.strict : out.strict_fails)++;
+        out.eq47_only += f->eq47 && !f->strict;
+        out.fine_not_converged += f->fine_converged ? 0 : 1;
+        out.not_credible += f->credible ? 0 : 1;
+        out.not_credible_eq47 += !f->credible && f->eq47 ? 1 : 0;
       } else {
         ++out.undecided;
       }
@@ -95,13 +96,12 @@ DivergenceTableFacts build_divergence_table(const ResultsIndex& index,
       out.study_strict_fails += study_verdict && !study_verdict->diverges;
       auto a = sequence_cells(row->values, ours);
       const auto b = sequence_cells(theirs, study_verdict);
-      if (const auto it = facts.find(row); it != facts.end() && !it->second.credible) {
+      if (f != nullptr && !f->credible) {
         a[1] += " ✗";  // an F case fails an interface check: the verdict is no evidence
         a[3] += " ✗";
       }
       const bool fine_ok = index.state(*row, kFinestMesh) != MeshState::not_converged;
-      out.table.add_row({std::string(schema::label(s.problem)),
-                         std::string(schema::to_string(s.element)), option.label(),
+      out.table.add_row({std::string(schema::label(s.problem)), name_of(s.element), option.label(),
                          format_value(row->values[0]), format_value(row->values[1]),
                          format_value(row->values[2]) + (fine_ok ? "" : "!"), a[1], a[2], a[3],
                          b[0], b[1], b[2], b[3]});

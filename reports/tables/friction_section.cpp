@@ -34,7 +34,7 @@ std::string grades_table(const ResultsIndex& index, const schema::ProblemRecord&
   MarkdownTable table(header);
   for (const auto element : schema::values<schema::Element>()) {
     for (const Option& option : all_options()) {
-      std::vector<std::string> cells{std::string(schema::to_string(element)), option.label()};
+      std::vector<std::string> cells{name_of(element), option.label()};
       bool any = false;
       for (const auto& q : p.quantities) {
         const RowVerdict* row = index.row(p.id, q.quantity, element, option);
@@ -83,8 +83,8 @@ std::string lmp_plm_table(const ResultsIndex& index, const schema::ProblemRecord
       continue;
     // A difference below the printed resolution as 0, so that it does not print as -0.0000.
     const double difference = *lmp->values[kF] - *plm->values[kF];
-    table.add_row({std::string(schema::to_string(element)), std::string(schema::to_string(contact)),
-                   std::string(schema::label(quantity)), cell(lmp), cell(plm),
+    table.add_row({name_of(element), name_of(contact), std::string(schema::label(quantity)),
+                   cell(lmp), cell(plm),
                    format_value(std::abs(difference) < 5e-5 ? 0.0 : difference)});
   }
   return rendered_if_any(table);
@@ -113,32 +113,31 @@ LmpPlmDifference lmp_plm_difference(const ResultsIndex& index, schema::ProblemId
   LmpPlmDifference out;
   if (index.problem(problem) == nullptr)
     return out;
-  for (const auto& [quantity, element, contact, lmp, plm] :
-       lmp_plm_pairs(index, *index.problem(problem))) {
-    if (!lmp->errors[kF] || !plm->errors[kF])
+  std::vector<std::pair<LmpPlm, double>> differences;  // of the pairs with both errors on F
+  for (const LmpPlm& pair : lmp_plm_pairs(index, *index.problem(problem))) {
+    if (!pair.lmp->errors[kF] || !pair.plm->errors[kF])
       continue;
-    const double points = std::abs(*lmp->errors[kF] - *plm->errors[kF]);
-    const RowFacts a = facts_of_row(index, *lmp), b = facts_of_row(index, *plm);
+    const double points = std::abs(*pair.lmp->errors[kF] - *pair.plm->errors[kF]);
+    const RowFacts a = facts_of_row(index, *pair.lmp), b = facts_of_row(index, *pair.plm);
     const double noise = grading::pair_noise_points(a.m_to_f_change(), b.m_to_f_change(),
                                                     a.read_resolution_on_f, b.read_resolution_on_f);
+    differences.emplace_back(pair, points);
     ++out.n_pairs;
     out.n_equal += points < 0.01 ? 1 : 0;
     out.n_beyond_noise += points > noise ? 1 : 0;
     if (points > out.points) {
       out.points = points;
-      out.quantity = quantity;
-      out.element = element;
-      out.contact = contact;
+      out.quantity = pair.quantity;
+      out.element = pair.element;
+      out.contact = pair.contact;
       out.largest_noise = noise;
     }
   }
-  for (const auto& [quantity, element, contact, lmp, plm] :
-       lmp_plm_pairs(index, *index.problem(problem))) {
-    if (lmp->errors[kF] && plm->errors[kF] &&
-        std::abs(std::abs(*lmp->errors[kF] - *plm->errors[kF]) - out.points) <=
-            grading::kErrorResolutionPercent)
-      out.largest_at.push_back(fmt::format("{}, {} {}", schema::label(quantity),
-                                           schema::to_string(element), schema::to_string(contact)));
+  for (const auto& [pair, points] : differences) {
+    if (std::abs(points - out.points) <= grading::kErrorResolutionPercent)
+      out.largest_at.push_back(fmt::format("{}, {} {}", schema::label(pair.quantity),
+                                           schema::to_string(pair.element),
+                                           schema::to_string(pair.contact)));
   }
   return out;
 }

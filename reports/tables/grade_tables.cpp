@@ -51,10 +51,9 @@ std::vector<ColumnGroup> column_groups(const schema::StudyReference& study) {
     }
   }
   for (const ContactKind c : contacts_in_study(false)) {
-    ColumnGroup g{std::string(schema::to_string(c)), {}};
+    groups.push_back({name_of(c), {}});
     for (const Algorithm a : schema::values<Algorithm>())
-      g.candidates.push_back({a, c});
-    groups.push_back(std::move(g));
+      groups.back().candidates.push_back({a, c});
   }
   return groups;
 }
@@ -95,17 +94,15 @@ PairFacts pair_facts(const Option& a, const Option& b, const OptionComparison& c
 
 /// ANSYS's fine-mesh grade on our exact value: the study's own where it graded against the same
 /// value, else its fine-mesh value re-graded by Eq. 46 against ours (the Steuermann rows, whose
-/// printed exact values differ: `regraded`). None where the study has no such value.
+/// printed exact values differ: `regraded`).
 struct AnsysGrade {
   schema::Grade grade = schema::Grade::u;
   bool regraded = false;
 };
-std::optional<AnsysGrade> ansys_grade_on_our_exact(const ResultsIndex& index,
-                                                   const schema::StudyReference& study,
-                                                   const StudyRowKey& r, schema::Element element,
-                                                   const Option& option,
-                                                   const schema::RowVerdict* row,
-                                                   const schema::StudyGrade& printed) {
+AnsysGrade ansys_grade_on_our_exact(const ResultsIndex& index, const schema::StudyReference& study,
+                                    const StudyRowKey& r, schema::Element element,
+                                    const Option& option, const schema::RowVerdict* row,
+                                    const schema::StudyGrade& printed) {
   if (row == nullptr)
     return AnsysGrade{printed.grade, false};
   const std::optional<double> exact = index.exact_of(*row);
@@ -172,15 +169,15 @@ std::string table_cell(const ResultsIndex& index, const schema::StudyReference& 
   if (g == nullptr)
     return text;
   const auto ansys = ansys_grade_on_our_exact(index, study, r, t.element, first, row, *g);
-  if (ansys->regraded)
-    text += fmt::format(" (phys. {})", schema::to_string(ansys->grade));
+  if (ansys.regraded)
+    text += fmt::format(" (phys. {})", schema::to_string(ansys.grade));
   if (row != nullptr && row->grade) {
     const std::string where = r.label_md + " " + cls.label();
     const bool evidence = facts_of_row(index, *row).evidence();
-    count(t.patch, evidence, *row->grade, ansys->grade, where, row->errors[2]);
+    count(t.patch, evidence, *row->grade, ansys.grade, where, row->errors[2]);
     const schema::RowVerdict* printed = twin && twin->grade ? twin : row;
     count(t.as_printed, evidence && facts_of_row(index, *printed).evidence(), *printed->grade,
-          ansys->grade, where, printed->errors[2]);
+          ansys.grade, where, printed->errors[2]);
   }
   return text;
 }
@@ -197,7 +194,7 @@ TemplateData comparison_data(const AnsysComparison& c) {
 
 TemplateData table_data(const GradeTableFacts& t) {
   TemplateData d("study_table", t.study_table);
-  d.set("element", std::string(schema::to_string(t.element)));
+  d.set("element", name_of(t.element));
   d.set("study_element", std::string(schema::study_name(t.element)));
   d.set("table", t.table.render());
   d.set("twins", t.extrapolated);
@@ -243,11 +240,9 @@ std::vector<StudyRowKey> grade_table_rows(const ResultsIndex& index,
     if (index.problem(problem) == nullptr)
       rows.push_back({problem, std::nullopt, study_row, {}});
   }
-  std::stable_sort(rows.begin(), rows.end(),
-                   [](const auto& a, const auto& b) { return a.problem < b.problem; });
+  std::ranges::stable_sort(rows, {}, &StudyRowKey::problem);
   for (auto& r : rows) {
-    const auto n = std::count_if(rows.begin(), rows.end(),
-                                 [&](const StudyRowKey& o) { return o.problem == r.problem; });
+    const auto n = std::ranges::count(rows, r.problem, &StudyRowKey::problem);
     r.label_md = fmt::format("{}{}", schema::label(r.problem),
                              n > 1 ? fmt::format(" ({})", r.study_row) : "");
   }
@@ -259,10 +254,9 @@ std::string format_grade_cell(const ResultsIndex& index, const schema::RowVerdic
     return kMissing;
   std::string text;
   if (!row->grade) {
-    const bool failed = std::any_of(kMeshes.begin(), kMeshes.end(), [&](schema::MeshLevel m) {
-      return index.state(*row, m) == MeshState::failed;
-    });
-    text = failed ? std::string(schema::to_string(schema::CaseStatus::failed)) : kMissing;
+    const bool failed = std::ranges::any_of(
+        kMeshes, [&](schema::MeshLevel m) { return index.state(*row, m) == MeshState::failed; });
+    text = failed ? name_of(schema::CaseStatus::failed) : kMissing;
   } else {
     text = schema::to_string(*row->grade);
     if (row->converging.value_or(false))

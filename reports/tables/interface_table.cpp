@@ -46,11 +46,13 @@ std::string summary_table(const ResultsIndex& index) {
     double worst_value = -1.0;
     std::map<schema::ProblemId, int> unmeasured;  // cases the check does not apply to
     for (const auto& c : index.results().cases) {
-      const auto v = covered(c) ? check.measure(*c.interface) : std::nullopt;
-      if (covered(c) && !v)
-        ++unmeasured[c.spec.problem];
-      if (!v)
+      if (!covered(c))
         continue;
+      const std::optional<double> v = check.measure(*c.interface);
+      if (!v) {
+        ++unmeasured[c.spec.problem];
+        continue;
+      }
       ++checked;
       failing += grading::fails(check, *v) ? 1 : 0;
       if (*v > worst_value) {
@@ -86,16 +88,14 @@ std::vector<Failing> failing_checks(const ResultsIndex& index) {
         continue;
       const std::string variant = variant_of(c.spec);
       const std::array<std::string, 4> key{
-          std::string(schema::label(c.spec.problem)),
-          std::string(schema::to_string(c.spec.element)),
+          std::string(schema::label(c.spec.problem)), name_of(c.spec.element),
           fmt::format("{} {}{}{}", schema::to_string(c.spec.algorithm),
                       schema::to_string(c.spec.contact), variant.empty() ? "" : " ", variant),
           std::string(check.name)};
-      auto it =
-          std::find_if(out.begin(), out.end(), [&](const Failing& f) { return f.key == key; });
+      auto it = std::ranges::find(out, key, &Failing::key);
       if (it == out.end())
         it = out.insert(out.end(), Failing{key, {}, 0.0});
-      it->meshes += (it->meshes.empty() ? "" : ", ") + std::string(schema::to_string(c.spec.mesh));
+      it->meshes += (it->meshes.empty() ? "" : ", ") + name_of(c.spec.mesh);
       it->worst = std::max(it->worst, *v);
     }
   }
@@ -106,7 +106,7 @@ std::vector<Failing> failing_checks(const ResultsIndex& index) {
 
 std::string interface_section(const ResultsIndex& index) {
   const auto& cases = index.results().cases;
-  if (std::none_of(cases.begin(), cases.end(), covered))
+  if (std::ranges::none_of(cases, covered))
     return {};
   const std::vector<Failing> failing = failing_checks(index);
   const MarkdownTable listed = table_of(

@@ -10,30 +10,8 @@ namespace {
 /// A signed percentage: "+0.07 %", "−12.3 %" (2 significant decimals below 10 %, 1 above).
 std::string format_percent(double percent) {
   const double magnitude = std::abs(percent);
-  const std::string sign = percent < 0 ? "−" : "+";
-  if (magnitude >= 10)
-    return fmt::format("{}{:.1f} %", sign, magnitude);
-  return fmt::format("{}{:.2f} %", sign, magnitude);
+  return fmt::format("{}{:.{}f} %", percent < 0 ? "−" : "+", magnitude, magnitude >= 10 ? 1 : 2);
 }
-
-}  // namespace
-
-std::string escape_cell(const std::string& text) {
-  std::string out;
-  out.reserve(text.size());
-  for (char c : text) {
-    if (c == '|') {
-      out += "\\|";
-    } else if (c == '\n' || c == '\r') {
-      out += ' ';
-    } else {
-      out += c;
-    }
-  }
-  return out;
-}
-
-namespace {
 
 std::string render_row(const std::vector<std::string>& cells, std::size_t width) {
   std::string line = "|";
@@ -46,6 +24,13 @@ std::string render_row(const std::vector<std::string>& cells, std::size_t width)
 }
 
 }  // namespace
+
+std::string escape_cell(const std::string& text) {
+  std::string out;
+  for (char c : text)
+    out += c == '|' ? "\\|" : c == '\n' || c == '\r' ? " " : std::string(1, c);
+  return out;
+}
 
 std::string MarkdownTable::render() const {
   std::size_t width = header_.size();
@@ -97,13 +82,7 @@ std::string format_value(double v) {
 }
 
 std::string format_milliseconds(double ms) {
-  if (ms >= 100)
-    return fmt::format("{:.0f}", ms);
-  if (ms >= 10)
-    return fmt::format("{:.1f}", ms);
-  if (ms >= 1)
-    return fmt::format("{:.2f}", ms);
-  return fmt::format("{:.3f}", ms);
+  return fmt::format("{:.{}f}", ms, ms >= 100 ? 0 : ms >= 10 ? 1 : ms >= 1 ? 2 : 3);
 }
 
 std::string format_value(const std::optional<double>& v) {

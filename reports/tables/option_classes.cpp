@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <ranges>
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -12,16 +13,19 @@
 namespace cs::reports {
 namespace {
 
-/// The distinct names of `values` in the vocabulary's order.
+/// The distinct names of the `axis` values of `options`, in the vocabulary's order.
 template <class E>
-std::vector<std::string> unique_in_order(std::vector<E> values) {
-  std::sort(values.begin(), values.end());
+std::vector<std::string> unique_in_order(const std::vector<Option>& options, E Option::*axis) {
+  std::vector<E> values;
+  for (const Option& o : options)
+    values.push_back(o.*axis);
+  std::ranges::sort(values);
   values.erase(std::unique(values.begin(), values.end()), values.end());
   return names_of(values);
 }
 
 bool has_rows(const ResultsIndex& index, const Option& o, const std::vector<Slot>& slots) {
-  return std::any_of(slots.begin(), slots.end(), [&](const Slot& s) {
+  return std::ranges::any_of(slots, [&](const Slot& s) {
     return index.row(s.problem, s.quantity, s.element, o) != nullptr;
   });
 }
@@ -54,8 +58,7 @@ OptionComparison compare_options(const ResultsIndex& index, const Option& a, con
         continue;
       const double scale = std::max(std::abs(*va), std::abs(*vb));
       const double rel = scale > 0 ? std::abs(*va - *vb) / scale : 0.0;
-      if (!grading::values_coincide(*va, *vb))
-        differ = true;
+      differ = differ || !grading::values_coincide(*va, *vb);
       if (rel > out.max_relative) {
         out.max_relative = rel;
         out.where_max =
@@ -63,28 +66,18 @@ OptionComparison compare_options(const ResultsIndex& index, const Option& a, con
                         schema::to_string(s.element), schema::to_string(mesh));
       }
     }
-    if (differ)
-      ++out.differing;
-    if (states)
-      ++out.states_differ;
+    out.differing += differ ? 1 : 0;
+    out.states_differ += states ? 1 : 0;
   }
   return out;
 }
 
 std::string OptionClass::label() const {
-  std::vector<schema::Algorithm> member_algorithms;
-  std::vector<schema::ContactKind> member_contacts;
-  std::vector<std::string> labels;
-  for (const auto& m : members) {
-    member_algorithms.push_back(m.algorithm);
-    member_contacts.push_back(m.contact);
-    labels.push_back(m.label());
-  }
-  const auto algorithms = unique_in_order(member_algorithms);
-  const auto contacts = unique_in_order(member_contacts);
+  const auto algorithms = unique_in_order(members, &Option::algorithm);
+  const auto contacts = unique_in_order(members, &Option::contact);
   if (algorithms.size() * contacts.size() == members.size())
     return fmt::format("{} ({})", fmt::join(algorithms, " = "), fmt::join(contacts, " = "));
-  return fmt::format("{}", fmt::join(labels, " = "));
+  return fmt::format("{}", fmt::join(members | std::views::transform(&Option::label), " = "));
 }
 
 std::vector<OptionClass> coincidence_classes(const ResultsIndex& index,
@@ -94,17 +87,15 @@ std::vector<OptionClass> coincidence_classes(const ResultsIndex& index,
   for (const auto& candidate : candidates) {
     if (!has_rows(index, candidate, slots))
       continue;
-    auto joins = [&](const OptionClass& cls) {
-      return std::all_of(cls.members.begin(), cls.members.end(), [&](const Option& m) {
+    const auto joins = [&](const OptionClass& cls) {
+      return std::ranges::all_of(cls.members, [&](const Option& m) {
         return compare_options(index, m, candidate, slots).coincide();
       });
     };
-    auto it = std::find_if(classes.begin(), classes.end(), joins);
-    if (it != classes.end()) {
+    if (const auto it = std::ranges::find_if(classes, joins); it != classes.end())
       it->members.push_back(candidate);
-    } else {
+    else
       classes.push_back(OptionClass{{candidate}});
-    }
   }
   return classes;
 }
