@@ -14,6 +14,7 @@
 #include "reports/render/template_text.hpp"
 #include "reports/results/results_csv.hpp"
 #include "reports/tables/markdown_table.hpp"
+#include "reports/tables/section_support.hpp"
 
 namespace cs::reports {
 namespace {
@@ -304,13 +305,10 @@ std::string refinement_section(const ResultsIndex& index) {
            {"applies", n(std::accumulate(f.claim.by.begin(), f.claim.by.end(), 0))},
            {"holds", n(f.claim[VfJudgement::converges] + f.claim[VfJudgement::at_resolution])},
            {"judged", n(f.claim.trends() + f.claim[VfJudgement::at_resolution])},
-           {"plateau", n(f.claim[VfJudgement::plateau])},
-           {"has_plateau", f.claim[VfJudgement::plateau] > 0},
+           {"plateau", count_or_false(f.claim[VfJudgement::plateau])},
            {"plateau_where", plateau_where(shown)},
-           {"not_evidence", n(f.claim[VfJudgement::not_evidence])},
-           {"has_not_evidence", f.claim[VfJudgement::not_evidence] > 0},
-           {"vf_not_converged", n(f.claim[VfJudgement::vf_not_converged])},
-           {"has_vf_not_converged", f.claim[VfJudgement::vf_not_converged] > 0},
+           {"not_evidence", count_or_false(f.claim[VfJudgement::not_evidence])},
+           {"vf_not_converged", count_or_false(f.claim[VfJudgement::vf_not_converged])},
            {"vf_rows", vf_table(shown)},
            {"has_shown", !shown.empty()}};
   const VfTally& m = f.mpc;
