@@ -2,13 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 
 #include <fmt/format.h>
 
 #include "grading/accuracy.hpp"
 #include "reports/render/template_text.hpp"
 #include "reports/tables/markdown_table.hpp"
+#include "reports/tables/section_support.hpp"
 
 namespace cs::reports {
 namespace {
@@ -220,7 +220,6 @@ std::string anomalies_section(const ResultsIndex& index) {
   });
   d["on_axis"] = fmt::format("{} of {}", on_axis, profiles);
   d["has_axis"] = !a.axis_rows.empty();
-  d["has_luck"] = !a.luck.empty();
   if (const auto& w = a.weighted_force_balance)
     d["basis"] = Fields{{"force_balance", g("{:.2g}", w->first)}, {"case", w->second}};
   if (const auto& v = a.fa_q8_lmp_ss)
@@ -229,13 +228,12 @@ std::string anomalies_section(const ResultsIndex& index) {
                 join_meshes({format_value((*v)[0]), format_value((*v)[1]), format_value((*v)[2])})},
                {"ratios", fmt::format("{:.3f} and {:.3f}", (*v)[1] / (*v)[0], (*v)[2] / (*v)[1])},
                {"sqrt2", g("{:.3f}", std::sqrt(2.0))}};
-  d["n_luck"] = std::to_string(a.luck.size());
+  d["n_luck"] = count_or_false(a.luck.size());
   d["n_luck_c"] = std::to_string(
       std::count_if(a.luck.begin(), a.luck.end(), [](const RowFacts* f) { return f->study_c; }));
   const auto luck_cells = [](const RowFacts* f) -> std::vector<std::string> {
-    return {row_name(*f), errors_text(*f),
-            f->grade ? std::string(schema::to_string(*f->grade)) : kMissing, f->study_c ? "c" : "",
-            f->credible ? "yes" : "no"};
+    return {row_name(*f), errors_text(*f), f->grade ? name_of(*f->grade) : kMissing,
+            f->study_c ? "c" : "", f->credible ? "yes" : "no"};
   };
   d["luck"] = table_of({"Row", "Error C / M / F", "Grade", "c", "Credible"}, a.luck, luck_cells,
                        {Align::left, Align::left, Align::center, Align::center, Align::center})

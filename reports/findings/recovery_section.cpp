@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
-#include <vector>
 
 #include <fmt/format.h>
 #include <gsl/gsl_statistics_double.h>
@@ -19,9 +18,9 @@
 namespace cs::reports {
 namespace {
 
-/// A baseline row and its extrapolated twin, graded on the same mesh.
 using schema::RowVerdict;
 
+/// A baseline row and its extrapolated twin, graded on the same mesh.
 struct RecoveryPair {
   const RowVerdict* spr = nullptr;
   const RowVerdict* extrapolated = nullptr;
@@ -68,7 +67,7 @@ std::string converging_text(const std::optional<bool>& c) {
 TemplateData comparison_data(const RecoveryComparison& c) {
   TemplateData d;
   const auto n = [](int v) { return std::to_string(v); };
-  d.set("element", std::string(schema::to_string(c.element)));
+  d.set("element", name_of(c.element));
   d.set("compared", n(c.compared));
   d.set("unaffected", n(c.unaffected));
   d.set("not_evidence", n(c.not_evidence));
@@ -92,7 +91,7 @@ std::string pairs_table(const ResultsIndex& index, const std::vector<RecoveryPai
       name += fmt::format(" {}", schema::label(p.spr->quantity));
     return {
         name,
-        std::string(schema::to_string(p.spr->spec.element)),
+        name_of(p.spr->spec.element),
         Option{p.spr->spec.algorithm, p.spr->spec.contact}.label(),
         error_cell(*p.spr, p.mesh) + evidence_marks(facts_of_row(index, *p.spr)),
         error_cell(*p.extrapolated, p.mesh) + evidence_marks(facts_of_row(index, *p.extrapolated)),
