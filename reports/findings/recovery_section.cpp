@@ -173,9 +173,8 @@ std::string recovery_section(const ResultsIndex& index) {
   std::vector<RecoveryPair> differing = graded_pairs(index);
   std::erase_if(differing,
                 [](const RecoveryPair& p) { return *p.spr->grade == *p.extrapolated->grade; });
-  d.set("n_differing", std::to_string(differing.size()));
+  d.set("n_differing", count_or_false(differing.size()));
   d.set("marks_legend", evidence_marks_legend());
-  d.set("has_differing", !differing.empty());
   d.set("differing", pairs_table(index, differing));
   return render_template(templates::recovery_section, d);
 }
