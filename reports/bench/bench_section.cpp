@@ -230,7 +230,6 @@ TemplateData model_data(const BenchGrid& grid) {
   TemplateData d("model", model_md(grid.model));
   d.set("reference", format_ms(grid.reference_ms()));
   d.set("table", table.render());
-  d.set("has_failures", !failures.empty());
   d.set("failures", template_list(failures, row_data));
   return d;
 }
