@@ -70,10 +70,9 @@ AlPmFacts al_pm(const ResultsIndex& index, const std::vector<RowFacts>& rows) {
           std::max(out.largest_penetration.value_or(0.0), *c.interface->max_penetration_over_h);
     schema::CaseSpec twin = c.spec;
     twin.algorithm = Algorithm::PM;
-    out.same_iterations += std::any_of(index.results().cases.begin(), index.results().cases.end(),
-                                       [&](const schema::CaseResult& d) {
-                                         return d.spec == twin && d.iterations == c.iterations;
-                                       });
+    out.same_iterations += std::ranges::any_of(index.results().cases, [&](const auto& d) {
+      return d.spec == twin && d.iterations == c.iterations;
+    });
   }
   return out;
 }
@@ -229,8 +228,7 @@ std::string anomalies_section(const ResultsIndex& index) {
                {"ratios", fmt::format("{:.3f} and {:.3f}", (*v)[1] / (*v)[0], (*v)[2] / (*v)[1])},
                {"sqrt2", g("{:.3f}", std::sqrt(2.0))}};
   d["n_luck"] = count_or_false(a.luck.size());
-  d["n_luck_c"] = std::to_string(
-      std::count_if(a.luck.begin(), a.luck.end(), [](const RowFacts* f) { return f->study_c; }));
+  d["n_luck_c"] = std::to_string(std::ranges::count_if(a.luck, &RowFacts::study_c));
   const auto luck_cells = [](const RowFacts* f) -> std::vector<std::string> {
     return {row_name(*f), errors_text(*f), f->grade ? name_of(*f->grade) : kMissing,
             f->study_c ? "c" : "", f->credible ? "yes" : "no"};
