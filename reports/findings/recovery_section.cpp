@@ -19,6 +19,7 @@ namespace cs::reports {
 namespace {
 
 using schema::RowVerdict;
+using Fields = kainjow::mustache::object;
 
 /// A baseline row and its extrapolated twin, graded on the same mesh.
 struct RecoveryPair {
@@ -65,22 +66,20 @@ std::string converging_text(const std::optional<bool>& c) {
 }
 
 TemplateData comparison_data(const RecoveryComparison& c) {
-  TemplateData d;
   const auto n = [](int v) { return std::to_string(v); };
-  d.set("element", name_of(c.element));
-  d.set("compared", n(c.compared));
-  d.set("unaffected", n(c.unaffected));
-  d.set("not_evidence", n(c.not_evidence));
-  d.set("any", c.compared > 0);
-  d.set("median_spr", fmt::format("{:.2f}", c.median_spr));
-  d.set("median_extrapolated", fmt::format("{:.2f}", c.median_extrapolated));
-  d.set("closer", n(c.closer));
-  d.set("farther", n(c.farther));
-  d.set("ties", n(c.compared - c.closer - c.farther));
-  d.set("better", n(c.better));
-  d.set("worse", n(c.worse));
-  d.set("same", n(c.compared - c.better - c.worse));
-  return d;
+  return Fields{{"element", name_of(c.element)},
+                {"compared", n(c.compared)},
+                {"unaffected", n(c.unaffected)},
+                {"not_evidence", n(c.not_evidence)},
+                {"any", c.compared > 0},
+                {"median_spr", fmt::format("{:.2f}", c.median_spr)},
+                {"median_extrapolated", fmt::format("{:.2f}", c.median_extrapolated)},
+                {"closer", n(c.closer)},
+                {"farther", n(c.farther)},
+                {"ties", n(c.compared - c.closer - c.farther)},
+                {"better", n(c.better)},
+                {"worse", n(c.worse)},
+                {"same", n(c.compared - c.better - c.worse)}};
 }
 
 std::string pairs_table(const ResultsIndex& index, const std::vector<RecoveryPair>& pairs) {
