@@ -204,12 +204,9 @@ std::vector<std::string> crossings(const ParameterSeries& s, double target) {
 /// The exact value of a series' quantity, from its first point that records one.
 std::optional<double> exact_of(const ParameterSeries& s) {
   for (const SeriesPoint& p : s.points) {
-    if (p.result == nullptr)
-      continue;
-    for (const schema::QuantityResult& q : p.result->quantities) {
-      if (q.quantity == s.quantity && std::isfinite(q.exact))
-        return q.exact;
-    }
+    const schema::QuantityResult* q = p.result ? p.result->quantity(s.quantity) : nullptr;
+    if (q && std::isfinite(q->exact))
+      return q->exact;
   }
   return std::nullopt;
 }
@@ -521,11 +518,7 @@ std::vector<ParameterSeries> sweep_series(const schema::ResultsDocument& doc,
     for (const auto& q : set.points.front().result->quantities) {
       ParameterSeries& s = out.emplace_back(ParameterSeries{set.spec, q.quantity, {}});
       for (SeriesPoint p : set.points) {  // no error when the case has none
-        const auto& all = p.result->quantities;
-        const auto r = std::ranges::find_if(all, [&](const schema::QuantityResult& o) {
-          return o.quantity == q.quantity && std::isfinite(o.error_percent);
-        });
-        if (r != all.end())
+        if (const auto* r = p.result->quantity(q.quantity); r && std::isfinite(r->error_percent))
           p.error = r->error_percent;
         s.points.push_back(p);
       }
