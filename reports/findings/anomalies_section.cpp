@@ -196,13 +196,11 @@ std::string anomalies_section(const ResultsIndex& index) {
              {"coinciding", std::to_string(a.al_pm.coinciding)},
              {"cases", std::to_string(a.al_pm.cases)},
              {"same_iterations", std::to_string(a.al_pm.same_iterations)},
-             {"resolution", fmt::format("{:g} %", grading::kCoincidenceRelative * 100)}};
+             {"resolution", fmt::format("{:g} %", grading::kCoincidenceRelative * 100)},
+             {"frictional_rows", count_or_false(a.al_pm.frictional_rows)},
+             {"frictional_coinciding", std::to_string(a.al_pm.frictional_coinciding)}};
     if (a.al_pm.largest_penetration)
       p["penetration"] = g("{:.3g}", *a.al_pm.largest_penetration);
-    if (a.al_pm.frictional_rows > 0) {
-      p["frictional_rows"] = std::to_string(a.al_pm.frictional_rows);
-      p["frictional_coinciding"] = std::to_string(a.al_pm.frictional_coinciding);
-    }
     d["al_pm"] = p;
   }
   int on_axis = 0, profiles = 0;
