@@ -94,7 +94,7 @@ std::string pairs_table(const ResultsIndex& index, const std::vector<RecoveryPai
         Option{p.spr->spec.algorithm, p.spr->spec.contact}.label(),
         error_cell(*p.spr, p.mesh) + evidence_marks(facts_of_row(index, *p.spr)),
         error_cell(*p.extrapolated, p.mesh) + evidence_marks(facts_of_row(index, *p.extrapolated)),
-        p.pressure_error ? format_error_resolved(*p.pressure_error) : kMissing,
+        format_error_resolved(p.pressure_error),
         converging_text(p.spr->converging) + " / " + converging_text(p.extrapolated->converging)};
   };
   constexpr Align l = Align::left, c = Align::center, r = Align::right;
