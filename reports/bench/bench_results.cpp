@@ -150,16 +150,12 @@ auto case_of(const BenchRow& b) {
   return std::tuple(b.family, b.model, b.contact, b.algorithm);
 }
 
-/// Puts `row` into `rows` in place of an earlier measurement of its case; true if it replaced one.
-bool merge_into(std::vector<BenchRow>& rows, BenchRow row) {
-  const auto same =
-      std::ranges::find_if(rows, [&](const BenchRow& old) { return case_of(old) == case_of(row); });
-  if (same != rows.end()) {
+/// Puts `row` into `rows` in place of an earlier measurement of its case.
+void merge_into(std::vector<BenchRow>& rows, BenchRow row) {
+  if (const auto same = std::ranges::find(rows, case_of(row), case_of); same != rows.end())
     *same = std::move(row);
-    return true;
-  }
-  rows.push_back(std::move(row));
-  return false;
+  else
+    rows.push_back(std::move(row));
 }
 
 /// The standard deviations of a stddev aggregate, onto the row of its case (read before
@@ -169,8 +165,7 @@ void attach_stddev(std::vector<BenchRow>& rows, const json& e, std::size_t i,
   const auto aggregate = read_row(e, i, file);
   if (!aggregate)
     return;
-  const auto row = std::ranges::find_if(
-      rows, [&](const BenchRow& r) { return case_of(r) == case_of(*aggregate); });
+  const auto row = std::ranges::find(rows, case_of(*aggregate), case_of);
   if (row != rows.end()) {
     row->ratio_stddev = aggregate->ratio();
     row->time_stddev_ms = aggregate->time_ms;
@@ -319,8 +314,7 @@ BenchResults load_bench_files(const std::vector<std::filesystem::path>& files) {
     auto [source, rows] = load_bench_file(file);
     all.sources.push_back(std::move(source));
     for (BenchRow& r : rows) {
-      const auto same = std::ranges::find_if(
-          all.rows, [&](const BenchRow& old) { return case_of(old) == case_of(r); });
+      const auto same = std::ranges::find(all.rows, case_of(r), case_of);
       if (same == all.rows.end()) {
         all.rows.push_back(std::move(r));
         continue;

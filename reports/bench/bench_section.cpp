@@ -100,16 +100,15 @@ TemplateData below_floor(const std::vector<const BenchRow*>& contact) {
                          }))->ratio();
   // the lowest, and those that print alike (two decimals, as the tables print them)
   const auto printed = [](double ratio) { return fmt::format("{:.2f}", ratio); };
-  std::vector<const BenchRow*> tied;
-  std::ranges::copy_if(below, std::back_inserter(tied),
-                       [&](const BenchRow* b) { return printed(*b->ratio()) == printed(lowest); });
+  std::vector<std::string> names;
+  for (const BenchRow* b : below) {
+    if (printed(*b->ratio()) == printed(lowest))
+      names.push_back(
+          fmt::format("{} {} {}", model_md(b->model), name_of(b->contact), name_of(b->algorithm)));
+  }
   TemplateData d("below", std::to_string(below.size()));
   d.set("with_ratio", std::to_string(std::ranges::count_if(
                           contact, [](const BenchRow* b) { return b->ratio().has_value(); })));
-  std::vector<std::string> names;
-  for (const BenchRow* b : tied)
-    names.push_back(
-        fmt::format("{} {} {}", model_md(b->model), name_of(b->contact), name_of(b->algorithm)));
   d.set("lowest", fmt::format("{}", fmt::join(names, "; ")));
   d.set("lowest_ratio", printed(lowest));
   d.set("spread", reference_spread(contact));
@@ -231,7 +230,6 @@ TemplateData model_data(const BenchGrid& grid) {
   TemplateData d("model", model_md(grid.model));
   d.set("reference", format_ms(grid.reference_ms()));
   d.set("table", table.render());
-  d.set("has_failures", !failures.empty());
   d.set("failures", template_list(failures, row_data));
   return d;
 }

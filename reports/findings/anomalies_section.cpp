@@ -2,13 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 
 #include <fmt/format.h>
 
 #include "grading/accuracy.hpp"
 #include "reports/render/template_text.hpp"
 #include "reports/tables/markdown_table.hpp"
+#include "reports/tables/section_support.hpp"
 
 namespace cs::reports {
 namespace {
@@ -70,10 +70,9 @@ AlPmFacts al_pm(const ResultsIndex& index, const std::vector<RowFacts>& rows) {
           std::max(out.largest_penetration.value_or(0.0), *c.interface->max_penetration_over_h);
     schema::CaseSpec twin = c.spec;
     twin.algorithm = Algorithm::PM;
-    out.same_iterations += std::any_of(index.results().cases.begin(), index.results().cases.end(),
-                                       [&](const schema::CaseResult& d) {
-                                         return d.spec == twin && d.iterations == c.iterations;
-                                       });
+    out.same_iterations += std::ranges::any_of(index.results().cases, [&](const auto& d) {
+      return d.spec == twin && d.iterations == c.iterations;
+    });
   }
   return out;
 }
@@ -197,13 +196,11 @@ std::string anomalies_section(const ResultsIndex& index) {
              {"coinciding", std::to_string(a.al_pm.coinciding)},
              {"cases", std::to_string(a.al_pm.cases)},
              {"same_iterations", std::to_string(a.al_pm.same_iterations)},
-             {"resolution", fmt::format("{:g} %", grading::kCoincidenceRelative * 100)}};
+             {"resolution", fmt::format("{:g} %", grading::kCoincidenceRelative * 100)},
+             {"frictional_rows", count_or_false(a.al_pm.frictional_rows)},
+             {"frictional_coinciding", std::to_string(a.al_pm.frictional_coinciding)}};
     if (a.al_pm.largest_penetration)
       p["penetration"] = g("{:.3g}", *a.al_pm.largest_penetration);
-    if (a.al_pm.frictional_rows > 0) {
-      p["frictional_rows"] = std::to_string(a.al_pm.frictional_rows);
-      p["frictional_coinciding"] = std::to_string(a.al_pm.frictional_coinciding);
-    }
     d["al_pm"] = p;
   }
   int on_axis = 0, profiles = 0;
@@ -220,7 +217,6 @@ std::string anomalies_section(const ResultsIndex& index) {
   });
   d["on_axis"] = fmt::format("{} of {}", on_axis, profiles);
   d["has_axis"] = !a.axis_rows.empty();
-  d["has_luck"] = !a.luck.empty();
   if (const auto& w = a.weighted_force_balance)
     d["basis"] = Fields{{"force_balance", g("{:.2g}", w->first)}, {"case", w->second}};
   if (const auto& v = a.fa_q8_lmp_ss)
@@ -229,13 +225,11 @@ std::string anomalies_section(const ResultsIndex& index) {
                 join_meshes({format_value((*v)[0]), format_value((*v)[1]), format_value((*v)[2])})},
                {"ratios", fmt::format("{:.3f} and {:.3f}", (*v)[1] / (*v)[0], (*v)[2] / (*v)[1])},
                {"sqrt2", g("{:.3f}", std::sqrt(2.0))}};
-  d["n_luck"] = std::to_string(a.luck.size());
-  d["n_luck_c"] = std::to_string(
-      std::count_if(a.luck.begin(), a.luck.end(), [](const RowFacts* f) { return f->study_c; }));
+  d["n_luck"] = count_or_false(a.luck.size());
+  d["n_luck_c"] = std::to_string(std::ranges::count_if(a.luck, &RowFacts::study_c));
   const auto luck_cells = [](const RowFacts* f) -> std::vector<std::string> {
-    return {row_name(*f), errors_text(*f),
-            f->grade ? std::string(schema::to_string(*f->grade)) : kMissing, f->study_c ? "c" : "",
-            f->credible ? "yes" : "no"};
+    return {row_name(*f), errors_text(*f), f->grade ? name_of(*f->grade) : kMissing,
+            f->study_c ? "c" : "", f->credible ? "yes" : "no"};
   };
   d["luck"] = table_of({"Row", "Error C / M / F", "Grade", "c", "Credible"}, a.luck, luck_cells,
                        {Align::left, Align::left, Align::center, Align::center, Align::center})

@@ -39,8 +39,7 @@ std::vector<ParameterSeries> collect_series(const ResultsIndex& index) {
     const bool plain = r->spec.overrides.size() == 1;  // no half-space gap
     ParameterSeries first{r->spec, r->quantity, {}};
     first.spec.overrides.erase(kExtentKey);
-    const std::string id =
-        schema::case_key(first.spec) + "/" + std::string(schema::to_string(r->quantity));
+    const std::string id = schema::case_key(first.spec) + "/" + name_of(r->quantity);
     ParameterSeries& s = groups.of(id, first);
     const schema::RowVerdict* base = index.row(r->spec.problem, r->quantity, r->spec.element,
                                                {r->spec.algorithm, r->spec.contact});
@@ -119,9 +118,8 @@ std::string series_table(const ResultsIndex& index, const SeriesRefs& series) {
                                format_error_resolved(percent_of(v, exact)))
                  : std::string(kMissing);
       };
-      t.add_row({std::string(schema::label(s->quantity)),
-                 std::string(schema::to_string(s->spec.element)), s->option_label(),
-                 format_parameter(p.parameter), with_error(row.values[0]),
+      t.add_row({std::string(schema::label(s->quantity)), name_of(s->spec.element),
+                 s->option_label(), format_parameter(p.parameter), with_error(row.values[0]),
                  with_error(row.values[1]), with_error(row.values[2]),
                  lim ? with_error(lim) : grading::trusted_estimate(row).note,
                  format_error_resolved(percent_of(p.value, lim)),
@@ -239,7 +237,7 @@ TemplateData pair_rows(const ResultsIndex& index, const SeriesRefs& series, doub
     };
     TemplateData d;
     d.set("quantity", std::string(schema::label(s->quantity)));
-    d.set("element", std::string(schema::to_string(s->spec.element)));
+    d.set("element", name_of(s->spec.element));
     d.set("option", s->option_label());
     d.set("first", errors(a));
     d.set("first_grade", format_marked_grade_cell(index, a->row));

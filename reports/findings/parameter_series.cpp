@@ -28,8 +28,7 @@ std::string ParameterSeries::option_label() const {
 }
 
 std::vector<std::string> ParameterSeries::label_cells() const {
-  return {std::string(schema::to_string(spec.problem)), std::string(schema::to_string(quantity)),
-          std::string(schema::to_string(spec.mesh)), std::string(schema::to_string(spec.element)),
+  return {name_of(spec.problem), name_of(quantity), name_of(spec.mesh), name_of(spec.element),
           option_label()};
 }
 

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
-#include <vector>
 
 #include <fmt/format.h>
 #include <gsl/gsl_statistics_double.h>
@@ -19,9 +18,10 @@
 namespace cs::reports {
 namespace {
 
-/// A baseline row and its extrapolated twin, graded on the same mesh.
 using schema::RowVerdict;
+using Fields = kainjow::mustache::object;
 
+/// A baseline row and its extrapolated twin, graded on the same mesh.
 struct RecoveryPair {
   const RowVerdict* spr = nullptr;
   const RowVerdict* extrapolated = nullptr;
@@ -66,22 +66,20 @@ std::string converging_text(const std::optional<bool>& c) {
 }
 
 TemplateData comparison_data(const RecoveryComparison& c) {
-  TemplateData d;
   const auto n = [](int v) { return std::to_string(v); };
-  d.set("element", std::string(schema::to_string(c.element)));
-  d.set("compared", n(c.compared));
-  d.set("unaffected", n(c.unaffected));
-  d.set("not_evidence", n(c.not_evidence));
-  d.set("any", c.compared > 0);
-  d.set("median_spr", fmt::format("{:.2f}", c.median_spr));
-  d.set("median_extrapolated", fmt::format("{:.2f}", c.median_extrapolated));
-  d.set("closer", n(c.closer));
-  d.set("farther", n(c.farther));
-  d.set("ties", n(c.compared - c.closer - c.farther));
-  d.set("better", n(c.better));
-  d.set("worse", n(c.worse));
-  d.set("same", n(c.compared - c.better - c.worse));
-  return d;
+  return Fields{{"element", name_of(c.element)},
+                {"compared", n(c.compared)},
+                {"unaffected", n(c.unaffected)},
+                {"not_evidence", n(c.not_evidence)},
+                {"any", c.compared > 0},
+                {"median_spr", fmt::format("{:.2f}", c.median_spr)},
+                {"median_extrapolated", fmt::format("{:.2f}", c.median_extrapolated)},
+                {"closer", n(c.closer)},
+                {"farther", n(c.farther)},
+                {"ties", n(c.compared - c.closer - c.farther)},
+                {"better", n(c.better)},
+                {"worse", n(c.worse)},
+                {"same", n(c.compared - c.better - c.worse)}};
 }
 
 std::string pairs_table(const ResultsIndex& index, const std::vector<RecoveryPair>& pairs) {
@@ -92,11 +90,11 @@ std::string pairs_table(const ResultsIndex& index, const std::vector<RecoveryPai
       name += fmt::format(" {}", schema::label(p.spr->quantity));
     return {
         name,
-        std::string(schema::to_string(p.spr->spec.element)),
+        name_of(p.spr->spec.element),
         Option{p.spr->spec.algorithm, p.spr->spec.contact}.label(),
         error_cell(*p.spr, p.mesh) + evidence_marks(facts_of_row(index, *p.spr)),
         error_cell(*p.extrapolated, p.mesh) + evidence_marks(facts_of_row(index, *p.extrapolated)),
-        p.pressure_error ? format_error_resolved(*p.pressure_error) : kMissing,
+        format_error_resolved(p.pressure_error),
         converging_text(p.spr->converging) + " / " + converging_text(p.extrapolated->converging)};
   };
   constexpr Align l = Align::left, c = Align::center, r = Align::right;
@@ -174,9 +172,8 @@ std::string recovery_section(const ResultsIndex& index) {
   std::vector<RecoveryPair> differing = graded_pairs(index);
   std::erase_if(differing,
                 [](const RecoveryPair& p) { return *p.spr->grade == *p.extrapolated->grade; });
-  d.set("n_differing", std::to_string(differing.size()));
+  d.set("n_differing", count_or_false(differing.size()));
   d.set("marks_legend", evidence_marks_legend());
-  d.set("has_differing", !differing.empty());
   d.set("differing", pairs_table(index, differing));
   return render_template(templates::recovery_section, d);
 }

@@ -14,6 +14,7 @@
 #include "reports/render/template_text.hpp"
 #include "reports/results/results_csv.hpp"
 #include "reports/tables/markdown_table.hpp"
+#include "reports/tables/section_support.hpp"
 
 namespace cs::reports {
 namespace {
@@ -55,10 +56,9 @@ std::string trend_cell(const std::optional<grading::ConvergenceAssessment>& t) {
 
 /// The VF error, marked unless its case converged.
 std::string vf_cell(const VfRow& v) {
-  const auto& e = v.row->refinement->error;
   if (v.vf == MeshState::failed || v.vf == MeshState::missing)
     return v.vf == MeshState::failed ? "failed" : kMissing;
-  const std::string value = e ? format_error_resolved(*e) : std::string(kMissing);
+  const std::string value = format_error_resolved(v.row->refinement->error);
   return v.vf == MeshState::converged ? value : value + " (not converged)";
 }
 
@@ -156,10 +156,9 @@ std::string vf_table(const std::vector<VfRow>& rows) {
       {"Row", "C", "M", "F", "VF", "Trend C-M-F", "Trend M-F-VF", "Further refinement converges"},
       {Align::left, r, r, r, r, c, c, Align::left});
   for (const VfRow& v : rows) {
-    const auto error = [&](std::size_t m) {
-      return v.row->errors[m] ? format_error_resolved(*v.row->errors[m]) : std::string(kMissing);
-    };
-    t.add_row({row_label(*v.row), error(0), error(1), error(2), vf_cell(v), trend_cell(v.trend_cmf),
+    const auto& e = v.row->errors;
+    t.add_row({row_label(*v.row), format_error_resolved(e[0]), format_error_resolved(e[1]),
+               format_error_resolved(e[2]), vf_cell(v), trend_cell(v.trend_cmf),
                trend_cell(v.trend_mfvf), claim_cell(v.claim_applies, v.judgement)});
   }
   return t.render();
@@ -304,13 +303,10 @@ std::string refinement_section(const ResultsIndex& index) {
            {"applies", n(std::accumulate(f.claim.by.begin(), f.claim.by.end(), 0))},
            {"holds", n(f.claim[VfJudgement::converges] + f.claim[VfJudgement::at_resolution])},
            {"judged", n(f.claim.trends() + f.claim[VfJudgement::at_resolution])},
-           {"plateau", n(f.claim[VfJudgement::plateau])},
-           {"has_plateau", f.claim[VfJudgement::plateau] > 0},
+           {"plateau", count_or_false(f.claim[VfJudgement::plateau])},
            {"plateau_where", plateau_where(shown)},
-           {"not_evidence", n(f.claim[VfJudgement::not_evidence])},
-           {"has_not_evidence", f.claim[VfJudgement::not_evidence] > 0},
-           {"vf_not_converged", n(f.claim[VfJudgement::vf_not_converged])},
-           {"has_vf_not_converged", f.claim[VfJudgement::vf_not_converged] > 0},
+           {"not_evidence", count_or_false(f.claim[VfJudgement::not_evidence])},
+           {"vf_not_converged", count_or_false(f.claim[VfJudgement::vf_not_converged])},
            {"vf_rows", vf_table(shown)},
            {"has_shown", !shown.empty()}};
   const VfTally& m = f.mpc;

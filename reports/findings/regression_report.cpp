@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <map>
+#include <set>
 
 #include <fmt/format.h>
 
@@ -21,13 +23,11 @@ constexpr double kIdenticalRelative = 1e-12;
 using Fields = kainjow::mustache::object;
 
 std::string flag(const std::optional<bool>& v, const char* yes) {
-  if (!v)
-    return kMissing;
-  return *v ? yes : "no";
+  return v ? (*v ? yes : "no") : kMissing;
 }
 
 std::string grade_text(const std::optional<schema::Grade>& g) {
-  return g ? std::string(schema::to_string(*g)) : std::string(kMissing);
+  return g ? name_of(*g) : kMissing;
 }
 
 /// The round-off a grade change is judged with here: the gate's, for its default tolerance
@@ -39,18 +39,16 @@ double edge_tolerance() {
 /// One quantity of a case present in both files.
 QuantityDrift drift_of(const schema::CaseResult& o, const schema::CaseResult& c,
                        const schema::QuantityResult& oq, const schema::QuantityResult& q) {
-  QuantityDrift d{schema::case_id(c.spec),
-                  q.quantity,
-                  finite(oq.value),
-                  finite(q.value),
-                  finite(oq.error_percent),
-                  finite(q.error_percent),
-                  {},
-                  {},
-                  oq.grade,
-                  q.grade,
-                  o.status,
-                  c.status};
+  QuantityDrift d{.case_id = schema::case_id(c.spec),
+                  .quantity = q.quantity,
+                  .old_value = finite(oq.value),
+                  .new_value = finite(q.value),
+                  .old_error = finite(oq.error_percent),
+                  .new_error = finite(q.error_percent),
+                  .old_grade = oq.grade,
+                  .new_grade = q.grade,
+                  .old_status = o.status,
+                  .new_status = c.status};
   if (d.old_value && d.new_value) {
     d.absolute = *d.new_value - *d.old_value;
     if (*d.old_value != 0.0)
@@ -100,6 +98,29 @@ std::string marked_change(const QuantityDrift& q) {
                      name_of(q.new_status));
 }
 
+/// A quantity's row of the template's tables (the case id escaped as a table cell).
+TemplateData drift_data(const QuantityDrift* q) {
+  return Fields{{"case", escape_cell(q->case_id)},
+                {"quantity", name_of(q->quantity)},
+                {"change", marked_change(*q)},
+                {"grade", grade_change(*q)},
+                {"old", format_value(q->old_value)},
+                {"new", format_value(q->new_value)},
+                {"drift", drift_text(*q)}};
+}
+
+/// A row's line of the template's table of verdict changes.
+TemplateData row_change_data(const RowVerdictChange& c) {
+  return Fields{{"mark", change_mark(c.worse(), c.better(), c.grade_at_edge)},
+                {"row", escape_cell(c.row_id)},
+                {"old_grade", grade_text(c.old_grade)},
+                {"new_grade", grade_text(c.new_grade)},
+                {"old_converging", flag(c.old_converging, "c")},
+                {"new_converging", flag(c.new_converging, "c")},
+                {"old_diverging", flag(c.old_diverging, "yes")},
+                {"new_diverging", flag(c.new_diverging, "yes")}};
+}
+
 }  // namespace
 
 bool QuantityDrift::grade_at_edge() const {
@@ -119,15 +140,11 @@ bool RowVerdictChange::better() const {
 }
 
 bool RowVerdictChange::worse() const {
-  if (old_grade && new_grade && *new_grade > *old_grade && !grade_at_edge)
-    return true;
-  if (old_grade && !new_grade)
-    return true;
-  if (old_converging.value_or(false) && !new_converging.value_or(false))
-    return true;
-  if (old_diverging.value_or(false) && !new_diverging.value_or(false))
-    return true;
-  return false;
+  const auto lost = [](std::optional<bool> was, std::optional<bool> is) {
+    return was.value_or(false) && !is.value_or(false);
+  };
+  const bool grade_lost = old_grade && (!new_grade || (*new_grade > *old_grade && !grade_at_edge));
+  return grade_lost || lost(old_converging, new_converging) || lost(old_diverging, new_diverging);
 }
 
 Regression compare_results(const schema::ResultsDocument& baseline,
@@ -138,7 +155,7 @@ Regression compare_results(const schema::ResultsDocument& baseline,
   std::map<std::string, const schema::CaseResult*> old_cases;
   for (const auto& c : baseline.cases)
     old_cases.emplace(schema::case_id(c.spec), &c);
-  std::map<std::string, bool> seen;
+  std::set<std::string> seen;  // ids of the cases in both files
   for (const auto& c : current.cases) {
     const std::string id = schema::case_id(c.spec);
     const auto it = old_cases.find(id);
@@ -146,10 +163,9 @@ Regression compare_results(const schema::ResultsDocument& baseline,
       out.only_in_new.push_back(id);
       continue;
     }
-    seen[id] = true;
+    seen.insert(id);
     const schema::CaseResult& o = *it->second;
-    if (o.status != c.status)
-      ++out.status_changes;
+    out.status_changes += o.status != c.status ? 1 : 0;
     for (const auto& q : c.quantities) {
       const schema::QuantityResult* oq = o.quantity(q.quantity);
       if (oq == nullptr) {
@@ -158,12 +174,9 @@ Regression compare_results(const schema::ResultsDocument& baseline,
         continue;
       }
       const QuantityDrift d = drift_of(o, c, *oq, q);
-      if (d.grade_worse())
-        ++out.grades_worse;
-      if (d.grade_better())
-        ++out.grades_better;
-      if (d.grade_at_edge())
-        ++out.grades_at_edge;
+      out.grades_worse += d.grade_worse() ? 1 : 0;
+      out.grades_better += d.grade_better() ? 1 : 0;
+      out.grades_at_edge += d.grade_at_edge() ? 1 : 0;
       out.quantities.push_back(d);
     }
     for (const auto& oq : o.quantities) {
@@ -174,8 +187,7 @@ Regression compare_results(const schema::ResultsDocument& baseline,
     }
   }
   for (const auto& c : baseline.cases) {
-    const std::string id = schema::case_id(c.spec);
-    if (!seen.count(id))
+    if (const std::string id = schema::case_id(c.spec); !seen.contains(id))
       out.only_in_old.push_back(id);
   }
   std::map<std::string, const schema::RowVerdict*> old_rows;
@@ -203,38 +215,8 @@ std::string regression_markdown(const Regression& r) {
     if (q.old_grade != q.new_grade || q.old_status != q.new_status)
       changed.push_back(&q);
   }
-  std::sort(drifted.begin(), drifted.end(), [](const QuantityDrift* a, const QuantityDrift* b) {
-    return drift_magnitude(*a) > drift_magnitude(*b);
-  });
-  constexpr Align l = Align::left, right = Align::right;
-  const MarkdownTable changes = table_of(
-      {"Case", "Quantity", "Grade", "Baseline", "Current", "Drift"}, changed,
-      [](const QuantityDrift* q) -> std::vector<std::string> {
-        return {fmt::format("`{}`", q->case_id), name_of(q->quantity),       marked_change(*q),
-                format_value(q->old_value),      format_value(q->new_value), drift_text(*q)};
-      },
-      {l, l, l, right, right, right});
-  const auto arrow = [](const std::string& a, const std::string& b) { return a + " → " + b; };
-  const MarkdownTable rows = table_of(
-      {"Row", "Grade", "Converging", "Diverging (Eq. 47)"}, r.row_changes,
-      [&](const RowVerdictChange& c) -> std::vector<std::string> {
-        return {
-            fmt::format("{}`{}`", change_mark(c.worse(), c.better(), c.grade_at_edge), c.row_id),
-            arrow(grade_text(c.old_grade), grade_text(c.new_grade)),
-            arrow(flag(c.old_converging, "c"), flag(c.new_converging, "c")),
-            arrow(flag(c.old_diverging, "yes"), flag(c.new_diverging, "yes"))};
-      },
-      {l, l, l, l});
-  const MarkdownTable drifts = table_of(
-      {"Case", "Quantity", "Baseline", "Current", "Drift (relative)", "Grade"}, drifted,
-      [&](const QuantityDrift* q) -> std::vector<std::string> {
-        return {fmt::format("`{}`", q->case_id), name_of(q->quantity), format_value(q->old_value),
-                format_value(q->new_value),      drift_text(*q),       grade_change(*q)};
-      },
-      {l, l, right, right, right, l});
-  const auto table = [](const MarkdownTable& t) {
-    return text_or_false(t.n_rows() == 0 ? std::string() : t.render());
-  };
+  std::ranges::sort(drifted, std::greater{},
+                    [](const QuantityDrift* q) { return drift_magnitude(*q); });
   const auto ids = [](const std::vector<std::string>& list) {
     return template_list(list, [](const std::string& id) { return TemplateData("id", id); });
   };
@@ -251,17 +233,17 @@ std::string regression_markdown(const Regression& r) {
            {"edge_tolerance", fmt::format("{:g}", edge_tolerance())},
            {"status_changes", n(r.status_changes)},
            {"row_changes", n(r.row_changes.size())},
-           {"rows_worse", n(std::count_if(r.row_changes.begin(), r.row_changes.end(),
-                                          [](const RowVerdictChange& c) { return c.worse(); }))},
+           {"rows_worse", n(std::ranges::count_if(r.row_changes, &RowVerdictChange::worse))},
            {"n_only_in_new", n(r.only_in_new.size())},
            {"n_only_in_old", n(r.only_in_old.size())},
-           {"changed", table(changes)},
-           {"rows", table(rows)},
-           {"drifted", table(drifts)},
+           {"changed", template_list(changed, drift_data)},
+           {"has_changed", !changed.empty()},
+           {"rows", template_list(r.row_changes, row_change_data)},
+           {"has_rows", !r.row_changes.empty()},
+           {"drifted", template_list(drifted, drift_data)},
+           {"has_drifted", !drifted.empty()},
            {"only_in_new", ids(r.only_in_new)},
-           {"has_only_in_new", !r.only_in_new.empty()},
            {"only_in_old", ids(r.only_in_old)},
-           {"has_only_in_old", !r.only_in_old.empty()},
            {"only_in_one", ids(r.quantities_only_in_one)},
            {"has_only_in_one", !r.quantities_only_in_one.empty()}};
   if (!drifted.empty()) {

@@ -19,8 +19,8 @@ struct QuantityDrift {
   std::optional<double> old_value, new_value;
   std::optional<double> old_error, new_error;  ///< percent, when graded
   /// (new - old) / |old|; nullopt when a value is missing or old is 0 (see absolute).
-  std::optional<double> relative;
-  std::optional<double> absolute;  ///< new - old, when both present
+  std::optional<double> relative{};
+  std::optional<double> absolute{};  ///< new - old, when both present
   schema::Grade old_grade = schema::Grade::u, new_grade = schema::Grade::u;
   schema::CaseStatus old_status = schema::CaseStatus::failed;
   schema::CaseStatus new_status = schema::CaseStatus::failed;

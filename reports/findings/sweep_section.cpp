@@ -6,7 +6,6 @@
 #include <set>
 
 #include <fmt/format.h>
-#include <fmt/ranges.h>
 
 #include "grading/accuracy.hpp"
 #include "grading/convergence.hpp"
@@ -80,8 +79,18 @@ bool credible(const SeriesPoint& p) {
          grading::credibility(*p.result->interface).credible;
 }
 
-/// One key's table: per series on the finest mesh swept, per value the signed error, grade and
-/// iterations, or the status of a case without an error.
+/// One value's cell of a series: the signed error, grade (none where the case did not converge)
+/// and iterations, or the status of a case without an error.
+std::string point_cell(const SeriesPoint* p) {
+  if (p == nullptr || !p->error)
+    return p ? name_of(p->status) : kMissing;
+  const std::string grade = p->converged() ? " " + name_of(grading::grade_of_error(*p->error)) : "";
+  return fmt::format("{}{}{}, {} it{}", format_error_resolved(*p->error), grade,
+                     credible(*p) ? "" : " ✗", p->iterations,
+                     p->converged() ? "" : " (not converged)");
+}
+
+/// One key's table: per series on the finest mesh swept, per value its point_cell.
 std::string error_table(const std::vector<ParameterSeries>& series,
                         const std::vector<double>& values) {
   constexpr Align l = Align::left, c = Align::center;
@@ -91,19 +100,8 @@ std::string error_table(const std::vector<ParameterSeries>& series,
     if (!on_finest_mesh(s, series))
       continue;
     std::vector<std::string> row = s.label_cells();
-    for (double v : values) {
-      const SeriesPoint* p = s.at(v);
-      row.push_back(!p || !p->error
-                        ? (p ? std::string(to_string(p->status)) : kMissing)
-                        : fmt::format("{}{}{}, {} it{}", format_error_resolved(*p->error),
-                                      // a case that did not converge is not graded
-                                      p->converged()
-                                          ? " " + std::string(schema::to_string(
-                                                      grading::grade_of_error(*p->error)))
-                                          : std::string(),
-                                      credible(*p) ? "" : " ✗", p->iterations,
-                                      p->converged() ? "" : " (not converged)"));
-    }
+    for (double v : values)
+      row.push_back(point_cell(s.at(v)));
     t.add_row(std::move(row));
   }
   return t.render();
@@ -206,12 +204,9 @@ std::vector<std::string> crossings(const ParameterSeries& s, double target) {
 /// The exact value of a series' quantity, from its first point that records one.
 std::optional<double> exact_of(const ParameterSeries& s) {
   for (const SeriesPoint& p : s.points) {
-    if (p.result == nullptr)
-      continue;
-    for (const schema::QuantityResult& q : p.result->quantities) {
-      if (q.quantity == s.quantity && std::isfinite(q.exact))
-        return q.exact;
-    }
+    const schema::QuantityResult* q = p.result ? p.result->quantity(s.quantity) : nullptr;
+    if (q && std::isfinite(q->exact))
+      return q->exact;
   }
   return std::nullopt;
 }
@@ -262,8 +257,7 @@ TemplateData fkn_convergence(const ResultsIndex& index, const SeriesRefs& series
     for (const ParameterSeries* s : series) {
       schema::CaseSpec spec = s->spec;
       spec.overrides["fkn"] = v;
-      const auto it =
-          rows.find(schema::case_key(spec) + "/" + std::string(schema::to_string(s->quantity)));
+      const auto it = rows.find(schema::case_key(spec) + "/" + name_of(s->quantity));
       if (it == rows.end() || !ResultsIndex::complete(*it->second))
         continue;
       some = true;
@@ -324,7 +318,7 @@ std::string iterations_table(const std::vector<ParameterSeries>& series,
   for (const Algorithm a : schema::values<Algorithm>()) {
     if (most_iterations(series, values.front(), a) < 0)
       continue;
-    std::vector<std::string> row{std::string(schema::to_string(a))};
+    std::vector<std::string> row{name_of(a)};
     for (double v : values) {
       const int it = most_iterations(series, v, a);
       const int nc = count_not_converged(
@@ -394,8 +388,7 @@ TemplateData pinball(const std::vector<ParameterSeries>& series) {
         failed.push_back(p.parameter);
     }
     TemplateData d("row", s->label());
-    d.set("errors", cells.empty() ? std::string("no converged case")
-                                  : fmt::format("{}", fmt::join(cells, ", ")));
+    d.set("errors", joined_or_false(cells, ", "));
     d.set("failed", failed.empty() ? TemplateData(false) : TemplateData(parameter_list(failed)));
     return d;
   });
@@ -430,15 +423,11 @@ TemplateData e_ratio(const std::vector<ParameterSeries>& series, double smallest
   return d;
 }
 
+/// The key's title (templates/sweep_titles.mustache), or the key itself.
 std::string key_title(const std::string& key) {
-  static const std::map<std::string, std::string> titles{
-      {"fkn", "FKN, the normal penalty stiffness"},
-      {"ftoln", "FTOLN, the penetration tolerance"},
-      {"pinball", "Pinball region"},
-      {"E_ratio", "E ratio, indenter over indented body"},
-      {"p_over_E", "Load p/E"}};
-  const auto it = titles.find(key);
-  return it == titles.end() ? key : it->second;
+  std::string title = render_template(templates::sweep_titles, TemplateData(key, true));
+  std::erase(title, '\n');
+  return title.empty() ? key : title;
 }
 
 /// The answers of one key: those its kind asks for, else the spread of the errors.
@@ -529,11 +518,7 @@ std::vector<ParameterSeries> sweep_series(const schema::ResultsDocument& doc,
     for (const auto& q : set.points.front().result->quantities) {
       ParameterSeries& s = out.emplace_back(ParameterSeries{set.spec, q.quantity, {}});
       for (SeriesPoint p : set.points) {  // no error when the case has none
-        const auto& all = p.result->quantities;
-        const auto r = std::ranges::find_if(all, [&](const schema::QuantityResult& o) {
-          return o.quantity == q.quantity && std::isfinite(o.error_percent);
-        });
-        if (r != all.end())
+        if (const auto* r = p.result->quantity(q.quantity); r && std::isfinite(r->error_percent))
           p.error = r->error_percent;
         s.points.push_back(p);
       }
