@@ -98,29 +98,6 @@ std::string marked_change(const QuantityDrift& q) {
                      name_of(q.new_status));
 }
 
-/// A quantity's row of the template's tables (the case id escaped as a table cell).
-TemplateData drift_data(const QuantityDrift* q) {
-  return Fields{{"case", escape_cell(q->case_id)},
-                {"quantity", name_of(q->quantity)},
-                {"change", marked_change(*q)},
-                {"grade", grade_change(*q)},
-                {"old", format_value(q->old_value)},
-                {"new", format_value(q->new_value)},
-                {"drift", drift_text(*q)}};
-}
-
-/// A row's line of the template's table of verdict changes.
-TemplateData row_change_data(const RowVerdictChange& c) {
-  return Fields{{"mark", change_mark(c.worse(), c.better(), c.grade_at_edge)},
-                {"row", escape_cell(c.row_id)},
-                {"old_grade", grade_text(c.old_grade)},
-                {"new_grade", grade_text(c.new_grade)},
-                {"old_converging", flag(c.old_converging, "c")},
-                {"new_converging", flag(c.new_converging, "c")},
-                {"old_diverging", flag(c.old_diverging, "yes")},
-                {"new_diverging", flag(c.new_diverging, "yes")}};
-}
-
 }  // namespace
 
 bool QuantityDrift::grade_at_edge() const {
@@ -217,6 +194,35 @@ std::string regression_markdown(const Regression& r) {
   }
   std::ranges::sort(drifted, std::greater{},
                     [](const QuantityDrift* q) { return drift_magnitude(*q); });
+  constexpr Align l = Align::left, right = Align::right;
+  const MarkdownTable changes = table_of(
+      {"Case", "Quantity", "Grade", "Baseline", "Current", "Drift"}, changed,
+      [](const QuantityDrift* q) -> std::vector<std::string> {
+        return {fmt::format("`{}`", q->case_id), name_of(q->quantity),       marked_change(*q),
+                format_value(q->old_value),      format_value(q->new_value), drift_text(*q)};
+      },
+      {l, l, l, right, right, right});
+  const auto arrow = [](const std::string& a, const std::string& b) { return a + " → " + b; };
+  const MarkdownTable rows = table_of(
+      {"Row", "Grade", "Converging", "Diverging (Eq. 47)"}, r.row_changes,
+      [&](const RowVerdictChange& c) -> std::vector<std::string> {
+        return {
+            fmt::format("{}`{}`", change_mark(c.worse(), c.better(), c.grade_at_edge), c.row_id),
+            arrow(grade_text(c.old_grade), grade_text(c.new_grade)),
+            arrow(flag(c.old_converging, "c"), flag(c.new_converging, "c")),
+            arrow(flag(c.old_diverging, "yes"), flag(c.new_diverging, "yes"))};
+      },
+      {l, l, l, l});
+  const MarkdownTable drifts = table_of(
+      {"Case", "Quantity", "Baseline", "Current", "Drift (relative)", "Grade"}, drifted,
+      [&](const QuantityDrift* q) -> std::vector<std::string> {
+        return {fmt::format("`{}`", q->case_id), name_of(q->quantity), format_value(q->old_value),
+                format_value(q->new_value),      drift_text(*q),       grade_change(*q)};
+      },
+      {l, l, right, right, right, l});
+  const auto table = [](const MarkdownTable& t) {
+    return text_or_false(t.n_rows() == 0 ? std::string() : t.render());
+  };
   const auto ids = [](const std::vector<std::string>& list) {
     return template_list(list, [](const std::string& id) { return TemplateData("id", id); });
   };
@@ -236,14 +242,13 @@ std::string regression_markdown(const Regression& r) {
            {"rows_worse", n(std::ranges::count_if(r.row_changes, &RowVerdictChange::worse))},
            {"n_only_in_new", n(r.only_in_new.size())},
            {"n_only_in_old", n(r.only_in_old.size())},
-           {"changed", template_list(changed, drift_data)},
-           {"has_changed", !changed.empty()},
-           {"rows", template_list(r.row_changes, row_change_data)},
-           {"has_rows", !r.row_changes.empty()},
-           {"drifted", template_list(drifted, drift_data)},
-           {"has_drifted", !drifted.empty()},
+           {"changed", table(changes)},
+           {"rows", table(rows)},
+           {"drifted", table(drifts)},
            {"only_in_new", ids(r.only_in_new)},
+           {"has_only_in_new", !r.only_in_new.empty()},
            {"only_in_old", ids(r.only_in_old)},
+           {"has_only_in_old", !r.only_in_old.empty()},
            {"only_in_one", ids(r.quantities_only_in_one)},
            {"has_only_in_one", !r.quantities_only_in_one.empty()}};
   if (!drifted.empty()) {
