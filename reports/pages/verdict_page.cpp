@@ -34,8 +34,7 @@ std::string format_points(double points) {
 std::string format_error_precise(double percent) {
   if (std::abs(percent) < 0.01)
     return format_error_resolved(percent);
-  const std::string text = fmt::format("{:+.3g} %", percent);
-  return text[0] == '-' ? "−" + text.substr(1) : text;
+  return with_minus_sign(fmt::format("{:+.3g} %", percent));
 }
 
 std::string singular_cell(const OptionCell& c) {

@@ -16,8 +16,7 @@ using Values = std::array<std::optional<double>, 3>;
 
 /// "0.46", "−0.05" (the minus sign as in the other tables).
 std::string format_exponent(double alpha) {
-  std::string text = fmt::format("{:.2f}", std::abs(alpha) < 0.005 ? 0.0 : alpha);
-  return text[0] == '-' ? "−" + text.substr(1) : text;
+  return with_minus_sign(fmt::format("{:.2f}", std::abs(alpha) < 0.005 ? 0.0 : alpha));
 }
 
 /// The values, the Eq. 47 cell, the exponent cell and the strict cell of one sequence.

@@ -108,8 +108,11 @@ std::string join_meshes(const std::array<std::string, 3>& cells) {
 std::string format_error_resolved(double percent) {
   if (percent == 0.0 || std::abs(percent) >= 0.01)
     return format_percent(percent);
-  const std::string text = fmt::format("{:+.1e} %", percent);
-  return text[0] == '-' ? "−" + text.substr(1) : text;
+  return with_minus_sign(fmt::format("{:+.1e} %", percent));
+}
+
+std::string with_minus_sign(std::string text) {
+  return text.starts_with('-') ? "−" + text.substr(1) : text;
 }
 
 }  // namespace cs::reports

@@ -61,6 +61,9 @@ std::string format_milliseconds(double ms);
 /// below 0.01 % in magnitude "4.1e-13 %", so that an exact result and a small error are told
 /// apart (never "−0.00 %").
 std::string format_error_resolved(double percent);
+/// `text` with a leading '-' printed as the minus sign, as every signed number of the report:
+/// "-0.05" -> "−0.05".
+std::string with_minus_sign(std::string text);
 
 /// format_value, or the em dash for nullopt.
 std::string format_value(const std::optional<double>& v);
