@@ -99,8 +99,10 @@ Plot sweep_plot(const schema::ResultsDocument& doc, const std::string& key,
 
 std::string sweep_figure_file(const std::string& key) {
   std::string stem;
-  for (char c : key)
-    stem += std::isalnum(static_cast<unsigned char>(c)) != 0 ? c : '_';
+  for (const char c : key) {
+    const auto byte = static_cast<unsigned char>(c);
+    stem += std::isalnum(byte) != 0 || c == '_' ? std::string(1, c) : fmt::format("-{:02x}", byte);
+  }
   return "figures/sweep_" + stem + ".png";
 }
 

@@ -22,7 +22,9 @@ std::vector<SeriesRefs> sweep_panels(const std::vector<ParameterSeries>& series)
 Plot sweep_plot(const schema::ResultsDocument& doc, const std::string& key,
                 const std::vector<SeriesRefs>& panels, Figure& figure);
 
-/// The relative file of a key's figure: "figures/sweep_fkn.png".
+/// The relative file of a key's figure: "figures/sweep_fkn.png". Letters, digits and '_' stand
+/// as they are, any other byte as '-' and its two hex digits ("a.b" -> "sweep_a-2eb.png"), so two
+/// keys never share a file (the figures are drawn side by side).
 std::string sweep_figure_file(const std::string& key);
 
 /// Draws one figure per swept key into `out_root`/figures/. Never throws for a plotting

@@ -2,6 +2,7 @@
 // FKN answers (the e window, AL iterations, AL against PM, the study's S(1/3) AL error) computed
 // from the numbers; the E-ratio settling point; FTOLN's spread; a series per option set.
 
+#include <set>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -305,6 +306,19 @@ TEST(SweepFigure, RoundOffLeftOutAndDefaultMarked) {
   EXPECT_EQ(marked.panels[0].marks[0].x, 100);
   EXPECT_EQ(marked.panels[0].marks[0].label, "default");
   EXPECT_EQ(with.notes.size(), 1u);
+}
+
+// Requirement: the study's keys keep their plain file names, and keys that differ only in
+// punctuation get files of their own (their figures are drawn side by side, so a shared file
+// would be written twice at once).
+TEST(SweepFigure, EachKeyHasAFileOfItsOwn) {
+  EXPECT_EQ(sweep_figure_file("fkn"), "figures/sweep_fkn.png");
+  EXPECT_EQ(sweep_figure_file("E_ratio"), "figures/sweep_E_ratio.png");
+  EXPECT_EQ(sweep_figure_file("a.b"), "figures/sweep_a-2eb.png");
+  std::set<std::string> files;
+  for (const char* key : {"a.b", "a_b", "a-b", "a b", "a-2eb", "a\xff"})
+    files.insert(sweep_figure_file(key));
+  EXPECT_EQ(files.size(), 6u);
 }
 
 }  // namespace
